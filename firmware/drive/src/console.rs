@@ -1,0 +1,1 @@
+//! Console line editor and command grammar.

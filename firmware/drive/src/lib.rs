@@ -1,0 +1,17 @@
+//! `drive`: every model and algorithm of the predictive servo drive, in a
+//! `no_std` crate that `cargo test` runs on the host and the firmware links
+//! on the target.
+//!
+//! Modules, one job each:
+//! - [`console`]: the UART console line editor and command grammar.
+//! - [`pmsm`]: paper 000 (PMSM + 2-level inverter, FOC baseline, MPDTC).
+//! - [`mpdcc`]: paper 001 (induction machine + 5L-ANPC, MPDCC).
+#![cfg_attr(not(test), no_std)]
+#![forbid(unsafe_code)]
+
+#[cfg(feature = "std")]
+extern crate std;
+
+pub mod console;
+pub mod mpdcc;
+pub mod pmsm;

@@ -1,0 +1,1 @@
+//! Paper 001: induction machine + five-level ANPC inverter, MPDCC.

@@ -1,0 +1,71 @@
+//! `drivectl`: the host tool of the predictive servo drive.
+//!
+//! Each subcommand lives in its own module; this file only parses arguments.
+use anyhow::Result;
+use clap::{Parser, Subcommand};
+
+mod console;
+mod paper_mpdcc;
+mod paper_mpdtc;
+mod sim;
+
+#[derive(Parser)]
+#[command(name = "drivectl", version, about = "Host tool of the predictive servo drive")]
+struct Cli {
+    #[command(subcommand)]
+    cmd: Cmd,
+}
+
+#[derive(Subcommand)]
+enum Cmd {
+    /// Interactive console: over a serial port, or on a firmware booted in QEMU (default).
+    Console(console::ConsoleArgs),
+    /// Send one console command, print the reply, exit non-zero on `ERR`.
+    Send(console::SendArgs),
+    /// Decode a raw defmt log stream (UART0 capture) into text.
+    Log(console::LogArgs),
+    /// Reproduce the papers' experiments.
+    #[command(subcommand)]
+    Paper(PaperCmd),
+    /// Simulation utilities.
+    #[command(subcommand)]
+    Sim(SimCmd),
+    /// Benchmarks (called by scripts/bench).
+    #[command(subcommand)]
+    Bench(BenchCmd),
+}
+
+#[derive(Subcommand)]
+enum PaperCmd {
+    /// Paper 000: MPDTC vs FOC on the PMSM (Tables 3, 4; Figs. 10, 11).
+    Mpdtc(paper_mpdtc::Args),
+    /// Paper 001: MPDCC on the 5L-ANPC + induction machine (Fig. 5, Table II).
+    Mpdcc(paper_mpdcc::Args),
+}
+
+#[derive(Subcommand)]
+enum SimCmd {
+    /// Apply a switching-state sequence to the PMSM plant, open loop.
+    Replay(sim::ReplayArgs),
+}
+
+#[derive(Subcommand)]
+enum BenchCmd {
+    /// PMSM closed loop (MPDTC, FOC) and open-loop replay throughput.
+    Pmsm(paper_mpdtc::BenchArgs),
+    /// MPDCC closed loop throughput.
+    Mpdcc(paper_mpdcc::BenchArgs),
+}
+
+fn main() -> Result<()> {
+    match Cli::parse().cmd {
+        Cmd::Console(a) => console::console(a),
+        Cmd::Send(a) => console::send(a),
+        Cmd::Log(a) => console::log(a),
+        Cmd::Paper(PaperCmd::Mpdtc(a)) => paper_mpdtc::run(a),
+        Cmd::Paper(PaperCmd::Mpdcc(a)) => paper_mpdcc::run(a),
+        Cmd::Sim(SimCmd::Replay(a)) => sim::replay(a),
+        Cmd::Bench(BenchCmd::Pmsm(a)) => paper_mpdtc::bench(a),
+        Cmd::Bench(BenchCmd::Mpdcc(a)) => paper_mpdcc::bench(a),
+    }
+}

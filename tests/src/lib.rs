@@ -1,0 +1,1 @@
+//! Harness for system tests (QEMU).
