@@ -1,1 +1,0 @@
-//! Console line editor and command grammar.

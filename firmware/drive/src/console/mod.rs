@@ -1,0 +1,80 @@
+//! The UART console: line editor, command grammar and replies.
+//!
+//! Protocol (what a host script can rely on):
+//! - the firmware prints the prompt [`PROMPT`] (no newline) when it is ready
+//!   for a line;
+//! - a line ends with CR, LF or CRLF; an empty line only prints a new prompt;
+//! - every command answers with zero or more lines and then exactly one final
+//!   line, `OK` or `ERR <code> <message>`; every output line ends with CRLF;
+//! - error codes are the kebab-case words of [`ErrorCode`].
+//!
+//! The target only moves bytes; everything here runs on the host in tests.
+
+mod command;
+mod editor;
+
+pub use command::{
+    execute, parse, write_parse_error, Action, Command, Context, ParseError, Spec, Status, COMMANDS,
+};
+pub use editor::{LineEditor, LineError, LINE_MAX};
+
+/// Printed when the console is ready for a line.
+pub const PROMPT: &str = "drive> ";
+
+/// Error codes of the final `ERR <code> <message>` line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ErrorCode {
+    /// The first word is not a command.
+    UnknownCommand,
+    /// Wrong number or format of arguments.
+    BadArgs,
+    /// The line did not fit the line buffer ([`LINE_MAX`] bytes).
+    LineTooLong,
+    /// The line is not valid UTF-8.
+    BadEncoding,
+    /// The line holds a control character.
+    BadChar,
+}
+
+impl ErrorCode {
+    /// The word printed after `ERR`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            ErrorCode::UnknownCommand => "unknown-command",
+            ErrorCode::BadArgs => "bad-args",
+            ErrorCode::LineTooLong => "line-too-long",
+            ErrorCode::BadEncoding => "bad-encoding",
+            ErrorCode::BadChar => "bad-char",
+        }
+    }
+}
+
+/// Writes the final `ERR <code> <message>` line.
+pub fn write_err<W: core::fmt::Write>(
+    out: &mut W,
+    code: ErrorCode,
+    msg: core::fmt::Arguments<'_>,
+) -> core::fmt::Result {
+    write!(out, "ERR {} {}\r\n", code.as_str(), msg)
+}
+
+/// Writes the final `ERR` line for a line the editor rejected.
+pub fn write_line_error<W: core::fmt::Write>(out: &mut W, e: LineError) -> core::fmt::Result {
+    match e {
+        LineError::TooLong => write_err(
+            out,
+            ErrorCode::LineTooLong,
+            format_args!("line longer than {LINE_MAX} bytes, discarded"),
+        ),
+        LineError::BadEncoding => write_err(
+            out,
+            ErrorCode::BadEncoding,
+            format_args!("line is not valid UTF-8, discarded"),
+        ),
+        LineError::BadChar(b) => write_err(
+            out,
+            ErrorCode::BadChar,
+            format_args!("control character 0x{b:02x} in line, discarded"),
+        ),
+    }
+}
