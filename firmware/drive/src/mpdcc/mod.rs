@@ -1,1 +1,2 @@
 //! Paper 001: induction machine + five-level ANPC inverter, MPDCC.
+pub mod binsearch;
