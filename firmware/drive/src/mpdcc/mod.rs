@@ -1,2 +1,3 @@
 //! Paper 001: induction machine + five-level ANPC inverter, MPDCC.
 pub mod binsearch;
+pub mod fixed;
