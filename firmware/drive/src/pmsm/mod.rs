@@ -1,1 +1,12 @@
 //! Paper 000: PMSM + 2-level inverter, FOC baseline, MPDTC.
+//!
+//! - [`params`]: motor and drive parameters (paper defaults, validation).
+//! - [`frames`]: Clarke/Park transforms and switch states `SaSbSc`.
+//! - [`plant`]: exact (zero-order hold) surface PMSM + inverter model.
+//! - [`measure`]: 256 kHz sampling and averaging (the measurement chain).
+//! - [`sim`]: the `Controller` trait and the closed-loop runner.
+pub mod frames;
+pub mod measure;
+pub mod params;
+pub mod plant;
+pub mod sim;

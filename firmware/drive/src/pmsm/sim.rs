@@ -1,0 +1,152 @@
+//! Closed-loop simulation: the [`Controller`] trait both FOC and MPDTC
+//! implement, and the runner that connects a controller to the [`Plant`]
+//! through the paper's measurement chain and computation delay.
+//!
+//! Timeline (period `T` = `controller.period_s()`, control instants `t_k = k T`):
+//! 1. at `t_k` the controller gets the mean of the last `adc_average_n` ADC
+//!    samples (256 kHz; the newest taken at `t_k`) and the torque reference
+//!    `r(t_k)`, and returns an [`Actuation`];
+//! 2. with `computation_delay_periods = 1` (paper) that actuation is applied
+//!    during `[t_{k+1}, t_{k+2})`; during `[t_k, t_{k+1})` the decision of
+//!    `t_{k-1}` acts. Before the first decision takes effect,
+//!    [`Controller::initial_actuation`] acts (default 000, zero voltage);
+//! 3. the plant is advanced exactly, sampled at every ADC instant, and each
+//!    sample is reported to the `record` callback as a [`TracePoint`].
+//!
+//! Nothing here allocates: traces go to a callback (collect them into a `Vec`
+//! on the host). See `metrics` for settling time, switching frequency and
+//! ripple helpers over such traces.
+
+use super::measure::Averager;
+pub use super::measure::Measurement;
+use super::params::{samples_per_period, DriveParams, ParamError};
+pub use super::plant::Actuation;
+use super::plant::Plant;
+
+/// A torque controller running at a fixed period.
+pub trait Controller {
+    /// Control period, s (must be an integer multiple of the ADC period).
+    fn period_s(&self) -> f64;
+    /// One control decision from the measurement of this instant and the
+    /// torque reference, N m. Applied after the computation delay.
+    fn step(&mut self, m: &Measurement, torque_ref_nm: f64) -> Actuation;
+    /// What the inverter does before the first decision takes effect.
+    fn initial_actuation(&self) -> Actuation {
+        Actuation::SwitchState(0)
+    }
+}
+
+/// One ADC sample of a closed-loop run (all values exact plant values, not
+/// the averaged measurement).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TracePoint {
+    /// Time, s.
+    pub t_s: f64,
+    /// Index k of the control period `[t_k, t_{k+1})` this sample ends in.
+    pub period: u64,
+    /// `true` for the last sample of the period (at `t_{k+1}`).
+    pub end_of_period: bool,
+    /// d-axis current, A.
+    pub i_d_a: f64,
+    /// q-axis current, A.
+    pub i_q_a: f64,
+    /// Electromagnetic torque, N m.
+    pub torque_nm: f64,
+    /// Torque reference given to the controller at `t_k`, N m.
+    pub torque_ref_nm: f64,
+    /// Electrical angle, rad.
+    pub theta_e_rad: f64,
+    /// Electrical speed, rad/s.
+    pub omega_e_rad_s: f64,
+    /// Gate state (index `4 Sa + 2 Sb + Sc`) at this instant.
+    pub switch_state: u8,
+    /// Actuation applied during this period.
+    pub applied: Actuation,
+    /// Gate transitions per leg since the start of the run (cumulative).
+    pub transitions: [u64; 3],
+}
+
+/// Totals of a run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunSummary {
+    /// Control periods simulated.
+    pub periods: u64,
+    /// Simulated duration, s.
+    pub duration_s: f64,
+    /// Gate transitions per leg during the run.
+    pub transitions: [u64; 3],
+}
+
+/// Maximum computation delay supported (periods).
+const MAX_DELAY: usize = 2;
+
+/// Runs `n_periods` control periods of `ctrl` on `plant`.
+///
+/// `torque_ref(t_s)` gives the reference at each control instant; `record` is
+/// called at every ADC sample. `drive` supplies the ADC rate, the averaging
+/// length and the computation delay (`drive.control_period_s` is not used:
+/// the controller's own period is).
+///
+/// Errors (nothing simulated): invalid `drive`, or a controller period that is
+/// not an integer multiple (>= averaging length) of the ADC period.
+pub fn run<C: Controller + ?Sized>(
+    plant: &mut Plant,
+    ctrl: &mut C,
+    drive: &DriveParams,
+    n_periods: u64,
+    mut torque_ref: impl FnMut(f64) -> f64,
+    mut record: impl FnMut(&TracePoint),
+) -> Result<RunSummary, ParamError> {
+    let period_s = ctrl.period_s();
+    let d = DriveParams {
+        control_period_s: period_s,
+        ..*drive
+    };
+    d.validate()?;
+    let n_sub = samples_per_period(period_s, d.adc_sample_rate_hz).ok_or(ParamError {
+        field: "period_s",
+        reason: "controller period is not an integer multiple of the ADC period",
+    })?;
+    let delay = d.computation_delay_periods as usize;
+    let mut avg = Averager::new(d.adc_average_n as usize, plant);
+    // Delay line: queue[0] acts next; decisions enter at index `delay`.
+    let mut queue = [ctrl.initial_actuation(); MAX_DELAY + 1];
+    let t0 = plant.state().t_s;
+    let tr0 = plant.transitions();
+    for k in 0..n_periods {
+        let t_k = t0 + k as f64 * period_s;
+        let m = avg.measurement();
+        let r = torque_ref(t_k);
+        queue[delay] = ctrl.step(&m, r);
+        let applied = queue[0];
+        queue.copy_within(1..=MAX_DELAY, 0);
+        let mut j = 0;
+        plant.step(&applied, period_s, n_sub, |p| {
+            j += 1;
+            avg.push(p);
+            let (i_d_a, i_q_a) = p.i_dq_a();
+            let s = p.state();
+            let tr = p.transitions();
+            record(&TracePoint {
+                t_s: s.t_s,
+                period: k,
+                end_of_period: j == n_sub,
+                i_d_a,
+                i_q_a,
+                torque_nm: p.motor().torque_nm(i_d_a, i_q_a),
+                torque_ref_nm: r,
+                theta_e_rad: s.theta_e_rad,
+                omega_e_rad_s: s.omega_e_rad_s,
+                switch_state: p.gate_state(),
+                applied,
+                transitions: [tr[0] - tr0[0], tr[1] - tr0[1], tr[2] - tr0[2]],
+            });
+        })?;
+    }
+    let tr = plant.transitions();
+    Ok(RunSummary {
+        periods: n_periods,
+        duration_s: n_periods as f64 * period_s,
+        transitions: [tr[0] - tr0[0], tr[1] - tr0[1], tr[2] - tr0[2]],
+    })
+}
