@@ -10,3 +10,6 @@ pub mod measure;
 pub mod params;
 pub mod plant;
 pub mod sim;
+pub mod mpdtc_ctrl;
+pub mod mpdtc_ref;
+pub mod observer;
