@@ -1,1 +1,118 @@
-fn main() {}
+//! Verilates the PL RTL and compiles the C++ shims that expose each model to
+//! Rust through `extern "C"` functions.
+//!
+//! For every top in `TOPS`: `verilator --cc --build` into `$OUT_DIR/obj_<top>`
+//! (Verilator's own makefile compiles the model, in parallel), the archive is
+//! renamed `libvtop_<top>.a` so that Cargo can link it, and one
+//! `libverilated.a` (the runtime) is linked once. The shims in `csrc/` are
+//! compiled with the `cc` crate. Cargo reruns this only when an RTL file, a
+//! shim or this script changes, so an unchanged tree builds in no time.
+use std::env;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// (top module, RTL files under `pl-bitstream-src/rtl`, shim under `csrc/`).
+const TOPS: &[(&str, &[&str], &str)] = &[(
+    "gate_driver",
+    &["gate_leg.v", "gate_driver.v"],
+    "gate_driver_shim.cpp",
+)];
+
+fn run(cmd: &mut Command) {
+    let status = cmd
+        .status()
+        .unwrap_or_else(|e| panic!("cannot run {cmd:?}: {e} (run scripts/setup)"));
+    assert!(status.success(), "{cmd:?} failed with {status}");
+}
+
+fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
+    let mdir = out.join(format!("obj_{top}"));
+    let mut cmd = Command::new("verilator");
+    cmd.arg("--cc")
+        .arg("--build")
+        .args(["-j", "2"])
+        .arg("--no-timing")
+        .args(["--top-module", top])
+        .args(["--prefix", &format!("V{top}")])
+        .arg("--Mdir")
+        .arg(&mdir)
+        .args(["-CFLAGS", "-fPIC -O1"])
+        .args(["-MAKEFLAGS", "OPT_FAST=-O1 OPT_SLOW=-O1 OPT_GLOBAL=-O1"])
+        .arg("-Wno-fatal")
+        .arg(format!("-I{}", rtl.display()));
+    for f in files {
+        cmd.arg(rtl.join(f));
+    }
+    run(&mut cmd);
+    let lib = out.join(format!("libvtop_{top}.a"));
+    std::fs::copy(mdir.join(format!("V{top}__ALL.a")), &lib).expect("copy model archive");
+    mdir
+}
+
+/// The Verilator runtime (`verilated.o`, `verilated_threads.o`), built once
+/// with the flags of Verilator's makefile, as `libverilated.a`.
+fn runtime(out: &Path, mdir: &Path, top: &str) {
+    let objs = ["verilated.o", "verilated_threads.o"];
+    run(Command::new("make")
+        .args(["-j", "2", "-s", "-C"])
+        .arg(mdir)
+        .args(["-f", &format!("V{top}.mk")])
+        .arg("OPT_GLOBAL=-O1")
+        .arg("VM_USER_CFLAGS=-fPIC")
+        .args(objs));
+    let lib = out.join("libverilated.a");
+    let _ = std::fs::remove_file(&lib);
+    run(Command::new("ar")
+        .arg("rcs")
+        .arg(&lib)
+        .args(objs.iter().map(|o| mdir.join(o))));
+}
+
+fn main() {
+    let manifest = PathBuf::from(env::var("CARGO_MANIFEST_DIR").unwrap());
+    let rtl = manifest.join("../rtl");
+    let out = PathBuf::from(env::var("OUT_DIR").unwrap());
+    println!("cargo:rerun-if-changed=build.rs");
+
+    let vroot = String::from_utf8(
+        Command::new("verilator")
+            .arg("--getenv")
+            .arg("VERILATOR_ROOT")
+            .output()
+            .expect("verilator not found (run scripts/setup)")
+            .stdout,
+    )
+    .unwrap();
+    let vinc = PathBuf::from(vroot.trim()).join("include");
+
+    let mut shim = cc::Build::new();
+    shim.cpp(true)
+        .std("c++17")
+        .opt_level(1)
+        .include(&vinc)
+        .include(vinc.join("vltstd"))
+        .flag_if_supported("-Wno-unused-parameter");
+    let mut models = Vec::new();
+    for (top, files, shim_src) in TOPS {
+        for f in *files {
+            println!("cargo:rerun-if-changed={}", rtl.join(f).display());
+        }
+        let src = manifest.join("csrc").join(shim_src);
+        println!("cargo:rerun-if-changed={}", src.display());
+        let mdir = verilate(&rtl, &out, top, files);
+        if models.is_empty() {
+            runtime(&out, &mdir, top);
+        }
+        shim.include(&mdir).file(src);
+        models.push(*top);
+    }
+    shim.compile("rtl_shims");
+    // Static link order: shims, then models, then the Verilator runtime.
+    println!("cargo:rustc-link-search=native={}", out.display());
+    for top in models {
+        println!("cargo:rustc-link-lib=static=vtop_{top}");
+    }
+    println!("cargo:rustc-link-lib=static=verilated");
+    println!("cargo:rustc-link-lib=dylib=stdc++");
+    println!("cargo:rustc-link-lib=dylib=pthread");
+}

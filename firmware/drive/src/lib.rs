@@ -13,5 +13,6 @@
 extern crate std;
 
 pub mod console;
+pub mod gates;
 pub mod mpdcc;
 pub mod pmsm;
