@@ -56,6 +56,7 @@
 //!   the ANPC's clamping details of ref. [16]) is not modelled.
 //! - **Devices**: 8 per phase, 24 in total; the switching frequency per
 //!   semiconductor is `sum f_s / (24 * duration)` (see `stats`).
+#![allow(clippy::needless_range_loop)] // index loops mirror the matrix equations
 
 /// Number of switch positions per phase.
 pub const POSITIONS: usize = 8;

@@ -29,6 +29,7 @@
 //! Outputs and bounds: `|i*_x - i_x| <= delta_i` (x = a, b, c),
 //! `|v_n| <= v_n_bound`, `|v_ph,x - V_dc/4| <= v_ph_bound`.
 //! The current reference rotates with `omega_s`: `i*(k+l) = R(omega_s l T_s) i*(k)`.
+#![allow(clippy::needless_range_loop)] // index loops mirror the matrix equations
 
 use super::anpc;
 use super::params::{ControllerParams, InverterParams};

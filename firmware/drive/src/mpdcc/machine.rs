@@ -16,6 +16,7 @@
 //! `Phi = e^{F T}`, `Gamma = int_0^T e^{F t} dt G`, computed from the
 //! exponential of the augmented matrix `[F G; 0 0]` (Taylor series with
 //! scaling and squaring, enough terms for `f64` at the norms that occur).
+#![allow(clippy::needless_range_loop)] // index loops mirror the matrix equations
 
 use super::params::MachineParams;
 

@@ -4,8 +4,12 @@
 //! `controller` (the interface both implementations share), `reference`,
 //! `plant`, `closed_loop`, `stats`. See docs/mpdcc.md.
 pub mod anpc;
+pub mod binsearch;
+pub mod closed_loop;
 pub mod controller;
+pub mod fixed;
 pub mod machine;
 pub mod params;
-pub mod binsearch;
-pub mod fixed;
+pub mod plant;
+pub mod reference;
+pub mod stats;

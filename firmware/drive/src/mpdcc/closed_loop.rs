@@ -1,0 +1,279 @@
+//! Closed loop: the exact plant ([`super::plant`]) driven by any
+//! [`MpdccController`], with an optional *shadow* controller that is fed
+//! the same state at every step and whose decisions are only compared (the
+//! paper's decision-mismatch experiment, Sec. VII-B), never applied.
+//!
+//! Operating point: stator current reference of amplitude
+//! `i_ref_amplitude_pu` rotating at `omega_s_pu`, rotor at `omega_r_pu`
+//! (constant: the speed is a parameter in the paper's model). The plant
+//! starts in the machine's sinusoidal steady state for that reference
+//! (rotor flux from [`machine::steady_state_flux`]), `v_n = 0`,
+//! `v_ph = V_dc/4`, all phases at position 4 (level 0). A warm-up of whole
+//! fundamental periods precedes the measurement window; the window is a
+//! whole number of periods too (THD definition in [`super::stats`]).
+//! Measurement is ideal: the controller sees the plant state exactly.
+#![allow(clippy::needless_range_loop)] // index loops mirror the matrix equations
+
+use super::anpc;
+use super::controller::{CtrlState, DecisionKind, MpdccController, StateError};
+use super::machine::{self, inv_clarke};
+use super::params::{DriveParams, ParamError};
+use super::plant::{Plant, PlantState};
+use super::stats::{fsw_per_device_hz, ThdAccumulator};
+
+/// Run length, in fundamental periods.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoopConfig {
+    /// Periods simulated before statistics start.
+    pub warmup_periods: u32,
+    /// Periods in the measurement window.
+    pub measure_periods: u32,
+}
+
+impl Default for LoopConfig {
+    fn default() -> Self {
+        Self {
+            warmup_periods: 2,
+            measure_periods: 10,
+        }
+    }
+}
+
+/// One sample, passed to the trace callback every step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TraceSample {
+    /// Time since start, s.
+    pub t_s: f64,
+    /// Phase currents, pu.
+    pub i_abc_pu: [f64; 3],
+    /// Phase current references, pu.
+    pub i_ref_abc_pu: [f64; 3],
+    /// Neutral point potential, pu.
+    pub v_n_pu: f64,
+    /// Phase capacitor voltages, pu.
+    pub v_ph_pu: [f64; 3],
+    /// Applied position `s(k)`.
+    pub s: [u8; 3],
+}
+
+/// Why a run failed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LoopError {
+    /// Parameters invalid.
+    Param(ParamError),
+    /// A controller rejected its input (plant diverged to NaN).
+    State(StateError),
+    /// A controller returned a non-admissible position.
+    Inadmissible,
+}
+
+impl From<ParamError> for LoopError {
+    fn from(e: ParamError) -> Self {
+        LoopError::Param(e)
+    }
+}
+
+impl From<StateError> for LoopError {
+    fn from(e: StateError) -> Self {
+        LoopError::State(e)
+    }
+}
+
+impl core::fmt::Display for LoopError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            LoopError::Param(e) => write!(f, "{e}"),
+            LoopError::State(e) => write!(f, "{e}"),
+            LoopError::Inadmissible => {
+                write!(f, "controller returned a non-admissible switch position")
+            }
+        }
+    }
+}
+
+/// Statistics of one run (measurement window only unless noted).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct LoopResult {
+    /// Average switching frequency per semiconductor, Hz.
+    pub fsw_hz: f64,
+    /// Stator current THD, percent.
+    pub thd_percent: f64,
+    /// Steps in the window.
+    pub steps: u64,
+    /// Steps where the controller did not keep `s(k-1)` (Optimal or Deadlock).
+    pub switching_decisions: u64,
+    /// Deadlock decisions.
+    pub deadlocks: u64,
+    /// Largest level change of any phase in one step (whole run).
+    pub max_level_jump: u8,
+    /// Largest `|v_n|`, pu.
+    pub max_abs_v_n_pu: f64,
+    /// Largest `|v_ph - V_dc/4|`, pu.
+    pub max_v_ph_dev_pu: f64,
+    /// Largest `|i* - i|` over the phases, pu.
+    pub max_i_err_pu: f64,
+    /// Steps with any output outside its bound.
+    pub steps_outside_bounds: u64,
+    /// Steps where the shadow controller's decision differed (0 without shadow).
+    pub shadow_mismatches: u64,
+    /// Mismatches among steps where the driving controller switched.
+    pub shadow_mismatches_switching: u64,
+    /// Fundamental rms of the phase currents (mean of phases), pu.
+    pub i1_rms_pu: f64,
+}
+
+impl LoopResult {
+    /// Mismatch share, percent of all steps in the window.
+    pub fn mismatch_percent(&self) -> f64 {
+        if self.steps == 0 {
+            0.0
+        } else {
+            100.0 * self.shadow_mismatches as f64 / self.steps as f64
+        }
+    }
+}
+
+/// Runs the loop. `shadow` (optional) is fed the same states; `trace` is
+/// called every step (warm-up included).
+pub fn run(
+    p: &DriveParams,
+    cfg: &LoopConfig,
+    ctrl: &mut dyn MpdccController,
+    mut shadow: Option<&mut dyn MpdccController>,
+    trace: &mut dyn FnMut(&TraceSample),
+) -> Result<LoopResult, LoopError> {
+    p.validate()?;
+    let mut plant = Plant::new(p)?;
+    let op = p.operating_point;
+    let ts_pu = p.controller.ts_pu(&p.machine);
+    let dth = op.omega_s_pu * ts_pu;
+    let steps_per_period = 2.0 * core::f64::consts::PI / dth;
+    let warm = libm::round(cfg.warmup_periods as f64 * steps_per_period) as u64;
+    let meas = libm::round(cfg.measure_periods as f64 * steps_per_period) as u64;
+    let i_ref0 = [op.i_ref_amplitude_pu, 0.0];
+    let psi = machine::steady_state_flux(&p.machine, i_ref0, op.omega_s_pu, op.omega_r_pu);
+    let mut z = PlantState {
+        x_m: [i_ref0[0], i_ref0[1], psi[0], psi[1]],
+        v_n_pu: 0.0,
+        v_ph_pu: [p.inverter.v_ph_ref_pu(); 3],
+    };
+    let bounds = super::controller::Bounds::new(&p.controller, &p.inverter);
+    let mut s_prev = [4u8; 3];
+    let mut thd = ThdAccumulator::new(dth);
+    let mut r = LoopResult::default();
+    let mut turn_ons = 0u64;
+    for k in 0..(warm + meas) {
+        let th = dth * k as f64;
+        let i_ref = [
+            op.i_ref_amplitude_pu * libm::cos(th),
+            op.i_ref_amplitude_pu * libm::sin(th),
+        ];
+        let st = CtrlState {
+            x_m: z.x_m,
+            v_n_pu: z.v_n_pu,
+            v_ph_pu: z.v_ph_pu,
+            omega_r_pu: op.omega_r_pu,
+            omega_s_pu: op.omega_s_pu,
+            i_ref_ab_pu: i_ref,
+            s_prev,
+        };
+        let d = ctrl.decide(&st)?;
+        if !anpc::admissible(s_prev, d.s) {
+            return Err(LoopError::Inadmissible);
+        }
+        for x in 0..3 {
+            let jump = (anpc::TABLE[s_prev[x] as usize].level - anpc::TABLE[d.s[x] as usize].level)
+                .unsigned_abs();
+            r.max_level_jump = r.max_level_jump.max(jump);
+        }
+        let i_abc = inv_clarke([z.x_m[0], z.x_m[1]]);
+        let i_ref_abc = inv_clarke(i_ref);
+        trace(&TraceSample {
+            t_s: k as f64 * p.controller.ts_s,
+            i_abc_pu: i_abc,
+            i_ref_abc_pu: i_ref_abc,
+            v_n_pu: z.v_n_pu,
+            v_ph_pu: z.v_ph_pu,
+            s: d.s,
+        });
+        if k >= warm {
+            if let Some(sh) = shadow.as_deref_mut() {
+                let ds = sh.decide(&st)?;
+                if ds.s != d.s {
+                    r.shadow_mismatches += 1;
+                    if d.kind != DecisionKind::Kept {
+                        r.shadow_mismatches_switching += 1;
+                    }
+                }
+            }
+            r.steps += 1;
+            thd.push(i_abc);
+            turn_ons += anpc::switch_transitions(s_prev, d.s) as u64;
+            match d.kind {
+                DecisionKind::Kept => {}
+                DecisionKind::Optimal => r.switching_decisions += 1,
+                DecisionKind::Deadlock => {
+                    r.switching_decisions += 1;
+                    r.deadlocks += 1;
+                }
+            }
+            let e: [f64; 3] = core::array::from_fn(|x| i_ref_abc[x] - i_abc[x]);
+            for x in 0..3 {
+                r.max_i_err_pu = r.max_i_err_pu.max(libm::fabs(e[x]));
+                r.max_v_ph_dev_pu = r
+                    .max_v_ph_dev_pu
+                    .max(libm::fabs(z.v_ph_pu[x] - bounds.v_ph_ref));
+            }
+            r.max_abs_v_n_pu = r.max_abs_v_n_pu.max(libm::fabs(z.v_n_pu));
+            // Tiny tolerance: the plant and the controller model differ by ~1e-7 pu.
+            if bounds.worst_excess(e, z.v_n_pu, z.v_ph_pu) > 1e-6 {
+                r.steps_outside_bounds += 1;
+            }
+        }
+        z = plant.step(&z, d.s);
+        s_prev = d.s;
+    }
+    r.fsw_hz = fsw_per_device_hz(turn_ons, meas as f64 * p.controller.ts_s);
+    r.thd_percent = thd.thd_percent();
+    let f = thd.fundamental_rms();
+    r.i1_rms_pu = (f[0] + f[1] + f[2]) / 3.0;
+    Ok(r)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mpdcc::reference::Reference;
+
+    /// Invariants of the reference in closed loop at the default operating
+    /// point: one-level transitions only, v_n and v_ph inside their bounds in
+    /// steady state, the current tracks its reference (fundamental within 2 %
+    /// of 1/sqrt(2) pu rms), and the switching frequency is a plausible MV
+    /// figure (tens to a few hundred Hz: not zero, not every step).
+    #[test]
+    fn reference_closed_loop_invariants() {
+        let p = DriveParams::default();
+        let mut c = Reference::new(&p).unwrap();
+        let cfg = LoopConfig {
+            warmup_periods: 1,
+            measure_periods: 3,
+        };
+        let r = run(&p, &cfg, &mut c, None, &mut |_| {}).unwrap();
+        assert!(r.max_level_jump <= 1);
+        assert!(
+            r.max_abs_v_n_pu <= p.controller.v_n_bound_pu + 1e-6,
+            "{r:?}"
+        );
+        assert!(
+            r.max_v_ph_dev_pu <= p.controller.v_ph_bound_pu + 1e-6,
+            "{r:?}"
+        );
+        assert!(
+            (r.i1_rms_pu - core::f64::consts::FRAC_1_SQRT_2).abs()
+                < 0.02 * core::f64::consts::FRAC_1_SQRT_2,
+            "{r:?}"
+        );
+        assert!(r.fsw_hz > 20.0 && r.fsw_hz < 2000.0, "{r:?}");
+        assert!(r.steps_outside_bounds * 100 < r.steps, "{r:?}");
+    }
+}
