@@ -16,3 +16,4 @@ pub mod console;
 pub mod gates;
 pub mod mpdcc;
 pub mod pmsm;
+pub mod regmap;

@@ -1,0 +1,804 @@
+//! The PL register map: the one source of truth.
+//!
+//! AXI4-Lite on the PS's GP0 port, 32-bit registers, base [`BASE_ADDR`], one
+//! 4 KiB page per block ([`BLOCK_SIZE`]) in the order of [`BLOCKS`]. This
+//! table is `const` data so that the `no_std` firmware uses it directly; the
+//! generator in `rtl-sim` (`cargo run -p rtl-sim --bin regmap-gen`) writes
+//! from it `pl-bitstream-src/rtl/regmap.vh` (Verilog localparams used by the
+//! RTL) and `docs/register-map.md`; a test fails when those are stale, and
+//! the AXI-Lite tests in `rtl-sim` check the Verilated register file against
+//! every entry (reset value, access type, implemented bits, clamping).
+//!
+//! Conventions: offsets are bytes within the block, word aligned; bits above
+//! [`Register::width`] read 0. Byte strobes are honoured on RW registers; the
+//! merged 32-bit word is then stored masked to the width ([`Invalid::AllValid`]),
+//! clamped as a whole ([`Invalid::Clamp`]: 5000 written to a 10-bit register
+//! with max 1023 stores 1023) or compared as a whole ([`Invalid::Reject`]). Accesses to an
+//! unmapped offset, or a write to a read-only register, answer `SLVERR` and
+//! set `ERR.BAD_ADDR`. A rejected value ([`Invalid::Reject`]) leaves the
+//! register unchanged, answers `OKAY` and sets `ERR.BAD_VALUE`.
+//!
+//! PL clock: 100 MHz (FCLK0), so one cycle = 10 ns.
+
+/// Base of the PL register window on GP0.
+pub const BASE_ADDR: usize = 0x43C0_0000;
+/// Size of one block's page.
+pub const BLOCK_SIZE: usize = 0x1000;
+/// Address bits of the AXI-Lite slave: 8 pages of 4 KiB.
+pub const AXI_ADDR_BITS: u32 = 15;
+/// PL clock of the register file and every block, in Hz.
+pub const PL_CLOCK_HZ: u32 = 100_000_000;
+
+/// How software may access a register.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Access {
+    /// Read-write.
+    Rw,
+    /// Read-only: writes answer `SLVERR`, set `ERR.BAD_ADDR` and change nothing.
+    Ro,
+    /// Read, write 1 to clear (a set condition that is still present wins).
+    W1c,
+}
+
+/// What a write of an out-of-range value does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Invalid {
+    /// Every value of the implemented bits is valid.
+    AllValid,
+    /// The (merged, masked) value is clamped to `min..=max`.
+    Clamp {
+        /// Smallest stored value.
+        min: u32,
+        /// Largest stored value.
+        max: u32,
+    },
+    /// A value above `max` is rejected: the register keeps its value and
+    /// `ERR.BAD_VALUE` is set.
+    Reject {
+        /// Largest accepted value.
+        max: u32,
+    },
+}
+
+/// A bit field of a register.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Field {
+    /// Name (upper case, used in Verilog as `RM_<REG>_<FIELD>_LSB/_W`).
+    pub name: &'static str,
+    /// Lowest bit.
+    pub lsb: u8,
+    /// Width in bits.
+    pub width: u8,
+    /// Meaning.
+    pub doc: &'static str,
+}
+
+/// One 32-bit register.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Register {
+    /// Name (upper case, unique over the whole map).
+    pub name: &'static str,
+    /// Byte offset within the block.
+    pub offset: u16,
+    /// Access type.
+    pub access: Access,
+    /// Implemented bits `[width-1:0]`; the others read 0.
+    pub width: u8,
+    /// Value after reset.
+    pub reset: u32,
+    /// Number format and unit (Q notation for fixed point).
+    pub format: &'static str,
+    /// What out-of-range writes do.
+    pub invalid: Invalid,
+    /// Bit fields (empty: the register is one number).
+    pub fields: &'static [Field],
+    /// Meaning.
+    pub doc: &'static str,
+}
+
+impl Register {
+    /// Mask of the implemented bits.
+    pub const fn mask(&self) -> u32 {
+        if self.width >= 32 {
+            u32::MAX
+        } else {
+            (1u32 << self.width) - 1
+        }
+    }
+
+    /// The value the register holds after software writes `value` (all byte
+    /// strobes set) over `old`: `Err` for a rejected value (register keeps
+    /// `old`). The RTL implements the same rule; the AXI tests check it.
+    pub const fn apply_write(&self, old: u32, value: u32) -> Result<u32, RegError> {
+        let v = value & self.mask();
+        match self.access {
+            Access::Ro => Err(RegError::ReadOnly),
+            Access::W1c => Ok(old & !v),
+            Access::Rw => match self.invalid {
+                Invalid::AllValid => Ok(v),
+                // The whole written word is compared, so 5000 clamps to
+                // 1023 rather than wrapping to 5000 mod 1024.
+                Invalid::Clamp { min, max } => Ok(if value < min {
+                    min
+                } else if value > max {
+                    max
+                } else {
+                    value
+                }),
+                Invalid::Reject { max } => {
+                    if value > max {
+                        Err(RegError::Rejected)
+                    } else {
+                        Ok(v)
+                    }
+                }
+            },
+        }
+    }
+}
+
+/// Why a register write did not store the written value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RegError {
+    /// The register is read-only.
+    ReadOnly,
+    /// The value is out of range and was rejected.
+    Rejected,
+}
+
+/// One 4 KiB block.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Block {
+    /// Name (upper case).
+    pub name: &'static str,
+    /// Page index: the block's base is `BASE_ADDR + index * BLOCK_SIZE`.
+    pub index: u8,
+    /// Meaning.
+    pub doc: &'static str,
+    /// Registers, by increasing offset.
+    pub registers: &'static [&'static Register],
+}
+
+impl Block {
+    /// Absolute address of the block.
+    pub const fn base(&self) -> usize {
+        BASE_ADDR + self.index as usize * BLOCK_SIZE
+    }
+    /// Absolute address of `reg` in this block.
+    pub const fn addr(&self, reg: &Register) -> usize {
+        self.base() + reg.offset as usize
+    }
+}
+
+const fn field(name: &'static str, lsb: u8, width: u8, doc: &'static str) -> Field {
+    Field {
+        name,
+        lsb,
+        width,
+        doc,
+    }
+}
+
+// ---------------------------------------------------------------- block 0
+/// Magic number "PSDR" (predictive servo drive RTL).
+pub const ID_VALUE: u32 = 0x5053_4452;
+/// Top/ID: identification.
+pub const ID: Register = Register {
+    name: "ID",
+    offset: 0x000,
+    access: Access::Ro,
+    width: 32,
+    reset: ID_VALUE,
+    format: "ASCII \"PSDR\"",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "Identifies the bitstream.",
+};
+/// Top/ID: register-map version.
+pub const VERSION: Register = Register {
+    name: "VERSION",
+    offset: 0x004,
+    access: Access::Ro,
+    width: 32,
+    reset: 0x0001_0000,
+    format: "major.minor, 16 bits each",
+    invalid: Invalid::AllValid,
+    fields: &[
+        field("MINOR", 0, 16, "minor version"),
+        field("MAJOR", 16, 16, "major version"),
+    ],
+    doc: "Version of this register map (bumped when the table changes).",
+};
+/// Mode values of `CTRL.MODE`.
+pub mod mode {
+    /// All gates off.
+    pub const OFF: u32 = 0;
+    /// Gates follow the centre-aligned PWM comparators (PS-side FOC).
+    pub const FOC_PWM: u32 = 1;
+    /// Gates follow the predictive controller's switching state.
+    pub const MPDTC: u32 = 2;
+}
+/// Top/ID: control.
+pub const CTRL: Register = Register {
+    name: "CTRL",
+    offset: 0x008,
+    access: Access::Rw,
+    width: 2,
+    reset: mode::OFF,
+    format: "enum",
+    invalid: Invalid::Reject { max: mode::MPDTC },
+    fields: &[field(
+        "MODE",
+        0,
+        2,
+        "0 off, 1 FOC-PWM (PWM comparators), 2 MPDTC (switching state; until \
+         mpdtc_core exists, PWM.SW_STATE); 3 is rejected",
+    )],
+    doc: "Selects the source of the switching state.",
+};
+/// Top/ID: status.
+pub const STATUS: Register = Register {
+    name: "STATUS",
+    offset: 0x00C,
+    access: Access::Ro,
+    width: 4,
+    reset: 0,
+    format: "bits",
+    invalid: Invalid::AllValid,
+    fields: &[
+        field("MODE", 0, 2, "CTRL.MODE"),
+        field(
+            "GATES_ACTIVE",
+            2,
+            1,
+            "the gate driver is enabled (GATE_EN, mode not off, no fault)",
+        ),
+        field(
+            "FAULT",
+            3,
+            1,
+            "a fault is latched (FAULT.FAULT_STATUS != 0)",
+        ),
+    ],
+    doc: "Summary of the drive state.",
+};
+/// Top/ID: access errors.
+pub const ERR: Register = Register {
+    name: "ERR",
+    offset: 0x010,
+    access: Access::W1c,
+    width: 2,
+    reset: 0,
+    format: "bits, sticky",
+    invalid: Invalid::AllValid,
+    fields: &[
+        field("BAD_VALUE", 0, 1, "a write was rejected (out of range)"),
+        field(
+            "BAD_ADDR",
+            1,
+            1,
+            "an access hit an unmapped offset or wrote a read-only register (SLVERR)",
+        ),
+    ],
+    doc: "Sticky access-error flags.",
+};
+/// Top/ID: watchdog heartbeat.
+pub const HEARTBEAT: Register = Register {
+    name: "HEARTBEAT",
+    offset: 0x014,
+    access: Access::Rw,
+    width: 32,
+    reset: 0,
+    format: "any value",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "Every write restarts the watchdog (FAULT.WDG_TIMEOUT); reads back the last value.",
+};
+/// Top/ID: scratch register (bus tests).
+pub const SCRATCH: Register = Register {
+    name: "SCRATCH",
+    offset: 0x018,
+    access: Access::Rw,
+    width: 32,
+    reset: 0,
+    format: "any value",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "No effect; for bus tests.",
+};
+
+// ---------------------------------------------------------------- block 3
+/// PWM/gates: gate enable. Fixed by the lead: offset 0, bit 0, reset 0.
+pub const GATE_CTRL: Register = Register {
+    name: "GATE_CTRL",
+    offset: 0x000,
+    access: Access::Rw,
+    width: 1,
+    reset: 0,
+    format: "bit",
+    invalid: Invalid::AllValid,
+    fields: &[field(
+        "GATE_EN",
+        0,
+        1,
+        "1 = gates follow the selected controller, 0 = all gates off (safe \
+         state); cleared by the hardware when a fault latches",
+    )],
+    doc: "Gate enable.",
+};
+/// `GATE_CTRL.GATE_EN`.
+pub const GATE_CTRL_GATE_EN: u32 = 1;
+/// Largest dead time, in PL clock cycles (`gate_driver` `DT_W` = 10).
+pub const DEAD_TIME_MAX: u32 = 1023;
+/// PWM/gates: dead time.
+pub const DEAD_TIME: Register = Register {
+    name: "DEAD_TIME",
+    offset: 0x004,
+    access: Access::Rw,
+    width: 10,
+    reset: 50,
+    format: "unsigned, PL clock cycles (10 ns); 0 acts as 1",
+    invalid: Invalid::Clamp {
+        min: 0,
+        max: DEAD_TIME_MAX,
+    },
+    fields: &[],
+    doc: "Cycles with both gates of a leg off before either turns on (reset 500 ns).",
+};
+/// PWM/gates: PWM half period.
+pub const PWM_PERIOD: Register = Register {
+    name: "PWM_PERIOD",
+    offset: 0x008,
+    access: Access::Rw,
+    width: 16,
+    reset: 2500,
+    format: "unsigned, PL clock cycles",
+    invalid: Invalid::Clamp { min: 2, max: 65535 },
+    fields: &[],
+    doc: "Up-down counter top: f_pwm = 100 MHz / (2 PWM_PERIOD) (reset 20 kHz). \
+          Takes effect at the next counter bottom.",
+};
+const fn duty(name: &'static str, offset: u16) -> Register {
+    Register {
+        name,
+        offset,
+        access: Access::Rw,
+        width: 16,
+        reset: 1250,
+        format: "unsigned, PL clock cycles (compare value)",
+        invalid: Invalid::AllValid,
+        fields: &[],
+        doc: "Upper switch on while the counter < DUTY (centre aligned): duty = \
+              DUTY / PWM_PERIOD; >= PWM_PERIOD is 100 %. Loaded at the counter bottom.",
+    }
+}
+/// PWM/gates: duty of leg a.
+pub const DUTY_A: Register = duty("DUTY_A", 0x00C);
+/// PWM/gates: duty of leg b.
+pub const DUTY_B: Register = duty("DUTY_B", 0x010);
+/// PWM/gates: duty of leg c.
+pub const DUTY_C: Register = duty("DUTY_C", 0x014);
+/// PWM/gates: switching state for the MPDTC mode.
+pub const SW_STATE: Register = Register {
+    name: "SW_STATE",
+    offset: 0x018,
+    access: Access::Rw,
+    width: 3,
+    reset: 0,
+    format: "bits SaSbSc (index 4 Sa + 2 Sb + Sc)",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "Switching state applied in mode MPDTC (stand-in for the mpdtc_core output).",
+};
+/// PWM/gates: gate outputs.
+pub const GATE_STATUS: Register = Register {
+    name: "GATE_STATUS",
+    offset: 0x01C,
+    access: Access::Ro,
+    width: 9,
+    reset: 0,
+    format: "bits, leg a = highest bit of each field",
+    invalid: Invalid::AllValid,
+    fields: &[
+        field("HI", 0, 3, "upper gates (a, b, c = bits 2, 1, 0)"),
+        field("LO", 3, 3, "lower gates"),
+        field(
+            "STATE",
+            6,
+            3,
+            "switching state requested by the selected source",
+        ),
+    ],
+    doc: "Gate driver outputs as driven now.",
+};
+/// PWM/gates: PWM counter.
+pub const PWM_COUNT: Register = Register {
+    name: "PWM_COUNT",
+    offset: 0x020,
+    access: Access::Ro,
+    width: 17,
+    reset: 0,
+    format: "unsigned, PL clock cycles",
+    invalid: Invalid::AllValid,
+    fields: &[
+        field("COUNT", 0, 16, "up-down counter"),
+        field("DOWN", 16, 1, "1 while counting down"),
+    ],
+    doc: "Centre-aligned PWM counter.",
+};
+
+// ---------------------------------------------------------------- block 4
+/// ADC: control.
+pub const ADC_CTRL: Register = Register {
+    name: "ADC_CTRL",
+    offset: 0x000,
+    access: Access::Rw,
+    width: 1,
+    reset: 1,
+    format: "bit",
+    invalid: Invalid::AllValid,
+    fields: &[field(
+        "ENABLE",
+        0,
+        1,
+        "1 = convert every ADC_PERIOD (on from reset, so the over-current trip works)",
+    )],
+    doc: "ADC front-end control.",
+};
+/// ADC: sample period.
+pub const ADC_PERIOD: Register = Register {
+    name: "ADC_PERIOD",
+    offset: 0x004,
+    access: Access::Rw,
+    width: 16,
+    reset: 391,
+    format: "unsigned, PL clock cycles",
+    invalid: Invalid::Clamp {
+        min: 16,
+        max: 65535,
+    },
+    fields: &[],
+    doc: "Cycles between conversion starts: 391 = 255.75 kHz (nearest to the \
+          paper's 256 kHz); 4 samples are averaged, so results come at 1/4 of it.",
+};
+const fn adc_result(name: &'static str, offset: u16) -> Register {
+    Register {
+        name,
+        offset,
+        access: Access::Ro,
+        width: 16,
+        reset: 0,
+        format: "signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); \
+                 floor(sum of 4 / 4)",
+        invalid: Invalid::AllValid,
+        fields: &[],
+        doc: "Latest average of 4 samples of this phase current.",
+    }
+}
+/// ADC: phase a current.
+pub const ADC_IA: Register = adc_result("ADC_IA", 0x008);
+/// ADC: phase b current.
+pub const ADC_IB: Register = adc_result("ADC_IB", 0x00C);
+/// ADC: phase c current.
+pub const ADC_IC: Register = adc_result("ADC_IC", 0x010);
+/// ADC: result counter.
+pub const ADC_COUNT: Register = Register {
+    name: "ADC_COUNT",
+    offset: 0x014,
+    access: Access::Ro,
+    width: 32,
+    reset: 0,
+    format: "unsigned, wraps",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "Averaged results produced since reset.",
+};
+
+// ---------------------------------------------------------------- block 5
+/// Encoder: counts per revolution.
+pub const ENC_CPR: Register = Register {
+    name: "ENC_CPR",
+    offset: 0x000,
+    access: Access::Rw,
+    width: 16,
+    reset: 4096,
+    format: "unsigned, quadrature counts (4 per line) per mechanical revolution",
+    invalid: Invalid::Clamp { min: 4, max: 65535 },
+    fields: &[],
+    doc: "Position wraps at ENC_CPR.",
+};
+/// Encoder: position.
+pub const ENC_POS: Register = Register {
+    name: "ENC_POS",
+    offset: 0x004,
+    access: Access::Ro,
+    width: 16,
+    reset: 0,
+    format: "unsigned, counts in 0..ENC_CPR-1",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "Mechanical position; the index pulse sets it to 0.",
+};
+/// Encoder: speed.
+pub const ENC_SPEED: Register = Register {
+    name: "ENC_SPEED",
+    offset: 0x008,
+    access: Access::Ro,
+    width: 16,
+    reset: 0,
+    format: "signed 16-bit, counts per ENC_WINDOW (saturated)",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "Counts moved during the last complete window (positive = A leads B).",
+};
+/// Encoder: speed window.
+pub const ENC_WINDOW: Register = Register {
+    name: "ENC_WINDOW",
+    offset: 0x00C,
+    access: Access::Rw,
+    width: 24,
+    reset: 100_000,
+    format: "unsigned, PL clock cycles",
+    invalid: Invalid::Clamp {
+        min: 100,
+        max: 0x00FF_FFFF,
+    },
+    fields: &[],
+    doc: "Speed measurement window (reset 1 ms).",
+};
+/// Encoder: index pulses.
+pub const ENC_INDEX: Register = Register {
+    name: "ENC_INDEX",
+    offset: 0x010,
+    access: Access::Ro,
+    width: 16,
+    reset: 0,
+    format: "unsigned, wraps",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "Index pulses seen since reset.",
+};
+
+// ---------------------------------------------------------------- block 6
+/// Fault: latched faults.
+pub const FAULT_STATUS: Register = Register {
+    name: "FAULT_STATUS",
+    offset: 0x000,
+    access: Access::W1c,
+    width: 3,
+    reset: 0,
+    format: "bits, latched",
+    invalid: Invalid::AllValid,
+    fields: &[
+        field("OVERCURRENT", 0, 1, "|ADC sample| > OC_LIMIT on a phase"),
+        field("EXTERNAL", 1, 1, "external fault input asserted"),
+        field(
+            "WATCHDOG",
+            2,
+            1,
+            "no HEARTBEAT write for WDG_TIMEOUT cycles",
+        ),
+    ],
+    doc: "Any set bit forces all gates off (the clock after the condition) and \
+          clears GATE_EN; cleared by writing 1 once the condition is gone.",
+};
+/// Fault: live fault conditions.
+pub const FAULT_RAW: Register = Register {
+    name: "FAULT_RAW",
+    offset: 0x004,
+    access: Access::Ro,
+    width: 3,
+    reset: 0,
+    format: "bits, as FAULT_STATUS",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "The fault conditions now, unlatched.",
+};
+/// Fault: over-current limit.
+pub const OC_LIMIT: Register = Register {
+    name: "OC_LIMIT",
+    offset: 0x008,
+    access: Access::Rw,
+    width: 11,
+    reset: 1800,
+    format: "unsigned ADC counts (as ADC_IA)",
+    invalid: Invalid::Clamp { min: 0, max: 2047 },
+    fields: &[],
+    doc: "Trip when a raw sample's magnitude exceeds it (-2048 always trips).",
+};
+/// Fault: watchdog timeout.
+pub const WDG_TIMEOUT: Register = Register {
+    name: "WDG_TIMEOUT",
+    offset: 0x00C,
+    access: Access::Rw,
+    width: 32,
+    reset: 10_000_000,
+    format: "unsigned, PL clock cycles",
+    invalid: Invalid::Clamp {
+        min: 1000,
+        max: u32::MAX,
+    },
+    fields: &[],
+    doc: "Cycles without a HEARTBEAT write before the watchdog trips (reset 100 ms).",
+};
+
+/// Block 0.
+pub const TOP: Block = Block {
+    name: "TOP",
+    index: 0,
+    doc: "Identification, mode, status, heartbeat.",
+    registers: &[&ID, &VERSION, &CTRL, &STATUS, &ERR, &HEARTBEAT, &SCRATCH],
+};
+/// Block 1 (registers defined with `mpdtc_core`).
+pub const MPDTC: Block = Block {
+    name: "MPDTC",
+    index: 1,
+    doc: "Reserved for mpdtc_core (not implemented yet): every access is SLVERR.",
+    registers: &[],
+};
+/// Block 2 (registers defined with the MPDCC core).
+pub const MPDCC: Block = Block {
+    name: "MPDCC",
+    index: 2,
+    doc: "Reserved for the MPDCC core (not implemented yet): every access is SLVERR.",
+    registers: &[],
+};
+/// Block 3.
+pub const PWM: Block = Block {
+    name: "PWM",
+    index: 3,
+    doc: "Gate enable, dead time, centre-aligned PWM, switching state.",
+    registers: &[
+        &GATE_CTRL,
+        &DEAD_TIME,
+        &PWM_PERIOD,
+        &DUTY_A,
+        &DUTY_B,
+        &DUTY_C,
+        &SW_STATE,
+        &GATE_STATUS,
+        &PWM_COUNT,
+    ],
+};
+/// Block 4.
+pub const ADC: Block = Block {
+    name: "ADC",
+    index: 4,
+    doc: "ADC front end: 3 phase currents, sampled every ADC_PERIOD, averaged by 4.",
+    registers: &[
+        &ADC_CTRL,
+        &ADC_PERIOD,
+        &ADC_IA,
+        &ADC_IB,
+        &ADC_IC,
+        &ADC_COUNT,
+    ],
+};
+/// Block 5.
+pub const ENC: Block = Block {
+    name: "ENC",
+    index: 5,
+    doc: "Incremental encoder (A/B quadrature + index).",
+    registers: &[&ENC_CPR, &ENC_POS, &ENC_SPEED, &ENC_WINDOW, &ENC_INDEX],
+};
+/// Block 6.
+pub const FAULT: Block = Block {
+    name: "FAULT",
+    index: 6,
+    doc: "Over-current, external and watchdog faults, latched.",
+    registers: &[&FAULT_STATUS, &FAULT_RAW, &OC_LIMIT, &WDG_TIMEOUT],
+};
+/// Block 7.
+pub const CAPTURE: Block = Block {
+    name: "CAPTURE",
+    index: 7,
+    doc: "Reserved for the capture buffer (not implemented yet): every access is SLVERR.",
+    registers: &[],
+};
+
+/// Every block, in page order.
+pub const BLOCKS: [&Block; 8] = [&TOP, &MPDTC, &MPDCC, &PWM, &ADC, &ENC, &FAULT, &CAPTURE];
+
+/// Absolute address of `GATE_CTRL` (used by the panic handler).
+pub const GATE_CTRL_ADDR: usize = PWM.addr(&GATE_CTRL);
+/// Absolute address of `HEARTBEAT`.
+pub const HEARTBEAT_ADDR: usize = TOP.addr(&HEARTBEAT);
+/// Absolute address of `CTRL`.
+pub const CTRL_ADDR: usize = TOP.addr(&CTRL);
+/// Absolute address of `FAULT_STATUS`.
+pub const FAULT_STATUS_ADDR: usize = FAULT.addr(&FAULT_STATUS);
+
+/// The register at absolute address `addr`, with its block.
+pub fn lookup(addr: usize) -> Option<(&'static Block, &'static Register)> {
+    let rel = addr.checked_sub(BASE_ADDR)?;
+    let block = *BLOCKS.get(rel / BLOCK_SIZE)?;
+    let off = rel % BLOCK_SIZE;
+    block
+        .registers
+        .iter()
+        .find(|r| r.offset as usize == off)
+        .map(|r| (block, *r))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fixed_addresses() {
+        // Fixed by the lead (panic handler): block 3, offset 0, bit 0.
+        assert_eq!(GATE_CTRL_ADDR, 0x43C0_3000);
+        assert_eq!(GATE_CTRL_GATE_EN, 1 << GATE_CTRL.fields[0].lsb);
+        assert_eq!(GATE_CTRL.reset, 0);
+        assert_eq!(HEARTBEAT_ADDR, 0x43C0_0014);
+        let names: Vec<&str> = BLOCKS.iter().map(|b| b.name).collect();
+        assert_eq!(
+            names,
+            ["TOP", "MPDTC", "MPDCC", "PWM", "ADC", "ENC", "FAULT", "CAPTURE"]
+        );
+        for (i, b) in BLOCKS.iter().enumerate() {
+            assert_eq!(b.index as usize, i);
+        }
+    }
+
+    /// The table is consistent: aligned unique offsets inside the page,
+    /// unique names, reset values inside the implemented bits and valid for
+    /// their own invalid-value rule, fields inside the width, no overlap.
+    #[test]
+    fn table_is_consistent() {
+        let mut names = Vec::new();
+        for b in BLOCKS {
+            let mut last = None;
+            for r in b.registers {
+                assert_eq!(r.offset % 4, 0, "{}", r.name);
+                assert!((r.offset as usize) < BLOCK_SIZE, "{}", r.name);
+                assert!(last.is_none_or(|l| l < r.offset), "{} not sorted", r.name);
+                last = Some(r.offset);
+                assert!((1..=32).contains(&r.width), "{}", r.name);
+                assert_eq!(r.reset & !r.mask(), 0, "{} reset", r.name);
+                if r.access == Access::Rw {
+                    assert_eq!(r.apply_write(0, r.reset), Ok(r.reset), "{}", r.name);
+                }
+                let mut used = 0u64;
+                for f in r.fields {
+                    let m = ((1u64 << f.width) - 1) << f.lsb;
+                    assert!(f.lsb + f.width <= r.width, "{}.{}", r.name, f.name);
+                    assert_eq!(used & m, 0, "{}.{} overlaps", r.name, f.name);
+                    used |= m;
+                }
+                assert!(!names.contains(&r.name), "duplicate {}", r.name);
+                names.push(r.name);
+            }
+        }
+    }
+
+    #[test]
+    fn write_rules() {
+        assert_eq!(DEAD_TIME.apply_write(50, 5000), Ok(1023));
+        // The whole word is clamped, not wrapped into the width.
+        assert_eq!(DEAD_TIME.apply_write(50, 0x400), Ok(1023));
+        assert_eq!(OC_LIMIT.apply_write(0, 0x8000_0000), Ok(2047));
+        // All-valid registers drop the bits above their width.
+        assert_eq!(SW_STATE.apply_write(0, 0xF), Ok(7));
+        assert_eq!(PWM_PERIOD.apply_write(9, 1), Ok(2));
+        assert_eq!(CTRL.apply_write(1, 3), Err(RegError::Rejected));
+        assert_eq!(CTRL.apply_write(1, 2), Ok(2));
+        assert_eq!(ID.apply_write(ID_VALUE, 0), Err(RegError::ReadOnly));
+        assert_eq!(FAULT_STATUS.apply_write(0b111, 0b010), Ok(0b101));
+        assert_eq!(WDG_TIMEOUT.apply_write(0, 0), Ok(1000));
+        assert_eq!(WDG_TIMEOUT.apply_write(0, u32::MAX), Ok(u32::MAX));
+    }
+
+    #[test]
+    fn lookup_finds_registers() {
+        assert_eq!(lookup(0x43C0_3000).map(|(_, r)| r.name), Some("GATE_CTRL"));
+        assert_eq!(
+            lookup(0x43C0_6008).map(|(b, r)| (b.name, r.name)),
+            Some(("FAULT", "OC_LIMIT"))
+        );
+        assert_eq!(lookup(0x43C0_1000), None);
+        assert_eq!(lookup(0x43C0_3002), None);
+        assert_eq!(lookup(0x43C0_8000), None);
+        assert_eq!(lookup(0x1000), None);
+    }
+}
