@@ -5,6 +5,8 @@
 //! - [`plant`]: exact (zero-order hold) surface PMSM + inverter model.
 //! - [`measure`]: 256 kHz sampling and averaging (the measurement chain).
 //! - [`sim`]: the `Controller` trait and the closed-loop runner.
+//! - [`svpwm`], [`foc`]: the FOC baseline (PI + centre-aligned SVPWM).
+//! - [`metrics`]: settling time, overshoot, switching frequency, ripple.
 pub mod frames;
 pub mod measure;
 pub mod params;
@@ -13,3 +15,6 @@ pub mod sim;
 pub mod mpdtc_ctrl;
 pub mod mpdtc_ref;
 pub mod observer;
+pub mod foc;
+pub mod metrics;
+pub mod svpwm;

@@ -225,32 +225,15 @@ impl Plant {
             return;
         }
         let t0 = self.torque_nm();
-        let m = &self.motor;
-        let (r, l, psi) = (m.r_s_ohm, m.l_d_h, m.psi_pm_wb);
         let w = self.st.omega_e_rad_s;
-        let a = r / l;
-        let em1 = libm::expm1(-a * h_s); // E - 1, accurate for small h
-        let e = 1.0 + em1;
-        let (i0a, i0b) = (self.st.i_alpha_a, self.st.i_beta_a);
-        // Homogeneous + input parts.
-        let mut ia = e * i0a - em1 / r * u_alpha_v;
-        let mut ib = e * i0b - em1 / r * u_beta_v;
-        // Back-EMF part: -(psi/L) * c * n / (a + j w), c = j w e^{j th0},
-        // n = e^{j w h} - E = (cos wh - 1) - (E - 1) + j sin wh.
-        if w != 0.0 {
-            let (s0, c0) = libm::sincos(self.st.theta_e_rad);
-            let (sh, _) = libm::sincos(0.5 * w * h_s);
-            let (swh, _) = libm::sincos(w * h_s);
-            let (nr, ni) = (-2.0 * sh * sh - em1, swh);
-            let (cr, ci) = (-w * s0, w * c0);
-            // c * n
-            let (pr, pi) = (cr * nr - ci * ni, cr * ni + ci * nr);
-            // / (a + j w)  = * (a - j w) / (a^2 + w^2)
-            let den = a * a + w * w;
-            let (qr, qi) = ((pr * a + pi * w) / den, (pi * a - pr * w) / den);
-            ia -= psi / l * qr;
-            ib -= psi / l * qi;
-        }
+        let (ia, ib) = zoh_alpha_beta(
+            &self.motor,
+            (self.st.i_alpha_a, self.st.i_beta_a),
+            (u_alpha_v, u_beta_v),
+            self.st.theta_e_rad,
+            w,
+            h_s,
+        );
         self.st.i_alpha_a = ia;
         self.st.i_beta_a = ib;
         self.st.theta_e_rad = wrap_2pi(self.st.theta_e_rad + w * h_s);
@@ -398,6 +381,43 @@ impl Plant {
         }
         Ok(())
     }
+}
+
+/// Exact solution of the alpha-beta current equation over `h_s` seconds with a
+/// constant stator voltage `u_ab`, V, constant speed `omega_e_rad_s` and angle
+/// `theta_e_rad` at the start (closed form in the module doc; uses `r_s_ohm`,
+/// `l_d_h` and `psi_pm_wb` of `motor`, surface PMSM). Returns `(i_alpha, i_beta)`, A.
+pub fn zoh_alpha_beta(
+    motor: &MotorParams,
+    i_ab: (f64, f64),
+    u_ab: (f64, f64),
+    theta_e_rad: f64,
+    omega_e_rad_s: f64,
+    h_s: f64,
+) -> (f64, f64) {
+    let (r, l, psi) = (motor.r_s_ohm, motor.l_d_h, motor.psi_pm_wb);
+    let w = omega_e_rad_s;
+    let a = r / l;
+    let em1 = libm::expm1(-a * h_s); // E - 1, accurate for small h
+    let e = 1.0 + em1;
+    // Homogeneous + input parts.
+    let mut ia = e * i_ab.0 - em1 / r * u_ab.0;
+    let mut ib = e * i_ab.1 - em1 / r * u_ab.1;
+    // Back-EMF part: -(psi/L) * c * n / (a + j w), c = j w e^{j th0},
+    // n = e^{j w h} - E = (cos wh - 1) - (E - 1) + j sin wh.
+    if w != 0.0 {
+        let (s0, c0) = libm::sincos(theta_e_rad);
+        let (sh, _) = libm::sincos(0.5 * w * h_s);
+        let (swh, _) = libm::sincos(w * h_s);
+        let (nr, ni) = (-2.0 * sh * sh - em1, swh);
+        let (cr, ci) = (-w * s0, w * c0);
+        let (pr, pi) = (cr * nr - ci * ni, cr * ni + ci * nr);
+        let den = a * a + w * w;
+        let (qr, qi) = ((pr * a + pi * w) / den, (pi * a - pr * w) / den);
+        ia -= psi / l * qr;
+        ib -= psi / l * qi;
+    }
+    (ia, ib)
 }
 
 /// Wraps an angle into `[0, 2 pi)`.

@@ -1,0 +1,453 @@
+//! FOC baseline of paper 000 (Section 4: "a PI current controller with the
+//! SVPWM ... with a control frequency of 16 kHz"), built to be a strong
+//! baseline.
+//!
+//! Structure at control instant `t_k` (period `T`):
+//! 1. **Measurement lag**: the mean of the last 4 ADC samples describes
+//!    `t_k - 1.5 T_adc` (5.86 us). With centre-aligned PWM that window lies in
+//!    the 000 zero vector at the end of the period (checked from the duties),
+//!    so the FOC propagates the measurement to `t_k` with zero voltage using
+//!    its model; this removes the ripple bias of the sampled current.
+//! 2. **One-step delay compensation**: the voltage applied during
+//!    `[t_k, t_{k+1})` was decided at `t_{k-1}` and is known, so the current at
+//!    `t_{k+1}` is predicted with the exact ZOH model
+//!    ([`zoh_alpha_beta`], controller's own parameters) and the PI acts on
+//!    `i* - i_hat(k+1)`. The new voltage is applied during `[t_{k+1}, t_{k+2})`
+//!    and is rotated to alpha-beta with the angle at the middle of that
+//!    interval, `theta_k + 1.5 omega T`. The one-step prediction error
+//!    `i(k) - i_hat(k | k-1)` is learned by a first-order low-pass (gain 0.1
+//!    per period) and added to the prediction, so that a wrong model in the
+//!    controller leaves no steady-state error (a Smith-predictor-like fix).
+//! 3. **Decoupling and back-EMF feed-forward**: `u_d = v_d - omega L_q i_q`,
+//!    `u_q = v_q + omega (L_d i_d + psi)` with the predicted currents.
+//! 4. **PI per axis, tuned by discrete pole-zero cancellation** (the rule):
+//!    per axis the decoupled plant seen by the PI, once the delay is
+//!    compensated, is `i(k+1) = a i(k) + b v(k)`, `a = e^{-R T/L}`,
+//!    `b = (1 - a)/R`. The PI `C(z) = K_p (z - a)/(z - 1)` cancels the pole
+//!    `a`, leaving the closed loop `b K_p/(z - 1 + b K_p)`: one real pole
+//!    `z_c = 1 - b K_p`, placed at `z_c = e^{-2 pi f_c T}` with
+//!    `f_c = f_s / 4` (4 kHz at 16 kHz, `z_c = e^{-pi/2} = 0.21`):
+//!    `K_p = (1 - z_c)/b` (6.5 V/A), `K_i = K_p (1 - a)/T` (~ `K_p R/L`).
+//!    Why `f_s/4`: the response is first order with no overshoot for the
+//!    exact model, and with `L` 30 % high in the controller the pole moves to
+//!    `1 - 1.3 (1 - z_c) = -0.03`, still non-oscillatory; `f_c = f_s/5`
+//!    (3 kHz) settles slower (0.26 ms vs 0.23 ms), `f_c = f_s/3.2` (5 kHz)
+//!    settles slower too (its overshoot sits at the 5 % band edge).
+//! 5. **Anti-windup**: the PI is implemented as `v = K_p e + x` with
+//!    `x(k+1) = a x(k) + (1 - a) v_sat(k)` (a proportional gain plus positive
+//!    feedback of the *saturated* output through the plant's lag, which is
+//!    algebraically the PI above). When the voltage saturates, `x` follows
+//!    what was really applied, so there is no windup and no slow tail.
+//! 6. **Voltage limit**: the dq voltage is limited to the SVPWM linear range
+//!    `U_dc / sqrt(3)`, d axis first (keeps `i_d` controlled at speed), then
+//!    **SVPWM** by min-max injection, centre-aligned ([`svpwm::duties`]).
+//!
+//! Current reference: `i_d* = 0`, `i_q* = T* / (1.5 p psi)` (surface PMSM).
+//!
+//! Measured (tests below, 0.4 N m step at 0.1 ms, 16 kHz, exact model,
+//! torque sampled at 256 kHz, 5 % band): settling 0.228 ms, overshoot 3.9 %
+//! at standstill; 0.232 ms / 4.6 % at 300 rad/s electrical. The step is
+//! voltage-limited: 4.1 A in 0.64 mH at 27.7 V needs at least 95 us.
+
+use super::frames::{clarke, inv_park, leg_voltage_alpha_beta, park};
+use super::params::{check_pos, MotorParams, ParamError};
+use super::plant::{zoh_alpha_beta, Actuation};
+use super::sim::{Controller, Measurement};
+use super::svpwm;
+use core::f64::consts::PI;
+
+/// FOC settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "std", serde(default, deny_unknown_fields))]
+pub struct FocParams {
+    /// Control and PWM period, s (paper: 1/16 kHz).
+    pub period_s: f64,
+    /// Closed-loop current bandwidth `f_c`, Hz (pole at `e^{-2 pi f_c T}`);
+    /// default `f_s / 4` = 4 kHz.
+    pub bandwidth_hz: f64,
+    /// Voltage limit as a fraction of the SVPWM linear range `U_dc/sqrt(3)` (0..=1).
+    pub voltage_limit_fraction: f64,
+    /// Predict the current one period ahead (one-step delay compensation).
+    pub delay_compensation: bool,
+    /// Cross-coupling and back-EMF feed-forward.
+    pub decoupling: bool,
+    /// Age of the averaged measurement, s: the mean of `n` samples at
+    /// 256 kHz describes the instant `(n - 1)/2` samples before the newest
+    /// (paper: n = 4, 1.5 / 256 kHz = 5.86 us). The FOC propagates the
+    /// measurement over this lag with its model (0 disables).
+    pub measurement_lag_s: f64,
+    /// Gain (0..1) of the low-pass that learns the one-step prediction error
+    /// `i(k) - i_hat(k | k-1)` in dq and adds it to the prediction, so a model
+    /// mismatch leaves no steady-state error (0 disables).
+    pub prediction_error_gain: f64,
+}
+
+impl Default for FocParams {
+    fn default() -> Self {
+        Self {
+            period_s: 1.0 / 16_000.0,
+            bandwidth_hz: 4_000.0,
+            voltage_limit_fraction: 1.0,
+            delay_compensation: true,
+            decoupling: true,
+            measurement_lag_s: 1.5 / 256_000.0,
+            prediction_error_gain: 0.1,
+        }
+    }
+}
+
+impl FocParams {
+    /// Period and bandwidth finite and > 0, bandwidth below `f_s / 2`,
+    /// voltage limit fraction in `(0, 1]`.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        check_pos("period_s", self.period_s)?;
+        check_pos("bandwidth_hz", self.bandwidth_hz)?;
+        if self.bandwidth_hz * self.period_s >= 0.5 {
+            return Err(ParamError {
+                field: "bandwidth_hz",
+                reason: "must be below f_s / 2",
+            });
+        }
+        check_pos("voltage_limit_fraction", self.voltage_limit_fraction)?;
+        if self.voltage_limit_fraction > 1.0 {
+            return Err(ParamError {
+                field: "voltage_limit_fraction",
+                reason: "must be <= 1",
+            });
+        }
+        Ok(())
+    }
+}
+
+/// PI gains of one axis from the tuning rule.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PiGains {
+    /// Proportional gain, V/A.
+    pub kp_v_per_a: f64,
+    /// Integral gain, V/(A s).
+    pub ki_v_per_a_s: f64,
+    /// Plant pole `a = e^{-R T / L}` (cancelled by the PI zero).
+    pub a: f64,
+    /// Closed-loop pole `z_c`.
+    pub z_c: f64,
+}
+
+/// Tuning rule of the module doc for resistance `r_ohm`, inductance `l_h`.
+pub fn tune(r_ohm: f64, l_h: f64, period_s: f64, bandwidth_hz: f64) -> PiGains {
+    let a = libm::exp(-r_ohm * period_s / l_h);
+    let b = (1.0 - a) / r_ohm;
+    let z_c = libm::exp(-2.0 * PI * bandwidth_hz * period_s);
+    let kp = (1.0 - z_c) / b;
+    PiGains {
+        kp_v_per_a: kp,
+        ki_v_per_a_s: kp * (1.0 - a) / period_s,
+        a,
+        z_c,
+    }
+}
+
+/// The FOC current/torque controller.
+#[derive(Debug, Clone)]
+pub struct Foc {
+    motor: MotorParams,
+    p: FocParams,
+    gd: PiGains,
+    gq: PiGains,
+    /// Lag states of the PI (see module doc), V.
+    x_d: f64,
+    x_q: f64,
+    /// Average alpha-beta voltage applied in the period that just ended, V.
+    u_prev_ab: (f64, f64),
+    /// Average alpha-beta voltage of the decision being applied now, V.
+    u_now_ab: (f64, f64),
+    /// Largest duty of the decision applied in the period that just ended.
+    d_max_prev: f64,
+    /// Largest duty of the decision being applied now.
+    d_max_now: f64,
+    /// Largest duty of the last decision (applied next).
+    d_max_next: f64,
+    /// Average alpha-beta voltage of the last decision (applied next), V.
+    u_next_ab: (f64, f64),
+    /// Prediction made at the previous instant for this one (dq, A).
+    pred_dq: Option<(f64, f64)>,
+    /// Learned prediction error (dq, A).
+    eps_dq: (f64, f64),
+    /// Number of periods in which the voltage limit was active.
+    pub saturated_periods: u64,
+}
+
+impl Foc {
+    /// A FOC using `motor` as its model (may differ from the plant).
+    pub fn new(motor: &MotorParams, p: &FocParams) -> Result<Self, ParamError> {
+        motor.validate()?;
+        p.validate()?;
+        Ok(Self {
+            motor: *motor,
+            p: *p,
+            gd: tune(motor.r_s_ohm, motor.l_d_h, p.period_s, p.bandwidth_hz),
+            gq: tune(motor.r_s_ohm, motor.l_q_h, p.period_s, p.bandwidth_hz),
+            x_d: 0.0,
+            x_q: 0.0,
+            u_prev_ab: (0.0, 0.0),
+            u_now_ab: (0.0, 0.0),
+            u_next_ab: (0.0, 0.0),
+            d_max_prev: 0.5,
+            d_max_now: 0.5,
+            d_max_next: 0.5,
+            pred_dq: None,
+            eps_dq: (0.0, 0.0),
+            saturated_periods: 0,
+        })
+    }
+
+    /// Gains of the d and q axes.
+    pub fn gains(&self) -> (PiGains, PiGains) {
+        (self.gd, self.gq)
+    }
+}
+
+impl Controller for Foc {
+    fn period_s(&self) -> f64 {
+        self.p.period_s
+    }
+
+    fn initial_actuation(&self) -> Actuation {
+        Actuation::DutyAbc([0.5; 3])
+    }
+
+    fn step(&mut self, m: &Measurement, torque_ref_nm: f64) -> Actuation {
+        let t = self.p.period_s;
+        let mo = &self.motor;
+        // Decision of the previous instant is applied during [t_k, t_{k+1}).
+        self.u_prev_ab = self.u_now_ab;
+        self.u_now_ab = self.u_next_ab;
+        self.d_max_prev = self.d_max_now;
+        self.d_max_now = self.d_max_next;
+        let w = if m.omega_e_rad_s.is_finite() {
+            m.omega_e_rad_s
+        } else {
+            0.0
+        };
+        let lag = self.p.measurement_lag_s;
+        // The averaged current and angle describe t_k - lag. The averaging
+        // window ends the previous period, in its 000 zero vector when the
+        // largest duty leaves room for it (centre-aligned PWM); propagate
+        // over the lag with zero voltage then, else with the period's mean.
+        let u_win = if (1.0 - self.d_max_prev) * 0.5 * t >= 2.0 * lag {
+            (0.0, 0.0)
+        } else {
+            self.u_prev_ab
+        };
+        let i_ab = zoh_alpha_beta(
+            mo,
+            clarke(m.i_abc_a),
+            u_win,
+            m.theta_e_rad - w * lag,
+            w,
+            lag,
+        );
+        let th = m.theta_e_rad;
+        let g = self.p.prediction_error_gain;
+        if let Some((pd, pq)) = self.pred_dq {
+            let (md, mq) = park(i_ab.0, i_ab.1, th);
+            self.eps_dq.0 += g * (md - pd - self.eps_dq.0);
+            self.eps_dq.1 += g * (mq - pq - self.eps_dq.1);
+        }
+        let (id, iq) = if self.p.delay_compensation {
+            let i_ab1 = zoh_alpha_beta(mo, i_ab, self.u_now_ab, th, w, t);
+            let (pd, pq) = park(i_ab1.0, i_ab1.1, th + w * t);
+            self.pred_dq = Some((pd, pq));
+            (pd + self.eps_dq.0, pq + self.eps_dq.1)
+        } else {
+            park(i_ab.0, i_ab.1, th)
+        };
+        let t_ref = if torque_ref_nm.is_finite() {
+            torque_ref_nm
+        } else {
+            0.0
+        };
+        let (id_ref, iq_ref) = (0.0, t_ref / mo.k_t_nm_per_a());
+        let (ed, eq) = (id_ref - id, iq_ref - iq);
+        let (ff_d, ff_q) = if self.p.decoupling {
+            (-w * mo.l_q_h * iq, w * (mo.l_d_h * id + mo.psi_pm_wb))
+        } else {
+            (0.0, 0.0)
+        };
+        let vd = self.gd.kp_v_per_a * ed + self.x_d;
+        let vq = self.gq.kp_v_per_a * eq + self.x_q;
+        // Voltage limit, d axis first.
+        let u_max = self.p.voltage_limit_fraction * svpwm::linear_limit_v(mo.u_dc_v);
+        let ud = (vd + ff_d).clamp(-u_max, u_max);
+        let uq_max = libm::sqrt((u_max * u_max - ud * ud).max(0.0));
+        let uq = (vq + ff_q).clamp(-uq_max, uq_max);
+        if ud != vd + ff_d || uq != vq + ff_q {
+            self.saturated_periods += 1;
+        }
+        // Anti-windup lag fed with the applied (saturated) PI output.
+        self.x_d = self.gd.a * self.x_d + (1.0 - self.gd.a) * (ud - ff_d);
+        self.x_q = self.gq.a * self.x_q + (1.0 - self.gq.a) * (uq - ff_q);
+        // Applied during [t_{k+1}, t_{k+2}): rotate with the mid-interval angle.
+        let th_mid = th + 1.5 * w * t;
+        let (ua, ub) = inv_park(ud, uq, th_mid);
+        let (d, _) = svpwm::duties(ua, ub, mo.u_dc_v);
+        self.u_next_ab = leg_voltage_alpha_beta(d, mo.u_dc_v);
+        self.d_max_next = d[0].max(d[1]).max(d[2]);
+        Actuation::DutyAbc(d)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pmsm::metrics::{overshoot_percent, settling_band, settling_time_s};
+    use crate::pmsm::params::DriveParams;
+    use crate::pmsm::plant::{MechanicalMode, Plant};
+    use crate::pmsm::sim::{run, TracePoint};
+    use std::vec::Vec;
+
+    const T_STEP: f64 = 0.1e-3;
+
+    /// Runs a 0 -> `t1` N m step at 0.1 ms for `t_end` s at constant speed `w_e`.
+    fn step_trace(
+        plant_m: &MotorParams,
+        ctrl_m: &MotorParams,
+        w_e: f64,
+        t1: f64,
+        t_end: f64,
+    ) -> (Vec<TracePoint>, Foc) {
+        let fp = FocParams::default();
+        let mut plant = Plant::new(plant_m, 0.0, MechanicalMode::ConstantSpeed, w_e).unwrap();
+        let mut foc = Foc::new(ctrl_m, &fp).unwrap();
+        let n = libm::round(t_end / fp.period_s) as u64;
+        let mut tr = Vec::new();
+        let r = |t: f64| if t >= T_STEP { t1 } else { 0.0 };
+        run(&mut plant, &mut foc, &DriveParams::default(), n, r, |p| {
+            tr.push(*p)
+        })
+        .unwrap();
+        (tr, foc)
+    }
+
+    struct StepStats {
+        settle_s: Option<f64>,
+        overshoot_pct: f64,
+        late_mean_nm: f64,
+        late_id_max_a: f64,
+    }
+
+    fn stats(tr: &[TracePoint], t1: f64, t_end: f64) -> StepStats {
+        let s = || tr.iter().map(|p| (p.t_s, p.torque_nm));
+        let late: Vec<&TracePoint> = tr.iter().filter(|p| p.t_s > t_end - 1e-3).collect();
+        StepStats {
+            settle_s: settling_time_s(s(), T_STEP, t_end, t1, settling_band(0.0, t1)),
+            overshoot_pct: overshoot_percent(s(), T_STEP, t_end, 0.0, t1),
+            late_mean_nm: late.iter().map(|p| p.torque_nm).sum::<f64>() / late.len() as f64,
+            late_id_max_a: late.iter().map(|p| p.i_d_a.abs()).fold(0.0, f64::max),
+        }
+    }
+
+    #[test]
+    fn tuning_rule_hand_computed() {
+        // a = exp(-0.555 * 62.5e-6 / 0.64e-3), z_c = exp(-2 pi 4000 / 16000) = exp(-pi/2).
+        let g = tune(0.555, 0.64e-3, 62.5e-6, 4000.0);
+        let a = (-0.054_199_218_75f64).exp();
+        let zc = (-core::f64::consts::FRAC_PI_2).exp();
+        assert!((g.a - a).abs() < 1e-15 && (g.z_c - zc).abs() < 1e-15);
+        let kp = (1.0 - zc) * 0.555 / (1.0 - a);
+        assert!((g.kp_v_per_a - kp).abs() < 1e-12, "{}", g.kp_v_per_a);
+        // K_i / K_p = (1 - a)/T ~ R/L: the PI zero sits on the plant pole.
+        assert!((g.ki_v_per_a_s / g.kp_v_per_a - (1.0 - a) / 62.5e-6).abs() < 1e-9);
+        assert!((g.ki_v_per_a_s / g.kp_v_per_a / (0.555 / 0.64e-3) - 1.0).abs() < 0.03);
+        assert!(FocParams {
+            bandwidth_hz: 8000.0,
+            ..Default::default()
+        }
+        .validate()
+        .is_err());
+        assert!(FocParams {
+            voltage_limit_fraction: 1.5,
+            ..Default::default()
+        }
+        .validate()
+        .is_err());
+        assert!(FocParams {
+            period_s: f64::NAN,
+            ..Default::default()
+        }
+        .validate()
+        .is_err());
+    }
+
+    /// The paper's FOC figure: 0.4 N m step settles in <= 0.27 ms with <= 5 % overshoot.
+    #[test]
+    fn step_0p4_nm_meets_the_paper_foc_figure() {
+        let m = MotorParams::default();
+        for &w in &[0.0, 300.0] {
+            let (tr, foc) = step_trace(&m, &m, w, 0.4, 3e-3);
+            let st = stats(&tr, 0.4, 3e-3);
+            let ts = st.settle_s.unwrap();
+            assert!(ts <= 0.27e-3, "w {w}: settling {ts}");
+            assert!(
+                st.overshoot_pct <= 5.0,
+                "w {w}: overshoot {}",
+                st.overshoot_pct
+            );
+            // Steady state within 1 % (the sampled current, not the period mean, is regulated).
+            assert!(
+                (st.late_mean_nm - 0.4).abs() < 0.004,
+                "w {w}: {}",
+                st.late_mean_nm
+            );
+            assert!(st.late_id_max_a < 0.1, "w {w}: i_d {}", st.late_id_max_a);
+            // The step is voltage-limited: the first period after the step saturates.
+            assert!(foc.saturated_periods >= 1);
+        }
+    }
+
+    /// Anti-windup: a long saturation (1.5 N m step) does not overshoot.
+    #[test]
+    fn large_step_does_not_wind_up() {
+        let m = MotorParams::default();
+        let (tr, foc) = step_trace(&m, &m, 0.0, 1.5, 3e-3);
+        assert!(foc.saturated_periods >= 3, "{}", foc.saturated_periods);
+        let st = stats(&tr, 1.5, 3e-3);
+        assert!(st.overshoot_pct <= 5.0, "{}", st.overshoot_pct);
+        assert!(st.settle_s.unwrap() < 0.6e-3, "{:?}", st.settle_s);
+    }
+
+    /// R and L off by +-30 % in the controller: stable, and the learned
+    /// prediction error removes the steady-state error (mean within 1 % over
+    /// 5..6 ms). The overshoot grows to ~17 % with L 30 % high (the one-step
+    /// prediction then underestimates the current rise under the saturated
+    /// first period): a property of any model-based delay compensation.
+    #[test]
+    fn robust_to_30_percent_model_error() {
+        let m = MotorParams::default();
+        for &(fr, fl) in &[(0.7, 0.7), (1.3, 1.3), (0.7, 1.3), (1.3, 0.7)] {
+            let c = MotorParams {
+                r_s_ohm: m.r_s_ohm * fr,
+                l_d_h: m.l_d_h * fl,
+                l_q_h: m.l_q_h * fl,
+                ..m
+            };
+            let (tr, _) = step_trace(&m, &c, 300.0, 0.4, 6e-3);
+            let st = stats(&tr, 0.4, 6e-3);
+            assert!(
+                st.overshoot_pct <= 20.0,
+                "R {fr} L {fl}: {}",
+                st.overshoot_pct
+            );
+            assert!(
+                (st.late_mean_nm - 0.4).abs() < 0.004,
+                "R {fr} L {fl}: {}",
+                st.late_mean_nm
+            );
+            assert!(
+                st.late_id_max_a < 0.3,
+                "R {fr} L {fl}: {}",
+                st.late_id_max_a
+            );
+        }
+    }
+}
