@@ -1,1 +1,40 @@
-fn main() {}
+//! Links the bare-metal image (memory.x from the repository root, cortex-a-rt's
+//! link.x, defmt.x) and records the git hash and build profile for `version`.
+use std::{env, fs, path::PathBuf, process::Command};
+
+fn main() {
+    let root = PathBuf::from(env::var("CARGO_MANIFEST_DIR").unwrap()).join("..");
+    let out = PathBuf::from(env::var("OUT_DIR").unwrap());
+
+    let git = |args: &[&str]| {
+        Command::new("git")
+            .args(args)
+            .current_dir(&root)
+            .output()
+            .ok()
+            .filter(|o| o.status.success())
+            .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+    };
+    let hash = git(&["rev-parse", "--short=12", "HEAD"]).unwrap_or_else(|| "unknown".into());
+    let dirty = git(&["status", "--porcelain", "--untracked-files=no"])
+        .map(|s| !s.is_empty())
+        .unwrap_or(false);
+    let hash = if dirty { format!("{hash}-dirty") } else { hash };
+    println!("cargo:rustc-env=FW_GIT_HASH={hash}");
+    println!("cargo:rustc-env=FW_PROFILE={}", env::var("PROFILE").unwrap());
+    // Re-run when HEAD moves (a commit, a checkout) or the index changes.
+    for f in [".git/HEAD", ".git/index"] {
+        if root.join(f).exists() {
+            println!("cargo:rerun-if-changed={}", root.join(f).display());
+        }
+    }
+
+    if env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("none") {
+        fs::copy(root.join("memory.x"), out.join("memory.x")).expect("memory.x");
+        println!("cargo:rustc-link-search={}", out.display());
+        println!("cargo:rerun-if-changed={}", root.join("memory.x").display());
+        println!("cargo:rustc-link-arg-bins=-Tlink.x");
+        println!("cargo:rustc-link-arg-bins=-Tdefmt.x");
+    }
+    println!("cargo:rerun-if-changed=build.rs");
+}

@@ -17,3 +17,4 @@ pub mod gates;
 pub mod mpdcc;
 pub mod pmsm;
 pub mod regmap;
+pub mod zynq;

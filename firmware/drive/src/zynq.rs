@@ -1,0 +1,93 @@
+//! Pure arithmetic for the Zynq-7000 PS peripherals the firmware programs
+//! (kept here so that it is tested on the host).
+
+/// Baud-rate generator setting of the Cadence UART (Zynq TRM, UG585 ch. 19):
+/// `baud = ref_clk / (cd * (bdiv + 1))`, `cd` in 1..=65535, `bdiv` in 4..=254.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct UartDivisors {
+    /// `BAUDGEN.CD`.
+    pub cd: u16,
+    /// `BAUD_RATE_DIVIDER.BDIV`.
+    pub bdiv: u8,
+}
+
+impl UartDivisors {
+    /// The baud rate these divisors give from `ref_clk_hz`, Hz.
+    pub fn baud(&self, ref_clk_hz: u32) -> u32 {
+        ref_clk_hz / (u32::from(self.cd) * (u32::from(self.bdiv) + 1))
+    }
+}
+
+/// The divisors closest to `baud`, or `None` when no setting is within
+/// 2 % (the tolerance of an 8N1 frame, with margin for the far end).
+pub fn uart_divisors(ref_clk_hz: u32, baud: u32) -> Option<UartDivisors> {
+    if baud == 0 {
+        return None;
+    }
+    let mut best: Option<(u64, UartDivisors)> = None;
+    for bdiv in 4u32..=254 {
+        let denom = u64::from(baud) * u64::from(bdiv + 1);
+        let cd = ((u64::from(ref_clk_hz) + denom / 2) / denom).clamp(1, 65535);
+        let actual = u64::from(ref_clk_hz) / (cd * u64::from(bdiv + 1));
+        let err = actual.abs_diff(u64::from(baud));
+        if best.is_none_or(|(e, _)| err < e) {
+            best = Some((
+                err,
+                UartDivisors {
+                    cd: cd as u16,
+                    bdiv: bdiv as u8,
+                },
+            ));
+        }
+    }
+    best.filter(|(err, _)| err * 50 <= u64::from(baud))
+        .map(|(_, d)| d)
+}
+
+/// Load value of the A9 private timer for a periodic interrupt at `rate_hz`
+/// from its clock `clk_hz` (the timer counts `load + 1` cycles per period).
+/// `None` when the rate is zero or above the clock.
+pub fn private_timer_load(clk_hz: u32, rate_hz: u32) -> Option<u32> {
+    if rate_hz == 0 || rate_hz > clk_hz {
+        return None;
+    }
+    Some(clk_hz / rate_hz - 1)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn divisors_for_115200_from_50_and_100_mhz() {
+        // Hand-computed: 50 MHz / (62 * 7) = 115207 Hz (+0.006 %).
+        let d = uart_divisors(50_000_000, 115_200).unwrap();
+        assert_eq!(d.baud(50_000_000), 115_207);
+        let d = uart_divisors(100_000_000, 115_200).unwrap();
+        assert!(d.baud(100_000_000).abs_diff(115_200) < 20);
+    }
+
+    #[test]
+    fn impossible_rates_are_refused() {
+        assert_eq!(uart_divisors(50_000_000, 0), None);
+        // Above ref/5 no divisor pair reaches it.
+        assert_eq!(uart_divisors(1_000_000, 900_000), None);
+    }
+
+    #[test]
+    fn every_standard_rate_is_within_2_percent() {
+        for baud in [9600, 19_200, 38_400, 57_600, 115_200, 230_400, 460_800, 921_600] {
+            let d = uart_divisors(50_000_000, baud).unwrap();
+            let err = d.baud(50_000_000).abs_diff(baud) as f64 / baud as f64;
+            assert!(err < 0.02, "{baud}: {err}");
+        }
+    }
+
+    #[test]
+    fn timer_load() {
+        // 333.333 MHz / 1 kHz: 333333 cycles, load one less.
+        assert_eq!(private_timer_load(333_333_333, 1000), Some(333_332));
+        assert_eq!(private_timer_load(1000, 0), None);
+        assert_eq!(private_timer_load(1000, 2000), None);
+    }
+}

@@ -1,0 +1,169 @@
+//! Boot sequence, interrupt dispatch and the console loop.
+use crate::ps::{gic, timer, uart::Uart};
+use crate::{log, pl, rx::Ring};
+use core::sync::atomic::{AtomicU32, Ordering};
+use drive::console::{self, Action, Context, LineEditor, Status, PROMPT};
+
+/// Console and log line settings.
+const BAUD: u32 = 115_200;
+/// UART reference clock set by the FSBL on the usual boards (IO PLL 1 GHz / 20).
+const UART_REF_CLK_HZ: u32 = 50_000_000;
+/// Rate of the periodic timer interrupt, Hz.
+pub const TICK_HZ: u32 = 1000;
+
+static CONSOLE: Uart = unsafe { Uart::new(crate::ps::uart::UART1_BASE) };
+static RX: Ring = Ring::new();
+static TICKS: AtomicU32 = AtomicU32::new(0);
+
+extern "C" {
+    static _vector_table: u32;
+}
+
+fn set_vbar() {
+    // SAFETY: the vector table is cortex-a-rt's, 32-byte aligned at the
+    // start of .text; VBAR only matters once an exception is taken.
+    unsafe {
+        let vt = core::ptr::addr_of!(_vector_table) as u32;
+        core::arch::asm!("mcr p15, 0, {}, c12, c0, 0", "isb", in(reg) vt, options(nostack));
+    }
+}
+
+#[cortex_a_rt::entry]
+fn main() -> ! {
+    pl::gates_safe();
+    set_vbar();
+    // The divisors are a compile-time fact of the board: a failure here is
+    // a build error in disguise, caught by the host test of the same call.
+    let div = drive::zynq::uart_divisors(UART_REF_CLK_HZ, BAUD).expect("baud divisors");
+    CONSOLE.init(div, true);
+    log::init(div);
+    timer::start_global();
+    gic::init();
+    gic::enable(gic::IRQ_PRIVATE_TIMER);
+    gic::enable(gic::IRQ_UART1);
+    let load = drive::zynq::private_timer_load(timer::PERIPHCLK_HZ, TICK_HZ).expect("tick rate");
+    timer::start_private(load);
+    // SAFETY: handlers and their data are ready; not inside a critical section.
+    unsafe { cortex_ar::interrupt::enable() };
+
+    defmt::info!("boot: firmware {=str} git {=str}", env!("CARGO_PKG_VERSION"), env!("FW_GIT_HASH"));
+    let mut con = CONSOLE;
+    banner(&mut con);
+    run_console(&mut con)
+}
+
+fn banner(con: &mut Uart) {
+    use core::fmt::Write;
+    let _ = write!(
+        con,
+        "\r\npredictive servo drive, firmware {} (git {}, {})\r\n\
+         console on UART1 at {} 8N1; defmt log on UART0; type `help`\r\n{}",
+        env!("CARGO_PKG_VERSION"),
+        env!("FW_GIT_HASH"),
+        env!("FW_PROFILE"),
+        BAUD,
+        PROMPT
+    );
+}
+
+fn run_console(con: &mut Uart) -> ! {
+    let mut editor = LineEditor::new();
+    let (mut lines, mut errors) = (0u32, 0u32);
+    loop {
+        let Some(b) = next_byte() else { continue };
+        let echo_to = *con;
+        let Some(result) = editor.feed(b, &mut |e| echo_to.write_bytes(e)) else {
+            continue;
+        };
+        match result {
+            Ok(line) if line.trim().is_empty() => {}
+            Ok(line) => {
+                lines += 1;
+                let ok = match console::parse(line) {
+                    Ok(cmd) => {
+                        defmt::info!("console: {=str}", line);
+                        let ctx = context(lines, errors);
+                        match console::execute(cmd, &ctx, con) {
+                            Ok(Action::Panic) => panic!("`debug panic` requested on the console"),
+                            _ => true,
+                        }
+                    }
+                    Err(e) => {
+                        let _ = console::write_parse_error(con, e);
+                        false
+                    }
+                };
+                if !ok {
+                    errors += 1;
+                }
+            }
+            Err(e) => {
+                lines += 1;
+                errors += 1;
+                defmt::warn!("console: rejected line");
+                let _ = console::write_line_error(con, e);
+            }
+        }
+        con.write_bytes(PROMPT.as_bytes());
+    }
+}
+
+fn context(lines: u32, errors: u32) -> Context {
+    Context {
+        version: env!("CARGO_PKG_VERSION"),
+        git_hash: env!("FW_GIT_HASH"),
+        profile: env!("FW_PROFILE"),
+        status: Status {
+            uptime_us: timer::uptime_us(),
+            ticks: TICKS.load(Ordering::Relaxed),
+            tick_hz: TICK_HZ,
+            lines,
+            errors,
+            rx_overruns: RX.overruns.load(Ordering::Relaxed),
+            gates_enabled: pl::gates_enabled(),
+        },
+    }
+}
+
+/// The next received byte; sleeps until an interrupt when there is none.
+fn next_byte() -> Option<u8> {
+    if let Some(b) = RX.pop() {
+        return Some(b);
+    }
+    // Check and sleep with IRQs masked so that a byte arriving in between
+    // still wakes the WFI (a pending IRQ ends WFI even while masked).
+    cortex_ar::interrupt::disable();
+    if RX.is_empty() {
+        // SAFETY: WFI has no memory effects.
+        unsafe { core::arch::asm!("wfi", options(nomem, nostack)) };
+    }
+    // SAFETY: re-enabling what `main` enabled; not in a critical section.
+    unsafe { cortex_ar::interrupt::enable() };
+    RX.pop()
+}
+
+#[cortex_a_rt::irq]
+fn irq_handler() {
+    loop {
+        let iar = gic::acknowledge();
+        let id = iar & 0x3ff;
+        match id {
+            gic::SPURIOUS => break,
+            gic::IRQ_PRIVATE_TIMER => {
+                timer::ack_private();
+                TICKS.fetch_add(1, Ordering::Relaxed);
+            }
+            gic::IRQ_UART1 => {
+                let isr = CONSOLE.take_isr();
+                if isr & crate::ps::uart::ISR_ROVR != 0 {
+                    RX.overruns.fetch_add(1, Ordering::Relaxed);
+                }
+                while let Some(b) = CONSOLE.read_byte() {
+                    RX.push(b);
+                }
+            }
+            _ => {}
+        }
+        gic::end(iar);
+    }
+}

@@ -1,0 +1,28 @@
+//! The PL as the PS sees it: AXI GP0 register pages (see docs/register-map.md).
+//!
+//! Under QEMU the PL window reads 0 and drops writes, so the gates read as
+//! off (the safe state), which is also the reset state of the real PL.
+/// Stand-in until `drive::regmap` (the register-map table) lands.
+mod regmap {
+    /// PWM/gates page (block 3 of GP0 at 0x43C0_0000), register 0.
+    pub const GATE_CTRL_ADDR: usize = 0x43C0_3000;
+    pub const GATE_CTRL_GATE_EN: u32 = 1;
+}
+use volatile_register::RW;
+
+fn gate_ctrl() -> &'static RW<u32> {
+    // SAFETY: GATE_CTRL is a 32-bit register of the PWM/gates page.
+    unsafe { &*(regmap::GATE_CTRL_ADDR as *const RW<u32>) }
+}
+
+/// Turns every gate off (clears `GATE_EN`). Safe to call from any context,
+/// including the panic handler: one store, no read-modify-write.
+pub fn gates_safe() {
+    // SAFETY: writing 0 disables all gates; no other bit has a side effect.
+    unsafe { gate_ctrl().write(0) };
+}
+
+/// Whether the gate-enable bit is set.
+pub fn gates_enabled() -> bool {
+    gate_ctrl().read() & regmap::GATE_CTRL_GATE_EN != 0
+}

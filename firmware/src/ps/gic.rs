@@ -1,0 +1,66 @@
+//! GIC (PL390) distributor and CPU interface of the Cortex-A9 MPCore.
+use volatile_register::RW;
+
+const DIST: usize = 0xF8F0_1000;
+const CPU: usize = 0xF8F0_0100;
+
+// Distributor offsets.
+const ICDDCR: usize = 0x000;
+const ICDISER: usize = 0x100;
+const ICDIPR: usize = 0x400;
+const ICDIPTR: usize = 0x800;
+// CPU interface offsets.
+const ICCICR: usize = 0x00;
+const ICCPMR: usize = 0x04;
+const ICCIAR: usize = 0x0C;
+const ICCEOIR: usize = 0x10;
+
+/// Interrupt IDs (UG585 table 7-3).
+pub const IRQ_PRIVATE_TIMER: u32 = 29;
+pub const IRQ_UART1: u32 = 82;
+/// What ICCIAR returns when nothing is pending.
+pub const SPURIOUS: u32 = 1023;
+
+fn reg(addr: usize) -> &'static RW<u32> {
+    // SAFETY: only called with GIC register addresses; MMIO lives forever.
+    unsafe { &*(addr as *const RW<u32>) }
+}
+
+fn reg8(addr: usize) -> &'static RW<u8> {
+    // SAFETY: the priority and target registers are byte-accessible.
+    unsafe { &*(addr as *const RW<u8>) }
+}
+
+/// Enables distributor and CPU interface; all priorities pass.
+pub fn init() {
+    // SAFETY: documented enable values.
+    unsafe {
+        reg(DIST + ICDDCR).write(1);
+        reg(CPU + ICCPMR).write(0xF0);
+        reg(CPU + ICCICR).write(1);
+    }
+}
+
+/// Routes `id` to CPU0 at a middle priority and enables it.
+pub fn enable(id: u32) {
+    let id = id as usize;
+    // SAFETY: per-interrupt configuration registers of a valid ID.
+    unsafe {
+        reg8(DIST + ICDIPR + id).write(0xA0);
+        if id >= 32 {
+            reg8(DIST + ICDIPTR + id).write(0x01);
+        }
+        reg(DIST + ICDISER + 4 * (id / 32)).write(1 << (id % 32));
+    }
+}
+
+/// Acknowledges the highest pending interrupt: its ICCIAR value.
+pub fn acknowledge() -> u32 {
+    reg(CPU + ICCIAR).read()
+}
+
+/// Signals the end of the interrupt acknowledged as `iar`.
+pub fn end(iar: u32) {
+    // SAFETY: writing back the acknowledged value.
+    unsafe { reg(CPU + ICCEOIR).write(iar) };
+}

@@ -1,0 +1,53 @@
+//! A9 MPCore global timer (uptime) and private timer (periodic tick).
+use volatile_register::RW;
+
+const GLOBAL: usize = 0xF8F0_0200;
+const PRIVATE: usize = 0xF8F0_0600;
+
+fn reg(addr: usize) -> &'static RW<u32> {
+    // SAFETY: only called with timer register addresses.
+    unsafe { &*(addr as *const RW<u32>) }
+}
+
+/// Clock of both timers (PERIPHCLK = CPU_6x4x / 2): 333.333 MHz with the
+/// usual 666.667 MHz CPU clock set by the FSBL.
+pub const PERIPHCLK_HZ: u32 = 333_333_333;
+
+/// Starts the 64-bit global timer, prescaler 1.
+pub fn start_global() {
+    // SAFETY: enable bit only.
+    unsafe { reg(GLOBAL + 0x08).write(1) };
+}
+
+/// Global timer count (PERIPHCLK cycles since it started).
+pub fn global_count() -> u64 {
+    loop {
+        let hi = reg(GLOBAL + 0x04).read();
+        let lo = reg(GLOBAL).read();
+        if reg(GLOBAL + 0x04).read() == hi {
+            return (u64::from(hi) << 32) | u64::from(lo);
+        }
+    }
+}
+
+/// Microseconds since the global timer started.
+pub fn uptime_us() -> u64 {
+    global_count() / u64::from(PERIPHCLK_HZ / 1_000_000)
+}
+
+/// Starts the private timer: auto-reload, interrupt every `load + 1` cycles.
+pub fn start_private(load: u32) {
+    // SAFETY: documented values: load, then enable | auto-reload | IRQ enable.
+    unsafe {
+        reg(PRIVATE + 0x08).write(0);
+        reg(PRIVATE).write(load);
+        reg(PRIVATE + 0x0C).write(1);
+        reg(PRIVATE + 0x08).write(0b111);
+    }
+}
+
+/// Clears the private timer's event flag.
+pub fn ack_private() {
+    // SAFETY: write-one-to-clear.
+    unsafe { reg(PRIVATE + 0x0C).write(1) };
+}
