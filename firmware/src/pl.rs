@@ -2,17 +2,12 @@
 //!
 //! Under QEMU the PL window reads 0 and drops writes, so the gates read as
 //! off (the safe state), which is also the reset state of the real PL.
-/// Stand-in until `drive::regmap` (the register-map table) lands.
-mod regmap {
-    /// PWM/gates page (block 3 of GP0 at 0x43C0_0000), register 0.
-    pub const GATE_CTRL_ADDR: usize = 0x43C0_3000;
-    pub const GATE_CTRL_GATE_EN: u32 = 1;
-}
+use drive::regmap;
 use volatile_register::RW;
 
 fn gate_ctrl() -> &'static RW<u32> {
     // SAFETY: GATE_CTRL is a 32-bit register of the PWM/gates page.
-    unsafe { &*(regmap::GATE_CTRL_ADDR as *const RW<u32>) }
+    unsafe { &*(regmap::PWM.addr(&regmap::GATE_CTRL) as *const RW<u32>) }
 }
 
 /// Turns every gate off (clears `GATE_EN`). Safe to call from any context,
