@@ -129,7 +129,8 @@ mod tests {
             (4.0, -1.0),
         ];
         assert!((overshoot_percent(s2, 0.0, 4.0, 1.0, -1.0) - 5.0).abs() < 1e-12);
-        assert_eq!(settling_time_s(s2, 0.0, 4.0, -1.0, 0.1), Some(2.0));
+        assert_eq!(settling_time_s(s2, 0.0, 4.0, -1.0, 0.15), Some(2.0));
+        assert_eq!(settling_time_s(s2, 0.0, 4.0, -1.0, 0.05), Some(3.0));
         // Never settles: outside at the end.
         assert_eq!(settling_time_s(s2, 0.0, 2.0, -1.0, 0.05), None);
         assert_eq!(

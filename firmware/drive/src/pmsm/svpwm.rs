@@ -72,7 +72,7 @@ mod tests {
             let (a, b) = leg_voltage_alpha_beta(d, udc);
             let mag = a.hypot(b);
             // Hexagon radius in direction th: (U_dc/sqrt3) / cos(angle to nearest edge normal).
-            let rel = (th + PI / 6.0).rem_euclid(PI / 3.0) - PI / 6.0;
+            let rel = th.rem_euclid(PI / 3.0) - PI / 6.0;
             let hex = lim / rel.cos();
             assert!((mag - hex).abs() < 1e-9, "{k}: {mag} vs {hex}");
             assert!((b.atan2(a) - th.sin().atan2(th.cos())).abs() < 1e-9);
