@@ -6,3 +6,4 @@
 //! models in the `drive` crate.
 
 pub mod gate_driver;
+pub mod regmap_gen;
