@@ -39,19 +39,16 @@ pub struct MpdtcRef {
     pub cfg: MpdtcConfig,
     /// Controller state.
     pub state: MpdtcState,
-    /// Measurement age, control periods (see [`measurement_age_periods`]).
-    pub age_periods: f64,
     /// Outputs of the last period (diagnostics).
     pub last: Option<MpdtcOutputs>,
 }
 
 impl MpdtcRef {
     /// A controller at rest (000 applied, integrator and observers zero).
-    pub fn new(cfg: MpdtcConfig, age_periods: f64) -> Self {
+    pub fn new(cfg: MpdtcConfig) -> Self {
         Self {
             cfg,
             state: MpdtcState::default(),
-            age_periods,
             last: None,
         }
     }
@@ -64,7 +61,7 @@ impl Controller for MpdtcRef {
 
     fn step(&mut self, m: &Measurement, torque_ref_nm: f64) -> Actuation {
         let ts = self.period_s();
-        let inp = inputs_from_measurement(m, torque_ref_nm, self.age_periods, ts);
+        let inp = inputs_from_measurement(m, torque_ref_nm, self.cfg.params.meas_age_periods, ts);
         let out = mpdtc_ref::decide(&self.state, &inp, &self.cfg);
         self.state = out.next;
         self.last = Some(out);
