@@ -13,3 +13,6 @@ pub mod params;
 pub mod plant;
 pub mod reference;
 pub mod stats;
+pub mod cycles;
+pub mod fpga;
+pub mod scheduler;

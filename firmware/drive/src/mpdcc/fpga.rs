@@ -1,0 +1,548 @@
+//! Bit-accurate model of the FPGA MPDCC core (paper 001, Secs. IV-VI): the
+//! datapath of the central scheduler (quantization, lazy check, common terms
+//! of eq. (14)) and of the explorer units (extrapolation at `k + L`, linear
+//! interpolation, Algorithm 2, cost), in explicit integer arithmetic with the
+//! formats of [`super::fixed`]. The control flow of Algorithm 1 is in
+//! [`super::scheduler`], the clock-cycle count in [`super::cycles`].
+//!
+//! This model is the oracle for the future Verilog core: every rounding,
+//! saturation and word width below is part of the specification.
+//!
+//! # Prediction model (eqs. 4, 9, 13, 14, 17-18), as implemented
+//! With `T = T_s,pu`, `l` steps ahead and the voltage `v_abc(s)` held:
+//!
+//! ```text
+//! Delta i_s(l)  = l T [ -i_s/tau_s + X_m/(D tau_r) psi_r - X_m/D omega_r J psi_r
+//!                       + X_r/D K v_abc ] + p (l T omega_r)^2 psi_r     (eq. 9a, forward Euler + correction)
+//! Delta i_s*(l) = l T omega_s J i_s*                                    (eq. 14b, A_0 - I)
+//! Delta x_inv(l)= l T B_inv(s) i_s,abc(k)                               (eq. 18b)
+//! ```
+//!
+//! The error change `Delta y(l) = Delta y*(l) - Delta y(l)` is affine in the
+//! per-step rates except for the `l^2` correction term. The scheduler forms
+//! the switch-independent part for `l = L` (eq. 14, "common terms") in a wide
+//! accumulator and derives the `l = 1` value from the same products by
+//! shifting (`/L` for rates, `/L^2` for the correction term): one set of
+//! products serves both the lazy check (Alg. 1 line 1) and the explorers.
+//!
+//! The voltage part is done per phase, `K^-1 K v = v - mean(v)`, so
+//! `K^-1 (X_r/D L T K v) = (X_r/(3D)) L T (3 v_x - v_a - v_b - v_c)`: one
+//! multiply per phase, no `sqrt(3)` on the candidate path.
+//!
+//! # Interpretations (the paper leaves these open)
+//! - **Increments, not absolute states**: `y(k+L) - y(k)` is computed
+//!   directly (never `A(L) x` minus `x`), which avoids cancellation in 16 bits.
+//! - **Wide accumulation**: products are exact (`16 x 16` or `18 x 16`, as a
+//!   Zynq DSP48E1 takes `25 x 18`) and summed exactly in 48 bits, rounded once
+//!   to Q2.13. The paper's Fig. 3 block has a 16-bit adder; on our target the
+//!   DSP48E1 post-adder is 48 bits wide at no cost.
+//! - **Interpolation** (eq. 20) keeps `a_j = y~_j(k)` and
+//!   `b_j = Delta_j / L`; the division by `L` is folded into Algorithm 2
+//!   ([`super::binsearch`]), exactly.
+//! - **Lazy check** uses the one-step (`l = 1`) prediction, not the
+//!   interpolation; `J_dl` (eq. 15) uses the interpolated `y~(k+1) =
+//!   a_j + Delta_j / L` (the explorer has nothing else), rounded half up.
+//! - **Cost** `J = f_s / L* + lambda_n v_n(k+L*)^2` with `1/L*` from a
+//!   reciprocal ROM (UQ1.17, 18 bits) and `v_n(k+L*)` interpolated:
+//!   `e_vn(k) + round(L* Delta_vn / L)`. `J` is UQ15.17 in a `u32`; `+inf`
+//!   (`L* = 0`) is `u32::MAX`.
+//! - **Correction factor `p`** is a parameter ([`FpgaConfig::p_correction`]);
+//!   see [`p_taylor`] and docs/mpdcc-fpga.md for what the paper's 0.21096 is
+//!   and what our machine needs.
+
+use super::anpc;
+use super::binsearch::{self, Lj, SearchRange};
+use super::controller::{CtrlState, Decision, MpdccController, StateError};
+use super::fixed::{self, konst, mul, rshift_round, sat16, sub, F_C, F_I};
+use super::params::DriveParams;
+use super::scheduler::{self, Explorer, ExplorerResult};
+
+/// Fractional bits of the wide accumulator (products of Q1.14 coefficients
+/// with Q1.14 flux; Q2.13 operands are shifted left by one).
+pub const F_W: u32 = 28;
+/// Fractional bits of the cost register `J` (UQ15.17).
+pub const F_COST: u32 = 17;
+/// Fractional bits of the reciprocal ROM (UQ1.17, 18-bit words).
+pub const F_RECIP: u32 = 17;
+/// Fractional bits of `lambda_n` (UQ8.8).
+pub const F_LAMBDA: u32 = 8;
+/// `J = +inf` (`L* = 0`).
+pub const COST_INF: u32 = u32::MAX;
+
+/// The paper's model correction factor (Table I).
+pub const P_PAPER: f64 = 0.21096;
+
+/// `p` from the second-order Taylor term of the exact discretization:
+/// `e^{F t}` has `t^2/2 (F^2)_{13} = t^2/2 (X_m/D omega_r^2 - ...)`, so the
+/// `omega_r^2` part of the `(i_alpha, psi_alpha)` entry is
+/// `(X_m / (2D)) (t omega_r)^2`, which eq. (9a) writes as `p (t omega_r)^2`.
+pub fn p_taylor(m: &super::params::MachineParams) -> f64 {
+    m.x_m_pu / (2.0 * m.d_pu())
+}
+
+/// Build-time choices of the FPGA core.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FpgaConfig {
+    /// Number of explorer units `n` (1..=16).
+    pub explorers: u32,
+    /// Model correction factor `p` of eq. (4)/(9b).
+    pub p_correction: f64,
+}
+
+impl FpgaConfig {
+    /// Two explorers (the paper's choice, Sec. VII-A) and the given `p`.
+    pub fn with_p(p_correction: f64) -> Self {
+        Self {
+            explorers: 2,
+            p_correction,
+        }
+    }
+}
+
+/// Why the FPGA model cannot be built for these parameters.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FpgaError {
+    /// A parameter failed [`DriveParams::validate`].
+    Params(super::params::ParamError),
+    /// A coefficient does not fit its 16-bit format (name of the coefficient).
+    CoefficientRange(&'static str),
+    /// `explorers` outside 1..=16.
+    Explorers,
+    /// `p_correction` not finite or outside 0..=8.
+    Correction,
+}
+
+impl core::fmt::Display for FpgaError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            FpgaError::Params(e) => write!(f, "{e}"),
+            FpgaError::CoefficientRange(n) => {
+                write!(f, "FPGA coefficient `{n}` does not fit its 16-bit format")
+            }
+            FpgaError::Explorers => write!(f, "explorers must be in 1..=16"),
+            FpgaError::Correction => write!(f, "p_correction must be finite and in 0..=8"),
+        }
+    }
+}
+
+/// Design-time constants (ROM / parameter registers), raw integers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Coeffs {
+    /// `lambda = log2 L`.
+    pub lambda: u32,
+    /// `M = log2 N_bar` (search bits).
+    pub m_bits: u32,
+    /// `N_bar`, steps.
+    pub n_bar: u32,
+    /// `L T / tau_s`, Q1.14.
+    pub c_tau: i16,
+    /// `L T X_m / (D tau_r)`, Q1.14.
+    pub c_r: i16,
+    /// `L T X_m / D` (times `omega_r` at run time), Q1.14.
+    pub c_w: i16,
+    /// `p (L T)^2` (times `omega_r^2` at run time), Q1.14.
+    pub c_p: i16,
+    /// `L T` (times `omega_s` at run time), Q1.14.
+    pub c_s: i16,
+    /// `L T X_r / (3 D)` (times `3 v_x - sum v`), Q1.14.
+    pub g3: i16,
+    /// `L T / (2 C_dc)` (times `i_x`), Q1.14.
+    pub c_n: i16,
+    /// `L T / C_ph` (times `i_x`), Q1.14.
+    pub c_ph: i16,
+    /// `sqrt(3)/2`, Q1.14.
+    pub s3h: i16,
+    /// `V_dc / 2`, Q2.13.
+    pub v_dc_half: i16,
+    /// `V_dc / 4` (phase capacitor reference), Q2.13.
+    pub v_ph_ref: i16,
+    /// Bounds `[delta_i x3, v_n, v_ph x3]`, Q2.13.
+    pub bnd: [i16; 7],
+    /// `lambda_n`, UQ8.8.
+    pub lambda_n: u16,
+    /// `round(2^17 / l)` for `l = 0..=N_bar` (entry 0 unused), UQ1.17.
+    pub recip: heapless::Vec<u32, 1025>,
+}
+
+impl Coeffs {
+    /// Quantizes the design constants; every one must fit without saturation.
+    pub fn new(p: &DriveParams, p_corr: f64) -> Result<Self, FpgaError> {
+        p.validate().map_err(FpgaError::Params)?;
+        if !p_corr.is_finite() || !(0.0..=8.0).contains(&p_corr) {
+            return Err(FpgaError::Correction);
+        }
+        let m = &p.machine;
+        let c = &p.controller;
+        let t = c.ts_pu(m);
+        let lt = c.extrapolation_steps as f64 * t;
+        let d = m.d_pu();
+        let q = |name: &'static str, v: f64, f: u32| -> Result<i16, FpgaError> {
+            match konst(v, f) {
+                (r, false) => Ok(r),
+                (_, true) => Err(FpgaError::CoefficientRange(name)),
+            }
+        };
+        let n_bar = c.horizon_max_steps;
+        let mut recip = heapless::Vec::new();
+        for l in 0..=n_bar {
+            // Entry 0 is unused (L* = 0 costs +inf).
+            let r = ((1u32 << F_RECIP) + l / 2).checked_div(l).unwrap_or(0);
+            recip
+                .push(r)
+                .map_err(|_| FpgaError::CoefficientRange("recip"))?;
+        }
+        let lam = libm::round(c.lambda_n * (1u32 << F_LAMBDA) as f64);
+        if lam > u16::MAX as f64 {
+            return Err(FpgaError::CoefficientRange("lambda_n"));
+        }
+        let di = q("delta_i", c.delta_i_pu, F_I)?;
+        let bn = q("v_n_bound", c.v_n_bound_pu, F_I)?;
+        let bp = q("v_ph_bound", c.v_ph_bound_pu, F_I)?;
+        Ok(Self {
+            lambda: c.extrapolation_steps.trailing_zeros(),
+            m_bits: n_bar.trailing_zeros(),
+            n_bar,
+            c_tau: q("c_tau", lt / m.tau_s_pu(), F_C)?,
+            c_r: q("c_r", lt * m.x_m_pu / (d * m.tau_r_pu()), F_C)?,
+            c_w: q("c_w", lt * m.x_m_pu / d, F_C)?,
+            c_p: q("c_p", p_corr * lt * lt, F_C)?,
+            c_s: q("c_s", lt, F_C)?,
+            g3: q("g3", lt * m.x_r_pu() / (3.0 * d), F_C)?,
+            c_n: q("c_n", lt / (2.0 * p.inverter.c_dc_pu), F_C)?,
+            c_ph: q("c_ph", lt / p.inverter.c_ph_pu, F_C)?,
+            s3h: q("s3h", 0.866_025_403_784_438_6, F_C)?,
+            v_dc_half: q("v_dc_half", 0.5 * p.inverter.v_dc_pu, F_I)?,
+            v_ph_ref: q("v_ph_ref", p.inverter.v_ph_ref_pu(), F_I)?,
+            bnd: [di, di, di, bn, bp, bp, bp],
+            lambda_n: lam as u16,
+            recip,
+        })
+    }
+}
+
+/// The sampled state in its interface registers (Alg. 1's "writes it into
+/// registers"), raw.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Inputs {
+    /// `i_s,alpha_beta`, Q2.13.
+    pub i_ab: [i16; 2],
+    /// `psi_r,alpha_beta`, Q1.14.
+    pub psi_ab: [i16; 2],
+    /// `v_n`, Q2.13.
+    pub v_n: i16,
+    /// `v_ph,abc`, Q2.13.
+    pub v_ph: [i16; 3],
+    /// `i_s*,alpha_beta(k)`, Q2.13.
+    pub i_ref_ab: [i16; 2],
+    /// `omega_r`, Q2.13.
+    pub omega_r: i16,
+    /// `omega_s`, Q2.13.
+    pub omega_s: i16,
+    /// `s(k-1)`.
+    pub s_prev: [u8; 3],
+    /// Some input saturated while quantizing.
+    pub saturated: bool,
+}
+
+impl Inputs {
+    /// Quantizes a (checked) controller state; NaN/inf and bad positions are
+    /// rejected by [`CtrlState::check`] first.
+    pub fn quantize(st: &CtrlState) -> Result<Self, StateError> {
+        st.check()?;
+        let mut sat = false;
+        let mut q = |v: f64, f: u32| -> i16 {
+            // check() guarantees finiteness.
+            let (r, s) = fixed::quantize(v, f).unwrap_or((0, true));
+            sat |= s;
+            r
+        };
+        let i_ab = [q(st.x_m[0], F_I), q(st.x_m[1], F_I)];
+        let psi_ab = [q(st.x_m[2], F_C), q(st.x_m[3], F_C)];
+        let v_n = q(st.v_n_pu, F_I);
+        let v_ph = [
+            q(st.v_ph_pu[0], F_I),
+            q(st.v_ph_pu[1], F_I),
+            q(st.v_ph_pu[2], F_I),
+        ];
+        let i_ref_ab = [q(st.i_ref_ab_pu[0], F_I), q(st.i_ref_ab_pu[1], F_I)];
+        let omega_r = q(st.omega_r_pu, F_I);
+        let omega_s = q(st.omega_s_pu, F_I);
+        Ok(Self {
+            i_ab,
+            psi_ab,
+            v_n,
+            v_ph,
+            i_ref_ab,
+            omega_r,
+            omega_s,
+            s_prev: st.s_prev,
+            saturated: sat,
+        })
+    }
+}
+
+/// `K^-1` of eq. (1) on Q2.13 words: `[x_a, -x_a/2 + s3h x_b, -x_a/2 - s3h x_b]`
+/// with `x_a/2` rounded half up and `s3h x_b` rounded to Q2.13.
+pub fn inv_clarke_q(x: [i16; 2], s3h: i16) -> [i16; 3] {
+    let h = rshift_round(x[0] as i64, 1);
+    let r = mul(s3h, F_C, x[1], F_I, F_I) as i64;
+    [x[0], sat16(-h + r), sat16(-h - r)]
+}
+
+/// Round a wide value with `f` fractional bits to Q2.13 (half up, saturate).
+#[inline]
+fn to_q13(w: i64, f: u32) -> i16 {
+    sat16(rshift_round(w, f - F_I))
+}
+
+/// Terms common to all candidates (Sec. V-A), computed by the scheduler.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Common {
+    /// Output errors at `k`, `a_j = y*_j(k) - y_j(k)`: `[i_abc, v_n, v_ph,abc]`, Q2.13.
+    pub e0: [i16; 7],
+    /// Switch-independent error change over `L` steps, abc, Q2.13.
+    pub dn_l: [i16; 3],
+    /// Same over one step (lazy check), abc, Q2.13.
+    pub dn_1: [i16; 3],
+    /// `i_s,abc(k)`, Q2.13.
+    pub i_abc: [i16; 3],
+    /// `L T/(2 C_dc) i_x`, wide (f27).
+    pub pn: [i64; 3],
+    /// `L T/C_ph i_x`, wide (f27).
+    pub pph: [i64; 3],
+    /// Registers copied for the explorers: `v_n`, `v_ph`, Q2.13.
+    pub v_n: i16,
+    /// Phase capacitor voltages, Q2.13.
+    pub v_ph: [i16; 3],
+}
+
+/// Eq. (14) and the error terms at `k`: the scheduler's common terms.
+pub fn common_terms(k: &Coeffs, x: &Inputs) -> Common {
+    let lam = k.lambda;
+    // Run-time coefficients (16-bit registers, rounded).
+    let kw = mul(k.c_w, F_C, x.omega_r, F_I, F_C);
+    let w2 = mul(x.omega_r, F_I, x.omega_r, F_I, F_I);
+    let kp = mul(k.c_p, F_C, w2, F_I, F_C);
+    let ks = mul(k.c_s, F_C, x.omega_s, F_I, F_C);
+    let p = |a: i16, b: i16| a as i64 * b as i64; // exact product
+    let [ia, ib] = x.i_ab;
+    let [pa, pb] = x.psi_ab;
+    let [ra, rb] = x.i_ref_ab;
+    // Natural response rates times L (f28): -c_tau i + c_r psi - kw J psi.
+    let nat_a = -(p(k.c_tau, ia) << 1) + p(k.c_r, pa) + p(kw, pb);
+    let nat_b = -(p(k.c_tau, ib) << 1) + p(k.c_r, pb) - p(kw, pa);
+    // Correction term times L^2 (f28).
+    let cor_a = p(kp, pa);
+    let cor_b = p(kp, pb);
+    // Reference rotation times L (f28): ks J i*.
+    let ref_a = -(p(ks, rb) << 1);
+    let ref_b = p(ks, ra) << 1;
+    // Error change: Delta i* - Delta i_nat.
+    let rate_a = ref_a - nat_a;
+    let rate_b = ref_b - nat_b;
+    let dl = [to_q13(rate_a - cor_a, F_W), to_q13(rate_b - cor_b, F_W)];
+    let f1 = F_W + 2 * lam;
+    let d1 = [
+        to_q13((rate_a << lam) - cor_a, f1),
+        to_q13((rate_b << lam) - cor_b, f1),
+    ];
+    let i_abc = inv_clarke_q(x.i_ab, k.s3h);
+    let e_ab = [sub(ra, ia), sub(rb, ib)];
+    let e_abc = inv_clarke_q(e_ab, k.s3h);
+    let mut e0 = [0i16; 7];
+    e0[..3].copy_from_slice(&e_abc);
+    e0[3] = sat16(-(x.v_n as i64));
+    for ph in 0..3 {
+        e0[4 + ph] = sub(k.v_ph_ref, x.v_ph[ph]);
+    }
+    Common {
+        e0,
+        dn_l: inv_clarke_q(dl, k.s3h),
+        dn_1: inv_clarke_q(d1, k.s3h),
+        i_abc,
+        pn: i_abc.map(|i| p(k.c_n, i)),
+        pph: i_abc.map(|i| p(k.c_ph, i)),
+        v_n: x.v_n,
+        v_ph: x.v_ph,
+    }
+}
+
+/// Wide (f27) voltage terms `g3 (3 v_x - sum v)` of candidate `s`.
+fn voltage_terms(k: &Coeffs, c: &Common, s: [u8; 3]) -> [i64; 3] {
+    let mut v = [0i64; 3];
+    for ph in 0..3 {
+        let pos = &anpc::TABLE[(s[ph] & 7) as usize];
+        v[ph] = pos.rail as i64 * k.v_dc_half as i64
+            + pos.n_coef as i64 * c.v_n as i64
+            + pos.ph_coef as i64 * c.v_ph[ph] as i64;
+    }
+    let sum = v[0] + v[1] + v[2];
+    // u_x = 3 v_x - sum v: exact, < 2^17 in magnitude (an 18-bit operand).
+    v.map(|vx| k.g3 as i64 * (3 * vx - sum))
+}
+
+/// Wide (f27) inverter error changes over `L` steps: `[v_n, v_ph,abc]`.
+fn inverter_terms(c: &Common, s: [u8; 3]) -> [i64; 4] {
+    let mut d = [0i64; 4];
+    for ph in 0..3 {
+        let pos = &anpc::TABLE[(s[ph] & 7) as usize];
+        // e_vn = -v_n, dv_n = -L T/(2C) sum np i  =>  de_vn = +sum np P_n.
+        d[0] += pos.np_current as i64 * c.pn[ph];
+        // e_ph = ref - v_ph, dv_ph = L T/C_ph c(s) i  =>  de_ph = -c(s) P_ph.
+        d[1 + ph] = -(pos.ph_current as i64) * c.pph[ph];
+    }
+    d
+}
+
+/// Error changes `Delta_j` of candidate `s` over `l = L` steps (`one_step`
+/// false) or `l = 1` (true), Q2.13.
+pub fn deltas(k: &Coeffs, c: &Common, s: [u8; 3], one_step: bool) -> [i16; 7] {
+    let sh = if one_step { k.lambda } else { 0 };
+    let g = voltage_terms(k, c, s);
+    let inv = inverter_terms(c, s);
+    let dn = if one_step { c.dn_1 } else { c.dn_l };
+    let mut d = [0i16; 7];
+    for ph in 0..3 {
+        // Voltage term: f27 (Q1.14 x Q2.13), /L by shifting for one step.
+        d[ph] = sub(dn[ph], sat16(rshift_round(g[ph], F_C + sh)));
+    }
+    for j in 0..4 {
+        d[3 + j] = sat16(rshift_round(inv[j], F_C + sh));
+    }
+    d
+}
+
+/// Lazy check (Alg. 1, line 1): all seven `|y~(k+1)| <= y_bnd` with `s(k-1)`.
+pub fn lazy_ok(k: &Coeffs, c: &Common, s_prev: [u8; 3]) -> bool {
+    let d1 = deltas(k, c, s_prev, true);
+    (0..7).all(|j| (c.e0[j] as i32 + d1[j] as i32).abs() <= k.bnd[j] as i32)
+}
+
+/// One explorer evaluation (Sec. VI) of candidate `s`.
+pub fn explore(k: &Coeffs, c: &Common, s_prev: [u8; 3], s: [u8; 3]) -> ExplorerResult {
+    let d = deltas(k, c, s, false);
+    // Search range: cap N_bar, no lower bound (every L* is reported).
+    let r = SearchRange {
+        m_bits: k.m_bits,
+        l_up: k.n_bar,
+        l_low: 0,
+    };
+    let mut l_star = k.n_bar;
+    let mut lane_cycles = 0;
+    let mut j_dl = i32::MIN;
+    for (j, &dj) in d.iter().enumerate() {
+        let sr = binsearch::lj_search(c.e0[j] as i32, dj as i32, k.bnd[j] as i32, k.lambda, r);
+        lane_cycles = lane_cycles.max(sr.cycles);
+        let lj = match sr.lj {
+            Lj::Capped(v) | Lj::Exact(v) => v,
+            Lj::Below => 0,
+        };
+        l_star = l_star.min(lj);
+        // Interpolated error at k+1 for eq. (15).
+        let e1 = c.e0[j] as i64 + rshift_round(dj as i64, k.lambda);
+        j_dl = j_dl.max((e1.abs() - k.bnd[j] as i64) as i32);
+    }
+    let fs = anpc::switch_transitions(s_prev, s);
+    let cost = if l_star == 0 {
+        COST_INF
+    } else {
+        let jsw = fs as u64 * k.recip[l_star as usize] as u64; // f17
+        let evn = sat16(c.e0[3] as i64 + rshift_round(l_star as i64 * d[3] as i64, k.lambda));
+        let sq = evn as i64 * evn as i64; // f26
+        let jl = rshift_round(sq * k.lambda_n as i64, 2 * F_I + F_LAMBDA - F_COST) as u64;
+        (jsw + jl).min(COST_INF as u64 - 1) as u32
+    };
+    ExplorerResult {
+        s,
+        l_star,
+        fs,
+        cost,
+        j_dl,
+        lane_cycles,
+        deltas: d,
+    }
+}
+
+/// The FPGA MPDCC core: coefficients, the scheduler and `n` explorers.
+#[derive(Debug, Clone)]
+pub struct FpgaMpdcc {
+    coeffs: Coeffs,
+    cfg: FpgaConfig,
+    last: Option<scheduler::Outcome>,
+}
+
+/// The explorer units as the scheduler sees them.
+struct Units<'a> {
+    k: &'a Coeffs,
+    c: &'a Common,
+    s_prev: [u8; 3],
+}
+
+impl Explorer for Units<'_> {
+    fn evaluate(&mut self, s: [u8; 3]) -> ExplorerResult {
+        explore(self.k, self.c, self.s_prev, s)
+    }
+}
+
+impl FpgaMpdcc {
+    /// Builds the core; rejects invalid parameters and coefficients that do
+    /// not fit their formats.
+    pub fn new(p: &DriveParams, cfg: FpgaConfig) -> Result<Self, FpgaError> {
+        if !(1..=16).contains(&cfg.explorers) {
+            return Err(FpgaError::Explorers);
+        }
+        Ok(Self {
+            coeffs: Coeffs::new(p, cfg.p_correction)?,
+            cfg,
+            last: None,
+        })
+    }
+
+    /// The design constants.
+    pub fn coeffs(&self) -> &Coeffs {
+        &self.coeffs
+    }
+
+    /// The configuration.
+    pub fn config(&self) -> &FpgaConfig {
+        &self.cfg
+    }
+
+    /// Details of the last decision (candidate results, cycles).
+    pub fn last_outcome(&self) -> Option<&scheduler::Outcome> {
+        self.last.as_ref()
+    }
+
+    /// One decision from already-quantized inputs (the bit-exact entry point
+    /// a Verilog test bench drives).
+    pub fn decide_raw(&self, x: &Inputs) -> scheduler::Outcome {
+        let c = common_terms(&self.coeffs, x);
+        let lazy = lazy_ok(&self.coeffs, &c, x.s_prev);
+        let mut units = Units {
+            k: &self.coeffs,
+            c: &c,
+            s_prev: x.s_prev,
+        };
+        scheduler::run(
+            x.s_prev,
+            lazy,
+            self.cfg.explorers,
+            self.coeffs.m_bits,
+            &mut units,
+        )
+    }
+}
+
+impl MpdccController for FpgaMpdcc {
+    fn name(&self) -> &'static str {
+        "fpga"
+    }
+
+    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
+        let x = Inputs::quantize(st)?;
+        let out = self.decide_raw(&x);
+        let d = out.decision;
+        self.last = Some(out);
+        Ok(d)
+    }
+}
