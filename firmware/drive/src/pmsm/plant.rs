@@ -441,3 +441,310 @@ pub fn torque_alpha_beta_nm(motor: &MotorParams, i_ab: (f64, f64), theta_e_rad: 
 pub fn i_alpha_beta(i_abc: [f64; 3]) -> (f64, f64) {
     clarke(i_abc)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pmsm::frames::{inv_park, switch_state_alpha_beta};
+    use std::vec::Vec;
+
+    const R: f64 = 0.555;
+    const L: f64 = 0.64e-3;
+    const PSI: f64 = 0.009_287_9;
+
+    fn plant(w: f64) -> Plant {
+        Plant::new(
+            &MotorParams::default(),
+            0.0,
+            MechanicalMode::ConstantSpeed,
+            w,
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn rejects_bad_parameters() {
+        let m = MotorParams::default();
+        let cs = MechanicalMode::ConstantSpeed;
+        assert!(Plant::new(&MotorParams { l_q_h: 1e-3, ..m }, 0.0, cs, 0.0).is_err());
+        assert!(Plant::new(
+            &MotorParams {
+                r_s_ohm: f64::NAN,
+                ..m
+            },
+            0.0,
+            cs,
+            0.0
+        )
+        .is_err());
+        assert!(Plant::new(&m, -1e-6, cs, 0.0).is_err());
+        assert!(Plant::new(&m, 0.0, cs, f64::INFINITY).is_err());
+        let bad_load = MechanicalMode::Inertia {
+            load_torque_nm: f64::NAN,
+        };
+        assert!(Plant::new(&m, 0.0, bad_load, 0.0).is_err());
+        let mut p = plant(0.0);
+        assert!(p.step(&Actuation::SwitchState(4), 0.0, 4, |_| {}).is_err());
+        assert!(p.step(&Actuation::SwitchState(4), 1e-5, 0, |_| {}).is_err());
+        assert!(p.set_state(f64::NAN, 0.0, 0.0, 0.0).is_err());
+        assert_eq!(p.state().t_s, 0.0);
+    }
+
+    /// Zero voltage at standstill: i(t) = i0 e^{-R t / L}, sampled every 3.9 us.
+    #[test]
+    fn zero_voltage_decay() {
+        let mut p = plant(0.0);
+        p.set_state(3.0, -1.0, 0.0, 0.0).unwrap();
+        let mut n = 0;
+        for _ in 0..200 {
+            p.step(&Actuation::SwitchState(0b111), 15.625e-6, 4, |q| {
+                n += 1;
+                let t = q.state().t_s;
+                let e = (-R * t / L).exp();
+                assert!((q.state().i_alpha_a - 3.0 * e).abs() < 1e-12, "{t}");
+                assert!((q.state().i_beta_a + e).abs() < 1e-12);
+            })
+            .unwrap();
+        }
+        assert_eq!(n, 800);
+    }
+
+    /// Constant voltage (state 100 = 32 V on alpha) at standstill:
+    /// i(tau) = (1 - 1/e) u / R, and u / R in steady state.
+    #[test]
+    fn steady_state_at_constant_voltage() {
+        let mut p = plant(0.0);
+        let u = 2.0 / 3.0 * 48.0;
+        p.hold(0b100, L / R);
+        assert!((p.state().i_alpha_a - (1.0 - (-1.0f64).exp()) * u / R).abs() < 1e-10);
+        p.hold(0b100, 40e-3);
+        assert!((p.state().i_alpha_a - u / R).abs() < 1e-9);
+        assert!(p.state().i_beta_a.abs() < 1e-12);
+        assert_eq!(p.transitions(), [1, 0, 0]);
+        // At speed with the zero vector the rotor-frame current is the
+        // short-circuit current -j w psi / (R + j w L), constant in dq.
+        let w = 500.0;
+        let mut p = plant(w);
+        p.hold(0b000, 40e-3);
+        let den = R * R + w * w * L * L;
+        let (id, iq) = p.i_dq_a();
+        assert!((id + w * w * L * PSI / den).abs() < 1e-9, "{id}");
+        assert!((iq + w * R * PSI / den).abs() < 1e-9, "{iq}");
+        // Braking torque 1.5 p psi iq.
+        assert!((p.torque_nm() - 1.5 * 7.0 * PSI * iq).abs() < 1e-12);
+    }
+
+    /// Independent solution: RK4 with a 5 ns step of the rotor-frame (dq)
+    /// equations under the same piecewise-constant stator voltage.
+    fn rk4_dq(segments: &[(f64, (f64, f64))], w: f64, mut x: [f64; 2], mut th: f64) -> [f64; 2] {
+        let f = |x: [f64; 2], th: f64, u_ab: (f64, f64)| {
+            let (ud, uq) = park(u_ab.0, u_ab.1, th);
+            [
+                (ud - R * x[0] + w * L * x[1]) / L,
+                (uq - R * x[1] - w * L * x[0] - w * PSI) / L,
+            ]
+        };
+        for &(dur, u) in segments {
+            let n = (dur / 5e-9).ceil() as usize;
+            let h = dur / n as f64;
+            for _ in 0..n {
+                let k1 = f(x, th, u);
+                let x2 = [x[0] + 0.5 * h * k1[0], x[1] + 0.5 * h * k1[1]];
+                let k2 = f(x2, th + 0.5 * h * w, u);
+                let x3 = [x[0] + 0.5 * h * k2[0], x[1] + 0.5 * h * k2[1]];
+                let k3 = f(x3, th + 0.5 * h * w, u);
+                let x4 = [x[0] + h * k3[0], x[1] + h * k3[1]];
+                let k4 = f(x4, th + h * w, u);
+                for i in 0..2 {
+                    x[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+                }
+                th += h * w;
+            }
+        }
+        x
+    }
+
+    /// Centre-aligned PWM with edges inside the period at speed, against the
+    /// hand-built sequence of switch states and an RK4 solution in dq.
+    #[test]
+    fn pwm_edges_inside_the_period_match_rk4() {
+        let w = 800.0;
+        let t = 62.5e-6;
+        let mut p = plant(w);
+        p.set_state(1.0, 2.0, 0.3, w).unwrap();
+        let (i0d, i0q) = p.i_dq_a();
+        p.step(&Actuation::DutyAbc([0.7, 0.4, 0.2]), t, 16, |_| {})
+            .unwrap();
+        // Leg on-intervals: a [0.15, 0.85] T, b [0.30, 0.70] T, c [0.40, 0.60] T.
+        let seq = [
+            (0.15, 0b000),
+            (0.15, 0b100),
+            (0.10, 0b110),
+            (0.20, 0b111),
+            (0.10, 0b110),
+            (0.15, 0b100),
+            (0.15, 0b000),
+        ];
+        let segs: Vec<(f64, (f64, f64))> = seq
+            .iter()
+            .map(|&(f, s)| (f * t, switch_state_alpha_beta(s, 48.0)))
+            .collect();
+        let x = rk4_dq(&segs, w, [i0d, i0q], 0.3);
+        let (id, iq) = p.i_dq_a();
+        assert!(
+            (id - x[0]).abs() < 1e-9 && (iq - x[1]).abs() < 1e-9,
+            "{id} {iq} vs {x:?}"
+        );
+        // Six gate edges (one on, one off per leg).
+        assert_eq!(p.transitions(), [2, 2, 2]);
+        assert!((p.state().t_s - t).abs() < 1e-18);
+    }
+
+    /// Energy balance over an arbitrary switching sequence at speed:
+    /// input = copper loss + change of magnetic energy + mechanical work.
+    #[test]
+    fn energy_balance() {
+        let w = 600.0;
+        let mut p = plant(w);
+        let (mut e_in, mut e_cu, mut e_mech) = (0.0, 0.0, 0.0);
+        let w_mag = |p: &Plant| {
+            let s = p.state();
+            0.75 * L * (s.i_alpha_a * s.i_alpha_a + s.i_beta_a * s.i_beta_a)
+        };
+        let w0 = w_mag(&p);
+        let states = [4u8, 6, 7, 2, 3, 0, 1, 5, 4, 4, 6, 2];
+        for (k, &s) in states.iter().cycle().take(300).enumerate() {
+            let dur = (3.0 + (k % 7) as f64) * 1e-6;
+            let (ua, ub) = switch_state_alpha_beta(s, 48.0);
+            // Simpson over 64 sub-steps of the exact solution.
+            let n = 64;
+            let h = dur / n as f64;
+            let pw = |p: &Plant| {
+                let st = p.state();
+                let (_, iq) = p.i_dq_a();
+                let i2 = st.i_alpha_a * st.i_alpha_a + st.i_beta_a * st.i_beta_a;
+                (
+                    1.5 * (ua * st.i_alpha_a + ub * st.i_beta_a),
+                    1.5 * R * i2,
+                    1.5 * PSI * w * iq,
+                )
+            };
+            let mut acc = [0.0; 3];
+            let mut add = |p: &Plant, c: f64| {
+                let v = pw(p);
+                acc[0] += c * v.0;
+                acc[1] += c * v.1;
+                acc[2] += c * v.2;
+            };
+            p.hold(s, 0.0);
+            add(&p, 1.0);
+            for j in 1..=n {
+                p.hold(s, h);
+                add(
+                    &p,
+                    if j == n {
+                        1.0
+                    } else if j % 2 == 1 {
+                        4.0
+                    } else {
+                        2.0
+                    },
+                );
+            }
+            e_in += acc[0] * h / 3.0;
+            e_cu += acc[1] * h / 3.0;
+            e_mech += acc[2] * h / 3.0;
+        }
+        let dw = w_mag(&p) - w0;
+        let resid = e_in - e_cu - dw - e_mech;
+        assert!(e_in.abs() > 1e-4, "{e_in}");
+        assert!(
+            resid.abs() < 1e-9 * e_in.abs().max(e_cu),
+            "in {e_in} cu {e_cu} dW {dw} mech {e_mech} resid {resid}"
+        );
+    }
+
+    /// Dead time, hand-constructed: i_a > 0, i_b, i_c < 0, duties 0.5, 1 us
+    /// dead time. Leg a turns on 1 us late; legs b, c turn off 1 us late.
+    #[test]
+    fn dead_time_follows_current_direction() {
+        let m = MotorParams::default();
+        let t = 62.5e-6;
+        let dt = 1e-6;
+        let mut p = Plant::new(&m, dt, MechanicalMode::ConstantSpeed, 0.0).unwrap();
+        p.set_state(5.0, 0.0, 0.0, 0.0).unwrap();
+        p.step(&Actuation::DutyAbc([0.5; 3]), t, 16, |_| {})
+            .unwrap();
+        let mut q = plant(0.0);
+        q.set_state(5.0, 0.0, 0.0, 0.0).unwrap();
+        let (on, off) = (0.25 * t, 0.75 * t);
+        for (dur, s) in [
+            (on, 0b000),
+            (dt, 0b011),
+            (off - on - dt, 0b111),
+            (dt, 0b011),
+            (t - off - dt, 0b000),
+        ] {
+            q.hold(s, dur);
+        }
+        let (a, b) = (p.state(), q.state());
+        assert!(
+            (a.i_alpha_a - b.i_alpha_a).abs() < 1e-12 && (a.i_beta_a - b.i_beta_a).abs() < 1e-12
+        );
+        // The dead time cost leg a 1 us of U_dc, visibly: the current is lower
+        // than without dead time.
+        let mut r = plant(0.0);
+        r.set_state(5.0, 0.0, 0.0, 0.0).unwrap();
+        r.step(&Actuation::DutyAbc([0.5; 3]), t, 16, |_| {})
+            .unwrap();
+        assert!(r.state().i_alpha_a - a.i_alpha_a > 1e-3);
+        assert_eq!(p.transitions(), [2, 2, 2]);
+        // A pending transition carries over a period boundary: switch state
+        // 100 from 000 with i_a > 0 and the edge delayed past the period end.
+        let mut p = Plant::new(&m, dt, MechanicalMode::ConstantSpeed, 0.0).unwrap();
+        p.set_state(5.0, 0.0, 0.0, 0.0).unwrap();
+        p.step(&Actuation::SwitchState(0b100), 0.5e-6, 1, |_| {})
+            .unwrap();
+        p.step(&Actuation::SwitchState(0b100), 10e-6, 1, |_| {})
+            .unwrap();
+        let mut q = plant(0.0);
+        q.set_state(5.0, 0.0, 0.0, 0.0).unwrap();
+        q.hold(0b000, dt);
+        q.hold(0b100, 9.5e-6);
+        assert!((p.state().i_alpha_a - q.state().i_alpha_a).abs() < 1e-12);
+    }
+
+    /// Inertia mode: with the current held at i_q = 4 A (constant torque)
+    /// against a 0.1 N m load, the electrical speed ramps at p (T - T_L) / J.
+    #[test]
+    fn inertia_mode_ramps_at_torque_over_inertia() {
+        let m = MotorParams::default();
+        let load = 0.1;
+        let mut p = Plant::new(
+            &m,
+            0.0,
+            MechanicalMode::Inertia {
+                load_torque_nm: load,
+            },
+            0.0,
+        )
+        .unwrap();
+        // Keep i_q = 4 A, i_d = 0 by applying, every 1 us, the exact voltage
+        // R i + back-EMF in the rotor frame (held in alpha-beta for 1 us).
+        let iq = 4.0;
+        let (a0, b0) = inv_park(0.0, iq, 0.0);
+        p.set_state(a0, b0, 0.0, 0.0).unwrap();
+        for _ in 0..5000 {
+            let s = *p.state();
+            let (ud, uq) = (-s.omega_e_rad_s * L * iq, R * iq + s.omega_e_rad_s * PSI);
+            let (ua, ub) = inv_park(ud, uq, s.theta_e_rad + 0.5e-6 * s.omega_e_rad_s);
+            p.advance_voltage(ua, ub, 1e-6);
+        }
+        let torque = 1.5 * 7.0 * PSI * iq;
+        let (_, q) = p.i_dq_a();
+        assert!((q - iq).abs() < 0.01, "{q}");
+        let want = 7.0 * (torque - load) / m.j_kg_m2 * 5e-3;
+        let got = p.state().omega_e_rad_s;
+        assert!((got - want).abs() < 0.005 * want, "{got} vs {want}");
+    }
+}

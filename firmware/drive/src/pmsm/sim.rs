@@ -150,3 +150,123 @@ pub fn run<C: Controller + ?Sized>(
         transitions: [tr[0] - tr0[0], tr[1] - tr0[1], tr[2] - tr0[2]],
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pmsm::params::MotorParams;
+    use crate::pmsm::plant::MechanicalMode;
+    use std::vec::Vec;
+
+    /// Returns 100 at its first decision and 000 afterwards; logs measurements.
+    struct Pulse {
+        k: u64,
+        seen: Vec<Measurement>,
+    }
+
+    impl Controller for Pulse {
+        fn period_s(&self) -> f64 {
+            1.0 / 64_000.0
+        }
+        fn step(&mut self, m: &Measurement, _r: f64) -> Actuation {
+            self.seen.push(*m);
+            self.k += 1;
+            Actuation::SwitchState(if self.k == 1 { 0b100 } else { 0b000 })
+        }
+    }
+
+    fn run_pulse(delay: u32, w: f64) -> (Vec<TracePoint>, Pulse) {
+        let mut plant = Plant::new(
+            &MotorParams::default(),
+            0.0,
+            MechanicalMode::ConstantSpeed,
+            w,
+        )
+        .unwrap();
+        let mut c = Pulse {
+            k: 0,
+            seen: Vec::new(),
+        };
+        let d = DriveParams {
+            computation_delay_periods: delay,
+            ..Default::default()
+        };
+        let mut tr = Vec::new();
+        let s = run(&mut plant, &mut c, &d, 4, |_| 0.0, |p| tr.push(*p)).unwrap();
+        assert_eq!(s.periods, 4);
+        (tr, c)
+    }
+
+    #[test]
+    fn computation_delay_shifts_the_decision_by_one_period() {
+        let (tr, _) = run_pulse(1, 0.0);
+        assert_eq!(tr.len(), 16); // 4 ADC samples per 64 kHz period
+        let ends: Vec<&TracePoint> = tr.iter().filter(|p| p.end_of_period).collect();
+        assert_eq!(ends.len(), 4);
+        // Period 0 runs the initial 000: no current; period 1 runs 100.
+        assert_eq!(ends[0].i_d_a, 0.0);
+        assert_eq!(ends[0].applied, Actuation::SwitchState(0));
+        assert_eq!(ends[1].applied, Actuation::SwitchState(0b100));
+        // 32 V on the d axis (angle 0) for 15.625 us: i = u/R (1 - e^{-R T/L}).
+        let want = 32.0 / 0.555 * (1.0 - (-0.555 * 15.625e-6 / 0.64e-3f64).exp());
+        assert!((ends[1].i_d_a - want).abs() < 1e-9, "{}", ends[1].i_d_a);
+        assert_eq!(ends[1].transitions, [1, 0, 0]);
+        assert_eq!(ends[2].transitions, [2, 0, 0]);
+        let (tr0, _) = run_pulse(0, 0.0);
+        assert!((tr0[3].i_d_a - want).abs() < 1e-9);
+        let (tr2, _) = run_pulse(2, 0.0);
+        assert_eq!(tr2[7].i_d_a, 0.0);
+        assert!((tr2[11].i_d_a - want).abs() < 1e-9);
+    }
+
+    #[test]
+    fn measurement_is_the_mean_of_the_last_four_samples() {
+        let (tr, c) = run_pulse(1, 3000.0);
+        // Decision k sees the samples of period k-1 (indices 4(k-1)..4k).
+        for k in 1..4 {
+            let w = &tr[4 * (k - 1)..4 * k];
+            let mut i_a = 0.0;
+            for p in w {
+                let (al, _) = crate::pmsm::frames::inv_park(p.i_d_a, p.i_q_a, p.theta_e_rad);
+                i_a += al / 4.0;
+            }
+            let m = &c.seen[k];
+            assert!((m.i_abc_a[0] - i_a).abs() < 1e-12, "{k}");
+            // The mean angle lags the newest sample by 1.5 ADC periods.
+            let lag = w[3].theta_e_rad - m.theta_e_rad;
+            assert!((lag - 1.5 * 3000.0 / 256e3).abs() < 1e-9, "{lag}");
+        }
+        // The first decision sees the initial state.
+        assert_eq!(c.seen[0].i_abc_a, [0.0; 3]);
+    }
+
+    #[test]
+    fn bad_controller_period_is_rejected() {
+        struct Odd;
+        impl Controller for Odd {
+            fn period_s(&self) -> f64 {
+                1.0 / 60_000.0
+            }
+            fn step(&mut self, _: &Measurement, _: f64) -> Actuation {
+                Actuation::SwitchState(0)
+            }
+        }
+        let mut plant = Plant::new(
+            &MotorParams::default(),
+            0.0,
+            MechanicalMode::ConstantSpeed,
+            0.0,
+        )
+        .unwrap();
+        let r = run(
+            &mut plant,
+            &mut Odd,
+            &DriveParams::default(),
+            3,
+            |_| 0.0,
+            |_| {},
+        );
+        assert!(r.is_err());
+        assert_eq!(plant.state().t_s, 0.0);
+    }
+}
