@@ -18,3 +18,4 @@ pub mod observer;
 pub mod foc;
 pub mod metrics;
 pub mod svpwm;
+pub mod mpdtc_fixed;

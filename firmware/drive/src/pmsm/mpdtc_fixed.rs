@@ -1,0 +1,398 @@
+//! Bit-accurate fixed-point model of the MPDTC PL core (oracle of the Verilog).
+//!
+//! Same algorithm as [`super::mpdtc_ref`] (read its interpretations 1-14),
+//! rewritten as integer arithmetic a pipelined core with DSP48E1 slices
+//! (25 x 18 multiplier + 48-bit adder) computes bit-exactly. No division, no
+//! floating point, no trigonometry inside the core: sin/cos come in as inputs
+//! (the encoder front end's LUT), every constant that needs a division is a
+//! parameter register written by the PS.
+//!
+//! Formats (also in `docs/mpdtc-fixed.md`). `sQm.n`: two's complement,
+//! 1 sign bit, m integer bits, n fraction bits (width 1 + m + n).
+//!
+//! | name | format | width | range | LSB | used for |
+//! |---|---|---|---|---|---|
+//! | CUR | sQ8.16 | 25 | [-256, 256) A | 15.3 uA | currents, current increments per period (A), band, limits |
+//! | COEF | sQ1.16 | 18 | [-2, 2) | 1.53e-5 | `a`, `w Ts`, cos/sin, `lambda`, gains |
+//! | TRQ | sQ3.14 | 18 | [-8, 8) N m | 61 uN m | torque reference |
+//! | KINV | sQ8.16 | 25 | [-256, 256) A/N m | | `1 / k_T` |
+//! | CSQ | sQ8.8 | 18 | [-256, 256) A | 3.9 mA | current operand of the square (cost) |
+//! | MAG | uQ13.11 in s25 | 25 | [0, 8192) A^2 | 4.9e-4 A^2 | `|I|^2` |
+//! | WGT | sQ3.14 | 18 | [0, 8) | 6.1e-5 | `2^(2 n p)`, n = 0..3 |
+//! | COST | sQ16.25 | 43 (kept 48) | exact | | `J^2 = WGT * MAG`, compared, never rounded |
+//!
+//! Arithmetic rules (every operation of [`decide`] uses only these):
+//! - **Product** `COEF x CUR` is exact (43 bits, 32 fraction bits). A *MAC
+//!   expression* sums up to three such products and an addend `y` (CUR,
+//!   aligned by `<< 16`) in a 48-bit accumulator (no overflow possible:
+//!   |sum| < 3 * 2^41 + 2^40 < 2^47), then **rounds** once: `+ 2^15`,
+//!   arithmetic shift right by 16 (round half up), then **saturates** to
+//!   25 bits. In the core this is a DSP48 cascade (PCIN) with the rounding
+//!   constant OR-ed into the low bits of the C operand (`y << 16` has 16 zero
+//!   low bits), so one multiplier and one adder per stage.
+//! - **Add/sub** of CUR values saturates to 25 bits.
+//! - **Clamp** to a symmetric limit register `L` (CUR): `min(max(x, -L), L)`.
+//! - Overflow argument: currents of the drive stay below 64 A (the inverter
+//!   trips far below), so CUR (256 A) has 2 bits of headroom over every
+//!   sum of two currents; saturation only triggers on faults and is then
+//!   harmless (the decision is still a valid switch state).
+
+use super::mpdtc_ref::{MpdtcConfig, SWITCH_WEIGHT};
+use super::params::ParamError;
+
+/// Width of CUR.
+pub const CUR_BITS: u32 = 25;
+/// Fraction bits of CUR and COEF.
+pub const FRAC: u32 = 16;
+/// Fraction bits of TRQ and WGT.
+pub const TRQ_FRAC: u32 = 14;
+/// Right shift from the exact square (24 fraction bits) to MAG (11).
+pub const MAG_SHIFT: u32 = 13;
+/// Right shift from CUR to CSQ.
+pub const CSQ_SHIFT: u32 = 8;
+
+const CUR_MAX: i64 = (1 << (CUR_BITS - 1)) - 1;
+const CUR_MIN: i64 = -(1 << (CUR_BITS - 1));
+const S18_MAX: i64 = (1 << 17) - 1;
+const S18_MIN: i64 = -(1 << 17);
+
+/// Saturate to 25 bits.
+#[inline]
+pub fn sat25(x: i64) -> i32 {
+    x.clamp(CUR_MIN, CUR_MAX) as i32
+}
+
+/// Saturate to 18 bits.
+#[inline]
+pub fn sat18(x: i64) -> i32 {
+    x.clamp(S18_MIN, S18_MAX) as i32
+}
+
+/// Round half up and shift right by `sh` (arithmetic).
+#[inline]
+pub fn rnd_shr(x: i64, sh: u32) -> i64 {
+    (x + (1i64 << (sh - 1))) >> sh
+}
+
+/// MAC expression: `sat25(rnd16(sum(c_i * x_i) + (y << 16)))`, COEF x CUR.
+#[inline]
+pub fn mac(terms: &[(i32, i32)], y: i32) -> i32 {
+    let mut acc = (y as i64) << FRAC;
+    for &(c, x) in terms {
+        acc += c as i64 * x as i64;
+    }
+    sat25(rnd_shr(acc, FRAC))
+}
+
+/// Saturating CUR add.
+#[inline]
+pub fn add(a: i32, b: i32) -> i32 {
+    sat25(a as i64 + b as i64)
+}
+
+/// Saturating CUR subtract.
+#[inline]
+pub fn sub(a: i32, b: i32) -> i32 {
+    sat25(a as i64 - b as i64)
+}
+
+/// Clamp to `[-lim, lim]`.
+#[inline]
+pub fn clamp(x: i32, lim: i32) -> i32 {
+    x.clamp(-lim, lim)
+}
+
+/// Quantize an `f64` to `frac` fraction bits (round to nearest), checking
+/// the signed `bits` range. Host side only (parameter registers, inputs).
+pub fn quantize(x: f64, frac: u32, bits: u32, field: &'static str) -> Result<i32, ParamError> {
+    let v = libm::round(x * (1u64 << frac) as f64);
+    let max = ((1i64 << (bits - 1)) - 1) as f64;
+    if !(v.is_finite() && v >= -max - 1.0 && v <= max) {
+        return Err(ParamError {
+            field,
+            reason: "out of the fixed-point range of its register",
+        });
+    }
+    Ok(v as i32)
+}
+
+/// Quantize with saturation (for run-time inputs: never fails, NaN -> 0).
+pub fn quantize_sat(x: f64, frac: u32, bits: u32) -> i32 {
+    if x.is_nan() {
+        return 0;
+    }
+    let v = libm::round(x * (1u64 << frac) as f64);
+    let max = ((1i64 << (bits - 1)) - 1) as f64;
+    v.clamp(-max - 1.0, max) as i32
+}
+
+/// Parameter registers of the core (written by the PS; formats per field).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct FixedParams {
+    /// `a = 1 - R Ts / L`, COEF.
+    pub a: i32,
+    /// Measurement age `lambda`, COEF (0.375 -> 24576).
+    pub lambda: i32,
+    /// `U0 = (Ts / L) 2/3 U_dc`, current step of a full vector per period, CUR.
+    pub u0: i32,
+    /// `U0 / 2`, CUR.
+    pub u0_half: i32,
+    /// `U0 sqrt(3) / 2`, CUR.
+    pub u0_h: i32,
+    /// `psi / L`, A (back-EMF term is `(w Ts) psi / L`), CUR.
+    pub psi_l: i32,
+    /// `1 / k_T`, A/(N m), KINV.
+    pub kinv_t: i32,
+    /// Band `T_tol / k_T`, CUR.
+    pub tol: i32,
+    /// Integrator gain `K Ts`, COEF.
+    pub k_int: i32,
+    /// Integrator clamp `int_limit / k_T`, CUR.
+    pub int_lim: i32,
+    /// Observer `b Kp` (b = Ts/L), COEF.
+    pub kp_o: i32,
+    /// Observer `b Kp Ki Ts`, COEF.
+    pub ki_o: i32,
+    /// Observer clamp `b eps_max`, CUR.
+    pub eta_lim: i32,
+    /// Weights `2^(2 n p)`, n = transitions 0..=3, WGT.
+    pub w2: [i32; 4],
+}
+
+impl FixedParams {
+    /// Register values for a reference configuration (host side). Errors:
+    /// `L_d != L_q` (the core's torque is linear in `i_q`), or a value out
+    /// of its register range.
+    pub fn from_config(cfg: &MpdtcConfig) -> Result<Self, ParamError> {
+        let m = &cfg.model;
+        let p = &cfg.params;
+        if libm::fabs(m.l_d_h - m.l_q_h) > 1e-12 {
+            return Err(ParamError {
+                field: "l_q_h",
+                reason: "the fixed-point core needs L_d = L_q",
+            });
+        }
+        let ts = p.control_period_s;
+        let b = ts / m.l_d_h;
+        let u0 = b * m.u_dc_v * 2.0 / 3.0;
+        let kt = 1.5 * m.pole_pairs as f64 * cfg.torque_psi_wb();
+        let q = |x: f64, f: &'static str| quantize(x, FRAC, CUR_BITS, f);
+        let qc = |x: f64, f: &'static str| quantize(x, FRAC, 18, f);
+        let mut w2 = [0; 4];
+        for (n, w) in w2.iter_mut().enumerate() {
+            *w = quantize(
+                libm::exp2(2.0 * n as f64 * p.p_weight),
+                TRQ_FRAC,
+                18,
+                "p_weight",
+            )?;
+        }
+        Ok(Self {
+            a: qc(1.0 - m.r_s_ohm * ts / m.l_d_h, "r_s_ohm")?,
+            lambda: qc(p.meas_age_periods, "meas_age_periods")?,
+            u0: q(u0, "u_dc_v")?,
+            u0_half: q(0.5 * u0, "u_dc_v")?,
+            u0_h: q(0.5 * libm::sqrt(3.0) * u0, "u_dc_v")?,
+            psi_l: q(m.psi_pm_wb / m.l_d_h, "psi_pm_wb")?,
+            kinv_t: q(1.0 / kt, "torque_psi_wb")?,
+            tol: q(p.t_tol_nm / kt, "t_tol_nm")?,
+            k_int: qc(p.k_int_per_s * ts, "k_int_per_s")?,
+            int_lim: q(p.int_limit_nm / kt, "int_limit_nm")?,
+            kp_o: qc(b * p.obs_kp_v_per_a, "obs_kp_v_per_a")?,
+            ki_o: qc(b * p.obs_kp_v_per_a * p.obs_ki_per_s * ts, "obs_ki_per_s")?,
+            eta_lim: q(b * p.obs_limit_v, "obs_limit_v")?,
+            w2,
+        })
+    }
+}
+
+/// Inputs of one period (from the ADC/encoder front end).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct FixedInputs {
+    /// Measured `(i_d, i_q)` (averaged), CUR.
+    pub i_dq: (i32, i32),
+    /// `(cos, sin)` of the rotor angle at the middles of [k-1, k], [k, k+1],
+    /// [k+1, k+2], COEF.
+    pub trig: [(i32, i32); 3],
+    /// Electrical angle increment per period `w Ts`, rad, COEF.
+    pub w_ts: i32,
+    /// Torque reference `T*_origin[k]`, TRQ.
+    pub t_ref: i32,
+}
+
+/// State registers of the core.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct FixedState {
+    /// `S[k]` (applied over [k, k+1]).
+    pub s_applied: u8,
+    /// `S[k-1]`.
+    pub s_prev: u8,
+    /// Observer outputs of the previous period `(eta_d, eta_q)`, CUR.
+    pub eta_prev: (i32, i32),
+    /// Integrator output `x` (A), CUR.
+    pub x: i32,
+    /// Previous original reference in current units, CUR.
+    pub iq_ref_prev: i32,
+    /// Observer estimates `(i_hat_d, i_hat_q)`, CUR.
+    pub i_hat: (i32, i32),
+    /// Observer integrals `(nu_d, nu_q)`, CUR.
+    pub nu: (i32, i32),
+}
+
+/// Outputs of one period.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct FixedOutputs {
+    /// `S[k+1]`, bits `SaSbSc`.
+    pub s_next: u8,
+    /// Modified reference in current units `i_q*`, CUR.
+    pub iq_ref: i32,
+    /// Observer outputs `(eta_d, eta_q)` (= b eps), CUR.
+    pub eta: (i32, i32),
+    /// Delay-compensated `I_hat[k+1]`, CUR.
+    pub i1: (i32, i32),
+    /// Per candidate `(i_d, i_q)` at k+2, CUR.
+    pub i2: [(i32, i32); 8],
+    /// Per candidate `|i_q* - i_q2|`, CUR.
+    pub err: [i32; 8],
+    /// Per candidate `J^2` (COST).
+    pub cost2: [i64; 8],
+    /// State for the next period.
+    pub next: FixedState,
+}
+
+/// dq current increments of the three leg basis vectors at one angle, CUR:
+/// leg a: `U0 (c, -s)`, leg b: `(-U0/2 c + U0h s, U0/2 s + U0h c)`,
+/// leg c := -(a + b), so that 111 (and 000) give exactly 0.
+fn basis(p: &FixedParams, (c, s): (i32, i32)) -> [(i32, i32); 3] {
+    let m = |k: i32, x: i32| mac(&[(x, k)], 0);
+    let a = (m(p.u0, c), -m(p.u0, s));
+    let b = (
+        sub(m(p.u0_h, s), m(p.u0_half, c)),
+        add(m(p.u0_half, s), m(p.u0_h, c)),
+    );
+    let cc = (-(add(a.0, b.0)), -(add(a.1, b.1)));
+    [a, b, (sat25(cc.0 as i64), sat25(cc.1 as i64))]
+}
+
+/// Projection of state `s` from the basis (sum of the legs that are on).
+fn proj(bs: &[(i32, i32); 3], s: u8) -> (i32, i32) {
+    let mut r = (0, 0);
+    for (leg, v) in bs.iter().enumerate() {
+        if (s >> (2 - leg)) & 1 == 1 {
+            r = (add(r.0, v.0), add(r.1, v.1));
+        }
+    }
+    r
+}
+
+/// One model step (eq. 5/10) in CUR: from `i` under projection `u` and
+/// observer term `eta`, with coupling from `i_x` (the currents of eq. 6).
+fn step(
+    p: &FixedParams,
+    w_ts: i32,
+    i: (i32, i32),
+    i_x: (i32, i32),
+    u: (i32, i32),
+    eta: (i32, i32),
+) -> (i32, i32) {
+    (
+        mac(&[(p.a, i.0), (w_ts, i_x.1)], add(u.0, eta.0)),
+        mac(
+            &[(p.a, i.1), (-w_ts, i_x.0), (-w_ts, p.psi_l)],
+            add(u.1, eta.1),
+        ),
+    )
+}
+
+/// One control period of the core. Pure function of (state, inputs, params).
+pub fn decide(st: &FixedState, inp: &FixedInputs, p: &FixedParams) -> FixedOutputs {
+    let g = inp.w_ts;
+    let b0 = basis(p, inp.trig[0]);
+    let b1 = basis(p, inp.trig[1]);
+    let b2 = basis(p, inp.trig[2]);
+    let im = inp.i_dq;
+
+    // Measurement age (interpretation 14): i0 = im + lambda (full - im).
+    let full = step(p, g, im, im, proj(&b0, st.s_prev), st.eta_prev);
+    let i0 = (
+        add(im.0, mac(&[(p.lambda, sub(full.0, im.0))], 0)),
+        add(im.1, mac(&[(p.lambda, sub(full.1, im.1))], 0)),
+    );
+
+    // Eq. (13) in current units: x += K Ts (iq*_prev - i_q0).
+    let x = clamp(
+        add(st.x, mac(&[(p.k_int, sub(st.iq_ref_prev, i0.1))], 0)),
+        p.int_lim,
+    );
+    // T* -> A: TRQ (14 frac) x KINV (16 frac) -> 30 frac -> CUR (16).
+    let iq_orig = sat25(rnd_shr(inp.t_ref as i64 * p.kinv_t as i64, TRQ_FRAC));
+    let iq_ref = add(iq_orig, x);
+
+    // Observer (14)-(16) per axis, parallel model.
+    let e = (sub(i0.0, st.i_hat.0), sub(i0.1, st.i_hat.1));
+    let eta = (
+        clamp(add(mac(&[(p.kp_o, e.0)], 0), st.nu.0), p.eta_lim),
+        clamp(add(mac(&[(p.kp_o, e.1)], 0), st.nu.1), p.eta_lim),
+    );
+    let nu = (
+        clamp(add(st.nu.0, mac(&[(p.ki_o, e.0)], 0)), p.eta_lim),
+        clamp(add(st.nu.1, mac(&[(p.ki_o, e.1)], 0)), p.eta_lim),
+    );
+    let u1 = proj(&b1, st.s_applied);
+    let i_hat = step(p, g, st.i_hat, i0, u1, eta);
+
+    // Eq. (10) and (11).
+    let i1 = step(p, g, i0, i0, u1, eta);
+    let mut out = FixedOutputs {
+        iq_ref,
+        eta,
+        i1,
+        ..Default::default()
+    };
+    for s in 0..8u8 {
+        let i2 = step(p, g, i1, i1, proj(&b2, s), eta);
+        let err = sub(iq_ref, i2.1).saturating_abs().min(CUR_MAX as i32);
+        let (dc, qc) = (
+            sat18(rnd_shr(i2.0 as i64, CSQ_SHIFT)),
+            sat18(rnd_shr(i2.1 as i64, CSQ_SHIFT)),
+        );
+        let sq = i2.0 as i64 * dc as i64 + i2.1 as i64 * qc as i64;
+        let mag = sat25(rnd_shr(sq, MAG_SHIFT)) as i64;
+        let n = (SWITCH_WEIGHT[st.s_applied as usize & 7][s as usize]).trailing_zeros() as usize;
+        out.i2[s as usize] = i2;
+        out.err[s as usize] = err;
+        out.cost2[s as usize] = mag * p.w2[n] as i64;
+    }
+    out.s_next = select(&out.err, &out.cost2, p.tol, st.s_applied);
+    out.next = FixedState {
+        s_applied: out.s_next,
+        s_prev: st.s_applied,
+        eta_prev: eta,
+        x,
+        iq_ref_prev: iq_orig,
+        i_hat,
+        nu,
+    };
+    out
+}
+
+/// Band logic with the reference's tie rules (in band: least `J^2`; none in
+/// band: least error; ties: fewer transitions from `s_applied`, then lowest
+/// index). In hardware: 8 parallel keys, a 3-level compare tree.
+pub fn select(err: &[i32; 8], cost2: &[i64; 8], tol: i32, s_applied: u8) -> u8 {
+    let key = |s: usize| {
+        let n = ((s as u8 ^ s_applied) & 7).count_ones() as i64;
+        if err[s] <= tol {
+            (0i64, cost2[s], n)
+        } else {
+            (1i64, err[s] as i64, n)
+        }
+    };
+    let mut best = 0usize;
+    for s in 1..8 {
+        if key(s) < key(best) {
+            best = s;
+        }
+    }
+    best as u8
+}
