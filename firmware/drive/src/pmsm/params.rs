@@ -223,7 +223,7 @@ pub fn samples_per_period(period_s: f64, adc_rate_hz: f64) -> Option<usize> {
         return None;
     }
     let n = libm::round(x);
-    if n >= 1.0 && n <= 4096.0 && libm::fabs(x - n) < 1e-6 * n {
+    if (1.0..=4096.0).contains(&n) && libm::fabs(x - n) < 1e-6 * n {
         Some(n as usize)
     } else {
         None

@@ -204,12 +204,12 @@ impl Plant {
     /// dead time, edges at the start), exactly. Counts transitions.
     pub fn hold(&mut self, s: u8, h_s: f64) {
         let l = legs(s);
-        for x in 0..3 {
-            if self.gate[x] != l[x] {
+        for (x, &lx) in l.iter().enumerate() {
+            if self.gate[x] != lx {
                 self.transitions[x] += 1;
             }
-            self.gate[x] = l[x];
-            self.pole[x] = l[x];
+            self.gate[x] = lx;
+            self.pole[x] = lx;
             self.pending_s[x] = None;
         }
         if h_s > 0.0 {
@@ -221,7 +221,7 @@ impl Plant {
     /// `h_s` seconds, exactly (a zero-order hold in the stator frame).
     /// Leaves the gate bookkeeping untouched.
     pub fn advance_voltage(&mut self, u_alpha_v: f64, u_beta_v: f64, h_s: f64) {
-        if !(h_s > 0.0) || !u_alpha_v.is_finite() || !u_beta_v.is_finite() {
+        if h_s.is_nan() || h_s <= 0.0 || !u_alpha_v.is_finite() || !u_beta_v.is_finite() {
             return;
         }
         let t0 = self.torque_nm();
