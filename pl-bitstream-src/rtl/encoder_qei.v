@@ -1,0 +1,88 @@
+// encoder_qei: incremental encoder interface (A/B quadrature + index Z).
+//
+// Inputs a_i, b_i, z_i must already be synchronised (sync2 in pl_top).
+// Quadrature decoding, 4 counts per line: the phase (a, b) = 00, 10, 11, 01
+// is 0, 1, 2, 3; a step of +1 (A leads B) counts up, -1 counts down, a jump
+// of 2 (both inputs changed in one clock: the encoder is too fast or noisy)
+// is ignored. The position wraps in 0..cpr_i-1 (mechanical counts per
+// revolution). A rising edge of z_i sets the position to 0 (it wins over a
+// simultaneous count) and counts in index_cnt_o.
+// Speed: the counts moved during each window of window_i clock cycles,
+// saturated to signed 16 bits (speed_o, updated at the end of each window).
+// The first clock after reset only samples the inputs (no count, no index).
+// The electrical angle is pos * pole pairs * 2 pi / cpr (firmware / core).
+`default_nettype none
+
+module encoder_qei (
+    input  wire        clk_i,
+    input  wire        rst_i,
+    input  wire        a_i,
+    input  wire        b_i,
+    input  wire        z_i,
+    input  wire [15:0] cpr_i,
+    input  wire [23:0] window_i,
+    output wire [15:0] pos_o,
+    output wire [15:0] speed_o,
+    output wire [15:0] index_cnt_o
+);
+    localparam signed [15:0] SMAX = 16'sh7FFF;
+    localparam signed [15:0] SMIN = -16'sh7FFF - 16'sh0001;
+
+    reg  [ 1:0] ph_q;
+    reg         primed_q;  // ph_q holds a real sample (not the reset value)
+    reg         z_q;
+    reg  [15:0] pos_q;
+    reg  [15:0] index_q;
+    reg  [23:0] win_q;
+    reg  signed [15:0] acc_q;
+    reg  signed [15:0] speed_q;
+
+    wire [1:0] ph = {b_i, a_i ^ b_i};
+    wire [1:0] step = ph - ph_q;
+    wire up = primed_q && (step == 2'd1);
+    wire down = primed_q && (step == 2'd3);
+    wire index = z_i && !z_q;
+
+    // Saturating accumulate of this cycle's step.
+    wire signed [15:0] acc_next = (up && acc_q != SMAX) ? acc_q + 16'sd1
+        : (down && acc_q != SMIN) ? acc_q - 16'sd1 : acc_q;
+
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            ph_q     <= 2'd0;
+            primed_q <= 1'b0;
+            z_q      <= 1'b1;  // no index edge right out of reset
+            pos_q   <= 16'd0;
+            index_q <= 16'd0;
+            win_q   <= 24'd0;
+            acc_q   <= 16'sd0;
+            speed_q <= 16'sd0;
+        end else begin
+            ph_q     <= ph;
+            primed_q <= 1'b1;
+            z_q      <= z_i;
+            if (index) begin
+                pos_q   <= 16'd0;
+                index_q <= index_q + 16'd1;
+            end else if (up) begin
+                pos_q <= (pos_q >= cpr_i - 16'd1) ? 16'd0 : pos_q + 16'd1;
+            end else if (down) begin
+                pos_q <= (pos_q == 16'd0) ? cpr_i - 16'd1 : pos_q - 16'd1;
+            end
+            if (win_q + 24'd1 >= window_i) begin
+                win_q   <= 24'd0;
+                speed_q <= acc_next;
+                acc_q   <= 16'sd0;
+            end else begin
+                win_q <= win_q + 24'd1;
+                acc_q <= acc_next;
+            end
+        end
+    end
+
+    assign pos_o       = pos_q;
+    assign speed_o     = speed_q;
+    assign index_cnt_o = index_q;
+endmodule
+
+`default_nettype wire
