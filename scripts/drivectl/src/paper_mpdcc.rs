@@ -1,5 +1,30 @@
-//! Placeholder: filled in by its issue.
-use anyhow::{bail, Result};
+//! `drivectl paper mpdcc`: reproduces paper 001's experiments (Fig. 5, the
+//! FPGA-vs-reference decision mismatch, Table II) and `drivectl bench mpdcc`
+//! (closed-loop decisions per second of both implementations).
+//!
+//! Definitions used by every number printed here (docs/mpdcc.md):
+//! - switching frequency: device turn-ons per semiconductor per second
+//!   (24 devices), THD: rms of `i - i_1` over rms of `i_1`, pooled over the
+//!   three phases, over a whole number of periods ([`drive::mpdcc::stats`]);
+//! - decision mismatch: share of all steps where the FPGA model, fed the
+//!   reference's closed-loop state, returns another position than the
+//!   reference (the reference drives the plant);
+//! - fsw / THD differences: `|FPGA - reference| / reference` of the two
+//!   independent closed-loop runs, in percent; the headline is the maximum
+//!   over the sweep (the paper's "below 8 % and 2 %" covers its sweep).
+use anyhow::{anyhow, Context, Result};
+use drive::mpdcc::closed_loop::{self, LoopConfig, LoopResult, TraceSample};
+use drive::mpdcc::controller::MpdccController;
+use drive::mpdcc::cycles;
+use drive::mpdcc::fpga::{FpgaConfig, FpgaMpdcc};
+use drive::mpdcc::params::DriveParams;
+use drive::mpdcc::reference::Reference;
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+mod svg;
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -9,15 +34,619 @@ pub struct Args {
     /// Directory for CSV files and plots.
     #[arg(long)]
     pub out: Option<std::path::PathBuf>,
+    /// Drive parameter file (TOML, layout of examples/mpdcc-machine.toml).
+    #[arg(long)]
+    pub params: Option<PathBuf>,
+    /// Measurement window per closed-loop run, fundamental periods (after 2 warm-up periods).
+    #[arg(long, default_value_t = 25, value_parser = clap::value_parser!(u32).range(1..=500))]
+    pub periods: u32,
 }
 
 #[derive(clap::Args)]
-pub struct BenchArgs {}
-
-pub fn run(_a: Args) -> Result<()> {
-    bail!("not implemented yet")
+pub struct BenchArgs {
+    /// Simulated fundamental periods per implementation.
+    #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=500))]
+    pub periods: u32,
+    /// Drive parameter file (TOML).
+    #[arg(long)]
+    pub params: Option<PathBuf>,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
 }
 
-pub fn bench(_a: BenchArgs) -> Result<()> {
-    bail!("not implemented yet")
+/// Bound widths of the Fig. 5 sweep, pu.
+pub const DELTA_I_SWEEP_PU: [f64; 8] = [0.04, 0.06, 0.08, 0.10, 0.12, 0.15, 0.18, 0.22];
+
+/// Paper 001, Sec. VII-B.
+const PAPER_MISMATCH_PERCENT: f64 = 2.5;
+const PAPER_FSW_DIFF_PERCENT: f64 = 8.0;
+const PAPER_THD_DIFF_PERCENT: f64 = 2.0;
+
+#[derive(Serialize, Clone, Copy)]
+struct ImplStats {
+    fsw_hz: f64,
+    thd_percent: f64,
+    switching_decisions: u64,
+    deadlocks: u64,
+    steps_outside_bounds: u64,
+    max_abs_v_n_pu: f64,
+    max_v_ph_dev_pu: f64,
+    max_i_err_pu: f64,
+    max_level_jump: u8,
+}
+
+impl From<&LoopResult> for ImplStats {
+    fn from(r: &LoopResult) -> Self {
+        Self {
+            fsw_hz: r.fsw_hz,
+            thd_percent: r.thd_percent,
+            switching_decisions: r.switching_decisions,
+            deadlocks: r.deadlocks,
+            steps_outside_bounds: r.steps_outside_bounds,
+            max_abs_v_n_pu: r.max_abs_v_n_pu,
+            max_v_ph_dev_pu: r.max_v_ph_dev_pu,
+            max_i_err_pu: r.max_i_err_pu,
+            max_level_jump: r.max_level_jump,
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct Fig5Row {
+    delta_i_pu: f64,
+    reference: ImplStats,
+    fpga: ImplStats,
+    /// FPGA model shadowing the reference's closed loop, percent of steps.
+    decision_mismatch_percent: f64,
+    steps: u64,
+    fsw_diff_percent: f64,
+    thd_diff_percent: f64,
+}
+
+#[derive(Serialize)]
+struct Mismatch {
+    /// Pooled over all sweep runs, percent of steps.
+    decision_mismatch_percent: f64,
+    /// Mismatches among the steps where the reference switched, percent of those steps.
+    decision_mismatch_switching_percent: f64,
+    /// Max over the sweep of |fsw_fpga - fsw_ref| / fsw_ref, percent.
+    fsw_diff_percent: f64,
+    /// Max over the sweep of |thd_fpga - thd_ref| / thd_ref, percent.
+    thd_diff_percent: f64,
+    /// Max over the sweep of |thd_fpga - thd_ref|, percentage points.
+    thd_diff_points: f64,
+    /// Mean over the sweep of the relative differences, percent.
+    fsw_diff_mean_percent: f64,
+    thd_diff_mean_percent: f64,
+    paper_decision_mismatch_percent: f64,
+    paper_fsw_diff_max_percent: f64,
+    paper_thd_diff_max_percent: f64,
+}
+
+#[derive(Serialize)]
+struct Report {
+    fig5: Vec<Fig5Row>,
+    mismatch: Mismatch,
+    cycles: Vec<cycles::Table2Row>,
+    params: DriveParams,
+    p_correction: f64,
+    measure_periods: u32,
+    runtime_s: f64,
+}
+
+/// Loads and validates the parameter file (defaults when absent).
+pub fn load_params(path: Option<&Path>) -> Result<DriveParams> {
+    let p = match path {
+        None => DriveParams::default(),
+        Some(f) => {
+            let text =
+                std::fs::read_to_string(f).with_context(|| format!("reading {}", f.display()))?;
+            toml::from_str::<DriveParams>(&text)
+                .with_context(|| format!("parsing {}", f.display()))?
+        }
+    };
+    p.validate().map_err(|e| anyhow!("{e}"))?;
+    Ok(p)
+}
+
+fn fpga_for(p: &DriveParams) -> Result<FpgaMpdcc> {
+    FpgaMpdcc::new(
+        p,
+        FpgaConfig::with_p(drive::mpdcc::fpga::p_taylor(&p.machine)),
+    )
+    .map_err(|e| anyhow!("FPGA model: {e}"))
+}
+
+fn rel_diff_percent(a: f64, b_ref: f64) -> f64 {
+    if b_ref.abs() < 1e-12 {
+        0.0
+    } else {
+        100.0 * (a - b_ref).abs() / b_ref.abs()
+    }
+}
+
+fn run_loop(
+    p: &DriveParams,
+    cfg: &LoopConfig,
+    ctrl: &mut dyn MpdccController,
+    shadow: Option<&mut dyn MpdccController>,
+    trace: &mut dyn FnMut(&TraceSample),
+) -> Result<LoopResult> {
+    closed_loop::run(p, cfg, ctrl, shadow, trace)
+        .map_err(|e| anyhow!("{} closed loop: {e}", ctrl.name()))
+}
+
+pub fn run(a: Args) -> Result<()> {
+    let t0 = Instant::now();
+    let base = load_params(a.params.as_deref())?;
+    if let Some(d) = &a.out {
+        std::fs::create_dir_all(d).with_context(|| format!("creating {}", d.display()))?;
+    }
+    let cfg = LoopConfig {
+        warmup_periods: 2,
+        measure_periods: a.periods,
+    };
+    let mut fig5 = Vec::new();
+    let (mut mm, mut mm_sw, mut steps, mut sw_steps) = (0u64, 0u64, 0u64, 0u64);
+    let mut traces: Vec<(f64, Vec<TraceSample>)> = Vec::new();
+    let per_period = (1.0
+        / (base.operating_point.omega_s_pu * base.machine.f_rated_hz * base.controller.ts_s))
+        .round() as usize;
+    for &di in &DELTA_I_SWEEP_PU {
+        let mut p = base;
+        p.controller.delta_i_pu = di;
+        p.validate().map_err(|e| anyhow!("{e}"))?;
+        let mut reference = Reference::new(&p).map_err(|e| anyhow!("{e}"))?;
+        let mut shadow = fpga_for(&p)?;
+        // Keep the last period of the nominal run for the waveform plot.
+        let mut tr: Vec<TraceSample> = Vec::new();
+        let keep = di == base.controller.delta_i_pu || (di - 0.12).abs() < 1e-12;
+        let r_ref = run_loop(&p, &cfg, &mut reference, Some(&mut shadow), &mut |s| {
+            if keep {
+                tr.push(*s);
+                if tr.len() > 2 * per_period {
+                    tr.drain(..per_period);
+                }
+            }
+        })?;
+        if keep {
+            let n = tr.len().saturating_sub(per_period);
+            traces.push((di, tr.split_off(n)));
+        }
+        let mut fpga = fpga_for(&p)?;
+        let r_fpga = run_loop(&p, &cfg, &mut fpga, None, &mut |_| {})?;
+        mm += r_ref.shadow_mismatches;
+        mm_sw += r_ref.shadow_mismatches_switching;
+        steps += r_ref.steps;
+        sw_steps += r_ref.switching_decisions;
+        fig5.push(Fig5Row {
+            delta_i_pu: di,
+            reference: (&r_ref).into(),
+            fpga: (&r_fpga).into(),
+            decision_mismatch_percent: r_ref.mismatch_percent(),
+            steps: r_ref.steps,
+            fsw_diff_percent: rel_diff_percent(r_fpga.fsw_hz, r_ref.fsw_hz),
+            thd_diff_percent: rel_diff_percent(r_fpga.thd_percent, r_ref.thd_percent),
+        });
+    }
+    let n = fig5.len() as f64;
+    let mismatch = Mismatch {
+        decision_mismatch_percent: 100.0 * mm as f64 / steps.max(1) as f64,
+        decision_mismatch_switching_percent: 100.0 * mm_sw as f64 / sw_steps.max(1) as f64,
+        fsw_diff_percent: fig5.iter().map(|r| r.fsw_diff_percent).fold(0.0, f64::max),
+        thd_diff_percent: fig5.iter().map(|r| r.thd_diff_percent).fold(0.0, f64::max),
+        thd_diff_points: fig5
+            .iter()
+            .map(|r| (r.fpga.thd_percent - r.reference.thd_percent).abs())
+            .fold(0.0, f64::max),
+        fsw_diff_mean_percent: fig5.iter().map(|r| r.fsw_diff_percent).sum::<f64>() / n,
+        thd_diff_mean_percent: fig5.iter().map(|r| r.thd_diff_percent).sum::<f64>() / n,
+        paper_decision_mismatch_percent: PAPER_MISMATCH_PERCENT,
+        paper_fsw_diff_max_percent: PAPER_FSW_DIFF_PERCENT,
+        paper_thd_diff_max_percent: PAPER_THD_DIFF_PERCENT,
+    };
+    let m_bits = base.controller.horizon_max_steps.trailing_zeros();
+    let table2 = cycles::table2(m_bits).to_vec();
+    let report = Report {
+        fig5,
+        mismatch,
+        cycles: table2,
+        params: base,
+        p_correction: drive::mpdcc::fpga::p_taylor(&base.machine),
+        measure_periods: a.periods,
+        runtime_s: t0.elapsed().as_secs_f64(),
+    };
+    if let Some(d) = &a.out {
+        write_outputs(d, &report, &traces)?;
+    }
+    if a.json {
+        println!("{}", serde_json::to_string_pretty(&report)?);
+    } else {
+        print!("{}", tables(&report));
+    }
+    Ok(())
+}
+
+fn tables(r: &Report) -> String {
+    let mut o = String::new();
+    let _ = writeln!(
+        o,
+        "Paper 001, Fig. 5: switching frequency per semiconductor and stator current THD vs delta_i\n\
+         ({} periods per run at rated current and frequency, T_s = {} us; the paper's Fig. 5 values are only plotted, not tabulated)\n",
+        r.measure_periods,
+        r.params.controller.ts_s * 1e6
+    );
+    let _ = writeln!(o, "| delta_i (pu) | fsw ref (Hz) | fsw FPGA (Hz) | diff (%) | THD ref (%) | THD FPGA (%) | diff (%) | decision mismatch (%) |");
+    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|");
+    for f in &r.fig5 {
+        let _ = writeln!(
+            o,
+            "| {:.2} | {:.1} | {:.1} | {:.1} | {:.2} | {:.2} | {:.1} | {:.2} |",
+            f.delta_i_pu,
+            f.reference.fsw_hz,
+            f.fpga.fsw_hz,
+            f.fsw_diff_percent,
+            f.reference.thd_percent,
+            f.fpga.thd_percent,
+            f.thd_diff_percent,
+            f.decision_mismatch_percent
+        );
+    }
+    let m = &r.mismatch;
+    let _ = writeln!(
+        o,
+        "\nFPGA model vs idealized reference (paper Sec. VII-B)\n"
+    );
+    let _ = writeln!(o, "| quantity | paper | ours |");
+    let _ = writeln!(o, "|---|---|---|");
+    let _ = writeln!(
+        o,
+        "| decision mismatch, % of steps | {:.1} | {:.2} |",
+        m.paper_decision_mismatch_percent, m.decision_mismatch_percent
+    );
+    let _ = writeln!(
+        o,
+        "| decision mismatch, % of switching steps | - | {:.1} |",
+        m.decision_mismatch_switching_percent
+    );
+    let _ = writeln!(
+        o,
+        "| max fsw difference over sweep, % | < {:.0} | {:.1} |",
+        m.paper_fsw_diff_max_percent, m.fsw_diff_percent
+    );
+    let _ = writeln!(
+        o,
+        "| max THD difference over sweep, % (relative) | < {:.0} | {:.1} |",
+        m.paper_thd_diff_max_percent, m.thd_diff_percent
+    );
+    let _ = writeln!(
+        o,
+        "| max THD difference over sweep, percentage points | - | {:.2} |",
+        m.thd_diff_points
+    );
+    let _ = writeln!(
+        o,
+        "| mean fsw / THD difference, % | - | {:.1} / {:.1} |",
+        m.fsw_diff_mean_percent, m.thd_diff_mean_percent
+    );
+    let _ = writeln!(o, "\nTable II: worst-case clock cycles per decision\n");
+    let _ = writeln!(
+        o,
+        "| explorers | paper Table II | paper 47 + 2176/n | our cycle model |"
+    );
+    let _ = writeln!(o, "|---|---|---|---|");
+    for c in &r.cycles {
+        let _ = writeln!(
+            o,
+            "| {} | {} | {:.1} | {} |",
+            c.explorers, c.paper_cycles, c.paper_formula_cycles, c.model_cycles
+        );
+    }
+    let _ = writeln!(o, "\nruntime {:.1} s", r.runtime_s);
+    o
+}
+
+fn write_outputs(dir: &Path, r: &Report, traces: &[(f64, Vec<TraceSample>)]) -> Result<()> {
+    let w = |name: &str, text: String| -> Result<()> {
+        let f = dir.join(name);
+        std::fs::write(&f, text).with_context(|| format!("writing {}", f.display()))
+    };
+    let mut csv = String::from("delta_i_pu,ref_fsw_hz,ref_thd_percent,fpga_fsw_hz,fpga_thd_percent,decision_mismatch_percent,ref_deadlocks,fpga_deadlocks\n");
+    for f in &r.fig5 {
+        let _ = writeln!(
+            csv,
+            "{},{:.4},{:.4},{:.4},{:.4},{:.4},{},{}",
+            f.delta_i_pu,
+            f.reference.fsw_hz,
+            f.reference.thd_percent,
+            f.fpga.fsw_hz,
+            f.fpga.thd_percent,
+            f.decision_mismatch_percent,
+            f.reference.deadlocks,
+            f.fpga.deadlocks
+        );
+    }
+    w("fig5.csv", csv)?;
+    let mut csv = String::from("explorers,paper_cycles,paper_formula_cycles,model_cycles\n");
+    for c in &r.cycles {
+        let _ = writeln!(
+            csv,
+            "{},{},{:.2},{}",
+            c.explorers, c.paper_cycles, c.paper_formula_cycles, c.model_cycles
+        );
+    }
+    w("table2_cycles.csv", csv)?;
+    let m = &r.mismatch;
+    w(
+        "mismatch.csv",
+        format!(
+            "quantity,paper,ours\ndecision_mismatch_percent,{},{:.4}\nfsw_diff_percent,{},{:.4}\nthd_diff_percent,{},{:.4}\n",
+            m.paper_decision_mismatch_percent,
+            m.decision_mismatch_percent,
+            m.paper_fsw_diff_max_percent,
+            m.fsw_diff_percent,
+            m.paper_thd_diff_max_percent,
+            m.thd_diff_percent
+        ),
+    )?;
+    let series =
+        |name: &str, pts: Vec<(f64, f64)>, color: &'static str, dashed: bool| svg::Series {
+            name: name.into(),
+            points: pts,
+            color,
+            dashed,
+            markers: true,
+        };
+    let fsw = vec![
+        series(
+            "reference (f64)",
+            r.fig5
+                .iter()
+                .map(|f| (f.delta_i_pu, f.reference.fsw_hz))
+                .collect(),
+            "#1f77b4",
+            true,
+        ),
+        series(
+            "FPGA model (16 bit)",
+            r.fig5
+                .iter()
+                .map(|f| (f.delta_i_pu, f.fpga.fsw_hz))
+                .collect(),
+            "#d62728",
+            false,
+        ),
+    ];
+    w(
+        "fig5_fsw.svg",
+        svg::line_plot(
+            "Fig. 5: switching frequency per semiconductor",
+            "current bound delta_i (pu)",
+            "f_sw (Hz)",
+            &fsw,
+            true,
+        ),
+    )?;
+    let thd = vec![
+        series(
+            "reference (f64)",
+            r.fig5
+                .iter()
+                .map(|f| (f.delta_i_pu, f.reference.thd_percent))
+                .collect(),
+            "#1f77b4",
+            true,
+        ),
+        series(
+            "FPGA model (16 bit)",
+            r.fig5
+                .iter()
+                .map(|f| (f.delta_i_pu, f.fpga.thd_percent))
+                .collect(),
+            "#d62728",
+            false,
+        ),
+    ];
+    w(
+        "fig5_thd.svg",
+        svg::line_plot(
+            "Fig. 5: stator current THD",
+            "current bound delta_i (pu)",
+            "THD (%)",
+            &thd,
+            true,
+        ),
+    )?;
+    let cyc = vec![
+        series(
+            "paper Table II",
+            r.cycles
+                .iter()
+                .map(|c| (c.explorers as f64, c.paper_cycles as f64))
+                .collect(),
+            "#1f77b4",
+            true,
+        ),
+        series(
+            "our cycle model",
+            r.cycles
+                .iter()
+                .map(|c| (c.explorers as f64, c.model_cycles as f64))
+                .collect(),
+            "#d62728",
+            false,
+        ),
+    ];
+    w(
+        "table2_cycles.svg",
+        svg::line_plot(
+            "Table II: worst-case cycles per decision",
+            "explorer units n",
+            "clock cycles",
+            &cyc,
+            true,
+        ),
+    )?;
+    for (di, tr) in traces {
+        let t0 = tr.first().map(|s| s.t_s).unwrap_or(0.0);
+        let mut csv = String::from("t_ms,i_a_pu,i_b_pu,i_c_pu,i_ref_a_pu,v_n_pu,v_ph_a_pu,v_ph_b_pu,v_ph_c_pu,s_a,s_b,s_c\n");
+        for s in tr {
+            let _ = writeln!(
+                csv,
+                "{:.4},{:.5},{:.5},{:.5},{:.5},{:.5},{:.5},{:.5},{:.5},{},{},{}",
+                (s.t_s - t0) * 1e3,
+                s.i_abc_pu[0],
+                s.i_abc_pu[1],
+                s.i_abc_pu[2],
+                s.i_ref_abc_pu[0],
+                s.v_n_pu,
+                s.v_ph_pu[0],
+                s.v_ph_pu[1],
+                s.v_ph_pu[2],
+                s.s[0],
+                s.s[1],
+                s.s[2]
+            );
+        }
+        w("trace_reference.csv", csv)?;
+        let ms = |s: &TraceSample| (s.t_s - t0) * 1e3;
+        let colors = ["#1f77b4", "#2ca02c", "#d62728"];
+        let mut cur: Vec<svg::Series> = (0..3)
+            .map(|x| svg::Series {
+                name: format!("i_{}", ["a", "b", "c"][x]),
+                points: tr.iter().map(|s| (ms(s), s.i_abc_pu[x])).collect(),
+                color: colors[x],
+                dashed: false,
+                markers: false,
+            })
+            .collect();
+        cur.push(svg::Series {
+            name: "i*_a".into(),
+            points: tr.iter().map(|s| (ms(s), s.i_ref_abc_pu[0])).collect(),
+            color: "#555",
+            dashed: true,
+            markers: false,
+        });
+        let title = format!("Stator currents, reference MPDCC, delta_i = {di} pu (one period)");
+        w(
+            "currents_reference.svg",
+            svg::line_plot(&title, "t (ms)", "i (pu)", &cur, false),
+        )?;
+        let mut caps: Vec<svg::Series> = (0..3)
+            .map(|x| svg::Series {
+                name: format!("v_ph,{} - V_dc/4", ["a", "b", "c"][x]),
+                points: tr
+                    .iter()
+                    .map(|s| (ms(s), s.v_ph_pu[x] - r.params.inverter.v_ph_ref_pu()))
+                    .collect(),
+                color: colors[x],
+                dashed: false,
+                markers: false,
+            })
+            .collect();
+        caps.push(svg::Series {
+            name: "v_n".into(),
+            points: tr.iter().map(|s| (ms(s), s.v_n_pu)).collect(),
+            color: "#555",
+            dashed: true,
+            markers: false,
+        });
+        w(
+            "capacitors_reference.svg",
+            svg::line_plot(
+                "Neutral point and phase capacitor voltages (bounds +-0.05 pu)",
+                "t (ms)",
+                "v (pu)",
+                &caps,
+                false,
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+#[derive(Serialize)]
+struct BenchRow {
+    implementation: &'static str,
+    steps: u64,
+    switching_decisions: u64,
+    wall_s: f64,
+    decisions_per_s: f64,
+    switching_decisions_per_s: f64,
+}
+
+pub fn bench(a: BenchArgs) -> Result<()> {
+    let p = load_params(a.params.as_deref())?;
+    let cfg = LoopConfig {
+        warmup_periods: 0,
+        measure_periods: a.periods,
+    };
+    let mut rows = Vec::new();
+    let mut reference = Reference::new(&p).map_err(|e| anyhow!("{e}"))?;
+    let mut fpga = fpga_for(&p)?;
+    let ctrls: [&mut dyn MpdccController; 2] = [&mut reference, &mut fpga];
+    for c in ctrls {
+        let name = c.name();
+        let t = Instant::now();
+        let r = run_loop(&p, &cfg, c, None, &mut |_| {})?;
+        let wall = t.elapsed().as_secs_f64();
+        rows.push(BenchRow {
+            implementation: name,
+            steps: r.steps,
+            switching_decisions: r.switching_decisions,
+            wall_s: wall,
+            decisions_per_s: r.steps as f64 / wall,
+            switching_decisions_per_s: r.switching_decisions as f64 / wall,
+        });
+    }
+    if a.json {
+        println!("{}", serde_json::to_string_pretty(&rows)?);
+    } else {
+        println!(
+            "MPDCC closed loop ({} periods, plant included), delta_i = {} pu",
+            a.periods, p.controller.delta_i_pu
+        );
+        println!("| implementation | steps | switching decisions | wall (s) | decisions/s | switching decisions/s |");
+        println!("|---|---|---|---|---|---|");
+        for r in &rows {
+            println!(
+                "| {} | {} | {} | {:.3} | {:.0} | {:.0} |",
+                r.implementation,
+                r.steps,
+                r.switching_decisions,
+                r.wall_s,
+                r.decisions_per_s,
+                r.switching_decisions_per_s
+            );
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The example parameter file equals the built-in defaults (so the docs,
+    /// the file and the code cannot drift apart).
+    #[test]
+    fn example_toml_equals_defaults() {
+        let f = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/mpdcc-machine.toml");
+        let p = load_params(Some(&f)).unwrap();
+        assert_eq!(p, DriveParams::default());
+    }
+
+    #[test]
+    fn bad_toml_is_rejected_with_reason() {
+        let dir = std::env::temp_dir().join(format!("mpdcc-toml-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let f = dir.join("bad.toml");
+        std::fs::write(&f, "[machine]\nr_s_pu = -1.0\n").unwrap();
+        let e = load_params(Some(&f)).unwrap_err().to_string();
+        assert!(e.contains("r_s_pu"), "{e}");
+        std::fs::write(&f, "[machine]\nr_s = 0.01\n").unwrap();
+        assert!(load_params(Some(&f)).is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 }
