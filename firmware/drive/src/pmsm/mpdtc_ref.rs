@@ -37,32 +37,32 @@
 //! 9. `|I|` is the Euclidean norm `sqrt(i_d^2 + i_q^2)` of the predicted
 //!    current at k+2 (the current magnitude, proportional to copper loss).
 //! 10. Band logic (Fig. 4): candidates with `|T* - T_hat[k+2]| <= T_tol` are
-//!    in the band; if any, the one with the least `J` wins; if none, the
-//!    least `|T* - T_hat|` wins. Ties (e.g. 000 and 111, or `J = 0` at zero
-//!    current where the weight cannot act): fewer transitions, then lowest
-//!    state index. Same rules in the fixed model.
+//!     in the band; if any, the one with the least `J` wins; if none, the
+//!     least `|T* - T_hat|` wins. Ties (e.g. 000 and 111, or `J = 0` at zero
+//!     current where the weight cannot act): fewer transitions, then lowest
+//!     state index. Same rules in the fixed model.
 //! 11. Eq. (13) as printed is proportional; the text says it "accumulates the
-//!    previous tracking error": we implement the accumulating integrator
-//!    `x[k] = x[k-1] + K Ts (T*_origin[k-1] - T_meas[k])`, `T*[k] =
-//!    T*_origin[k] + x[k]`. The error uses the *original* reference (with the
-//!    modified one the integrator would chase itself) and the torque computed
-//!    from the measured current at k (the torque that period k-1 produced).
-//!    `|x|` is clamped (anti-windup).
+//!     previous tracking error": we implement the accumulating integrator
+//!     `x[k] = x[k-1] + K Ts (T*_origin[k-1] - T_meas[k])`, `T*[k] =
+//!     T*_origin[k] + x[k]`. The error uses the *original* reference (with the
+//!     modified one the integrator would chase itself) and the torque computed
+//!     from the measured current at k (the torque that period k-1 produced).
+//!     `|x|` is clamped (anti-windup).
 //! 12. Observer (eqs. 14-16): see [`super::observer`]; `eps` (volts, per axis)
-//!    is added to `V` in both prediction steps (10) and (11).
+//!     is added to `V` in both prediction steps (10) and (11).
 //! 13. Torque equation (8)/(11) uses its own flux `torque_psi_wb` (the
-//!    calibrated torque constant `k_T = 1.5 p psi`), separate from the
-//!    back-EMF flux of the voltage model: an error in the torque constant
-//!    scales the produced torque and no observer on the electrical equations
-//!    can see it; an error in the voltage model is what eqs. (13)-(16) fix.
+//!     calibrated torque constant `k_T = 1.5 p psi`), separate from the
+//!     back-EMF flux of the voltage model: an error in the torque constant
+//!     scales the produced torque and no observer on the electrical equations
+//!     can see it; an error in the voltage model is what eqs. (13)-(16) fix.
 //! 14. Measurement delay (abstract: "estimated by considering calculation and
-//!    measurement delay"): the measured current is the mean of the last 4 ADC
-//!    samples, i.e. the current `lambda = 0.375` periods before `t_k`. Under
-//!    the constant voltage of `S[k-1]` the current is linear in time to first
-//!    order, so the current at `t_k` is recovered by a fractional step of eq.
-//!    (5): `I[k] = I_m + lambda ((A - 1) I_m + B (V[k-1] + eps[k-1]))`, with
-//!    `V[k-1]` at the middle of [k-1, k]. Without it, every voltage change
-//!    shows up as a 0.3 A model error that the observer chases.
+//!     measurement delay"): the measured current is the mean of the last 4 ADC
+//!     samples, i.e. the current `lambda = 0.375` periods before `t_k`. Under
+//!     the constant voltage of `S[k-1]` the current is linear in time to first
+//!     order, so the current at `t_k` is recovered by a fractional step of eq.
+//!     (5): `I[k] = I_m + lambda ((A - 1) I_m + B (V[k-1] + eps[k-1]))`, with
+//!     `V[k-1]` at the middle of [k-1, k]. Without it, every voltage change
+//!     shows up as a 0.3 A model error that the observer chases.
 
 use super::observer::{observer_is_stable, AxisGains, AxisObserver};
 use super::params::{MotorParams, ParamError};
