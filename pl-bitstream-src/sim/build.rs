@@ -12,11 +12,30 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// (top module, RTL files under `pl-bitstream-src/rtl`, shim under `csrc/`).
-const TOPS: &[(&str, &[&str], &str)] = &[(
-    "gate_driver",
-    &["gate_leg.v", "gate_driver.v"],
-    "gate_driver_shim.cpp",
-)];
+const TOPS: &[(&str, &[&str], &str)] = &[
+    (
+        "gate_driver",
+        &["gate_leg.v", "gate_driver.v"],
+        "gate_driver_shim.cpp",
+    ),
+    (
+        "pl_top",
+        &[
+            "pl_top.v",
+            "axil_slave.v",
+            "pl_regs.v",
+            "regmap.vh",
+            "sync2.v",
+            "adc_frontend.v",
+            "encoder_qei.v",
+            "fault_block.v",
+            "pwm_center.v",
+            "gate_driver.v",
+            "gate_leg.v",
+        ],
+        "pl_top_shim.cpp",
+    ),
+];
 
 fn run(cmd: &mut Command) {
     let status = cmd
@@ -40,7 +59,7 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         .args(["-MAKEFLAGS", "OPT_FAST=-O1 OPT_SLOW=-O1 OPT_GLOBAL=-O1"])
         .arg("-Wno-fatal")
         .arg(format!("-I{}", rtl.display()));
-    for f in files {
+    for f in files.iter().filter(|f| f.ends_with(".v")) {
         cmd.arg(rtl.join(f));
     }
     run(&mut cmd);

@@ -322,7 +322,7 @@ pub const GATE_CTRL: Register = Register {
         0,
         1,
         "1 = gates follow the selected controller, 0 = all gates off (safe \
-         state); cleared by the hardware when a fault latches",
+         state); held at 0 by the hardware while a fault is latched",
     )],
     doc: "Gate enable.",
 };
@@ -579,8 +579,9 @@ pub const FAULT_STATUS: Register = Register {
             "no HEARTBEAT write for WDG_TIMEOUT cycles",
         ),
     ],
-    doc: "Any set bit forces all gates off (the clock after the condition) and \
-          clears GATE_EN; cleared by writing 1 once the condition is gone.",
+    doc: "Any set bit forces all gates off (at the clock edge after the condition) \
+          and holds GATE_EN at 0; a bit clears on a written 1 unless its condition \
+          is present in that cycle. Then GATE_EN must be written 1 again.",
 };
 /// Fault: live fault conditions.
 pub const FAULT_RAW: Register = Register {

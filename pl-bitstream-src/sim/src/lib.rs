@@ -6,4 +6,5 @@
 //! models in the `drive` crate.
 
 pub mod gate_driver;
+pub mod pl_top;
 pub mod regmap_gen;
