@@ -21,7 +21,10 @@ fn main() {
         .unwrap_or(false);
     let hash = if dirty { format!("{hash}-dirty") } else { hash };
     println!("cargo:rustc-env=FW_GIT_HASH={hash}");
-    println!("cargo:rustc-env=FW_PROFILE={}", env::var("PROFILE").unwrap());
+    println!(
+        "cargo:rustc-env=FW_PROFILE={}",
+        env::var("PROFILE").unwrap()
+    );
     // Re-run when HEAD moves (a commit, a checkout) or the index changes.
     for f in [".git/HEAD", ".git/index"] {
         if root.join(f).exists() {

@@ -1,7 +1,7 @@
 //! Boot sequence, interrupt dispatch and the console loop.
 use crate::ps::{gic, timer, uart::Uart};
 use crate::{log, pl, rx::Ring};
-use core::sync::atomic::{AtomicU32, Ordering};
+use core::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 use drive::console::{self, Action, Context, LineEditor, Status, PROMPT};
 
 /// Console and log line settings.
@@ -14,6 +14,9 @@ pub const TICK_HZ: u32 = 1000;
 static CONSOLE: Uart = unsafe { Uart::new(crate::ps::uart::UART1_BASE) };
 static RX: Ring = Ring::new();
 static TICKS: AtomicU32 = AtomicU32::new(0);
+/// Set by the interrupt when it masked UART1's receive interrupt because the
+/// ring was full; the main loop unmasks it once half the ring is free.
+static RX_PAUSED: AtomicBool = AtomicBool::new(false);
 
 extern "C" {
     static _vector_table: u32;
@@ -46,7 +49,11 @@ fn main() -> ! {
     // SAFETY: handlers and their data are ready; not inside a critical section.
     unsafe { cortex_ar::interrupt::enable() };
 
-    defmt::info!("boot: firmware {=str} git {=str}", env!("CARGO_PKG_VERSION"), env!("FW_GIT_HASH"));
+    defmt::info!(
+        "boot: firmware {=str} git {=str}",
+        env!("CARGO_PKG_VERSION"),
+        env!("FW_GIT_HASH")
+    );
     let mut con = CONSOLE;
     banner(&mut con);
     run_console(&mut con)
@@ -127,6 +134,10 @@ fn context(lines: u32, errors: u32) -> Context {
 
 /// The next received byte; sleeps until an interrupt when there is none.
 fn next_byte() -> Option<u8> {
+    if RX_PAUSED.load(Ordering::Acquire) && RX.len() <= RX.capacity() / 2 {
+        RX_PAUSED.store(false, Ordering::Release);
+        CONSOLE.set_rx_irq(true);
+    }
     if let Some(b) = RX.pop() {
         return Some(b);
     }
@@ -158,8 +169,13 @@ fn irq_handler() {
                 if isr & crate::ps::uart::ISR_ROVR != 0 {
                     RX.overruns.fetch_add(1, Ordering::Relaxed);
                 }
-                while let Some(b) = CONSOLE.read_byte() {
+                while !RX.is_full() {
+                    let Some(b) = CONSOLE.read_byte() else { break };
                     RX.push(b);
+                }
+                if RX.is_full() {
+                    CONSOLE.set_rx_irq(false);
+                    RX_PAUSED.store(true, Ordering::Release);
                 }
             }
             _ => {}

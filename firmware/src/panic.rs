@@ -12,7 +12,13 @@ fn panic(info: &core::panic::PanicInfo) -> ! {
     con.force_tx_enable();
     let _ = write!(con, "\r\nPANIC: {}\r\n", info.message());
     if let Some(loc) = info.location() {
-        let _ = write!(con, "  at {}:{}:{}\r\n", loc.file(), loc.line(), loc.column());
+        let _ = write!(
+            con,
+            "  at {}:{}:{}\r\n",
+            loc.file(),
+            loc.line(),
+            loc.column()
+        );
     }
     let _ = write!(con, "gates: off (safe state); firmware halted\r\n");
     loop {

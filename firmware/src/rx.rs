@@ -24,6 +24,22 @@ impl Ring {
         }
     }
 
+    /// Bytes waiting.
+    pub fn len(&self) -> usize {
+        self.head
+            .load(Ordering::Acquire)
+            .wrapping_sub(self.tail.load(Ordering::Acquire))
+    }
+
+    pub fn is_full(&self) -> bool {
+        self.len() >= N
+    }
+
+    /// Capacity, bytes.
+    pub const fn capacity(&self) -> usize {
+        N
+    }
+
     /// Producer side (interrupt context only).
     pub fn push(&self, b: u8) {
         let head = self.head.load(Ordering::Relaxed);

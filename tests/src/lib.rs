@@ -1,1 +1,51 @@
-//! Harness for system tests (QEMU).
+//! Harness of the system tests: boots the release firmware in QEMU (under a
+//! timeout: the session kills QEMU when dropped) and talks to its console
+//! through `drivectl`'s link, the same code users run.
+use drivectl::link::{default_elf, Qemu, Reply, Session};
+use std::path::PathBuf;
+use std::time::Duration;
+
+/// Generous: QEMU boots the firmware in well under a second.
+pub const TIMEOUT: Duration = Duration::from_secs(20);
+
+/// The release ELF; fails with the command that builds it.
+pub fn elf() -> PathBuf {
+    let e = default_elf();
+    assert!(
+        e.is_file(),
+        "{} missing: build it first with `cargo fw-build` (scripts/test does)",
+        e.display()
+    );
+    e
+}
+
+/// A booted firmware with its console ready; `defmt_raw` captures UART0.
+pub fn boot_with(defmt_raw: Option<PathBuf>) -> Session {
+    let mut q = Qemu::new(elf());
+    q.defmt_raw = defmt_raw;
+    Session::spawn_qemu(&q, TIMEOUT).expect("firmware boots to its prompt")
+}
+
+pub fn boot() -> Session {
+    boot_with(None)
+}
+
+/// Sends `line`, returns the reply (panics with the transcript on a
+/// protocol error).
+pub fn cmd(s: &mut Session, line: &str) -> Reply {
+    match s.command(line, TIMEOUT) {
+        Ok(r) => r,
+        Err(e) => panic!(
+            "{line:?}: {e:#}\ntranscript:\n{}",
+            String::from_utf8_lossy(&s.transcript)
+        ),
+    }
+}
+
+/// The value after `key: ` in a reply line, up to the next space.
+pub fn field<'a>(r: &'a Reply, key: &str) -> Option<&'a str> {
+    r.lines
+        .iter()
+        .find_map(|l| l.strip_prefix(key)?.strip_prefix(": "))
+        .and_then(|v| v.split_whitespace().next())
+}

@@ -78,6 +78,22 @@ impl Uart {
         }
     }
 
+    /// Masks (`false`) or unmasks (`true`) the receive interrupts: while
+    /// masked, bytes wait in the 64-byte RX FIFO (flow control towards the
+    /// sender where the link has it, as QEMU's does).
+    pub fn set_rx_irq(&self, on: bool) {
+        let r = self.regs();
+        let bits = ISR_RTRIG | ISR_ROVR | ISR_TIMEOUT;
+        // SAFETY: interrupt enable/disable registers.
+        unsafe {
+            if on {
+                r.ier.write(bits)
+            } else {
+                r.idr.write(bits)
+            }
+        };
+    }
+
     /// Enables the transmitter whatever state the UART is in (panic path).
     pub fn force_tx_enable(&self) {
         // SAFETY: setting TXEN only.

@@ -10,7 +10,11 @@ mod paper_mpdtc;
 mod sim;
 
 #[derive(Parser)]
-#[command(name = "drivectl", version, about = "Host tool of the predictive servo drive")]
+#[command(
+    name = "drivectl",
+    version,
+    about = "Host tool of the predictive servo drive"
+)]
 struct Cli {
     #[command(subcommand)]
     cmd: Cmd,

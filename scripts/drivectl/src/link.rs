@@ -1,0 +1,332 @@
+//! The link to a running firmware: QEMU (spawned here) or a serial port, and
+//! the console protocol on top of it (see `drive::console`).
+use anyhow::{anyhow, bail, Context as _, Result};
+use std::io::{Read, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
+use std::time::{Duration, Instant};
+
+pub use drive::console::PROMPT;
+
+/// The last line of the firmware's boot banner: the receiver is on by then.
+pub const BANNER_END: &str = "type `help`";
+
+/// The release firmware ELF of this checkout.
+pub fn default_elf() -> PathBuf {
+    let p = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../target/armv7a-none-eabi/release/firmware");
+    p.canonicalize().unwrap_or(p)
+}
+
+/// How to boot the firmware in QEMU.
+#[derive(Clone, Debug)]
+pub struct Qemu {
+    /// Firmware ELF.
+    pub elf: PathBuf,
+    /// Where UART0 (the raw defmt stream) goes; `None` discards it.
+    pub defmt_raw: Option<PathBuf>,
+    /// `-icount shift=0`: guest time advances 1 ns per instruction, so
+    /// timer readings are repeatable cost figures.
+    pub icount: bool,
+}
+
+impl Qemu {
+    pub fn new(elf: impl Into<PathBuf>) -> Self {
+        Self {
+            elf: elf.into(),
+            defmt_raw: None,
+            icount: false,
+        }
+    }
+
+    /// QEMU's arguments with the console (UART1) on `console` (a QEMU
+    /// chardev spec such as `stdio` or `mon:stdio`).
+    pub fn args(&self, console: &str) -> Vec<String> {
+        let uart0 = match &self.defmt_raw {
+            Some(p) => format!("file:{}", p.display()),
+            None => "null".into(),
+        };
+        let mut a: Vec<String> = [
+            "-M",
+            "xilinx-zynq-a9",
+            "-display",
+            "none",
+            "-monitor",
+            "none",
+            "-serial",
+            &uart0,
+            "-serial",
+            console,
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+        if self.icount {
+            a.extend(["-icount".into(), "shift=0".into()]);
+        }
+        a.extend(["-kernel".into(), self.elf.display().to_string()]);
+        a
+    }
+
+    fn check(&self) -> Result<()> {
+        if !self.elf.is_file() {
+            bail!(
+                "firmware ELF {} not found: build it with `cargo fw-build` (or scripts/run)",
+                self.elf.display()
+            );
+        }
+        Ok(())
+    }
+
+    /// A QEMU command for an interactive console on this terminal.
+    pub fn interactive(&self) -> Result<Command> {
+        self.check()?;
+        let mut c = Command::new("qemu-system-arm");
+        c.args(self.args("mon:stdio"));
+        Ok(c)
+    }
+}
+
+/// The final line of a console reply.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Final {
+    Ok,
+    Err { code: String, message: String },
+}
+
+/// A console reply: the lines before the final line, and the final line.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Reply {
+    pub lines: Vec<String>,
+    pub fin: Final,
+}
+
+impl Reply {
+    pub fn is_ok(&self) -> bool {
+        self.fin == Final::Ok
+    }
+}
+
+/// Splits the text the firmware sent after a command line (echo included,
+/// up to the next prompt) into a [`Reply`].
+pub fn parse_reply(text: &str) -> Result<Reply> {
+    let mut lines: Vec<String> = text.split("\r\n").map(str::to_string).collect();
+    // The echo of the command is the first line; the prompt follows the last CRLF.
+    if lines.len() < 3 {
+        bail!("incomplete reply: {text:?}");
+    }
+    lines.remove(0);
+    lines.pop();
+    let last = lines.pop().unwrap_or_default();
+    let fin = if last == "OK" {
+        Final::Ok
+    } else if let Some(rest) = last.strip_prefix("ERR ") {
+        let (code, message) = rest.split_once(' ').unwrap_or((rest, ""));
+        Final::Err {
+            code: code.into(),
+            message: message.into(),
+        }
+    } else {
+        bail!("reply without a final OK/ERR line: {text:?}");
+    };
+    Ok(Reply { lines, fin })
+}
+
+/// A byte link to the firmware's console.
+pub struct Session {
+    child: Option<Child>,
+    tx: Box<dyn Write + Send>,
+    rx: Receiver<Vec<u8>>,
+    /// Received and not yet consumed.
+    pending: Vec<u8>,
+    /// Everything received so far (for diagnostics).
+    pub transcript: Vec<u8>,
+}
+
+impl Session {
+    fn new(
+        child: Option<Child>,
+        tx: Box<dyn Write + Send>,
+        mut reader: Box<dyn Read + Send>,
+    ) -> Self {
+        let (send, rx) = mpsc::channel();
+        std::thread::spawn(move || {
+            let mut buf = [0u8; 4096];
+            loop {
+                match reader.read(&mut buf) {
+                    Ok(0) => break,
+                    Ok(n) => {
+                        if send.send(buf[..n].to_vec()).is_err() {
+                            break;
+                        }
+                    }
+                    Err(e) if e.kind() == std::io::ErrorKind::TimedOut => continue,
+                    Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+                    Err(_) => break,
+                }
+            }
+        });
+        Self {
+            child,
+            tx,
+            rx,
+            pending: Vec::new(),
+            transcript: Vec::new(),
+        }
+    }
+
+    /// Boots the firmware in QEMU with the console on pipes and waits for
+    /// the end of the boot banner.
+    pub fn spawn_qemu(q: &Qemu, boot_timeout: Duration) -> Result<Self> {
+        q.check()?;
+        let mut child = Command::new("qemu-system-arm")
+            .args(q.args("stdio"))
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .context("cannot start qemu-system-arm (run scripts/setup)")?;
+        let tx = Box::new(child.stdin.take().expect("piped stdin"));
+        let rx = Box::new(child.stdout.take().expect("piped stdout"));
+        let mut s = Self::new(Some(child), tx, rx);
+        s.read_until(BANNER_END.as_bytes(), boot_timeout)
+            .context("firmware did not boot")?;
+        s.read_until(PROMPT.as_bytes(), boot_timeout)?;
+        Ok(s)
+    }
+
+    /// Opens a serial port (8N1) and synchronises on a fresh prompt.
+    pub fn open_serial(port: &str, baud: u32, timeout: Duration) -> Result<Self> {
+        let p = serialport::new(port, baud)
+            .timeout(Duration::from_millis(100))
+            .open()
+            .with_context(|| format!("cannot open serial port {port}"))?;
+        let reader = p.try_clone().context("cannot clone the serial port")?;
+        let mut s = Self::new(None, Box::new(p), Box::new(reader));
+        s.sync(timeout)?;
+        Ok(s)
+    }
+
+    /// Sends an empty line and waits for the prompt it produces, dropping
+    /// whatever came before.
+    pub fn sync(&mut self, timeout: Duration) -> Result<()> {
+        self.drain_quiet(Duration::from_millis(200), timeout)?;
+        self.send(b"\r")?;
+        self.read_until(PROMPT.as_bytes(), timeout)?;
+        Ok(())
+    }
+
+    pub fn send(&mut self, bytes: &[u8]) -> Result<()> {
+        self.tx.write_all(bytes).context("console link closed")?;
+        self.tx.flush().context("console link closed")?;
+        Ok(())
+    }
+
+    fn pull(&mut self, deadline: Instant) -> Result<bool> {
+        let left = deadline.saturating_duration_since(Instant::now());
+        match self.rx.recv_timeout(left) {
+            Ok(chunk) => {
+                self.transcript.extend_from_slice(&chunk);
+                self.pending.extend_from_slice(&chunk);
+                Ok(true)
+            }
+            Err(RecvTimeoutError::Timeout) => Ok(false),
+            Err(RecvTimeoutError::Disconnected) => Err(anyhow!(
+                "console link closed; received so far: {:?}",
+                String::from_utf8_lossy(&self.transcript)
+            )),
+        }
+    }
+
+    /// Consumes and returns everything up to and including `needle`.
+    pub fn read_until(&mut self, needle: &[u8], timeout: Duration) -> Result<Vec<u8>> {
+        let deadline = Instant::now() + timeout;
+        loop {
+            if let Some(i) = self.pending.windows(needle.len()).position(|w| w == needle) {
+                let rest = self.pending.split_off(i + needle.len());
+                return Ok(std::mem::replace(&mut self.pending, rest));
+            }
+            if !self.pull(deadline)? {
+                bail!(
+                    "timeout after {:?} waiting for {:?}; pending: {:?}",
+                    timeout,
+                    String::from_utf8_lossy(needle),
+                    String::from_utf8_lossy(&self.pending)
+                );
+            }
+        }
+    }
+
+    /// Consumes everything until the link has been silent for `quiet`
+    /// (at most `timeout`); returns it.
+    pub fn drain_quiet(&mut self, quiet: Duration, timeout: Duration) -> Result<Vec<u8>> {
+        let end = Instant::now() + timeout;
+        while Instant::now() < end {
+            if !self.pull(Instant::now() + quiet)? {
+                break;
+            }
+        }
+        Ok(std::mem::take(&mut self.pending))
+    }
+
+    /// Sends one command line and returns the firmware's reply.
+    pub fn command(&mut self, line: &str, timeout: Duration) -> Result<Reply> {
+        if line.contains(['\r', '\n']) {
+            bail!("a command is one line: {line:?}");
+        }
+        self.send(format!("{line}\r").as_bytes())?;
+        let text = self.read_until(PROMPT.as_bytes(), timeout)?;
+        parse_reply(&String::from_utf8_lossy(&text))
+    }
+}
+
+impl Drop for Session {
+    fn drop(&mut self) {
+        if let Some(c) = &mut self.child {
+            let _ = c.kill();
+            let _ = c.wait();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reply_ok_with_lines() {
+        let r = parse_reply("status\r\nuptime: 1 s\r\nticks: 3\r\nOK\r\ndrive> ").unwrap();
+        assert_eq!(r.lines, ["uptime: 1 s", "ticks: 3"]);
+        assert!(r.is_ok());
+    }
+
+    #[test]
+    fn reply_err() {
+        let r = parse_reply("xyz\r\nERR unknown-command `xyz` (try `help`)\r\ndrive> ").unwrap();
+        assert_eq!(
+            r.fin,
+            Final::Err {
+                code: "unknown-command".into(),
+                message: "`xyz` (try `help`)".into()
+            }
+        );
+        assert!(r.lines.is_empty());
+    }
+
+    #[test]
+    fn reply_without_final_line_is_an_error() {
+        assert!(parse_reply("status\r\nuptime: 1 s\r\ndrive> ").is_err());
+        assert!(parse_reply("drive> ").is_err());
+    }
+
+    #[test]
+    fn qemu_args_put_the_console_on_uart1() {
+        let mut q = Qemu::new("fw.elf");
+        q.defmt_raw = Some("log.bin".into());
+        let a = q.args("stdio").join(" ");
+        assert!(a.contains("-serial file:log.bin -serial stdio"), "{a}");
+        assert!(a.ends_with("-kernel fw.elf"));
+        assert!(!a.contains("icount"));
+    }
+}
