@@ -19,3 +19,5 @@ pub mod foc;
 pub mod metrics;
 pub mod svpwm;
 pub mod mpdtc_fixed;
+#[cfg(test)]
+mod mpdtc_tests;
