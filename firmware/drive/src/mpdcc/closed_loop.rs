@@ -243,37 +243,78 @@ pub fn run(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::mpdcc::fpga::{p_taylor, FpgaConfig, FpgaMpdcc};
     use crate::mpdcc::reference::Reference;
 
-    /// Invariants of the reference in closed loop at the default operating
-    /// point: one-level transitions only, v_n and v_ph inside their bounds in
-    /// steady state, the current tracks its reference (fundamental within 2 %
-    /// of 1/sqrt(2) pu rms), and the switching frequency is a plausible MV
-    /// figure (tens to a few hundred Hz: not zero, not every step).
+    /// Steady-state invariants of one run:
+    /// - no phase moves more than one level per step (also enforced by `run`);
+    /// - `v_n` and `v_ph` stay within their bounds up to a 5 % overshoot, and
+    ///   all seven outputs are inside in at least 99 % of the steps of the
+    ///   reference (97 % for the FPGA model, whose 16-bit extrapolated
+    ///   predictions overshoot more). Why not exactly inside: after a deadlock
+    ///   (eqs. 15-16 minimize the worst excess, they cannot always remove it)
+    ///   an output may stay outside for a few steps; with the reference this
+    ///   happens in ~0.05 % of the steps at `delta_i = 0.04 pu`;
+    /// - the current tracks its reference (fundamental within 2 % of
+    ///   `1/sqrt(2)` pu rms) at a plausible MV switching frequency.
+    fn check(p: &DriveParams, r: &LoopResult, inside_share: f64) {
+        let b = p.controller;
+        assert!(r.max_level_jump <= 1, "{r:?}");
+        assert!(r.max_abs_v_n_pu <= 1.05 * b.v_n_bound_pu, "{r:?}");
+        assert!(r.max_v_ph_dev_pu <= 1.05 * b.v_ph_bound_pu, "{r:?}");
+        assert!(
+            (r.steps - r.steps_outside_bounds) as f64 >= inside_share * r.steps as f64,
+            "{r:?}"
+        );
+        let i1 = core::f64::consts::FRAC_1_SQRT_2;
+        assert!((r.i1_rms_pu - i1).abs() < 0.02 * i1, "{r:?}");
+        assert!(r.fsw_hz > 20.0 && r.fsw_hz < 2000.0, "{r:?}");
+    }
+
     #[test]
     fn reference_closed_loop_invariants() {
+        for di in [0.04, 0.12] {
+            let mut p = DriveParams::default();
+            p.controller.delta_i_pu = di;
+            let mut c = Reference::new(&p).unwrap();
+            let cfg = LoopConfig {
+                warmup_periods: 2,
+                measure_periods: 10,
+            };
+            let r = run(&p, &cfg, &mut c, None, &mut |_| {}).unwrap();
+            check(&p, &r, 0.99);
+            assert!(r.max_i_err_pu <= 1.05 * di, "{r:?}");
+        }
+    }
+
+    #[test]
+    fn fpga_closed_loop_invariants() {
+        for di in [0.04, 0.12] {
+            let mut p = DriveParams::default();
+            p.controller.delta_i_pu = di;
+            let mut c = FpgaMpdcc::new(&p, FpgaConfig::with_p(p_taylor(&p.machine))).unwrap();
+            let cfg = LoopConfig {
+                warmup_periods: 2,
+                measure_periods: 10,
+            };
+            let r = run(&p, &cfg, &mut c, None, &mut |_| {}).unwrap();
+            check(&p, &r, 0.97);
+        }
+    }
+
+    /// The shadow controller sees exactly the driving controller's states:
+    /// a second reference as shadow never disagrees.
+    #[test]
+    fn identical_shadow_never_mismatches() {
         let p = DriveParams::default();
         let mut c = Reference::new(&p).unwrap();
+        let mut sh = Reference::new(&p).unwrap();
         let cfg = LoopConfig {
             warmup_periods: 1,
-            measure_periods: 3,
+            measure_periods: 2,
         };
-        let r = run(&p, &cfg, &mut c, None, &mut |_| {}).unwrap();
-        assert!(r.max_level_jump <= 1);
-        assert!(
-            r.max_abs_v_n_pu <= p.controller.v_n_bound_pu + 1e-6,
-            "{r:?}"
-        );
-        assert!(
-            r.max_v_ph_dev_pu <= p.controller.v_ph_bound_pu + 1e-6,
-            "{r:?}"
-        );
-        assert!(
-            (r.i1_rms_pu - core::f64::consts::FRAC_1_SQRT_2).abs()
-                < 0.02 * core::f64::consts::FRAC_1_SQRT_2,
-            "{r:?}"
-        );
-        assert!(r.fsw_hz > 20.0 && r.fsw_hz < 2000.0, "{r:?}");
-        assert!(r.steps_outside_bounds * 100 < r.steps, "{r:?}");
+        let r = run(&p, &cfg, &mut c, Some(&mut sh), &mut |_| {}).unwrap();
+        assert_eq!(r.shadow_mismatches, 0);
+        assert!(r.switching_decisions > 0);
     }
 }
