@@ -446,6 +446,14 @@ mod tests {
             assert!(st.late_id_max_a < 0.1, "w {w}: i_d {}", st.late_id_max_a);
             // The step is voltage-limited: the first period after the step saturates.
             assert!(foc.saturated_periods >= 1);
+            // Carrier PWM at 16 kHz: two gate transitions per leg per period.
+            let (a, b) = (&tr[tr.len() / 2], &tr[tr.len() - 1]);
+            let f = crate::pmsm::metrics::transitions_per_leg_per_s(
+                a.transitions,
+                b.transitions,
+                b.t_s - a.t_s,
+            );
+            assert!((f - 32_000.0).abs() < 200.0, "w {w}: {f}");
         }
     }
 

@@ -320,9 +320,13 @@ impl Plant {
                     } else {
                         ev[n_ev] = (0.0, x, 0);
                         n_ev += 1;
-                        if dx > 0.0 {
-                            ev[n_ev] = (0.5 * period_s * (1.0 - dx), x, 1);
-                            ev[n_ev + 1] = (0.5 * period_s * (1.0 + dx), x, 0);
+                        let (t_on, t_off) =
+                            (0.5 * period_s * (1.0 - dx), 0.5 * period_s * (1.0 + dx));
+                        // A pulse too short to resolve in f64 is no pulse (and
+                        // equal times must not reorder on/off in the sort).
+                        if t_on < t_off {
+                            ev[n_ev] = (t_on, x, 1);
+                            ev[n_ev + 1] = (t_off, x, 0);
                             n_ev += 2;
                         }
                     }
@@ -598,6 +602,15 @@ mod tests {
         // Six gate edges (one on, one off per leg).
         assert_eq!(p.transitions(), [2, 2, 2]);
         assert!((p.state().t_s - t).abs() < 1e-18);
+        // Degenerate duties: a vanishing pulse is no pulse, 1 is a full period,
+        // out-of-range and NaN duties clamp.
+        let mut q = plant(w);
+        q.step(&Actuation::DutyAbc([1e-300, f64::NAN, -3.0]), t, 4, |_| {})
+            .unwrap();
+        assert_eq!((q.transitions(), q.gate_state()), ([0, 0, 0], 0));
+        q.step(&Actuation::DutyAbc([1.0, 2.0, 0.0]), t, 4, |_| {})
+            .unwrap();
+        assert_eq!((q.transitions(), q.gate_state()), ([1, 1, 0], 0b110));
     }
 
     /// Energy balance over an arbitrary switching sequence at speed:
