@@ -3,8 +3,13 @@
 //! Model (stator alpha-beta frame, amplitude-invariant, complex notation
 //! `i = i_alpha + j i_beta`):
 //! `L di/dt = u - R i - e`, back-EMF `e = j omega_e psi e^{j theta_e}`,
-//! torque `T = 1.5 p psi i_q`. For `L_d = L_q` this is linear time-invariant in
-//! alpha-beta apart from the rotating back-EMF, so over an interval `h` with a
+//! torque `T = 1.5 p psi i_q`. In the rotor frame this is the standard
+//! `u_d = R i_d + L di_d/dt - omega L_q i_q`,
+//! `u_q = R i_q + L di_q/dt + omega (L_d i_d + psi)`, i.e. the paper's eq. (1)
+//! with `psi_d = psi_PM`, `psi_q = 0` and its sign of the `psi_q` term read as
+//! the standard one (it multiplies zero anyway). For `L_d = L_q` this is
+//! linear time-invariant in alpha-beta apart from the rotating back-EMF, so
+//! over an interval `h` with a
 //! constant stator voltage `u` (zero-order hold in the stator frame) and a
 //! constant speed it has the closed form
 //! `i(h) = E i0 + (1-E)/R u - (psi/L) j omega e^{j theta0} (e^{j omega h} - E)/(a + j omega)`,
