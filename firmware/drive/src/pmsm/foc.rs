@@ -229,6 +229,13 @@ impl Controller for Foc {
         self.u_now_ab = self.u_next_ab;
         self.d_max_prev = self.d_max_now;
         self.d_max_now = self.d_max_next;
+        if !(m.i_abc_a.iter().all(|x| x.is_finite()) && m.theta_e_rad.is_finite()) {
+            // A broken measurement: apply zero voltage, keep the PI state.
+            self.u_next_ab = (0.0, 0.0);
+            self.d_max_next = 0.5;
+            self.pred_dq = None;
+            return Actuation::DutyAbc([0.5; 3]);
+        }
         let w = if m.omega_e_rad_s.is_finite() {
             m.omega_e_rad_s
         } else {
@@ -352,6 +359,30 @@ mod tests {
         })
         .unwrap();
         tr
+    }
+
+    #[test]
+    fn broken_measurement_gives_zero_voltage_and_recovers() {
+        let m = MotorParams::default();
+        let mut foc = Foc::new(&m, &FocParams::default()).unwrap();
+        let good = Measurement {
+            i_abc_a: [0.0; 3],
+            theta_e_rad: 0.0,
+            omega_e_rad_s: 0.0,
+        };
+        let bad = Measurement {
+            i_abc_a: [f64::NAN, 0.0, 0.0],
+            ..good
+        };
+        assert_eq!(foc.step(&bad, 0.4), Actuation::DutyAbc([0.5; 3]));
+        let Actuation::DutyAbc(d) = foc.step(&good, 0.4) else {
+            panic!()
+        };
+        assert!(d.iter().all(|x| x.is_finite()) && d != [0.5; 3]);
+        let Actuation::DutyAbc(d) = foc.step(&good, f64::INFINITY) else {
+            panic!()
+        };
+        assert!(d.iter().all(|x| x.is_finite()));
     }
 
     /// The Fig. 10 kind of step, -0.4 -> +0.4 N m (8.2 A, voltage-limited for
