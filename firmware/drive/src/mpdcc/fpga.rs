@@ -87,14 +87,52 @@ pub struct FpgaConfig {
     pub explorers: u32,
     /// Model correction factor `p` of eq. (4)/(9b).
     pub p_correction: f64,
+    /// Add the second-order term `-(omega_s L T)^2/2 i*` to the reference
+    /// rotation `A_0` of eq. (14b) (the paper has first order only).
+    pub ref_second_order: bool,
+    /// Judge feasibility at `k+1` and `J_dl` with the one-step prediction
+    /// (as the lazy check does) instead of the interpolated `a_j + Delta_j/L`.
+    pub exact_first_step: bool,
+    /// Third-order rotation terms: scale the first-order rotation
+    /// coefficients `omega_r L T` and `omega_s L T` by `(1 - theta^2/6)`, i.e.
+    /// `sin(theta)` to third order (the paper stops at second order, `p`).
+    pub third_order: bool,
 }
 
 impl FpgaConfig {
-    /// Two explorers (the paper's choice, Sec. VII-A) and the given `p`.
+    /// As the paper describes it: two explorers (Sec. VII-A), first-order
+    /// reference rotation, interpolated first step, the given `p`.
+    pub fn paper(p_correction: f64) -> Self {
+        Self {
+            explorers: 2,
+            p_correction,
+            ref_second_order: false,
+            exact_first_step: false,
+            third_order: false,
+        }
+    }
+
+    /// Our default: the paper's structure plus the two accuracy options,
+    /// which cost one multiply in the scheduler and a few adders per
+    /// explorer (docs/mpdcc-fpga.md), with `p` from [`p_taylor`].
+    pub fn improved(m: &super::params::MachineParams) -> Self {
+        Self {
+            explorers: 2,
+            p_correction: p_taylor(m),
+            ref_second_order: true,
+            exact_first_step: true,
+            third_order: true,
+        }
+    }
+
+    /// [`FpgaConfig::improved`] with another `p`.
     pub fn with_p(p_correction: f64) -> Self {
         Self {
             explorers: 2,
             p_correction,
+            ref_second_order: true,
+            exact_first_step: true,
+            third_order: true,
         }
     }
 }
@@ -162,11 +200,20 @@ pub struct Coeffs {
     pub lambda_n: u16,
     /// `round(2^17 / l)` for `l = 0..=N_bar` (entry 0 unused), UQ1.17.
     pub recip: heapless::Vec<u32, 1025>,
+    /// [`FpgaConfig::ref_second_order`].
+    pub ref_second_order: bool,
+    /// [`FpgaConfig::exact_first_step`].
+    pub exact_first_step: bool,
+    /// [`FpgaConfig::third_order`].
+    pub third_order: bool,
+    /// `(L T)^2 / 6`, Q1.14 (third-order rotation term).
+    pub c_3: i16,
 }
 
 impl Coeffs {
     /// Quantizes the design constants; every one must fit without saturation.
-    pub fn new(p: &DriveParams, p_corr: f64) -> Result<Self, FpgaError> {
+    pub fn new(p: &DriveParams, cfg: &FpgaConfig) -> Result<Self, FpgaError> {
+        let p_corr = cfg.p_correction;
         p.validate().map_err(FpgaError::Params)?;
         if !p_corr.is_finite() || !(0.0..=8.0).contains(&p_corr) {
             return Err(FpgaError::Correction);
@@ -195,9 +242,20 @@ impl Coeffs {
         if lam > u16::MAX as f64 {
             return Err(FpgaError::CoefficientRange("lambda_n"));
         }
-        let di = q("delta_i", c.delta_i_pu, F_I)?;
-        let bn = q("v_n_bound", c.v_n_bound_pu, F_I)?;
-        let bp = q("v_ph_bound", c.v_ph_bound_pu, F_I)?;
+        // Bounds are rounded inward: floor(b 2^13 - 1/2), so that a quantized
+        // output (within half an LSB of the true one) inside the integer
+        // bound is truly inside the real bound.
+        let bq = |name: &'static str, v: f64| -> Result<i16, FpgaError> {
+            let r = libm::floor(libm::ldexp(v, F_I as i32) - 0.5);
+            if (0.0..=i16::MAX as f64).contains(&r) {
+                Ok(r as i16)
+            } else {
+                Err(FpgaError::CoefficientRange(name))
+            }
+        };
+        let di = bq("delta_i", c.delta_i_pu)?;
+        let bn = bq("v_n_bound", c.v_n_bound_pu)?;
+        let bp = bq("v_ph_bound", c.v_ph_bound_pu)?;
         Ok(Self {
             lambda: c.extrapolation_steps.trailing_zeros(),
             m_bits: n_bar.trailing_zeros(),
@@ -216,6 +274,10 @@ impl Coeffs {
             bnd: [di, di, di, bn, bp, bp, bp],
             lambda_n: lam as u16,
             recip,
+            ref_second_order: cfg.ref_second_order,
+            exact_first_step: cfg.exact_first_step,
+            third_order: cfg.third_order,
+            c_3: q("c_3", lt * lt / 6.0, F_C)?,
         })
     }
 }
@@ -324,6 +386,16 @@ pub fn common_terms(k: &Coeffs, x: &Inputs) -> Common {
     let w2 = mul(x.omega_r, F_I, x.omega_r, F_I, F_I);
     let kp = mul(k.c_p, F_C, w2, F_I, F_C);
     let ks = mul(k.c_s, F_C, x.omega_s, F_I, F_C);
+    // Third order (an L^3 term): kw3 = kw (L T omega_r)^2/6 and
+    // ks3 = ks (L T omega_s)^2/6, so that kw - kw3 ~ sin(theta_r) X_m/D.
+    let (kw3, ks3) = if k.third_order {
+        let tr = mul(k.c_3, F_C, w2, F_I, F_C);
+        let s2 = mul(x.omega_s, F_I, x.omega_s, F_I, F_I);
+        let ts = mul(k.c_3, F_C, s2, F_I, F_C);
+        (mul(kw, F_C, tr, F_C, F_C), mul(ks, F_C, ts, F_C, F_C))
+    } else {
+        (0, 0)
+    };
     let p = |a: i16, b: i16| a as i64 * b as i64; // exact product
     let [ia, ib] = x.i_ab;
     let [pa, pb] = x.psi_ab;
@@ -331,20 +403,35 @@ pub fn common_terms(k: &Coeffs, x: &Inputs) -> Common {
     // Natural response rates times L (f28): -c_tau i + c_r psi - kw J psi.
     let nat_a = -(p(k.c_tau, ia) << 1) + p(k.c_r, pa) + p(kw, pb);
     let nat_b = -(p(k.c_tau, ib) << 1) + p(k.c_r, pb) - p(kw, pa);
-    // Correction term times L^2 (f28).
-    let cor_a = p(kp, pa);
-    let cor_b = p(kp, pb);
+    // Terms growing with L^2 (f28): the correction p (L T omega_r)^2 psi and,
+    // optionally, the second-order reference rotation (theta^2/2) i*.
+    let (k2a, k2b) = if k.ref_second_order {
+        let k2 = mul(ks, F_C, ks, F_C + 1, F_C); // theta^2 / 2
+        (p(k2, ra) << 1, p(k2, rb) << 1)
+    } else {
+        (0, 0)
+    };
+    let cor_a = p(kp, pa) + k2a;
+    let cor_b = p(kp, pb) + k2b;
     // Reference rotation times L (f28): ks J i*.
     let ref_a = -(p(ks, rb) << 1);
     let ref_b = p(ks, ra) << 1;
     // Error change: Delta i* - Delta i_nat.
     let rate_a = ref_a - nat_a;
     let rate_b = ref_b - nat_b;
-    let dl = [to_q13(rate_a - cor_a, F_W), to_q13(rate_b - cor_b, F_W)];
-    let f1 = F_W + 2 * lam;
+    // Third-order group (f28): minus the L^3 parts of the two rotations,
+    // -(-ks3 J i*) + (-kw3 J psi) with J = [0 -1; 1 0].
+    let cub_a = (p(ks3, rb) << 1) + p(kw3, pb);
+    let cub_b = -(p(ks3, ra) << 1) - p(kw3, pa);
+    let dl = [
+        to_q13(rate_a - cor_a + cub_a, F_W),
+        to_q13(rate_b - cor_b + cub_b, F_W),
+    ];
+    // One step: rates / L, L^2 group / L^2, L^3 group / L^3.
+    let f1 = F_W + 3 * lam;
     let d1 = [
-        to_q13((rate_a << lam) - cor_a, f1),
-        to_q13((rate_b << lam) - cor_b, f1),
+        to_q13((rate_a << (2 * lam)) - (cor_a << lam) + cub_a, f1),
+        to_q13((rate_b << (2 * lam)) - (cor_b << lam) + cub_b, f1),
     ];
     let i_abc = inv_clarke_q(x.i_ab, k.s3h);
     let e_ab = [sub(ra, ia), sub(rb, ib)];
@@ -421,6 +508,11 @@ pub fn lazy_ok(k: &Coeffs, c: &Common, s_prev: [u8; 3]) -> bool {
 /// One explorer evaluation (Sec. VI) of candidate `s`.
 pub fn explore(k: &Coeffs, c: &Common, s_prev: [u8; 3], s: [u8; 3]) -> ExplorerResult {
     let d = deltas(k, c, s, false);
+    let d1 = if k.exact_first_step {
+        Some(deltas(k, c, s, true))
+    } else {
+        None
+    };
     // Search range: cap N_bar, no lower bound (every L* is reported).
     let r = SearchRange {
         m_bits: k.m_bits,
@@ -438,9 +530,22 @@ pub fn explore(k: &Coeffs, c: &Common, s_prev: [u8; 3], s: [u8; 3]) -> ExplorerR
             Lj::Below => 0,
         };
         l_star = l_star.min(lj);
-        // Interpolated error at k+1 for eq. (15).
-        let e1 = c.e0[j] as i64 + rshift_round(dj as i64, k.lambda);
+        // Error at k+1 for eq. (15): one-step prediction or interpolation.
+        let e1 = match d1 {
+            Some(d1) => c.e0[j] as i64 + d1[j] as i64,
+            None => c.e0[j] as i64 + rshift_round(dj as i64, k.lambda),
+        };
         j_dl = j_dl.max((e1.abs() - k.bnd[j] as i64) as i32);
+    }
+    if d1.is_some() {
+        // Feasibility at k+1 decided by the one-step prediction: L* = 0 if it
+        // leaves a bound (or a_j is already outside), else at least 1.
+        let inside_k = (0..7).all(|j| (c.e0[j] as i32).abs() <= k.bnd[j] as i32);
+        l_star = if j_dl > 0 || !inside_k {
+            0
+        } else {
+            l_star.max(1)
+        };
     }
     let fs = anpc::switch_transitions(s_prev, s);
     let cost = if l_star == 0 {
@@ -492,7 +597,7 @@ impl FpgaMpdcc {
             return Err(FpgaError::Explorers);
         }
         Ok(Self {
-            coeffs: Coeffs::new(p, cfg.p_correction)?,
+            coeffs: Coeffs::new(p, &cfg)?,
             cfg,
             last: None,
         })

@@ -16,3 +16,4 @@ pub mod stats;
 pub mod cycles;
 pub mod fpga;
 pub mod scheduler;
+pub mod fpga_eval;
