@@ -64,6 +64,13 @@ const WARMUP_PERIODS: u32 = 10;
 /// Bound widths of the Fig. 5 sweep, pu.
 pub const DELTA_I_SWEEP_PU: [f64; 8] = [0.04, 0.06, 0.08, 0.10, 0.12, 0.15, 0.18, 0.22];
 
+/// The nominal bound (the parameter file's default), pu.
+const NOMINAL_DELTA_I_PU: f64 = 0.12;
+/// Extrapolation points compared (powers of two), steps.
+const L_SWEEP: [u32; 4] = [8, 16, 32, 64];
+/// Window of the L sweep runs, periods.
+const L_SWEEP_PERIODS: u32 = 40;
+
 /// Paper 001, Sec. VII-B.
 const PAPER_MISMATCH_PERCENT: f64 = 2.5;
 const PAPER_FSW_DIFF_PERCENT: f64 = 8.0;
@@ -116,6 +123,8 @@ struct Mismatch {
     decision_mismatch_percent: f64,
     /// Mismatches among the steps where the reference switched, percent of those steps.
     decision_mismatch_switching_percent: f64,
+    /// Share of the mismatches where only one implementation kept `s(k-1)`, percent.
+    mismatch_lazy_share_percent: f64,
     /// Max over the sweep of |fsw_fpga - fsw_ref| / fsw_ref, percent.
     fsw_diff_percent: f64,
     /// Max over the sweep of |thd_fpga - thd_ref| / thd_ref, percent.
@@ -131,10 +140,19 @@ struct Mismatch {
 }
 
 #[derive(Serialize)]
+struct LSweepRow {
+    extrapolation_steps: u32,
+    measure_periods: u32,
+    mismatch: Mismatch,
+}
+
+#[derive(Serialize)]
 struct Report {
     fig5: Vec<Fig5Row>,
     mismatch: Mismatch,
     cycles: Vec<cycles::Table2Row>,
+    /// The mismatch experiment for other extrapolation points `L`.
+    extrapolation_sweep: Vec<LSweepRow>,
     params: DriveParams,
     p_correction: f64,
     measure_periods: u32,
@@ -183,32 +201,31 @@ fn run_loop(
         .map_err(|e| anyhow!("{} closed loop: {e}", ctrl.name()))
 }
 
-pub fn run(a: Args) -> Result<()> {
-    let t0 = Instant::now();
-    let base = load_params(a.params.as_deref())?;
-    if let Some(d) = &a.out {
-        std::fs::create_dir_all(d).with_context(|| format!("creating {}", d.display()))?;
-    }
-    let cfg = LoopConfig {
-        warmup_periods: WARMUP_PERIODS,
-        measure_periods: a.periods,
-    };
+type Trace = (f64, Vec<TraceSample>);
+
+/// The Fig. 5 sweep for one parameter set: both closed loops per `delta_i`,
+/// the FPGA model shadowing the reference. `keep_trace`: keep the last
+/// period of the nominal-bound reference run.
+fn sweep(
+    base: &DriveParams,
+    cfg: &LoopConfig,
+    keep_trace: bool,
+) -> Result<(Vec<Fig5Row>, Mismatch, Vec<Trace>)> {
     let mut fig5 = Vec::new();
-    let (mut mm, mut mm_sw, mut steps, mut sw_steps) = (0u64, 0u64, 0u64, 0u64);
-    let mut traces: Vec<(f64, Vec<TraceSample>)> = Vec::new();
+    let (mut mm, mut mm_sw, mut mm_lazy, mut steps, mut sw_steps) = (0u64, 0u64, 0u64, 0u64, 0u64);
+    let mut traces: Vec<Trace> = Vec::new();
     let per_period = (1.0
         / (base.operating_point.omega_s_pu * base.machine.f_rated_hz * base.controller.ts_s))
         .round() as usize;
     for &di in &DELTA_I_SWEEP_PU {
-        let mut p = base;
+        let mut p = *base;
         p.controller.delta_i_pu = di;
         p.validate().map_err(|e| anyhow!("{e}"))?;
         let mut reference = Reference::new(&p).map_err(|e| anyhow!("{e}"))?;
         let mut shadow = fpga_for(&p)?;
-        // Keep the last period of the nominal run for the waveform plot.
         let mut tr: Vec<TraceSample> = Vec::new();
-        let keep = di == base.controller.delta_i_pu || (di - 0.12).abs() < 1e-12;
-        let r_ref = run_loop(&p, &cfg, &mut reference, Some(&mut shadow), &mut |s| {
+        let keep = keep_trace && (di - NOMINAL_DELTA_I_PU).abs() < 1e-12;
+        let r_ref = run_loop(&p, cfg, &mut reference, Some(&mut shadow), &mut |s| {
             if keep {
                 tr.push(*s);
                 if tr.len() > 2 * per_period {
@@ -221,9 +238,10 @@ pub fn run(a: Args) -> Result<()> {
             traces.push((di, tr.split_off(n)));
         }
         let mut fpga = fpga_for(&p)?;
-        let r_fpga = run_loop(&p, &cfg, &mut fpga, None, &mut |_| {})?;
+        let r_fpga = run_loop(&p, cfg, &mut fpga, None, &mut |_| {})?;
         mm += r_ref.shadow_mismatches;
         mm_sw += r_ref.shadow_mismatches_switching;
+        mm_lazy += r_ref.shadow_mismatches_lazy;
         steps += r_ref.steps;
         sw_steps += r_ref.switching_decisions;
         fig5.push(Fig5Row {
@@ -240,6 +258,7 @@ pub fn run(a: Args) -> Result<()> {
     let mismatch = Mismatch {
         decision_mismatch_percent: 100.0 * mm as f64 / steps.max(1) as f64,
         decision_mismatch_switching_percent: 100.0 * mm_sw as f64 / sw_steps.max(1) as f64,
+        mismatch_lazy_share_percent: 100.0 * mm_lazy as f64 / mm.max(1) as f64,
         fsw_diff_percent: fig5.iter().map(|r| r.fsw_diff_percent).fold(0.0, f64::max),
         thd_diff_percent: fig5.iter().map(|r| r.thd_diff_percent).fold(0.0, f64::max),
         thd_diff_points: fig5
@@ -252,12 +271,47 @@ pub fn run(a: Args) -> Result<()> {
         paper_fsw_diff_max_percent: PAPER_FSW_DIFF_PERCENT,
         paper_thd_diff_max_percent: PAPER_THD_DIFF_PERCENT,
     };
+    Ok((fig5, mismatch, traces))
+}
+
+pub fn run(a: Args) -> Result<()> {
+    let t0 = Instant::now();
+    let base = load_params(a.params.as_deref())?;
+    if let Some(d) = &a.out {
+        std::fs::create_dir_all(d).with_context(|| format!("creating {}", d.display()))?;
+    }
+    let cfg = LoopConfig {
+        warmup_periods: WARMUP_PERIODS,
+        measure_periods: a.periods,
+    };
+    let (fig5, mismatch, traces) = sweep(&base, &cfg, true)?;
+    // The open design point "L as a power of two": the same experiment for
+    // other extrapolation points (shorter windows keep the runtime small).
+    let mut l_sweep = Vec::new();
+    let cfg_l = LoopConfig {
+        warmup_periods: WARMUP_PERIODS,
+        measure_periods: a.periods.min(L_SWEEP_PERIODS),
+    };
+    for l in L_SWEEP {
+        if l > base.controller.horizon_max_steps {
+            continue;
+        }
+        let mut p = base;
+        p.controller.extrapolation_steps = l;
+        let (_, m, _) = sweep(&p, &cfg_l, false)?;
+        l_sweep.push(LSweepRow {
+            extrapolation_steps: l,
+            measure_periods: cfg_l.measure_periods,
+            mismatch: m,
+        });
+    }
     let m_bits = base.controller.horizon_max_steps.trailing_zeros();
     let table2 = cycles::table2(m_bits).to_vec();
     let report = Report {
         fig5,
         mismatch,
         cycles: table2,
+        extrapolation_sweep: l_sweep,
         params: base,
         p_correction: drive::mpdcc::fpga::p_taylor(&base.machine),
         measure_periods: a.periods,
@@ -336,6 +390,31 @@ fn tables(r: &Report) -> String {
         "| mean fsw / THD difference, % | - | {:.1} / {:.1} |",
         m.fsw_diff_mean_percent, m.thd_diff_mean_percent
     );
+    let _ = writeln!(
+        o,
+        "| mismatches where only one kept s(k-1), % of mismatches | - | {:.1} |",
+        m.mismatch_lazy_share_percent
+    );
+    let _ = writeln!(
+        o,
+        "\nSame experiment vs the extrapolation point L (FPGA model), fewer periods per run\n"
+    );
+    let _ = writeln!(o, "| L (steps) | periods | decision mismatch (%) | max fsw diff (%) | max THD diff (%) | mean fsw diff (%) | mean THD diff (%) |");
+    let _ = writeln!(o, "|---|---|---|---|---|---|---|");
+    for l in &r.extrapolation_sweep {
+        let m = &l.mismatch;
+        let _ = writeln!(
+            o,
+            "| {} | {} | {:.2} | {:.1} | {:.1} | {:.1} | {:.1} |",
+            l.extrapolation_steps,
+            l.measure_periods,
+            m.decision_mismatch_percent,
+            m.fsw_diff_percent,
+            m.thd_diff_percent,
+            m.fsw_diff_mean_percent,
+            m.thd_diff_mean_percent
+        );
+    }
     let _ = writeln!(o, "\nTable II: worst-case clock cycles per decision\n");
     let _ = writeln!(
         o,

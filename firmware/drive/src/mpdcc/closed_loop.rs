@@ -118,6 +118,9 @@ pub struct LoopResult {
     pub shadow_mismatches: u64,
     /// Mismatches among steps where the driving controller switched.
     pub shadow_mismatches_switching: u64,
+    /// Mismatches where exactly one of the two kept `s(k-1)` (the lazy
+    /// checks disagreed); the rest chose different new positions.
+    pub shadow_mismatches_lazy: u64,
     /// Fundamental rms of the phase currents (mean of phases), pu.
     pub i1_rms_pu: f64,
 }
@@ -203,6 +206,9 @@ pub fn run(
                     r.shadow_mismatches += 1;
                     if d.kind != DecisionKind::Kept {
                         r.shadow_mismatches_switching += 1;
+                    }
+                    if (d.kind == DecisionKind::Kept) != (ds.kind == DecisionKind::Kept) {
+                        r.shadow_mismatches_lazy += 1;
                     }
                 }
             }
