@@ -60,103 +60,121 @@ use Kind::{Block as B, Lanes, Reg, Tree};
 
 /// One explorer evaluation ([`super::fpga::explore`]).
 pub const EXPLORER_OPS: &[Op] = &[
-    op("load candidate, f_s", Reg, &[]),                        // 0
-    op("v_a = rail Vdc/2 + ph v_ph,a", B, &[0]),                // 1
-    op("v_b = rail Vdc/2 + ph v_ph,b", B, &[0]),                // 2
-    op("v_c = rail Vdc/2 + ph v_ph,c", B, &[0]),                // 3
-    op("v_a += n v_n", B, &[1]),                                // 4
-    op("v_b += n v_n", B, &[2]),                                // 5
-    op("v_c += n v_n", B, &[3]),                                // 6
-    op("sum = v_a + v_b", B, &[4, 5]),                          // 7
-    op("sum += v_c", B, &[7, 6]),                               // 8
-    op("u_a = 3 v_a - sum", B, &[4, 8]),                        // 9
-    op("u_b = 3 v_b - sum", B, &[5, 8]),                        // 10
-    op("u_c = 3 v_c - sum", B, &[6, 8]),                        // 11
-    op("D_a = dn_a - g3 u_a", B, &[9]),                         // 12
-    op("D_b = dn_b - g3 u_b", B, &[10]),                        // 13
-    op("D_c = dn_c - g3 u_c", B, &[11]),                        // 14
-    op("D_vn = np_a P_n,a", B, &[0]),                           // 15
-    op("D_vn += np_b P_n,b", B, &[15]),                         // 16
-    op("D_vn += np_c P_n,c", B, &[16]),                         // 17
-    op("D_ph,a = -c P_ph,a", B, &[0]),                          // 18
-    op("D_ph,b = -c P_ph,b", B, &[0]),                          // 19
-    op("D_ph,c = -c P_ph,c", B, &[0]),                          // 20
-    op("Algorithm 2 x7", Lanes, &[12, 13, 14, 17, 18, 19, 20]), // 21
-    op("min l_j, max J_dl", Tree(3), &[21]),                    // 22
-    op("recip ROM [L*]", Reg, &[22]),                           // 23
-    op("J_sw = f_s recip", B, &[23]),                           // 24
-    op("e_vn = e_vn0 + L* D_vn / L", B, &[22]),                 // 25
-    op("sq = e_vn^2", B, &[25]),                                // 26
-    op("J = lambda sq + J_sw", B, &[26, 24]),                   // 27
-    op("return result", Reg, &[27]),                            // 28
+    op("load candidate, f_s", Reg, &[]),                         // 0
+    op("v_a = ph v_ph,a + mux(rail Vdc/2 | v_n)", B, &[0]),      // 1
+    op("v_b = ph v_ph,b + mux(rail Vdc/2 | v_n)", B, &[0]),      // 2
+    op("v_c = ph v_ph,c + mux(rail Vdc/2 | v_n)", B, &[0]),      // 3
+    op("sum = v_a + v_b", B, &[1, 2]),                           // 4
+    op("sum += v_c", B, &[4, 3]),                                // 5
+    op("u_a = 3 v_a - sum", B, &[1, 5]),                         // 6
+    op("u_b = 3 v_b - sum", B, &[2, 5]),                         // 7
+    op("u_c = 3 v_c - sum", B, &[3, 5]),                         // 8
+    op("D_a = dn_a - g3 u_a", B, &[6]),                          // 9
+    op("D_b = dn_b - g3 u_b", B, &[7]),                          // 10
+    op("D_c = dn_c - g3 u_c", B, &[8]),                          // 11
+    op("D_vn = np_a P_n,a", B, &[0]),                            // 12
+    op("D_vn += np_b P_n,b", B, &[12]),                          // 13
+    op("D_vn += np_c P_n,c", B, &[13]),                          // 14
+    op("D_ph,a = -c P_ph,a", B, &[0]),                           // 15
+    op("D_ph,b = -c P_ph,b", B, &[0]),                           // 16
+    op("D_ph,c = -c P_ph,c", B, &[0]),                           // 17
+    op("D1_a = dn1_a - g3 u_a / L (exact_first_step)", B, &[6]), // 18
+    op("D1_b = dn1_b - g3 u_b / L", B, &[7]),                    // 19
+    op("D1_c = dn1_c - g3 u_c / L", B, &[8]),                    // 20
+    op(
+        "Algorithm 2 x7 (+ e1, J_dl terms in cycle 1)",
+        Lanes,
+        &[9, 10, 11, 14, 15, 16, 17, 18, 19, 20],
+    ), // 21
+    op("min l_j, max J_dl", Tree(3), &[21]),                     // 22
+    op("recip ROM [L*]", Reg, &[22]),                            // 23
+    op("J_sw = f_s recip", B, &[23]),                            // 24
+    op("e_vn = e_vn0 + L* D_vn / L", B, &[22]),                  // 25
+    op("sq = e_vn^2", B, &[25]),                                 // 26
+    op("J = lambda sq + J_sw", B, &[26, 24]),                    // 27
+    op("return result", Reg, &[27]),                             // 28
 ];
 
 /// The scheduler before dispatch ([`super::fpga::common_terms`] and
 /// [`super::fpga::lazy_ok`]), worst case (the lazy check fails).
 pub const SCHEDULER_OPS: &[Op] = &[
-    op("sample state registers", Reg, &[]),        // 0
-    op("kw = c_w omega_r", B, &[0]),               // 1
-    op("w2 = omega_r^2", B, &[0]),                 // 2
-    op("ks = c_s omega_s", B, &[0]),               // 3
-    op("kp = c_p w2", B, &[2]),                    // 4
-    op("nat_a = -c_tau i_a", B, &[0]),             // 5
-    op("nat_a += c_r psi_a", B, &[5]),             // 6
-    op("nat_a += kw psi_b", B, &[6, 1]),           // 7
-    op("rate_a = -ks i*_b - nat_a", B, &[7, 3]),   // 8
-    op("nat_b = -c_tau i_b", B, &[0]),             // 9
-    op("nat_b += c_r psi_b", B, &[9]),             // 10
-    op("nat_b -= kw psi_a", B, &[10, 1]),          // 11
-    op("rate_b = ks i*_a - nat_b", B, &[11, 3]),   // 12
-    op("dl_a = rate_a - kp psi_a", B, &[8, 4]),    // 13
-    op("dl_b = rate_b - kp psi_b", B, &[12, 4]),   // 14
-    op("d1_a = rate_a L - kp psi_a", B, &[8, 4]),  // 15
-    op("d1_b = rate_b L - kp psi_b", B, &[12, 4]), // 16
-    op("s3h dl_b", B, &[14]),                      // 17
-    op("s3h d1_b", B, &[16]),                      // 18
-    op("dn_l,b/c", B, &[13, 17]),                  // 19
-    op("dn_l,c", B, &[13, 17]),                    // 20
-    op("dn_1,b", B, &[15, 18]),                    // 21
-    op("dn_1,c", B, &[15, 18]),                    // 22
-    op("s3h i_b", B, &[0]),                        // 23
-    op("i_b", B, &[23]),                           // 24
-    op("i_c", B, &[23]),                           // 25
-    op("e_a = i*_a - i_a", B, &[0]),               // 26
-    op("e_b' = i*_b - i_b", B, &[0]),              // 27
-    op("s3h e_b'", B, &[27]),                      // 28
-    op("e_b", B, &[26, 28]),                       // 29
-    op("e_c", B, &[26, 28]),                       // 30
-    op("e_vn = -v_n", B, &[0]),                    // 31
-    op("e_ph,a", B, &[0]),                         // 32
-    op("e_ph,b", B, &[0]),                         // 33
-    op("e_ph,c", B, &[0]),                         // 34
-    op("P_n,a = c_n i_a", B, &[0]),                // 35
-    op("P_n,b", B, &[24]),                         // 36
-    op("P_n,c", B, &[25]),                         // 37
-    op("P_ph,a = c_ph i_a", B, &[0]),              // 38
-    op("P_ph,b", B, &[24]),                        // 39
-    op("P_ph,c", B, &[25]),                        // 40
-    // Lazy check: the explorer's voltage/inverter path for s(k-1), one step.
-    op("v_a(s_prev)", B, &[0]),                                      // 41
-    op("v_b(s_prev)", B, &[0]),                                      // 42
-    op("v_c(s_prev)", B, &[0]),                                      // 43
-    op("v_a += n v_n", B, &[41]),                                    // 44
-    op("v_b += n v_n", B, &[42]),                                    // 45
-    op("v_c += n v_n", B, &[43]),                                    // 46
-    op("sum = v_a + v_b", B, &[44, 45]),                             // 47
-    op("sum += v_c", B, &[47, 46]),                                  // 48
-    op("u_a", B, &[44, 48]),                                         // 49
-    op("u_b", B, &[45, 48]),                                         // 50
-    op("u_c", B, &[46, 48]),                                         // 51
-    op("e1_a = e_a + dn_1,a - g3 u_a / L", B, &[49, 15, 26]),        // 52
-    op("e1_b", B, &[50, 21, 29]),                                    // 53
-    op("e1_c", B, &[51, 22, 30]),                                    // 54
-    op("e1_vn = e_vn + sum np P_n / L", B, &[31, 35, 36, 37]),       // 55
-    op("e1_vn += ...", B, &[55]),                                    // 56
-    op("e1_vn += ...", B, &[56]),                                    // 57
-    op("e1_ph,a", B, &[32, 38]),                                     // 58
-    op("e1_ph,b", B, &[33, 39]),                                     // 59
-    op("e1_ph,c", B, &[34, 40]),                                     // 60
-    op("7 bound compares, AND", Reg, &[52, 53, 54, 57, 58, 59, 60]), // 61
+    op("sample state registers", Reg, &[]),                // 0
+    op("kw = c_w omega_r", B, &[0]),                       // 1
+    op("w2 = omega_r^2", B, &[0]),                         // 2
+    op("ks = c_s omega_s", B, &[0]),                       // 3
+    op("s2 = omega_s^2", B, &[0]),                         // 4
+    op("kp = c_p w2", B, &[2]),                            // 5
+    op("k2 = ks^2 / 2 (2nd-order rotation)", B, &[3]),     // 6
+    op("tr = c_3 w2 (3rd order)", B, &[2]),                // 7
+    op("ts = c_3 s2 (3rd order)", B, &[4]),                // 8
+    op("kw3 = kw tr", B, &[1, 7]),                         // 9
+    op("ks3 = ks ts", B, &[3, 8]),                         // 10
+    op("nat_a = -c_tau i_a", B, &[0]),                     // 11
+    op("nat_a += c_r psi_a", B, &[11]),                    // 12
+    op("nat_a += kw psi_b", B, &[1, 12]),                  // 13
+    op("rate_a = -ks i*_b - nat_a", B, &[3, 13]),          // 14
+    op("nat_b = -c_tau i_b", B, &[0]),                     // 15
+    op("nat_b += c_r psi_b", B, &[15]),                    // 16
+    op("nat_b -= kw psi_a", B, &[1, 16]),                  // 17
+    op("rate_b = ks i*_a - nat_b", B, &[3, 17]),           // 18
+    op("cor_a = kp psi_a", B, &[5]),                       // 19
+    op("cor_a += k2 i*_a", B, &[6, 19]),                   // 20
+    op("cor_b = kp psi_b", B, &[5]),                       // 21
+    op("cor_b += k2 i*_b", B, &[6, 21]),                   // 22
+    op("cub_a = ks3 i*_b", B, &[10]),                      // 23
+    op("cub_a += kw3 psi_b", B, &[9, 23]),                 // 24
+    op("cub_b = -ks3 i*_a", B, &[10]),                     // 25
+    op("cub_b -= kw3 psi_a", B, &[9, 25]),                 // 26
+    op("dl_a = rate_a - cor_a + cub_a", B, &[14, 20, 24]), // 27
+    op("dl_b = rate_b - cor_b + cub_b", B, &[18, 22, 26]), // 28
+    op("d1_a = rate_a L^2 - cor_a L + cub_a", B, &[14, 20, 24]), // 29
+    op("d1_b = rate_b L^2 - cor_b L + cub_b", B, &[18, 22, 26]), // 30
+    op("s3h dl_b", B, &[28]),                              // 31
+    op("s3h d1_b", B, &[30]),                              // 32
+    op("dn_l,b", B, &[27, 31]),                            // 33
+    op("dn_l,c", B, &[27, 31]),                            // 34
+    op("dn_1,b", B, &[29, 32]),                            // 35
+    op("dn_1,c", B, &[29, 32]),                            // 36
+    op("s3h i_b", B, &[0]),                                // 37
+    op("i_b", B, &[37]),                                   // 38
+    op("i_c", B, &[37]),                                   // 39
+    op("e_a = i*_a - i_a", B, &[0]),                       // 40
+    op("e_b' = i*_b - i_b", B, &[0]),                      // 41
+    op("s3h e_b'", B, &[41]),                              // 42
+    op("e_b", B, &[40, 42]),                               // 43
+    op("e_c", B, &[40, 42]),                               // 44
+    op("e_vn = -v_n", B, &[0]),                            // 45
+    op("e_ph,a", B, &[0]),                                 // 46
+    op("e_ph,b", B, &[0]),                                 // 47
+    op("e_ph,c", B, &[0]),                                 // 48
+    op("P_n,a = c_n i_a", B, &[0]),                        // 49
+    op("P_n,b", B, &[38]),                                 // 50
+    op("P_n,c", B, &[39]),                                 // 51
+    op("P_ph,a = c_ph i_a", B, &[0]),                      // 52
+    op("P_ph,b", B, &[38]),                                // 53
+    op("P_ph,c", B, &[39]),                                // 54
+    op("v_a(s_prev) = ph v_ph,a + mux(rail Vdc/2 | v_n)", B, &[0]), // 55
+    op("v_b(s_prev) = ph v_ph,b + mux(rail Vdc/2 | v_n)", B, &[0]), // 56
+    op("v_c(s_prev) = ph v_ph,c + mux(rail Vdc/2 | v_n)", B, &[0]), // 57
+    op("sum = v_a + v_b", B, &[55, 56]),                   // 58
+    op("sum += v_c", B, &[57, 58]),                        // 59
+    op("u_a = 3 v_a - sum", B, &[55, 59]),                 // 60
+    op("u_b", B, &[56, 59]),                               // 61
+    op("u_c", B, &[57, 59]),                               // 62
+    op("e1_a = e_a + dn_1,a - g3 u_a / L", B, &[29, 40, 60]), // 63
+    op("e1_b", B, &[35, 43, 61]),                          // 64
+    op("e1_c", B, &[36, 44, 62]),                          // 65
+    op("e1_vn = e_vn + np_a P_n,a / L", B, &[45, 49]),     // 66
+    op("e1_vn += np_b P_n,b / L", B, &[50, 66]),           // 67
+    op("e1_vn += np_c P_n,c / L", B, &[51, 67]),           // 68
+    op("e1_ph,a = e_ph,a - c P_ph,a / L", B, &[46, 52]),   // 69
+    op("e1_ph,b", B, &[47, 53]),                           // 70
+    op("e1_ph,c", B, &[48, 54]),                           // 71
+    op(
+        "7 bound compares, AND (lazy check)",
+        Reg,
+        &[63, 64, 65, 68, 69, 70, 71],
+    ), // 72
 ];
 
 /// Hardware parameters of the cycle model.
@@ -341,6 +359,15 @@ pub fn table2(m_bits: u32) -> [Table2Row; 6] {
 mod tests {
     use super::*;
 
+    /// The explorer forms `v_x` in one block operation because no position
+    /// uses both a dc rail and the neutral point: `rail != 0 => n_coef = 0`.
+    #[test]
+    fn voltage_needs_one_operation() {
+        for p in super::super::anpc::TABLE {
+            assert!(p.rail == 0 || p.n_coef == 0, "{p:?}");
+        }
+    }
+
     #[test]
     fn programs_are_in_dependency_order() {
         for ops in [EXPLORER_OPS, SCHEDULER_OPS] {
@@ -400,6 +427,26 @@ mod tests {
         // Monotone in n.
         for n in 1..6 {
             assert!(m.worst_case(n + 1, 216, 7).total < m.worst_case(n, 216, 7).total);
+        }
+    }
+}
+
+#[cfg(test)]
+mod print {
+    extern crate std;
+    /// Prints Table II as our model computes it (quoted in docs/mpdcc-fpga.md).
+    #[test]
+    fn print_table2() {
+        let m = super::CycleModel::default();
+        std::println!(
+            "pre {} per-candidate {} kept {} max candidates {}",
+            m.pre_cycles() + 1,
+            m.candidate_cycles(8),
+            m.kept_cycles(),
+            super::max_candidates()
+        );
+        for r in super::table2(7) {
+            std::println!("{r:?}");
         }
     }
 }
