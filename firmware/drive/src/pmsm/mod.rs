@@ -7,17 +7,17 @@
 //! - [`sim`]: the `Controller` trait and the closed-loop runner.
 //! - [`svpwm`], [`foc`]: the FOC baseline (PI + centre-aligned SVPWM).
 //! - [`metrics`]: settling time, overshoot, switching frequency, ripple.
+pub mod foc;
 pub mod frames;
 pub mod measure;
+pub mod metrics;
+pub mod mpdtc_ctrl;
+pub mod mpdtc_fixed;
+pub mod mpdtc_ref;
+#[cfg(test)]
+mod mpdtc_tests;
+pub mod observer;
 pub mod params;
 pub mod plant;
 pub mod sim;
-pub mod mpdtc_ctrl;
-pub mod mpdtc_ref;
-pub mod observer;
-pub mod foc;
-pub mod metrics;
 pub mod svpwm;
-pub mod mpdtc_fixed;
-#[cfg(test)]
-mod mpdtc_tests;
