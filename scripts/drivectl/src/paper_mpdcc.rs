@@ -274,12 +274,10 @@ fn sweep(
     Ok((fig5, mismatch, traces))
 }
 
-pub fn run(a: Args) -> Result<()> {
+/// Runs every experiment; the report plus the waveform traces.
+fn build_report(a: &Args) -> Result<(Report, Vec<Trace>)> {
     let t0 = Instant::now();
     let base = load_params(a.params.as_deref())?;
-    if let Some(d) = &a.out {
-        std::fs::create_dir_all(d).with_context(|| format!("creating {}", d.display()))?;
-    }
     let cfg = LoopConfig {
         warmup_periods: WARMUP_PERIODS,
         measure_periods: a.periods,
@@ -317,6 +315,14 @@ pub fn run(a: Args) -> Result<()> {
         measure_periods: a.periods,
         runtime_s: t0.elapsed().as_secs_f64(),
     };
+    Ok((report, traces))
+}
+
+pub fn run(a: Args) -> Result<()> {
+    if let Some(d) = &a.out {
+        std::fs::create_dir_all(d).with_context(|| format!("creating {}", d.display()))?;
+    }
+    let (report, traces) = build_report(&a)?;
     if let Some(d) = &a.out {
         write_outputs(d, &report, &traces)?;
     }
@@ -720,6 +726,44 @@ mod tests {
         let f = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/mpdcc-machine.toml");
         let p = load_params(Some(&f)).unwrap();
         assert_eq!(p, DriveParams::default());
+    }
+
+    /// `--json` carries the keys the issue prescribes (short windows).
+    #[test]
+    fn json_report_has_the_issue_keys() {
+        let a = Args {
+            json: true,
+            out: None,
+            params: None,
+            periods: 1,
+        };
+        let (r, traces) = build_report(&a).unwrap();
+        let v = serde_json::to_value(&r).unwrap();
+        let fig5 = v["fig5"].as_array().unwrap();
+        assert!(fig5.len() >= 6);
+        for f in fig5 {
+            assert!(f["delta_i_pu"].is_f64());
+            for imp in ["reference", "fpga"] {
+                assert!(f[imp]["fsw_hz"].as_f64().unwrap() > 0.0);
+                assert!(f[imp]["thd_percent"].as_f64().unwrap() > 0.0);
+            }
+        }
+        for k in [
+            "decision_mismatch_percent",
+            "fsw_diff_percent",
+            "thd_diff_percent",
+        ] {
+            assert!(v["mismatch"][k].is_f64(), "{k}");
+        }
+        let c = v["cycles"].as_array().unwrap();
+        assert_eq!(c.len(), 6);
+        for (n, row) in c.iter().enumerate() {
+            assert_eq!(row["explorers"].as_u64().unwrap(), n as u64 + 1);
+            assert!(row["paper_cycles"].as_u64().unwrap() > 0);
+            assert!(row["model_cycles"].as_u64().unwrap() > 0);
+        }
+        assert_eq!(v["cycles"][0]["paper_cycles"].as_u64(), Some(2223));
+        assert_eq!(traces.len(), 1);
     }
 
     #[test]
