@@ -61,8 +61,17 @@ enum BenchCmd {
     Mpdcc(paper_mpdcc::BenchArgs),
 }
 
-fn main() -> Result<()> {
-    match Cli::parse().cmd {
+/// Errors are the user's to read: one line of causes, exit code 2, never a
+/// backtrace (anyhow prints one from `main` when RUST_BACKTRACE is set).
+fn main() {
+    if let Err(e) = dispatch(Cli::parse().cmd) {
+        eprintln!("drivectl: error: {e:#}");
+        std::process::exit(2);
+    }
+}
+
+fn dispatch(cmd: Cmd) -> Result<()> {
+    match cmd {
         Cmd::Console(a) => console::console(a),
         Cmd::Send(a) => console::send(a),
         Cmd::Log(a) => console::log(a),
