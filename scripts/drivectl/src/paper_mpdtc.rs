@@ -179,7 +179,10 @@ fn write_csv(dir: &Path, r: &Results) -> Result<()> {
     w("fig10_mpdtc.csv", trace(&r.toggle_mpdtc))?;
     w("fig10_foc.csv", trace(&r.toggle_foc))?;
     for (tt, tr) in &r.table3_traces {
-        w(&format!("fig8_ttol_{tt}.csv"), trace(tr))?;
+        w(&format!("table3_ttol_{tt}.csv"), trace(tr))?;
+    }
+    for (p, tr) in &r.table4_traces {
+        w(&format!("table4_p_{p}.csv"), trace(tr))?;
     }
     let mut t = String::from("freq_hz,mpdtc_gain_db,mpdtc_phase_deg,foc_gain_db,foc_phase_deg\n");
     for (a, b) in r.bode_mpdtc.points.iter().zip(&r.bode_foc.points) {

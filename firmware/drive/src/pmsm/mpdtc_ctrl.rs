@@ -133,8 +133,9 @@ impl Controller for MpdtcFixed {
 }
 
 /// The reference drives the plant; the fixed-point core runs in its shadow on
-/// the same measurements (its `S[k]`, `S[k-1]` forced to what is really
-/// applied) and the decisions are compared every period.
+/// the same measurements and command (its `S[k]`, `S[k-1]` forced to what is
+/// really applied; its integrator and observer evolve on their own) and the
+/// decisions are compared every period.
 #[derive(Debug, Clone)]
 pub struct MpdtcShadow {
     /// The reference (in the loop).
@@ -167,8 +168,14 @@ impl Controller for MpdtcShadow {
     fn step(&mut self, m: &Measurement, torque_ref_nm: f64) -> Actuation {
         self.fixed.state.s_applied = self.reference.state.s_applied;
         self.fixed.state.s_prev = self.reference.state.s_prev;
-        let a = self.reference.step(m, torque_ref_nm);
-        let f = self.fixed.step(m, torque_ref_nm);
+        // Both get the command as the core's TRQ register holds it: a
+        // quantization offset of the command (0.4 N m is not dyadic) would
+        // otherwise be integrated open-loop by the shadow's eq. (13)
+        // integrator and drift it away from the reference's.
+        let t = mpdtc_fixed::quantize_sat(torque_ref_nm, mpdtc_fixed::TRQ_FRAC, 18) as f64
+            / (1u32 << mpdtc_fixed::TRQ_FRAC) as f64;
+        let a = self.reference.step(m, t);
+        let f = self.fixed.step(m, t);
         self.periods += 1;
         if a == f {
             self.agree += 1;

@@ -18,8 +18,8 @@
 //! | KINV | sQ8.16 | 25 | [-256, 256) A/N m | | `1 / k_T` |
 //! | CSQ | sQ8.8 | 18 | [-256, 256) A | 3.9 mA | current operand of the square (cost) |
 //! | MAG | uQ13.11 in s25 | 25 | [0, 8192) A^2 | 4.9e-4 A^2 | `|I|^2` |
-//! | WGT | sQ3.14 | 18 | [0, 8) | 6.1e-5 | `2^(2 n p)`, n = 0..3 |
-//! | COST | sQ16.25 | 43 (kept 48) | exact | | `J^2 = WGT * MAG`, compared, never rounded |
+//! | WGT | sQ3.14 | 18 | [0, 8) | 6.1e-5 | `2^(n p)` (or `2^(2 n p)`), n = 0..3 |
+//! | COST | sQ16.25 | 43 (kept 48) | exact | | `WGT * MAG`, compared, never rounded |
 //!
 //! Arithmetic rules (every operation of [`decide`] uses only these):
 //! - **Product** `COEF x CUR` is exact (43 bits, 32 fraction bits). A *MAC
@@ -37,7 +37,7 @@
 //!   sum of two currents; saturation only triggers on faults and is then
 //!   harmless (the decision is still a valid switch state).
 
-use super::mpdtc_ref::{MpdtcConfig, SWITCH_WEIGHT};
+use super::mpdtc_ref::{CostNorm, MpdtcConfig, SWITCH_WEIGHT};
 use super::params::ParamError;
 
 /// Width of CUR.
@@ -149,13 +149,16 @@ pub struct FixedParams {
     pub k_int: i32,
     /// Integrator clamp `int_limit / k_T`, CUR.
     pub int_lim: i32,
+    /// Conditional integration enable (1 bit).
+    pub int_conditional: bool,
     /// Observer `b Kp` (b = Ts/L), COEF.
     pub kp_o: i32,
     /// Observer `b Kp Ki Ts`, COEF.
     pub ki_o: i32,
     /// Observer clamp `b eps_max`, CUR.
     pub eta_lim: i32,
-    /// Weights `2^(2 n p)`, n = transitions 0..=3, WGT.
+    /// Weights `2^(n p)` (squared norm) or `2^(2 n p)` (Euclidean), n =
+    /// transitions 0..=3, WGT.
     pub w2: [i32; 4],
 }
 
@@ -178,10 +181,17 @@ impl FixedParams {
         let kt = 1.5 * m.pole_pairs as f64 * cfg.torque_psi_wb();
         let q = |x: f64, f: &'static str| quantize(x, FRAC, CUR_BITS, f);
         let qc = |x: f64, f: &'static str| quantize(x, FRAC, 18, f);
+        // The core always compares `w2[n] |I|^2`: for the squared norm
+        // `w2 = 2^(n p)`, for the Euclidean norm `2^(2 n p)` (same order as
+        // `2^(n p) |I|`).
+        let e = match p.cost_norm {
+            CostNorm::Squared => 1.0,
+            CostNorm::Euclidean => 2.0,
+        };
         let mut w2 = [0; 4];
         for (n, w) in w2.iter_mut().enumerate() {
             *w = quantize(
-                libm::exp2(2.0 * n as f64 * p.p_weight),
+                libm::exp2(e * n as f64 * p.p_weight),
                 TRQ_FRAC,
                 18,
                 "p_weight",
@@ -198,6 +208,7 @@ impl FixedParams {
             tol: q(p.t_tol_nm / kt, "t_tol_nm")?,
             k_int: qc(p.k_int_per_s * ts, "k_int_per_s")?,
             int_lim: q(p.int_limit_nm / kt, "int_limit_nm")?,
+            int_conditional: p.int_conditional,
             kp_o: qc(b * p.obs_kp_v_per_a, "obs_kp_v_per_a")?,
             ki_o: qc(b * p.obs_kp_v_per_a * p.obs_ki_per_s * ts, "obs_ki_per_s")?,
             eta_lim: q(b * p.obs_limit_v, "obs_limit_v")?,
@@ -231,6 +242,8 @@ pub struct FixedState {
     pub eta_prev: (i32, i32),
     /// Integrator output `x` (A), CUR.
     pub x: i32,
+    /// Previous decision had a candidate in the band (integrator enable).
+    pub band_reached: bool,
     /// Previous original reference in current units, CUR.
     pub iq_ref_prev: i32,
     /// Observer estimates `(i_hat_d, i_hat_q)`, CUR.
@@ -254,7 +267,7 @@ pub struct FixedOutputs {
     pub i2: [(i32, i32); 8],
     /// Per candidate `|i_q* - i_q2|`, CUR.
     pub err: [i32; 8],
-    /// Per candidate `J^2` (COST).
+    /// Per candidate cost `w2[n] |I|^2` (COST).
     pub cost2: [i64; 8],
     /// State for the next period.
     pub next: FixedState,
@@ -319,11 +332,16 @@ pub fn decide(st: &FixedState, inp: &FixedInputs, p: &FixedParams) -> FixedOutpu
         add(im.1, mac(&[(p.lambda, sub(full.1, im.1))], 0)),
     );
 
-    // Eq. (13) in current units: x += K Ts (iq*_prev - i_q0).
-    let x = clamp(
-        add(st.x, mac(&[(p.k_int, sub(st.iq_ref_prev, i0.1))], 0)),
-        p.int_lim,
-    );
+    // Eq. (13) in current units: x += K Ts (iq*_prev - i_q0), enabled when
+    // the previous decision reached the band (if `int_conditional`).
+    let x = if st.band_reached || !p.int_conditional {
+        clamp(
+            add(st.x, mac(&[(p.k_int, sub(st.iq_ref_prev, i0.1))], 0)),
+            p.int_lim,
+        )
+    } else {
+        st.x
+    };
     // T* -> A: TRQ (14 frac) x KINV (16 frac) -> 30 frac -> CUR (16).
     let iq_orig = sat25(rnd_shr(inp.t_ref as i64 * p.kinv_t as i64, TRQ_FRAC));
     let iq_ref = add(iq_orig, x);
@@ -369,6 +387,7 @@ pub fn decide(st: &FixedState, inp: &FixedInputs, p: &FixedParams) -> FixedOutpu
         s_prev: st.s_applied,
         eta_prev: eta,
         x,
+        band_reached: out.err.iter().any(|&e| e <= p.tol),
         iq_ref_prev: iq_orig,
         i_hat,
         nu,
@@ -376,7 +395,7 @@ pub fn decide(st: &FixedState, inp: &FixedInputs, p: &FixedParams) -> FixedOutpu
     out
 }
 
-/// Band logic with the reference's tie rules (in band: least `J^2`; none in
+/// Band logic with the reference's tie rules (in band: least cost; none in
 /// band: least error; ties: fewer transitions from `s_applied`, then lowest
 /// index). In hardware: 8 parallel keys, a 3-level compare tree.
 pub fn select(err: &[i32; 8], cost2: &[i64; 8], tol: i32, s_applied: u8) -> u8 {

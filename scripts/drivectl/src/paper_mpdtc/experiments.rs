@@ -28,7 +28,39 @@ pub const TOGGLE_HALF_S: f64 = 10e-3;
 pub const TOGGLE_RUN_S: f64 = 40e-3;
 
 fn mpdtc_cfg(p: MpdtcParams) -> Result<MpdtcConfig> {
+    let p = tuning_override(p);
     MpdtcConfig::new(MotorParams::default(), p).map_err(|e| anyhow!("{e}"))
+}
+
+/// Development aid: `MPDTC_TUNE="k_int_per_s=5000,cost_norm=euclidean"`
+/// overrides defaults of every MPDTC in the experiments (not for reports).
+fn tuning_override(mut p: MpdtcParams) -> MpdtcParams {
+    let Ok(v) = std::env::var("MPDTC_TUNE") else {
+        return p;
+    };
+    for kv in v.split(',') {
+        let Some((k, x)) = kv.split_once('=') else {
+            continue;
+        };
+        let f: f64 = x.parse().unwrap_or(f64::NAN);
+        match k {
+            "k_int_per_s" => p.k_int_per_s = f,
+            "int_limit_nm" => p.int_limit_nm = f,
+            "obs_kp_v_per_a" => p.obs_kp_v_per_a = f,
+            "obs_ki_per_s" => p.obs_ki_per_s = f,
+            "meas_age_periods" => p.meas_age_periods = f,
+            "int_conditional" => p.int_conditional = f != 0.0,
+            "cost_norm" => {
+                p.cost_norm = if x == "euclidean" {
+                    drive::pmsm::mpdtc_ref::CostNorm::Euclidean
+                } else {
+                    drive::pmsm::mpdtc_ref::CostNorm::Squared
+                }
+            }
+            _ => eprintln!("MPDTC_TUNE: unknown key {k}"),
+        }
+    }
+    p
 }
 
 fn step_ref(t: f64) -> f64 {
@@ -120,6 +152,7 @@ pub struct Results {
     pub table3: Vec<Table3Row>,
     pub table3_traces: Vec<(f64, Trace)>,
     pub table4: Vec<Table4Row>,
+    pub table4_traces: Vec<(f64, Trace)>,
     pub step_mpdtc: StepMetrics,
     pub step_foc: StepMetrics,
     pub toggle_mpdtc: Trace,
@@ -185,8 +218,11 @@ pub fn table3(drive: &DriveParams) -> Result<Table3> {
     Ok((rows, traces))
 }
 
+/// Table 4 rows and the step traces.
+pub type Table4 = (Vec<Table4Row>, Vec<(f64, Trace)>);
+
 /// Table 4: p sweep (T_tol = 0.08 N m); f_sw over a 10 ms run with the step.
-pub fn table4(drive: &DriveParams) -> Result<Vec<Table4Row>> {
+pub fn table4_traces(drive: &DriveParams) -> Result<Table4> {
     let paper = [
         (0.02, 1.07, 16.7),
         (0.1, 1.06, 14.0),
@@ -194,7 +230,7 @@ pub fn table4(drive: &DriveParams) -> Result<Vec<Table4Row>> {
         (0.2, 4.13, 9.2),
     ];
     let dur = 10e-3;
-    let mut rows = vec![];
+    let (mut rows, mut traces) = (vec![], vec![]);
     for (p, pid, pf) in paper {
         let cfg = mpdtc_cfg(MpdtcParams {
             p_weight: p,
@@ -217,8 +253,9 @@ pub fn table4(drive: &DriveParams) -> Result<Vec<Table4Row>> {
             paper_fsw_khz: pf,
             iq_settling_time_ms: iq_settling(&tr).map(|s| s * 1e3),
         });
+        traces.push((p, tr));
     }
-    Ok(rows)
+    Ok((rows, traces))
 }
 
 /// Fig. 10 metrics of a toggle trace.
@@ -399,7 +436,7 @@ pub fn bandwidth(p: &[BodePoint]) -> Option<f64> {
 pub fn all() -> Result<Results> {
     let drive = DriveParams::default();
     let (table3, table3_traces) = table3(&drive)?;
-    let table4 = table4(&drive)?;
+    let (table4, table4_traces) = table4_traces(&drive)?;
     let (toggle_mpdtc, toggle_foc, agreement) = toggle(&drive)?;
     let step_mpdtc = toggle_metrics(&toggle_mpdtc);
     let step_foc = toggle_metrics(&toggle_foc);
@@ -412,6 +449,7 @@ pub fn all() -> Result<Results> {
         table3,
         table3_traces,
         table4,
+        table4_traces,
         step_mpdtc,
         step_foc,
         toggle_mpdtc,
