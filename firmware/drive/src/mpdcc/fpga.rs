@@ -53,7 +53,7 @@
 use super::anpc;
 use super::binsearch::{self, Lj, SearchRange};
 use super::controller::{CtrlState, Decision, MpdccController, StateError};
-use super::fixed::{self, konst, mul, rshift_round, sat16, sub, F_C, F_I};
+use super::fixed::{self, konst, mul, rshift_round, sat16, sub, F_C, F_I, F_SMALL};
 use super::params::DriveParams;
 use super::scheduler::{self, Explorer, ExplorerResult};
 
@@ -97,6 +97,18 @@ pub struct FpgaConfig {
     /// coefficients `omega_r L T` and `omega_s L T` by `(1 - theta^2/6)`, i.e.
     /// `sin(theta)` to third order (the paper stops at second order, `p`).
     pub third_order: bool,
+    /// Second-order stator damping: scale the `L`-step machine rates by
+    /// `(1 - L T/(2 tau_s))` (the `-1/tau_s` row of `F^2 t^2/2`, which
+    /// multiplies the whole current rate; design-time constants).
+    pub stator_damping: bool,
+    /// Use the mid-interval output voltage: the phase and dc-link capacitor
+    /// voltages drift over the `l` steps (eq. 18b), which moves `v_abc(s)`;
+    /// the mean voltage is `v(k) + Delta v(l)/2` (trapezoid, second order).
+    pub capacitor_drift: bool,
+    /// Use the mid-interval phase current in eq. (18b): the capacitor
+    /// voltages integrate `i(k) + Delta i(l)/2` instead of `i(k)` held
+    /// (trapezoid, second order; `Delta i` from the candidate's prediction).
+    pub current_midpoint: bool,
 }
 
 impl FpgaConfig {
@@ -109,6 +121,9 @@ impl FpgaConfig {
             ref_second_order: false,
             exact_first_step: false,
             third_order: false,
+            stator_damping: false,
+            capacitor_drift: false,
+            current_midpoint: false,
         }
     }
 
@@ -122,6 +137,9 @@ impl FpgaConfig {
             ref_second_order: true,
             exact_first_step: true,
             third_order: true,
+            stator_damping: true,
+            capacitor_drift: true,
+            current_midpoint: false,
         }
     }
 
@@ -133,6 +151,9 @@ impl FpgaConfig {
             ref_second_order: true,
             exact_first_step: true,
             third_order: true,
+            stator_damping: true,
+            capacitor_drift: true,
+            current_midpoint: false,
         }
     }
 }
@@ -208,6 +229,20 @@ pub struct Coeffs {
     pub third_order: bool,
     /// `(L T)^2 / 6`, Q1.14 (third-order rotation term).
     pub c_3: i16,
+    /// [`FpgaConfig::capacitor_drift`].
+    pub capacitor_drift: bool,
+    /// [`FpgaConfig::current_midpoint`].
+    pub current_midpoint: bool,
+    /// One-step coefficients (lazy check, first step), f17: `T/tau_s`.
+    pub c_tau1: i16,
+    /// `T X_m/(D tau_r)`, f17.
+    pub c_r1: i16,
+    /// `T X_m/D`, f17.
+    pub c_w1: i16,
+    /// `T`, f17.
+    pub c_s1: i16,
+    /// `T X_r/(3D)`, f17.
+    pub g3_1: i16,
 }
 
 impl Coeffs {
@@ -223,6 +258,12 @@ impl Coeffs {
         let t = c.ts_pu(m);
         let lt = c.extrapolation_steps as f64 * t;
         let d = m.d_pu();
+        // Second-order stator damping of the L-step machine rates.
+        let damp = if cfg.stator_damping {
+            1.0 - lt / (2.0 * m.tau_s_pu())
+        } else {
+            1.0
+        };
         let q = |name: &'static str, v: f64, f: u32| -> Result<i16, FpgaError> {
             match konst(v, f) {
                 (r, false) => Ok(r),
@@ -242,11 +283,12 @@ impl Coeffs {
         if lam > u16::MAX as f64 {
             return Err(FpgaError::CoefficientRange("lambda_n"));
         }
-        // Bounds are rounded inward: floor(b 2^13 - 1/2), so that a quantized
-        // output (within half an LSB of the true one) inside the integer
-        // bound is truly inside the real bound.
+        // Bounds: round to nearest (see docs/mpdcc-fpga.md: rounding them
+        // inward keeps the FPGA-driven loop strictly inside but makes the
+        // FPGA disagree with the reference whenever the reference rides a
+        // bound within an LSB, e.g. the slow v_ph).
         let bq = |name: &'static str, v: f64| -> Result<i16, FpgaError> {
-            let r = libm::floor(libm::ldexp(v, F_I as i32) - 0.5);
+            let r = libm::floor(libm::ldexp(v, F_I as i32) + 0.5);
             if (0.0..=i16::MAX as f64).contains(&r) {
                 Ok(r as i16)
             } else {
@@ -260,12 +302,12 @@ impl Coeffs {
             lambda: c.extrapolation_steps.trailing_zeros(),
             m_bits: n_bar.trailing_zeros(),
             n_bar,
-            c_tau: q("c_tau", lt / m.tau_s_pu(), F_C)?,
-            c_r: q("c_r", lt * m.x_m_pu / (d * m.tau_r_pu()), F_C)?,
-            c_w: q("c_w", lt * m.x_m_pu / d, F_C)?,
+            c_tau: q("c_tau", damp * lt / m.tau_s_pu(), F_C)?,
+            c_r: q("c_r", damp * lt * m.x_m_pu / (d * m.tau_r_pu()), F_C)?,
+            c_w: q("c_w", damp * lt * m.x_m_pu / d, F_C)?,
             c_p: q("c_p", p_corr * lt * lt, F_C)?,
             c_s: q("c_s", lt, F_C)?,
-            g3: q("g3", lt * m.x_r_pu() / (3.0 * d), F_C)?,
+            g3: q("g3", damp * lt * m.x_r_pu() / (3.0 * d), F_C)?,
             c_n: q("c_n", lt / (2.0 * p.inverter.c_dc_pu), F_C)?,
             c_ph: q("c_ph", lt / p.inverter.c_ph_pu, F_C)?,
             s3h: q("s3h", 0.866_025_403_784_438_6, F_C)?,
@@ -278,6 +320,13 @@ impl Coeffs {
             exact_first_step: cfg.exact_first_step,
             third_order: cfg.third_order,
             c_3: q("c_3", lt * lt / 6.0, F_C)?,
+            capacitor_drift: cfg.capacitor_drift,
+            current_midpoint: cfg.current_midpoint,
+            c_tau1: q("c_tau1", t / m.tau_s_pu(), F_SMALL)?,
+            c_r1: q("c_r1", t * m.x_m_pu / (d * m.tau_r_pu()), F_SMALL)?,
+            c_w1: q("c_w1", t * m.x_m_pu / d, F_SMALL)?,
+            c_s1: q("c_s1", t, F_SMALL)?,
+            g3_1: q("g3_1", t * m.x_r_pu() / (3.0 * d), F_SMALL)?,
         })
     }
 }
@@ -372,6 +421,8 @@ pub struct Common {
     pub pn: [i64; 3],
     /// `L T/C_ph i_x`, wide (f27).
     pub pph: [i64; 3],
+    /// Reference change over `L` steps, `i*_abc(k+L) - i*_abc(k)`, Q2.13.
+    pub dref: [i16; 3],
     /// Registers copied for the explorers: `v_n`, `v_ph`, Q2.13.
     pub v_n: i16,
     /// Phase capacitor voltages, Q2.13.
@@ -427,11 +478,31 @@ pub fn common_terms(k: &Coeffs, x: &Inputs) -> Common {
         to_q13(rate_a - cor_a + cub_a, F_W),
         to_q13(rate_b - cor_b + cub_b, F_W),
     ];
-    // One step: rates / L, L^2 group / L^2, L^3 group / L^3.
-    let f1 = F_W + 3 * lam;
+    // One step (f31): own first-order products with the f17 one-step
+    // coefficients (so the L-step damping does not leak into the lazy
+    // check), plus the L^2 and L^3 groups divided by L^2 and L^3.
+    let kw1 = mul(k.c_w1, F_SMALL, x.omega_r, F_I, F_SMALL);
+    let ks1 = mul(k.c_s1, F_SMALL, x.omega_s, F_I, F_SMALL);
+    let nat1_a = -(p(k.c_tau1, ia) << 1) + p(k.c_r1, pa) + p(kw1, pb);
+    let nat1_b = -(p(k.c_tau1, ib) << 1) + p(k.c_r1, pb) - p(kw1, pa);
+    let rate1_a = -(p(ks1, rb) << 1) - nat1_a;
+    let rate1_b = (p(ks1, ra) << 1) - nat1_b;
+    let f1 = F_SMALL + F_C; // 31
+    let up = f1 - F_W; // 3
     let d1 = [
-        to_q13((rate_a << (2 * lam)) - (cor_a << lam) + cub_a, f1),
-        to_q13((rate_b << (2 * lam)) - (cor_b << lam) + cub_b, f1),
+        to_q13(
+            rate1_a - rshift_round(cor_a << up, 2 * lam) + rshift_round(cub_a << up, 3 * lam),
+            f1,
+        ),
+        to_q13(
+            rate1_b - rshift_round(cor_b << up, 2 * lam) + rshift_round(cub_b << up, 3 * lam),
+            f1,
+        ),
+    ];
+    // Reference change over L (f28): rotation to third order.
+    let dref_ab = [
+        to_q13(ref_a - k2a + (p(ks3, rb) << 1), F_W),
+        to_q13(ref_b - k2b - (p(ks3, ra) << 1), F_W),
     ];
     let i_abc = inv_clarke_q(x.i_ab, k.s3h);
     let e_ab = [sub(ra, ia), sub(rb, ib)];
@@ -449,23 +520,36 @@ pub fn common_terms(k: &Coeffs, x: &Inputs) -> Common {
         i_abc,
         pn: i_abc.map(|i| p(k.c_n, i)),
         pph: i_abc.map(|i| p(k.c_ph, i)),
+        dref: inv_clarke_q(dref_ab, k.s3h),
         v_n: x.v_n,
         v_ph: x.v_ph,
     }
 }
 
-/// Wide (f27) voltage terms `g3 (3 v_x - sum v)` of candidate `s`.
-fn voltage_terms(k: &Coeffs, c: &Common, s: [u8; 3]) -> [i64; 3] {
+/// Wide voltage terms `g (3 v_x - sum v)` of candidate `s`: f27 with the
+/// L-step `g3` (Q1.14), f30 with the one-step `g3_1` (f17).
+fn voltage_terms(k: &Coeffs, c: &Common, s: [u8; 3], one_step: bool) -> [i64; 3] {
+    let inv = inverter_terms(c, s);
     let mut v = [0i64; 3];
     for ph in 0..3 {
         let pos = &anpc::TABLE[(s[ph] & 7) as usize];
         v[ph] = pos.rail as i64 * k.v_dc_half as i64
             + pos.n_coef as i64 * c.v_n as i64
             + pos.ph_coef as i64 * c.v_ph[ph] as i64;
+        if k.capacitor_drift {
+            // Mid-interval voltage: the capacitor voltages drift linearly
+            // (eq. 18b), so the mean output voltage over the l steps is
+            // v(k) + Delta v(l)/2; Delta v_n = -inv[0], Delta v_ph = -inv[1+ph]
+            // (f27), halved and rounded to Q2.13 (and /L for one step).
+            let dv = -(pos.n_coef as i64) * inv[0] - pos.ph_coef as i64 * inv[1 + ph];
+            let sh = F_C + 1 + if one_step { k.lambda } else { 0 };
+            v[ph] += rshift_round(dv, sh);
+        }
     }
     let sum = v[0] + v[1] + v[2];
     // u_x = 3 v_x - sum v: exact, < 2^17 in magnitude (an 18-bit operand).
-    v.map(|vx| k.g3 as i64 * (3 * vx - sum))
+    let g = if one_step { k.g3_1 } else { k.g3 };
+    v.map(|vx| g as i64 * (3 * vx - sum))
 }
 
 /// Wide (f27) inverter error changes over `L` steps: `[v_n, v_ph,abc]`.
@@ -485,16 +569,37 @@ fn inverter_terms(c: &Common, s: [u8; 3]) -> [i64; 4] {
 /// false) or `l = 1` (true), Q2.13.
 pub fn deltas(k: &Coeffs, c: &Common, s: [u8; 3], one_step: bool) -> [i16; 7] {
     let sh = if one_step { k.lambda } else { 0 };
-    let g = voltage_terms(k, c, s);
+    let g = voltage_terms(k, c, s, one_step);
     let inv = inverter_terms(c, s);
     let dn = if one_step { c.dn_1 } else { c.dn_l };
+    // Voltage term: f27 (Q1.14 x Q2.13) or f30 (f17 x Q2.13) to Q2.13.
+    let gsh = if one_step { F_SMALL } else { F_C };
     let mut d = [0i16; 7];
     for ph in 0..3 {
-        // Voltage term: f27 (Q1.14 x Q2.13), /L by shifting for one step.
-        d[ph] = sub(dn[ph], sat16(rshift_round(g[ph], F_C + sh)));
+        d[ph] = sub(dn[ph], sat16(rshift_round(g[ph], gsh)));
+    }
+    if !k.current_midpoint {
+        for j in 0..4 {
+            d[3 + j] = sat16(rshift_round(inv[j], F_C + sh));
+        }
+        return d;
+    }
+    // Phase current change over the l steps, Q2.13: Delta i = Delta i* -
+    // Delta e (for one step, Delta i* ~ dref / L).
+    let di: [i64; 3] =
+        core::array::from_fn(|ph| rshift_round(c.dref[ph] as i64, sh) - d[ph] as i64);
+    // Mid-interval current: P(i + Delta i/2) = (2 P(i) + c Delta i) / 2, the
+    // products c Delta i exact (f27), one rounding at the end.
+    let mut w = [0i64; 4];
+    for ph in 0..3 {
+        let pos = &anpc::TABLE[(s[ph] & 7) as usize];
+        let qn = k.c_n as i64 * di[ph];
+        let qp = k.c_ph as i64 * di[ph];
+        w[0] += pos.np_current as i64 * ((c.pn[ph] << 1) + qn);
+        w[1 + ph] = -(pos.ph_current as i64) * ((c.pph[ph] << 1) + qp);
     }
     for j in 0..4 {
-        d[3 + j] = sat16(rshift_round(inv[j], F_C + sh));
+        d[3 + j] = sat16(rshift_round(w[j], F_C + 1 + sh));
     }
     d
 }

@@ -165,7 +165,7 @@ fn correction_factor_p_against_exact_discretization() {
 /// One-step prediction (lazy check) and the L-step extrapolation agree with
 /// the exact model within the documented error.
 /// - One step: 4 LSB (input, coefficient and product rounding).
-/// - L steps, currents: 0.04 pu, the third-order Taylor residual of the
+/// - L steps, currents: 0.025 pu, the third-order Taylor residual of the
 ///   machine (`(X_m/D) (omega_r L T)^3/6 |psi|` = 0.010 pu at L = 32 is
 ///   removed by the third-order option; what remains is the `1/tau_s` and
 ///   cross terms at the extreme voltages these random `s(k-1)` apply).
@@ -207,7 +207,7 @@ fn one_step_and_l_step_predictions_match_exact_model() {
             maxl[j] = maxl[j].max(el.abs());
             assert!(e1.abs() < 4.0 * lsb, "one-step output {j}: {e1}");
             match j {
-                0..=2 => assert!(el.abs() < 0.04, "L-step current {j}: {el}"),
+                0..=2 => assert!(el.abs() < 0.025, "L-step current {j}: {el}"),
                 3 => {
                     let b = lt / (2.0 * p.inverter.c_dc_pu) * (di[0] + di[1] + di[2]);
                     assert!(el.abs() <= b + 4.0 * lsb, "L-step v_n: {el} > {b}");
@@ -407,6 +407,9 @@ fn sweep_design_options() {
                     ref_second_order: so,
                     exact_first_step: ef,
                     third_order: so && ef,
+                    stator_damping: so && ef,
+                    capacitor_drift: so && ef,
+                    current_midpoint: so && ef,
                 };
                 let Ok(mut f) = FpgaMpdcc::new(&q, fc) else {
                     continue;
@@ -689,4 +692,75 @@ fn diagnose_bound_excess() {
     })
     .unwrap();
     println!("outside per output {cnt:?}; excess histogram (<1,<2,<4,<8,<16,more LSB) {hist:?}");
+}
+
+/// Diagnosis (run by hand): endpoint error of the current-error prediction
+/// at k+L for several L, on the states and choices of a reference-driven loop.
+#[test]
+#[ignore]
+fn diagnose_endpoint_error_vs_l() {
+    use super::controller::DecisionKind;
+    use super::plant::{Plant, PlantState};
+    let p = DriveParams::default();
+    let mut r = Reference::new(&p).unwrap();
+    let mut plant = Plant::new(&p).unwrap();
+    let op = p.operating_point;
+    let ts = p.controller.ts_pu(&p.machine);
+    let i0 = [op.i_ref_amplitude_pu, 0.0];
+    let psi = machine::steady_state_flux(&p.machine, i0, op.omega_s_pu, op.omega_r_pu);
+    let mut z = PlantState {
+        x_m: [i0[0], i0[1], psi[0], psi[1]],
+        v_n_pu: 0.0,
+        v_ph_pu: [p.inverter.v_ph_ref_pu(); 3],
+    };
+    let ls = [8u32, 16, 32, 64];
+    let fs: std::vec::Vec<FpgaMpdcc> = ls
+        .iter()
+        .map(|&l| {
+            let mut q = p;
+            q.controller.extrapolation_steps = l;
+            FpgaMpdcc::new(&q, FpgaConfig::improved(&q.machine)).unwrap()
+        })
+        .collect();
+    let mut sum = [0.0f64; 4];
+    let mut mx = [0.0f64; 4];
+    let mut n = 0;
+    let mut s_prev = [4u8; 3];
+    for k in 0..4000u64 {
+        let th = op.omega_s_pu * ts * k as f64;
+        let st = CtrlState {
+            x_m: z.x_m,
+            v_n_pu: z.v_n_pu,
+            v_ph_pu: z.v_ph_pu,
+            omega_r_pu: op.omega_r_pu,
+            omega_s_pu: op.omega_s_pu,
+            i_ref_ab_pu: [libm::cos(th), libm::sin(th)],
+            s_prev,
+        };
+        let a = r.decide(&st).unwrap();
+        if a.kind != DecisionKind::Kept {
+            let ex = exact_errors(&p, &st, a.s, 64);
+            for (m, f) in fs.iter().enumerate() {
+                let x = Inputs::quantize(&st).unwrap();
+                let c = fpga::common_terms(f.coeffs(), &x);
+                let d = fpga::deltas(f.coeffs(), &c, a.s, false);
+                for j in 0..3 {
+                    let e = to_f64(c.e0[j], F_I) + to_f64(d[j], F_I) - ex[ls[m] as usize][j];
+                    sum[m] += e * e;
+                    mx[m] = mx[m].max(e.abs());
+                }
+            }
+            n += 3;
+        }
+        z = plant.step(&z, a.s);
+        s_prev = a.s;
+    }
+    for m in 0..4 {
+        println!(
+            "L {}: rms {:.5} pu, max {:.5} pu",
+            ls[m],
+            libm::sqrt(sum[m] / n as f64),
+            mx[m]
+        );
+    }
 }
