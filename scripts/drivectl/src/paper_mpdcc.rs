@@ -24,6 +24,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+mod anatomy;
 mod svg;
 
 #[derive(clap::Args)]
@@ -153,6 +154,8 @@ struct Report {
     cycles: Vec<cycles::Table2Row>,
     /// The mismatch experiment for other extrapolation points `L`.
     extrapolation_sweep: Vec<LSweepRow>,
+    /// Where the mismatches come from (tightest and nominal bound).
+    mismatch_anatomy: Vec<anatomy::AnatomyReport>,
     params: DriveParams,
     p_correction: f64,
     measure_periods: u32,
@@ -309,6 +312,23 @@ fn build_report(a: &Args) -> Result<(Report, Vec<Trace>)> {
             mismatch: m,
         });
     }
+    let mut mismatch_anatomy = Vec::new();
+    for di in [DELTA_I_SWEEP_PU[0], NOMINAL_DELTA_I_PU] {
+        let mut p = base;
+        p.controller.delta_i_pu = di;
+        let mut spy = anatomy::Spy {
+            reference: Reference::new(&p).map_err(|e| anyhow!("{e}"))?,
+            fpga: fpga_for(&p)?,
+            lambda_n: p.controller.lambda_n,
+            a: anatomy::Anatomy {
+                delta_i_pu: di,
+                ..Default::default()
+            },
+        };
+        // Warm-up decisions are counted too: the spy cannot tell them apart.
+        run_loop(&p, &cfg, &mut spy, None, &mut |_| {})?;
+        mismatch_anatomy.push(spy.a.finish());
+    }
     let m_bits = base.controller.horizon_max_steps.trailing_zeros();
     let table2 = cycles::table2(m_bits).to_vec();
     let report = Report {
@@ -316,6 +336,7 @@ fn build_report(a: &Args) -> Result<(Report, Vec<Trace>)> {
         mismatch,
         cycles: table2,
         extrapolation_sweep: l_sweep,
+        mismatch_anatomy,
         params: base,
         p_correction: drive::mpdcc::fpga::p_taylor(&base.machine),
         measure_periods: a.periods,
@@ -425,6 +446,25 @@ fn tables(r: &Report) -> String {
             m.thd_diff_percent,
             m.fsw_diff_mean_percent,
             m.thd_diff_mean_percent
+        );
+    }
+    let _ = writeln!(o, "\nAnatomy of the mismatch (reference drives, FPGA model fed the same state; warm-up included)\n");
+    let _ = writeln!(o, "| delta_i (pu) | mismatch (%) | only FPGA switched (% of mm) | only ref switched (% of mm) | both, differently (% of mm) | FPGA L* exact (%) | within 1 step (%) | over-predicted (%) | mean abs L* error (steps) | J_ref(FPGA choice)/J_ref(ref choice) |");
+    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|");
+    for a in &r.mismatch_anatomy {
+        let _ = writeln!(
+            o,
+            "| {:.2} | {:.2} | {:.1} | {:.1} | {:.1} | {:.1} | {:.1} | {:.1} | {:.2} | {:.2} |",
+            a.delta_i_pu,
+            a.decision_mismatch_percent,
+            a.only_fpga_switched_percent_of_mismatches,
+            a.only_reference_switched_percent_of_mismatches,
+            a.both_switched_differently_percent_of_mismatches,
+            a.l_star_prediction_exact_percent,
+            a.l_star_prediction_within_one_step_percent,
+            a.l_star_prediction_over_percent,
+            a.l_star_prediction_mean_abs_error_steps,
+            a.cost_ratio_when_different
         );
     }
     let _ = writeln!(o, "\nTable II: worst-case clock cycles per decision\n");
