@@ -58,41 +58,117 @@ const fn op(name: &'static str, kind: Kind, deps: &'static [usize]) -> Op {
 
 use Kind::{Block as B, Lanes, Reg, Tree};
 
-/// One explorer evaluation ([`super::fpga::explore`]).
-pub const EXPLORER_OPS: &[Op] = &[
-    op("load candidate, f_s", Reg, &[]),                         // 0
-    op("v_a = ph v_ph,a + mux(rail Vdc/2 | v_n)", B, &[0]),      // 1
-    op("v_b = ph v_ph,b + mux(rail Vdc/2 | v_n)", B, &[0]),      // 2
-    op("v_c = ph v_ph,c + mux(rail Vdc/2 | v_n)", B, &[0]),      // 3
-    op("sum = v_a + v_b", B, &[1, 2]),                           // 4
-    op("sum += v_c", B, &[4, 3]),                                // 5
-    op("u_a = 3 v_a - sum", B, &[1, 5]),                         // 6
-    op("u_b = 3 v_b - sum", B, &[2, 5]),                         // 7
-    op("u_c = 3 v_c - sum", B, &[3, 5]),                         // 8
-    op("D_a = dn_a - g3 u_a", B, &[6]),                          // 9
-    op("D_b = dn_b - g3 u_b", B, &[7]),                          // 10
-    op("D_c = dn_c - g3 u_c", B, &[8]),                          // 11
-    op("D_vn = np_a P_n,a", B, &[0]),                            // 12
-    op("D_vn += np_b P_n,b", B, &[12]),                          // 13
-    op("D_vn += np_c P_n,c", B, &[13]),                          // 14
-    op("D_ph,a = -c P_ph,a", B, &[0]),                           // 15
-    op("D_ph,b = -c P_ph,b", B, &[0]),                           // 16
-    op("D_ph,c = -c P_ph,c", B, &[0]),                           // 17
-    op("D1_a = dn1_a - g3 u_a / L (exact_first_step)", B, &[6]), // 18
-    op("D1_b = dn1_b - g3 u_b / L", B, &[7]),                    // 19
-    op("D1_c = dn1_c - g3 u_c / L", B, &[8]),                    // 20
+/// One explorer evaluation with the paper's structure ([`super::fpga::FpgaConfig::paper`]):
+/// one chord, no accuracy options.
+pub const EXPLORER_OPS_PAPER: &[Op] = &[
+    op("load candidate, f_s", Reg, &[]),                    // 0
+    op("v_a = ph v_ph,a + mux(rail Vdc/2 | v_n)", B, &[0]), // 1
+    op("v_b = ph v_ph,b + mux(rail Vdc/2 | v_n)", B, &[0]), // 2
+    op("v_c = ph v_ph,c + mux(rail Vdc/2 | v_n)", B, &[0]), // 3
+    op("sum = v_a + v_b", B, &[1, 2]),                      // 4
+    op("sum += v_c", B, &[4, 3]),                           // 5
+    op("u_a = 3 v_a - sum", B, &[1, 5]),                    // 6
+    op("u_b = 3 v_b - sum", B, &[2, 5]),                    // 7
+    op("u_c = 3 v_c - sum", B, &[3, 5]),                    // 8
+    op("D_a = dn_a - g3 u_a", B, &[6]),                     // 9
+    op("D_b = dn_b - g3 u_b", B, &[7]),                     // 10
+    op("D_c = dn_c - g3 u_c", B, &[8]),                     // 11
+    op("D_vn = np_a P_n,a", B, &[0]),                       // 12
+    op("D_vn += np_b P_n,b", B, &[12]),                     // 13
+    op("D_vn += np_c P_n,c", B, &[13]),                     // 14
+    op("D_ph,a = -c P_ph,a", B, &[0]),                      // 15
+    op("D_ph,b = -c P_ph,b", B, &[0]),                      // 16
+    op("D_ph,c = -c P_ph,c", B, &[0]),                      // 17
     op(
-        "Algorithm 2 x7 (+ e1, J_dl terms in cycle 1)",
+        "Algorithm 2 x7 (J_dl terms in cycle 1)",
         Lanes,
-        &[9, 10, 11, 14, 15, 16, 17, 18, 19, 20],
-    ), // 21
-    op("min l_j, max J_dl", Tree(3), &[21]),                     // 22
-    op("recip ROM [L*]", Reg, &[22]),                            // 23
-    op("J_sw = f_s recip", B, &[23]),                            // 24
-    op("e_vn = e_vn0 + L* D_vn / L", B, &[22]),                  // 25
-    op("sq = e_vn^2", B, &[25]),                                 // 26
-    op("J = lambda sq + J_sw", B, &[26, 24]),                    // 27
-    op("return result", Reg, &[27]),                             // 28
+        &[9, 10, 11, 14, 15, 16, 17],
+    ), // 18
+    op("min l_j, max J_dl", Tree(3), &[18]),                // 19
+    op("recip ROM [L*]", Reg, &[19]),                       // 20
+    op("J_sw = f_s recip", B, &[20]),                       // 21
+    op("e_vn = e_vn0 + L* D_vn / L", B, &[19]),             // 22
+    op("sq = e_vn^2", B, &[22]),                            // 23
+    op("J = lambda sq + J_sw", B, &[23, 21]),               // 24
+    op("return result", Reg, &[24]),                        // 25
+];
+
+/// One explorer evaluation of our default core ([`super::fpga::FpgaConfig::improved`]):
+/// three interpolation nodes, capacitor drift, stator damping, exact first step.
+pub const EXPLORER_OPS: &[Op] = &[
+    op("load candidate, f_s", Reg, &[]),                    // 0
+    op("D_vn = np_a P_n,a", B, &[0]),                       // 1
+    op("D_vn += np_b P_n,b", B, &[1]),                      // 2
+    op("D_vn += np_c P_n,c", B, &[2]),                      // 3
+    op("D_ph,a = -c P_ph,a", B, &[0]),                      // 4
+    op("D_ph,b = -c P_ph,b", B, &[0]),                      // 5
+    op("D_ph,c = -c P_ph,c", B, &[0]),                      // 6
+    op("v_a = ph v_ph,a + mux(rail Vdc/2 | v_n)", B, &[0]), // 7
+    op("v_b = ph v_ph,b + mux(rail Vdc/2 | v_n)", B, &[0]), // 8
+    op("v_c = ph v_ph,c + mux(rail Vdc/2 | v_n)", B, &[0]), // 9
+    op("sum = v_a + v_b", B, &[7, 8]),                      // 10
+    op("sum += v_c", B, &[10, 9]),                          // 11
+    op("u0_a = 3 v_a - sum", B, &[7, 11]),                  // 12
+    op("u0_b = 3 v_b - sum", B, &[8, 11]),                  // 13
+    op("u0_c = 3 v_c - sum", B, &[9, 11]),                  // 14
+    op(
+        "vh_a = -(n D_vn + ph D_ph,a) / 2 (capacitor drift)",
+        B,
+        &[3, 4],
+    ), // 15
+    op("vh_b", B, &[3, 5]),                                 // 16
+    op("vh_c", B, &[3, 6]),                                 // 17
+    op("sum_h = vh_a + vh_b", B, &[15, 16]),                // 18
+    op("sum_h += vh_c", B, &[18, 17]),                      // 19
+    op("uh_a = 3 vh_a - sum_h", B, &[15, 19]),              // 20
+    op("uh_b", B, &[16, 19]),                               // 21
+    op("uh_c", B, &[17, 19]),                               // 22
+    op("P0_a = g3 u0_a", B, &[12]),                         // 23
+    op("P0_b = g3 u0_b", B, &[13]),                         // 24
+    op("P0_c = g3 u0_c", B, &[14]),                         // 25
+    op("Q_a = -gd u0_a", B, &[12]),                         // 26
+    op("Q_b = -gd u0_b", B, &[13]),                         // 27
+    op("Q_c = -gd u0_c", B, &[14]),                         // 28
+    op("Q_a += g3 uh_a", B, &[26, 20]),                     // 29
+    op("Q_b += g3 uh_b", B, &[27, 21]),                     // 30
+    op("Q_c += g3 uh_c", B, &[28, 22]),                     // 31
+    op("t = 1 P0_a + 1 Q_a (node 1L)", B, &[23, 29]),       // 32
+    op("D1_a = dn1_a - t", B, &[32]),                       // 33
+    op("t = 2 P0_a + 4 Q_a (node 2L)", B, &[23, 29]),       // 34
+    op("D2_a = dn2_a - t", B, &[34]),                       // 35
+    op("t = 4 P0_a + 16 Q_a (node 4L)", B, &[23, 29]),      // 36
+    op("D4_a = dn4_a - t", B, &[36]),                       // 37
+    op("t = 1 P0_b + 1 Q_b (node 1L)", B, &[24, 30]),       // 38
+    op("D1_b = dn1_b - t", B, &[38]),                       // 39
+    op("t = 2 P0_b + 4 Q_b (node 2L)", B, &[24, 30]),       // 40
+    op("D2_b = dn2_b - t", B, &[40]),                       // 41
+    op("t = 4 P0_b + 16 Q_b (node 4L)", B, &[24, 30]),      // 42
+    op("D4_b = dn4_b - t", B, &[42]),                       // 43
+    op("t = 1 P0_c + 1 Q_c (node 1L)", B, &[25, 31]),       // 44
+    op("D1_c = dn1_c - t", B, &[44]),                       // 45
+    op("t = 2 P0_c + 4 Q_c (node 2L)", B, &[25, 31]),       // 46
+    op("D2_c = dn2_c - t", B, &[46]),                       // 47
+    op("t = 4 P0_c + 16 Q_c (node 4L)", B, &[25, 31]),      // 48
+    op("D4_c = dn4_c - t", B, &[48]),                       // 49
+    op(
+        "D1_a = dn1_a - g3_1 (u0_a + uh_a/L) (first step)",
+        B,
+        &[12, 20],
+    ), // 50
+    op("D1_b", B, &[13, 21]),                               // 51
+    op("D1_c", B, &[14, 22]),                               // 52
+    op(
+        "Algorithm 2 x7, up to 3 pieces each (J_dl terms in cycle 1)",
+        Lanes,
+        &[33, 39, 45, 35, 41, 47, 37, 43, 49, 3, 4, 5, 6, 50, 51, 52],
+    ), // 53
+    op("min l_j, max J_dl", Tree(3), &[53]),                // 54
+    op("recip ROM [L*]", Reg, &[54]),                       // 55
+    op("J_sw = f_s recip", B, &[55]),                       // 56
+    op("e_vn = e_vn0 + interpolated D_vn at L*", B, &[54]), // 57
+    op("sq = e_vn^2", B, &[57]),                            // 58
+    op("J = lambda sq + J_sw", B, &[58, 56]),               // 59
+    op("return result", Reg, &[59]),                        // 60
 ];
 
 /// The scheduler before dispatch ([`super::fpga::common_terms`] and
@@ -186,6 +262,8 @@ pub struct CycleModel {
     pub scheduler_blocks: u32,
     /// Pipeline depth of a block (Fig. 3: 3 stages).
     pub block_latency: u32,
+    /// The explorer's program ([`EXPLORER_OPS`] or [`EXPLORER_OPS_PAPER`]).
+    pub explorer: &'static [Op],
 }
 
 impl Default for CycleModel {
@@ -194,7 +272,33 @@ impl Default for CycleModel {
             explorer_blocks: 4,
             scheduler_blocks: 4,
             block_latency: 3,
+            explorer: EXPLORER_OPS,
         }
+    }
+}
+
+impl CycleModel {
+    /// The explorer with the paper's structure (one chord, no options).
+    pub fn paper() -> Self {
+        Self {
+            explorer: EXPLORER_OPS_PAPER,
+            ..Self::default()
+        }
+    }
+}
+
+/// Worst-case cycles of one search lane: `M + 1` for the single chord;
+/// `2 (lambda + 1) + (M' + 1)` for three nodes (pieces of `L`, `L` and
+/// `N_bar - 2L` steps, `M' = ceil(log2(N_bar - 2L))`).
+pub fn worst_lane_cycles(nodes: u32, lambda: u32, m_bits: u32) -> u32 {
+    let n_bar = 1u32 << m_bits;
+    let big_l = 1u32 << lambda;
+    if nodes == 3 && 4 * big_l <= n_bar {
+        let rest = n_bar - 2 * big_l;
+        let m3 = (32 - (rest.max(2) - 1).leading_zeros()).max(1);
+        2 * (lambda + 1) + m3 + 1
+    } else {
+        m_bits + 1
     }
 }
 
@@ -244,7 +348,7 @@ impl CycleModel {
 
     /// Cycles of one explorer evaluation whose slowest lane took `lane_cycles`.
     pub fn candidate_cycles(&self, lane_cycles: u32) -> u32 {
-        self.makespan(EXPLORER_OPS, self.explorer_blocks, lane_cycles)
+        self.makespan(self.explorer, self.explorer_blocks, lane_cycles)
     }
 
     /// Cycles of the scheduler's pre-phase (common terms and lazy check).
@@ -260,8 +364,7 @@ impl CycleModel {
     /// A decision with a search: dispatch one candidate per cycle to the
     /// explorer that is free first, compare as results arrive, register the
     /// output. `lanes[i]` = slowest lane of candidate `i`.
-    pub fn search_cycles(&self, n: u32, m_bits: u32, lanes: &[u32]) -> u32 {
-        let _ = m_bits;
+    pub fn search_cycles(&self, n: u32, lanes: &[u32]) -> u32 {
         let n = n.clamp(1, 64) as usize;
         let pre = self.pre_cycles() + 1; // + candidate generator start
         let mut free = [pre; 64];
@@ -283,16 +386,16 @@ impl CycleModel {
     }
 
     /// Worst case for `n` explorers and `candidates` candidates, every lane
-    /// running all `M + 1` cycles (no early exit).
-    pub fn worst_case(&self, n: u32, candidates: u32, m_bits: u32) -> Breakdown {
-        let lanes = [m_bits + 1; super::controller::MAX_CANDIDATES];
+    /// taking `lane_worst` cycles ([`worst_lane_cycles`], no early exit).
+    pub fn worst_case(&self, n: u32, candidates: u32, lane_worst: u32) -> Breakdown {
+        let lanes = [lane_worst; super::controller::MAX_CANDIDATES];
         let c = (candidates as usize).min(lanes.len());
         Breakdown {
             pre: self.pre_cycles() + 1,
-            per_candidate: self.candidate_cycles(m_bits + 1),
+            per_candidate: self.candidate_cycles(lane_worst),
             candidates: c as u32,
             explorers: n,
-            total: self.search_cycles(n, m_bits, &lanes[..c]),
+            total: self.search_cycles(n, &lanes[..c]),
         }
     }
 }
@@ -315,14 +418,20 @@ pub struct Table2Row {
     pub paper_cycles: u32,
     /// Paper formula `47 + 2176/n` (unrounded), cycles.
     pub paper_formula_cycles: f64,
-    /// Our model, worst case over our candidate sets (216 candidates), cycles.
+    /// Our default core ([`EXPLORER_OPS`], 3 nodes), worst case over our
+    /// candidate sets (216 candidates), cycles.
     pub model_cycles: u32,
-    /// Our model with the paper's apparent tree of 64 candidates
-    /// (2176 = 64 x 34), cycles.
+    /// The paper's explorer structure ([`EXPLORER_OPS_PAPER`]) on our 216
+    /// candidates, cycles.
+    pub model_cycles_paper_core: u32,
+    /// The paper's explorer structure on the paper's apparent tree of 64
+    /// candidates (2176 = 64 x 34): the like-for-like comparison, cycles.
     pub model_cycles_64: u32,
-    /// Our model's per-candidate explorer latency, cycles.
+    /// Per-candidate explorer latency, our default core, cycles.
     pub model_per_candidate: u32,
-    /// Our model's scheduler pre-phase, cycles.
+    /// Per-candidate explorer latency, paper structure, cycles.
+    pub model_per_candidate_paper_core: u32,
+    /// Scheduler pre-phase (sample, common terms, lazy check), cycles.
     pub model_pre: u32,
 }
 
@@ -336,20 +445,35 @@ pub fn max_candidates() -> u32 {
     m
 }
 
-/// Table II for `n = 1..6`, search width `m_bits` (`log2 N_bar`).
+/// Table II for `n = 1..6`, search width `m_bits` (`log2 N_bar`), the
+/// default extrapolation point `L` of [`super::params::ControllerParams`].
 pub fn table2(m_bits: u32) -> [Table2Row; 6] {
-    let model = CycleModel::default();
+    let lambda = super::params::ControllerParams::default()
+        .extrapolation_steps
+        .trailing_zeros();
+    table2_for(m_bits, lambda)
+}
+
+/// Table II for search width `m_bits` and `L = 2^lambda`.
+pub fn table2_for(m_bits: u32, lambda: u32) -> [Table2Row; 6] {
+    let ours = CycleModel::default();
+    let paper = CycleModel::paper();
     let cmax = max_candidates();
+    let lw = worst_lane_cycles(3, lambda, m_bits);
+    let lp = worst_lane_cycles(1, lambda, m_bits);
     core::array::from_fn(|i| {
         let n = i as u32 + 1;
-        let w = model.worst_case(n, cmax, m_bits);
+        let w = ours.worst_case(n, cmax, lw);
+        let wp = paper.worst_case(n, cmax, lp);
         Table2Row {
             explorers: n,
             paper_cycles: PAPER_TABLE2[i],
             paper_formula_cycles: paper_formula(n),
             model_cycles: w.total,
-            model_cycles_64: model.worst_case(n, 64, m_bits).total,
+            model_cycles_paper_core: wp.total,
+            model_cycles_64: paper.worst_case(n, 64, lp).total,
             model_per_candidate: w.per_candidate,
+            model_per_candidate_paper_core: wp.per_candidate,
             model_pre: w.pre,
         }
     })
@@ -370,7 +494,7 @@ mod tests {
 
     #[test]
     fn programs_are_in_dependency_order() {
-        for ops in [EXPLORER_OPS, SCHEDULER_OPS] {
+        for ops in [EXPLORER_OPS, EXPLORER_OPS_PAPER, SCHEDULER_OPS] {
             for (i, o) in ops.iter().enumerate() {
                 assert!(o.deps.iter().all(|&d| d < i), "{}", o.name);
             }
@@ -412,22 +536,27 @@ mod tests {
 
     #[test]
     fn worst_case_structure() {
-        let m = CycleModel::default();
+        let m = CycleModel::paper();
         let t = m.candidate_cycles(8);
         let pre = m.pre_cycles() + 1;
         // One explorer: strictly sequential candidates.
-        let w1 = m.worst_case(1, 64, 7);
+        let w1 = m.worst_case(1, 64, 8);
         assert_eq!(w1.total, pre + 64 * t + 2);
         // n dividing the count: exact split (dispatch skew hidden by the latency).
-        let w4 = m.worst_case(4, 64, 7);
+        let w4 = m.worst_case(4, 64, 8);
         assert_eq!(w4.total, pre + 16 * t + 3 + 2);
         // Otherwise the ceiling shows.
-        let w3 = m.worst_case(3, 64, 7);
+        let w3 = m.worst_case(3, 64, 8);
         assert_eq!(w3.total, pre + 22 * t + 2);
         // Monotone in n.
         for n in 1..6 {
-            assert!(m.worst_case(n + 1, 216, 7).total < m.worst_case(n, 216, 7).total);
+            assert!(m.worst_case(n + 1, 216, 8).total < m.worst_case(n, 216, 8).total);
         }
+        // Lane worst cases: M + 1 for one chord; L = 16, N_bar = 128, three
+        // pieces of 16, 16 and 96 steps: 5 + 5 + 8.
+        assert_eq!(worst_lane_cycles(1, 4, 7), 8);
+        assert_eq!(worst_lane_cycles(3, 4, 7), 18);
+        assert_eq!(worst_lane_cycles(3, 6, 7), 8);
     }
 }
 
@@ -441,10 +570,12 @@ mod print {
         std::println!(
             "pre {} per-candidate {} kept {} max candidates {}",
             m.pre_cycles() + 1,
-            m.candidate_cycles(8),
+            m.candidate_cycles(super::worst_lane_cycles(3, 4, 7)),
             m.kept_cycles(),
             super::max_candidates()
         );
+        let p = super::CycleModel::paper();
+        std::println!("paper core: per-candidate {}", p.candidate_cycles(8));
         for r in super::table2(7) {
             std::println!("{r:?}");
         }

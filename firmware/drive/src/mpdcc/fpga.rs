@@ -109,6 +109,10 @@ pub struct FpgaConfig {
     /// voltages integrate `i(k) + Delta i(l)/2` instead of `i(k)` held
     /// (trapezoid, second order; `Delta i` from the candidate's prediction).
     pub current_midpoint: bool,
+    /// Interpolation nodes: 1 = the paper's single chord from `k` to `k+L`
+    /// (eq. 20); 3 = piecewise linear through `k+L`, `k+2L`, `k+4L`, the
+    /// last piece extended to `N_bar` (falls back to 1 when `4L > N_bar`).
+    pub nodes: u32,
 }
 
 impl FpgaConfig {
@@ -124,6 +128,7 @@ impl FpgaConfig {
             stator_damping: false,
             capacitor_drift: false,
             current_midpoint: false,
+            nodes: 1,
         }
     }
 
@@ -140,6 +145,7 @@ impl FpgaConfig {
             stator_damping: true,
             capacitor_drift: true,
             current_midpoint: false,
+            nodes: 3,
         }
     }
 
@@ -154,6 +160,7 @@ impl FpgaConfig {
             stator_damping: true,
             capacitor_drift: true,
             current_midpoint: false,
+            nodes: 3,
         }
     }
 }
@@ -169,6 +176,8 @@ pub enum FpgaError {
     Explorers,
     /// `p_correction` not finite or outside 0..=8.
     Correction,
+    /// `nodes` not 1 or 3.
+    Nodes,
 }
 
 impl core::fmt::Display for FpgaError {
@@ -180,6 +189,7 @@ impl core::fmt::Display for FpgaError {
             }
             FpgaError::Explorers => write!(f, "explorers must be in 1..=16"),
             FpgaError::Correction => write!(f, "p_correction must be finite and in 0..=8"),
+            FpgaError::Nodes => write!(f, "nodes must be 1 or 3"),
         }
     }
 }
@@ -233,6 +243,12 @@ pub struct Coeffs {
     pub capacitor_drift: bool,
     /// [`FpgaConfig::current_midpoint`].
     pub current_midpoint: bool,
+    /// [`FpgaConfig::nodes`].
+    pub nodes: u32,
+    /// Stator damping `L T/(2 tau_s)` (0 without the option), Q1.14.
+    pub c_d: i16,
+    /// `g3 c_d`, Q1.14.
+    pub gd: i16,
     /// One-step coefficients (lazy check, first step), f17: `T/tau_s`.
     pub c_tau1: i16,
     /// `T X_m/(D tau_r)`, f17.
@@ -258,11 +274,21 @@ impl Coeffs {
         let t = c.ts_pu(m);
         let lt = c.extrapolation_steps as f64 * t;
         let d = m.d_pu();
-        // Second-order stator damping of the L-step machine rates.
-        let damp = if cfg.stator_damping {
-            1.0 - lt / (2.0 * m.tau_s_pu())
+        // Second-order stator damping of the machine rates: over m L steps
+        // they are scaled by (1 - m c_d), c_d = L T/(2 tau_s).
+        let c_d = if cfg.stator_damping {
+            lt / (2.0 * m.tau_s_pu())
         } else {
-            1.0
+            0.0
+        };
+        if cfg.nodes != 1 && cfg.nodes != 3 {
+            return Err(FpgaError::Nodes);
+        }
+        // Three nodes need 4 L <= N_bar; otherwise the single chord is used.
+        let nodes = if 4 * c.extrapolation_steps <= c.horizon_max_steps {
+            cfg.nodes
+        } else {
+            1
         };
         let q = |name: &'static str, v: f64, f: u32| -> Result<i16, FpgaError> {
             match konst(v, f) {
@@ -302,12 +328,12 @@ impl Coeffs {
             lambda: c.extrapolation_steps.trailing_zeros(),
             m_bits: n_bar.trailing_zeros(),
             n_bar,
-            c_tau: q("c_tau", damp * lt / m.tau_s_pu(), F_C)?,
-            c_r: q("c_r", damp * lt * m.x_m_pu / (d * m.tau_r_pu()), F_C)?,
-            c_w: q("c_w", damp * lt * m.x_m_pu / d, F_C)?,
+            c_tau: q("c_tau", lt / m.tau_s_pu(), F_C)?,
+            c_r: q("c_r", lt * m.x_m_pu / (d * m.tau_r_pu()), F_C)?,
+            c_w: q("c_w", lt * m.x_m_pu / d, F_C)?,
             c_p: q("c_p", p_corr * lt * lt, F_C)?,
             c_s: q("c_s", lt, F_C)?,
-            g3: q("g3", damp * lt * m.x_r_pu() / (3.0 * d), F_C)?,
+            g3: q("g3", lt * m.x_r_pu() / (3.0 * d), F_C)?,
             c_n: q("c_n", lt / (2.0 * p.inverter.c_dc_pu), F_C)?,
             c_ph: q("c_ph", lt / p.inverter.c_ph_pu, F_C)?,
             s3h: q("s3h", 0.866_025_403_784_438_6, F_C)?,
@@ -322,6 +348,9 @@ impl Coeffs {
             c_3: q("c_3", lt * lt / 6.0, F_C)?,
             capacitor_drift: cfg.capacitor_drift,
             current_midpoint: cfg.current_midpoint,
+            nodes,
+            c_d: q("c_d", c_d, F_C)?,
+            gd: q("gd", c_d * lt * m.x_r_pu() / (3.0 * d), F_C)?,
             c_tau1: q("c_tau1", t / m.tau_s_pu(), F_SMALL)?,
             c_r1: q("c_r1", t * m.x_m_pu / (d * m.tau_r_pu()), F_SMALL)?,
             c_w1: q("c_w1", t * m.x_m_pu / d, F_SMALL)?,
@@ -411,8 +440,9 @@ fn to_q13(w: i64, f: u32) -> i16 {
 pub struct Common {
     /// Output errors at `k`, `a_j = y*_j(k) - y_j(k)`: `[i_abc, v_n, v_ph,abc]`, Q2.13.
     pub e0: [i16; 7],
-    /// Switch-independent error change over `L` steps, abc, Q2.13.
-    pub dn_l: [i16; 3],
+    /// Switch-independent error change over `m L` steps for the nodes
+    /// `m = 1, 2, 4`, abc, Q2.13 (`[0]` is eq. 14's `k+L` term).
+    pub dn: [[i16; 3]; 3],
     /// Same over one step (lazy check), abc, Q2.13.
     pub dn_1: [i16; 3],
     /// `i_s,abc(k)`, Q2.13.
@@ -421,8 +451,8 @@ pub struct Common {
     pub pn: [i64; 3],
     /// `L T/C_ph i_x`, wide (f27).
     pub pph: [i64; 3],
-    /// Reference change over `L` steps, `i*_abc(k+L) - i*_abc(k)`, Q2.13.
-    pub dref: [i16; 3],
+    /// Reference change over `m L` steps (`m = 1, 2, 4`), abc, Q2.13.
+    pub dref: [[i16; 3]; 3],
     /// Registers copied for the explorers: `v_n`, `v_ph`, Q2.13.
     pub v_n: i16,
     /// Phase capacitor voltages, Q2.13.
@@ -474,10 +504,20 @@ pub fn common_terms(k: &Coeffs, x: &Inputs) -> Common {
     // -(-ks3 J i*) + (-kw3 J psi) with J = [0 -1; 1 0].
     let cub_a = (p(ks3, rb) << 1) + p(kw3, pb);
     let cub_b = -(p(ks3, ra) << 1) - p(kw3, pa);
-    let dl = [
-        to_q13(rate_a - cor_a + cub_a, F_W),
-        to_q13(rate_b - cor_b + cub_b, F_W),
-    ];
+    // Stator damping (f28): the machine part of the rate, -nat, loses
+    // m^2 c_d nat over m L steps.
+    let dmp_a = p(k.c_d, to_q13(nat_a, F_W)) << 1;
+    let dmp_b = p(k.c_d, to_q13(nat_b, F_W)) << 1;
+    // Node m L: m (ref - nat) + m^2 (c_d nat - cor) + m^3 cub.
+    let node = |m: i64, r: i64, d: i64, c2: i64, c3: i64| m * r + m * m * (d - c2) + m * m * m * c3;
+    let dn: [[i16; 3]; 3] = core::array::from_fn(|i| {
+        let m = [1i64, 2, 4][i];
+        let ab = [
+            to_q13(node(m, rate_a, dmp_a, cor_a, cub_a), F_W),
+            to_q13(node(m, rate_b, dmp_b, cor_b, cub_b), F_W),
+        ];
+        inv_clarke_q(ab, k.s3h)
+    });
     // One step (f31): own first-order products with the f17 one-step
     // coefficients (so the L-step damping does not leak into the lazy
     // check), plus the L^2 and L^3 groups divided by L^2 and L^3.
@@ -499,11 +539,15 @@ pub fn common_terms(k: &Coeffs, x: &Inputs) -> Common {
             f1,
         ),
     ];
-    // Reference change over L (f28): rotation to third order.
-    let dref_ab = [
-        to_q13(ref_a - k2a + (p(ks3, rb) << 1), F_W),
-        to_q13(ref_b - k2b - (p(ks3, ra) << 1), F_W),
-    ];
+    // Reference change over m L (f28): rotation to third order.
+    let dref: [[i16; 3]; 3] = core::array::from_fn(|i| {
+        let m = [1i64, 2, 4][i];
+        let ab = [
+            to_q13(m * ref_a - m * m * k2a + m * m * m * (p(ks3, rb) << 1), F_W),
+            to_q13(m * ref_b - m * m * k2b - m * m * m * (p(ks3, ra) << 1), F_W),
+        ];
+        inv_clarke_q(ab, k.s3h)
+    });
     let i_abc = inv_clarke_q(x.i_ab, k.s3h);
     let e_ab = [sub(ra, ia), sub(rb, ib)];
     let e_abc = inv_clarke_q(e_ab, k.s3h);
@@ -515,12 +559,12 @@ pub fn common_terms(k: &Coeffs, x: &Inputs) -> Common {
     }
     Common {
         e0,
-        dn_l: inv_clarke_q(dl, k.s3h),
+        dn,
         dn_1: inv_clarke_q(d1, k.s3h),
         i_abc,
         pn: i_abc.map(|i| p(k.c_n, i)),
         pph: i_abc.map(|i| p(k.c_ph, i)),
-        dref: inv_clarke_q(dref_ab, k.s3h),
+        dref,
         v_n: x.v_n,
         v_ph: x.v_ph,
     }
@@ -565,18 +609,19 @@ fn inverter_terms(c: &Common, s: [u8; 3]) -> [i64; 4] {
     d
 }
 
-/// Error changes `Delta_j` of candidate `s` over `l = L` steps (`one_step`
-/// false) or `l = 1` (true), Q2.13.
+/// Error changes `Delta_j` of candidate `s` over one step (`one_step`),
+/// Q2.13 (lazy check, first step, `J_dl`); for `l = L` see [`node_deltas`].
 pub fn deltas(k: &Coeffs, c: &Common, s: [u8; 3], one_step: bool) -> [i16; 7] {
-    let sh = if one_step { k.lambda } else { 0 };
-    let g = voltage_terms(k, c, s, one_step);
+    if !one_step {
+        return node_deltas(k, c, s, 0).map(|v| sat16(v as i64));
+    }
+    let sh = k.lambda;
+    let g = voltage_terms(k, c, s, true);
     let inv = inverter_terms(c, s);
-    let dn = if one_step { c.dn_1 } else { c.dn_l };
-    // Voltage term: f27 (Q1.14 x Q2.13) or f30 (f17 x Q2.13) to Q2.13.
-    let gsh = if one_step { F_SMALL } else { F_C };
+    // Voltage term: f30 (f17 x Q2.13) to Q2.13.
     let mut d = [0i16; 7];
     for ph in 0..3 {
-        d[ph] = sub(dn[ph], sat16(rshift_round(g[ph], gsh)));
+        d[ph] = sub(c.dn_1[ph], sat16(rshift_round(g[ph], F_SMALL)));
     }
     if !k.current_midpoint {
         for j in 0..4 {
@@ -584,22 +629,87 @@ pub fn deltas(k: &Coeffs, c: &Common, s: [u8; 3], one_step: bool) -> [i16; 7] {
         }
         return d;
     }
-    // Phase current change over the l steps, Q2.13: Delta i = Delta i* -
-    // Delta e (for one step, Delta i* ~ dref / L).
-    let di: [i64; 3] =
-        core::array::from_fn(|ph| rshift_round(c.dref[ph] as i64, sh) - d[ph] as i64);
-    // Mid-interval current: P(i + Delta i/2) = (2 P(i) + c Delta i) / 2, the
-    // products c Delta i exact (f27), one rounding at the end.
+    let cur = [d[0] as i64, d[1] as i64, d[2] as i64];
+    let w = midpoint_inverter(k, c, s, cur, 1, sh, c.dref[0]);
+    for j in 0..4 {
+        d[3 + j] = sat16(w[j]);
+    }
+    d
+}
+
+/// Eq. (18b) with the mid-interval current over `m L` steps (`m = 1` and
+/// `sh = lambda` for one step): returns the inverter entries from the
+/// current entries `d[0..3]` (already computed).
+fn midpoint_inverter(
+    k: &Coeffs,
+    c: &Common,
+    s: [u8; 3],
+    d: [i64; 3],
+    m: i64,
+    sh: u32,
+    dref: [i16; 3],
+) -> [i64; 4] {
+    // Phase current change, Q2.13: Delta i = Delta i* - Delta e.
+    let di: [i64; 3] = core::array::from_fn(|ph| rshift_round(dref[ph] as i64, sh) - d[ph]);
+    // m P(i + Delta i/2) = (2 m P(i) + m c Delta i) / 2; the products are
+    // exact (f27), one rounding at the end.
     let mut w = [0i64; 4];
     for ph in 0..3 {
         let pos = &anpc::TABLE[(s[ph] & 7) as usize];
-        let qn = k.c_n as i64 * di[ph];
-        let qp = k.c_ph as i64 * di[ph];
-        w[0] += pos.np_current as i64 * ((c.pn[ph] << 1) + qn);
-        w[1 + ph] = -(pos.ph_current as i64) * ((c.pph[ph] << 1) + qp);
+        let qn = m * k.c_n as i64 * di[ph];
+        let qp = m * k.c_ph as i64 * di[ph];
+        w[0] += pos.np_current as i64 * (((m * c.pn[ph]) << 1) + qn);
+        w[1 + ph] = -(pos.ph_current as i64) * (((m * c.pph[ph]) << 1) + qp);
     }
-    for j in 0..4 {
-        d[3 + j] = sat16(rshift_round(w[j], F_C + 1 + sh));
+    w.map(|v| rshift_round(v, F_C + 1 + sh).clamp(-NODE_MAX, NODE_MAX))
+}
+
+/// Node registers are 18-bit Q4.13: values beyond +-2^17 saturate.
+pub const NODE_MAX: i64 = (1 << 17) - 1;
+
+/// Error changes of candidate `s` over `m L` steps for node `i` (`m = 1, 2,
+/// 4` for `i = 0, 1, 2`), in 18-bit Q4.13 node registers.
+///
+/// Voltage part: with `u0 = 3 v - sum v` at `k` and `uh` the same of half the
+/// capacitor-drift change `Delta v(L)/2` (option `capacitor_drift`), the
+/// damped voltage term over `m L` is `m g3 (u0 + m uh) - m^2 gd u0`.
+pub fn node_deltas(k: &Coeffs, c: &Common, s: [u8; 3], i: usize) -> [i32; 7] {
+    let m = [1i64, 2, 4][i.min(2)];
+    let inv = inverter_terms(c, s);
+    let mut v0 = [0i64; 3];
+    let mut vh = [0i64; 3];
+    for ph in 0..3 {
+        let pos = &anpc::TABLE[(s[ph] & 7) as usize];
+        v0[ph] = pos.rail as i64 * k.v_dc_half as i64
+            + pos.n_coef as i64 * c.v_n as i64
+            + pos.ph_coef as i64 * c.v_ph[ph] as i64;
+        if k.capacitor_drift {
+            // Delta v_n = -inv[0], Delta v_ph = -inv[1+ph] (f27), halved.
+            let dv = -(pos.n_coef as i64) * inv[0] - pos.ph_coef as i64 * inv[1 + ph];
+            vh[ph] = rshift_round(dv, F_C + 1);
+        }
+    }
+    let s0 = v0[0] + v0[1] + v0[2];
+    let sh_ = vh[0] + vh[1] + vh[2];
+    let mut d = [0i32; 7];
+    for ph in 0..3 {
+        let u0 = 3 * v0[ph] - s0;
+        let uh = 3 * vh[ph] - sh_;
+        // f27 products: g3 u0, g3 uh, gd u0.
+        let g = m * (k.g3 as i64 * u0) + m * m * (k.g3 as i64 * uh) - m * m * (k.gd as i64 * u0);
+        let v = c.dn[i.min(2)][ph] as i64 - rshift_round(g, F_C);
+        d[ph] = v.clamp(-NODE_MAX, NODE_MAX) as i32;
+    }
+    if k.current_midpoint {
+        let cur = [d[0] as i64, d[1] as i64, d[2] as i64];
+        let w = midpoint_inverter(k, c, s, cur, m, 0, c.dref[i.min(2)]);
+        for j in 0..4 {
+            d[3 + j] = w[j] as i32;
+        }
+    } else {
+        for j in 0..4 {
+            d[3 + j] = rshift_round(m * inv[j], F_C).clamp(-NODE_MAX, NODE_MAX) as i32;
+        }
     }
     d
 }
@@ -610,30 +720,87 @@ pub fn lazy_ok(k: &Coeffs, c: &Common, s_prev: [u8; 3]) -> bool {
     (0..7).all(|j| (c.e0[j] as i32 + d1[j] as i32).abs() <= k.bnd[j] as i32)
 }
 
+/// Smallest `M` with `2^M >= n` (at least 1).
+fn bits_for(n: u32) -> u32 {
+    (32 - (n.max(2) - 1).leading_zeros()).max(1)
+}
+
+/// `l_j` of one output over the interpolation pieces: the paper's single
+/// chord (eq. 20) through `k` and `k+L`, or (3 nodes) the chords
+/// `[k, k+L]`, `[k+L, k+2L]`, `[k+2L, k+4L]`, the last one extended to
+/// `N_bar`. Each piece is one Algorithm-2 search with its own cap; the next
+/// piece is searched only when the previous one is capped (still inside at
+/// its end). Returns `(l_j, cycles)`.
+fn lane(k: &Coeffs, e0: i32, nodes: &[[i32; 7]; 3], j: usize) -> (u32, u32) {
+    let bnd = k.bnd[j] as i32;
+    let lam = k.lambda;
+    let big_l = 1u32 << lam;
+    if k.nodes == 1 {
+        let r = SearchRange {
+            m_bits: k.m_bits,
+            l_up: k.n_bar,
+            l_low: 0,
+        };
+        let sr = binsearch::lj_search(e0, nodes[0][j], bnd, lam, r);
+        return (sr.lj.value().unwrap_or(0), sr.cycles);
+    }
+    // (start value, change, log2 length, start step, cap)
+    let pieces = [
+        (e0, nodes[0][j], lam, 0u32, big_l),
+        (
+            e0 + nodes[0][j],
+            nodes[1][j] - nodes[0][j],
+            lam,
+            big_l,
+            big_l,
+        ),
+        (
+            e0 + nodes[1][j],
+            nodes[2][j] - nodes[1][j],
+            lam + 1,
+            2 * big_l,
+            k.n_bar - 2 * big_l,
+        ),
+    ];
+    let mut cycles = 0;
+    for (i, &(a, d, ls, start, cap)) in pieces.iter().enumerate() {
+        let r = SearchRange {
+            m_bits: bits_for(cap),
+            l_up: cap,
+            l_low: 0,
+        };
+        let sr = binsearch::lj_search(a, d, bnd, ls, r);
+        cycles += sr.cycles;
+        match sr.lj {
+            Lj::Capped(c) if i < 2 => {
+                let _ = c;
+            }
+            Lj::Capped(c) | Lj::Exact(c) => return (start + c, cycles),
+            Lj::Below => return (start, cycles),
+        }
+    }
+    (k.n_bar, cycles)
+}
+
 /// One explorer evaluation (Sec. VI) of candidate `s`.
 pub fn explore(k: &Coeffs, c: &Common, s_prev: [u8; 3], s: [u8; 3]) -> ExplorerResult {
-    let d = deltas(k, c, s, false);
+    let nodes: [[i32; 7]; 3] = if k.nodes == 1 {
+        [node_deltas(k, c, s, 0), [0; 7], [0; 7]]
+    } else {
+        core::array::from_fn(|i| node_deltas(k, c, s, i))
+    };
+    let d = nodes[0].map(|v| sat16(v as i64));
     let d1 = if k.exact_first_step {
         Some(deltas(k, c, s, true))
     } else {
         None
     };
-    // Search range: cap N_bar, no lower bound (every L* is reported).
-    let r = SearchRange {
-        m_bits: k.m_bits,
-        l_up: k.n_bar,
-        l_low: 0,
-    };
     let mut l_star = k.n_bar;
     let mut lane_cycles = 0;
     let mut j_dl = i32::MIN;
     for (j, &dj) in d.iter().enumerate() {
-        let sr = binsearch::lj_search(c.e0[j] as i32, dj as i32, k.bnd[j] as i32, k.lambda, r);
-        lane_cycles = lane_cycles.max(sr.cycles);
-        let lj = match sr.lj {
-            Lj::Capped(v) | Lj::Exact(v) => v,
-            Lj::Below => 0,
-        };
+        let (lj, cyc) = lane(k, c.e0[j] as i32, &nodes, j);
+        lane_cycles = lane_cycles.max(cyc);
         l_star = l_star.min(lj);
         // Error at k+1 for eq. (15): one-step prediction or interpolation.
         let e1 = match d1 {
@@ -657,7 +824,7 @@ pub fn explore(k: &Coeffs, c: &Common, s_prev: [u8; 3], s: [u8; 3]) -> ExplorerR
         COST_INF
     } else {
         let jsw = fs as u64 * k.recip[l_star as usize] as u64; // f17
-        let evn = sat16(c.e0[3] as i64 + rshift_round(l_star as i64 * d[3] as i64, k.lambda));
+        let evn = sat16(c.e0[3] as i64 + v_n_change(k, &nodes, l_star));
         let sq = evn as i64 * evn as i64; // f26
         let jl = rshift_round(sq * k.lambda_n as i64, 2 * F_I + F_LAMBDA - F_COST) as u64;
         (jsw + jl).min(COST_INF as u64 - 1) as u32
@@ -671,6 +838,21 @@ pub fn explore(k: &Coeffs, c: &Common, s_prev: [u8; 3], s: [u8; 3]) -> ExplorerR
         lane_cycles,
         deltas: d,
     }
+}
+
+/// Interpolated change of the `v_n` error after `l` steps (for the terminal
+/// weight): `round(l D / L)` on the piece that contains `l`.
+fn v_n_change(k: &Coeffs, nodes: &[[i32; 7]; 3], l: u32) -> i64 {
+    let lam = k.lambda;
+    let big_l = 1u32 << lam;
+    let n = |i: usize| nodes[i][3] as i64;
+    if k.nodes == 1 || l <= big_l {
+        return rshift_round(l as i64 * n(0), lam);
+    }
+    if l <= 2 * big_l {
+        return n(0) + rshift_round((l - big_l) as i64 * (n(1) - n(0)), lam);
+    }
+    n(1) + rshift_round((l - 2 * big_l) as i64 * (n(2) - n(1)), lam + 1)
 }
 
 /// The FPGA MPDCC core: coefficients, the scheduler and `n` explorers.
@@ -733,13 +915,13 @@ impl FpgaMpdcc {
             c: &c,
             s_prev: x.s_prev,
         };
-        scheduler::run(
-            x.s_prev,
-            lazy,
-            self.cfg.explorers,
-            self.coeffs.m_bits,
-            &mut units,
-        )
+        // Cycle model of the configured explorer structure.
+        let model = if self.coeffs.nodes == 1 && !self.coeffs.exact_first_step {
+            super::cycles::CycleModel::paper()
+        } else {
+            super::cycles::CycleModel::default()
+        };
+        scheduler::run(x.s_prev, lazy, self.cfg.explorers, &model, &mut units)
     }
 }
 

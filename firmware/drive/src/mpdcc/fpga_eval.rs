@@ -295,6 +295,9 @@ fn bad_input_is_rejected_without_state_change() {
         FpgaMpdcc::new(&q, FpgaConfig::with_p(1.0)).unwrap_err(),
         fpga::FpgaError::CoefficientRange("c_w")
     );
+    let mut cfg = FpgaConfig::with_p(1.0);
+    cfg.nodes = 2;
+    assert_eq!(FpgaMpdcc::new(&p, cfg).unwrap_err(), fpga::FpgaError::Nodes);
     assert_eq!(
         FpgaMpdcc::new(&p, FpgaConfig::with_p(f64::NAN)).unwrap_err(),
         fpga::FpgaError::Correction
@@ -409,7 +412,8 @@ fn sweep_design_options() {
                     third_order: so && ef,
                     stator_damping: so && ef,
                     capacitor_drift: so && ef,
-                    current_midpoint: so && ef,
+                    current_midpoint: false,
+                    nodes: if so && ef && 4 * l <= 128 { 3 } else { 1 },
                 };
                 let Ok(mut f) = FpgaMpdcc::new(&q, fc) else {
                     continue;

@@ -85,16 +85,14 @@ pub fn select(results: &[ExplorerResult]) -> Option<(usize, DecisionKind)> {
 }
 
 /// Algorithm 1 for one step: `lazy` is the outcome of line 1 (computed by the
-/// datapath), `n` the number of explorers, `m_bits` the search width (for
-/// the cycle count).
+/// datapath), `n` the number of explorers, `model` the cycle model.
 pub fn run<E: Explorer>(
     s_prev: [u8; 3],
     lazy: bool,
     n: u32,
-    m_bits: u32,
+    model: &cycles::CycleModel,
     explorer: &mut E,
 ) -> Outcome {
-    let model = cycles::CycleModel::default();
     if lazy {
         return Outcome {
             decision: Decision {
@@ -116,7 +114,7 @@ pub fn run<E: Explorer>(
         let _ = lanes.push(r.lane_cycles);
         let _ = results.push(r);
     }
-    let cycles = model.search_cycles(n, m_bits, &lanes);
+    let cycles = model.search_cycles(n, &lanes);
     let decision = match select(&results) {
         Some((i, kind)) => Decision {
             s: results[i].s,
@@ -206,19 +204,20 @@ mod tests {
     #[test]
     fn run_kept_and_search_paths() {
         let mut e = Fixed(heapless::Vec::new());
-        let kept = run([0, 0, 0], true, 2, 7, &mut e);
+        let m = cycles::CycleModel::paper();
+        let kept = run([0, 0, 0], true, 2, &m, &mut e);
         assert_eq!(kept.decision.kind, DecisionKind::Kept);
         assert_eq!(kept.decision.s, [0, 0, 0]);
         assert!(e.0.is_empty());
-        let out = run([0, 0, 0], false, 2, 7, &mut e);
+        let out = run([0, 0, 0], false, 2, &m, &mut e);
         // From [0,0,0]: 3 positions per phase (0, 1, 2) -> 27 candidates.
         assert_eq!(out.results.len(), 27);
         assert_eq!(out.decision.s, [1, 1, 1]);
         assert_eq!(out.decision.kind, DecisionKind::Optimal);
         assert_eq!(out.decision.horizon_steps, 5);
         // More explorers never take more cycles.
-        let c1 = run([0, 0, 0], false, 1, 7, &mut e).cycles;
-        let c4 = run([0, 0, 0], false, 4, 7, &mut e).cycles;
+        let c1 = run([0, 0, 0], false, 1, &m, &mut e).cycles;
+        let c4 = run([0, 0, 0], false, 4, &m, &mut e).cycles;
         assert!(c4 < c1 && out.cycles < c1 && c4 < out.cycles);
     }
 }
