@@ -35,6 +35,7 @@ const TOPS: &[(&str, &[&str], &str)] = &[
         ],
         "pl_top_shim.cpp",
     ),
+    ("mpdtc_core", &["mpdtc_core.v"], "mpdtc_core_shim.cpp"),
 ];
 
 fn run(cmd: &mut Command) {

@@ -6,5 +6,7 @@
 //! models in the `drive` crate.
 
 pub mod gate_driver;
+pub mod mpdtc_core;
+pub mod mpdtc_vectors;
 pub mod pl_top;
 pub mod regmap_gen;
