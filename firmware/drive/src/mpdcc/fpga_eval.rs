@@ -271,12 +271,7 @@ fn interpolation_error_is_bounded() {
                 m2max = m2max.max(m2);
                 for l in 1..=n {
                     let lf = l as f64;
-                    let (interp, bound) = if which == 0 {
-                        (
-                            a + lf * (nv(0) - a) / big_l,
-                            chord_bound(lf, 0.0, big_l, 0.0, ne(0, big_l), m2),
-                        )
-                    } else if lf <= big_l {
+                    let (interp, bound) = if which == 0 || lf <= big_l {
                         (
                             a + lf * (nv(0) - a) / big_l,
                             chord_bound(lf, 0.0, big_l, 0.0, ne(0, big_l), m2),
