@@ -113,10 +113,14 @@ pub fn markdown(r: &Results) -> String {
     }
     s += "\n### Fig. 11: torque loop, 0.3 Nm sine\n\n";
     s += "| f [Hz] | MPDTC gain [dB] | phase [deg] | FOC gain [dB] | phase [deg] |\n|---|---|---|---|---|\n";
-    for (a, b) in r.bode_mpdtc.points.iter().zip(&r.bode_foc.points) {
+    for a in &r.bode_mpdtc.points {
+        let b = r.bode_foc.points.iter().find(|b| b.freq_hz == a.freq_hz);
+        let fb = b.map_or("n/a (>= f_s/2) | n/a".into(), |b| {
+            format!("{:.2} | {:.1}", b.gain_db, b.phase_deg)
+        });
         s += &format!(
-            "| {} | {:.2} | {:.1} | {:.2} | {:.1} |\n",
-            a.freq_hz, a.gain_db, a.phase_deg, b.gain_db, b.phase_deg
+            "| {} | {:.2} | {:.1} | {fb} |\n",
+            a.freq_hz, a.gain_db, a.phase_deg
         );
     }
     s += &format!(
@@ -185,11 +189,10 @@ fn write_csv(dir: &Path, r: &Results) -> Result<()> {
         w(&format!("table4_p_{p}.csv"), trace(tr))?;
     }
     let mut t = String::from("freq_hz,mpdtc_gain_db,mpdtc_phase_deg,foc_gain_db,foc_phase_deg\n");
-    for (a, b) in r.bode_mpdtc.points.iter().zip(&r.bode_foc.points) {
-        t += &format!(
-            "{},{},{},{},{}\n",
-            a.freq_hz, a.gain_db, a.phase_deg, b.gain_db, b.phase_deg
-        );
+    for a in &r.bode_mpdtc.points {
+        let b = r.bode_foc.points.iter().find(|b| b.freq_hz == a.freq_hz);
+        let fb = b.map_or(",".into(), |b| format!("{},{}", b.gain_db, b.phase_deg));
+        t += &format!("{},{},{},{fb}\n", a.freq_hz, a.gain_db, a.phase_deg);
     }
     w("fig11_bode.csv", t)?;
     Ok(())

@@ -40,7 +40,14 @@ fn fixed_registers_of_the_paper_drive() {
     assert_eq!(r.lambda, 24576); // 0.375 exactly
                                  // U0 = Ts/L * 32 V = 0.78125 A exactly = 51200.
     assert_eq!(r.u0, 51200);
-    assert_eq!(r.w2[0], 1 << 14);
+    // Squared norm (default): w2 = 2^(n p), p = 0.1: 2^0.1 = 1.071773 -> 17560.
+    assert_eq!(r.w2, [16384, 17560, 18820, 20171]);
+    let e = MpdtcParams {
+        cost_norm: super::mpdtc_ref::CostNorm::Euclidean,
+        ..Default::default()
+    };
+    let re = FixedParams::from_config(&cfg(e)).unwrap();
+    assert_eq!(re.w2[1], r.w2[2], "Euclidean: 2^(2 n p)");
     // L_d != L_q is refused by the core.
     let m = MotorParams {
         l_q_h: 0.7e-3,

@@ -365,7 +365,8 @@ pub const BODE_FREQS_HZ: [f64; 15] = [
 /// Sine amplitude, N m (paper: 0.3).
 pub const BODE_AMP_NM: f64 = 0.3;
 
-/// Fig. 11: gain and phase of torque / reference at each frequency.
+/// Fig. 11: gain and phase of torque / reference at each frequency below
+/// half the controller's sample rate.
 /// Transient: the first 1 ms (at least 1 period) is discarded; the DFT runs
 /// over an integer number of periods (>= 2 ms) of window-mean torque,
 /// against the sine evaluated at the window centres.
@@ -376,6 +377,12 @@ pub fn bode<C: Controller>(
     let motor = MotorParams::default();
     let mut pts = vec![];
     for f in BODE_FREQS_HZ {
+        // At and above half its sample rate a controller sees an aliased
+        // reference (the FOC at 8 kHz samples a 16 kHz-sampled sine at its
+        // zeros): no meaningful gain, the point is left out.
+        if f * make()?.period_s() >= 0.5 - 1e-12 {
+            continue;
+        }
         let per = 1.0 / f;
         let t_skip = (1e-3f64).max(per);
         let n_per = (2e-3 / per).ceil();
@@ -410,6 +417,12 @@ pub fn bode<C: Controller>(
             gain_db: 20.0 * (ym / rm).log10(),
             phase_deg: ph,
         });
+    }
+    // Unwrap the phase along frequency (a lag that grows past -180 deg).
+    for i in 1..pts.len() {
+        while pts[i].phase_deg - pts[i - 1].phase_deg > 180.0 {
+            pts[i].phase_deg -= 360.0;
+        }
     }
     Ok(Bode {
         bandwidth_hz: bandwidth(&pts),

@@ -136,7 +136,7 @@ fn fig11(path: &Path, r: &Results) -> Result<()> {
         .margin(10)
         .x_label_area_size(40)
         .y_label_area_size(50)
-        .build_cartesian_2d(2.0f64..3.95, -180.0f64..30.0)
+        .build_cartesian_2d(2.0f64..3.95, -360.0f64..30.0)
         .map_err(err)?;
     p.configure_mesh()
         .x_desc("log10(f / Hz)")
