@@ -26,7 +26,7 @@ pub struct Args {
 #[derive(clap::Args)]
 pub struct BenchArgs {
     /// Simulated time per measurement, s.
-    #[arg(long, default_value_t = 0.2)]
+    #[arg(long, default_value_t = 2.0)]
     pub sim_s: f64,
 }
 
@@ -270,6 +270,11 @@ pub fn bench(a: BenchArgs) -> Result<()> {
         "{}",
         serde_json::to_string_pretty(&json!({
             "closed_loop_periods_per_s": {"mpdtc_ref": mpdtc_ref, "mpdtc_fixed": mpdtc_fixed, "foc": foc},
+            "closed_loop_simulated_s_per_s": {
+                "mpdtc_ref": mpdtc_ref * drive.control_period_s,
+                "mpdtc_fixed": mpdtc_fixed * drive.control_period_s,
+                "foc": foc * FocParams::default().period_s,
+            },
             "replay_steps_per_s": replay,
             "simulated_s_per_measurement": a.sim_s,
         }))?
