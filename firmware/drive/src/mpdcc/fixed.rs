@@ -24,16 +24,22 @@
 //! make the controller switch the wrong way; saturating keeps the sign.
 //!
 //! # Formats used by the model
+//! (The full table with the wide accumulator, node registers and search
+//! comparators is in docs/mpdcc-fpga.md; the constants below and in
+//! [`super::fpga`] are the source.)
+//!
 //! | quantity | format | range | LSB |
 //! |---|---|---|---|
-//! | stator current `i_s`, reference `i_s*`, every output error `y* - y`, bounds `y_bnd` | Q2.13 | +-4 pu | 1.22e-4 pu |
+//! | stator current `i_s`, reference `i_s*`, output errors `y* - y`, bounds `y_bnd` | Q2.13 | +-4 pu | 1.22e-4 pu |
 //! | rotor flux `psi_r` | Q1.14 | +-2 pu | 6.10e-5 pu |
-//! | voltages `V_dc`, `v_n`, `v_ph`, `v_abc` | Q2.13 | +-4 pu | 1.22e-4 pu |
+//! | voltages `V_dc/2`, `v_n`, `v_ph` | Q2.13 | +-4 pu | 1.22e-4 pu |
 //! | speeds `omega_r`, `omega_s` | Q2.13 | +-4 pu | 1.22e-4 pu |
-//! | model coefficients (`A_1`, `A_2`, `X_r/D L T_s`, ...) | Q1.14 | +-2 | 6.10e-5 |
-//! | small coefficients (`T_s/C` per step) | Q-2.17 as i16 with f = 17 (see [`F_SMALL`]) | +-0.25 | 7.6e-6 |
-//! | switching cost `J` | UQ16.16 in u32 (cost register) | 0..65536 | 1.5e-5 |
-//! | reciprocal ROM `1/l` | UQ1.15 in u16 | 0..2 | 3.05e-5 |
+//! | `L`-step model coefficients (`c_tau`, `c_w`, `g3`, ...) | Q1.14 | +-2 | 6.10e-5 |
+//! | one-step model coefficients (`c_tau1`, `c_w1`, `g3_1`, ...) | f = 17 ([`F_SMALL`]) | +-0.25 | 7.6e-6 |
+//! | node changes `Delta_j(mL)` | Q4.13, 18 bits | +-16 pu | 1.22e-4 pu |
+//! | switching cost `J` | UQ15.17 in a u32 | 0..32768 | 7.6e-6 |
+//! | reciprocal ROM `1/l` | UQ1.17, 18 bits | 0..2 | 7.6e-6 |
+//! | `lambda_n` | UQ8.8 | 0..256 | 3.9e-3 |
 
 /// Fractional bits of Q2.13 (currents, errors, bounds, voltages, speeds).
 pub const F_I: u32 = 13;
@@ -41,10 +47,6 @@ pub const F_I: u32 = 13;
 pub const F_C: u32 = 14;
 /// Fractional bits of the small-coefficient format (`|c| < 0.25`).
 pub const F_SMALL: u32 = 17;
-/// Fractional bits of the cost register (UQ16.16).
-pub const F_J: u32 = 16;
-/// Fractional bits of the reciprocal ROM (UQ1.15).
-pub const F_RECIP: u32 = 15;
 
 /// Errors of [`quantize`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
