@@ -96,10 +96,18 @@ pub fn sub(a: i32, b: i32) -> i32 {
     sat25(a as i64 - b as i64)
 }
 
-/// Clamp to `[-lim, lim]`.
+/// Clamp to `[-lim, lim]` for a limit register `lim >= 0`, written as the
+/// comparator chain of the hardware (`x > lim ? lim : x < -lim ? -lim : x`),
+/// so a negative register value is defined too (never panics).
 #[inline]
 pub fn clamp(x: i32, lim: i32) -> i32 {
-    x.clamp(-lim, lim)
+    if x > lim {
+        lim
+    } else if x < -lim {
+        -lim
+    } else {
+        x
+    }
 }
 
 /// Quantize an `f64` to `frac` fraction bits (round to nearest), checking

@@ -375,6 +375,9 @@ pub struct Candidate {
 pub struct MpdtcOutputs {
     /// `S[k+1]`, applied over [k+1, k+2]; bits `SaSbSc`.
     pub s_next: u8,
+    /// An input was not finite: the period was skipped (zero vector, state
+    /// kept apart from the switch-state history).
+    pub input_fault: bool,
     /// Modified reference `T*[k]` of eq. (13), N m.
     pub t_ref_mod_nm: f64,
     /// Observer outputs `eps[k]` (d, q), V.
@@ -420,6 +423,35 @@ pub fn select(c: &[Candidate; 8], n: &[u32; 8]) -> u8 {
 
 /// One control period of the reference MPDTC. Pure: same inputs, same result.
 pub fn decide(state: &MpdtcState, inp: &MpdtcInputs, cfg: &MpdtcConfig) -> MpdtcOutputs {
+    let finite = [
+        inp.i_d_a,
+        inp.i_q_a,
+        inp.theta_e_rad,
+        inp.omega_e_rad_s,
+        inp.t_ref_nm,
+    ];
+    if !finite.iter().all(|x| x.is_finite()) {
+        // Bad measurement or command: apply the zero vector reachable with
+        // the fewest transitions and leave integrator and observer untouched.
+        let s_next = if transitions(state.s_applied, 0) <= transitions(state.s_applied, 7) {
+            0
+        } else {
+            7
+        };
+        return MpdtcOutputs {
+            s_next,
+            input_fault: true,
+            t_ref_mod_nm: 0.0,
+            eps_v: state.eps_prev_v,
+            i_dq_k1_a: (0.0, 0.0),
+            candidates: [Candidate::default(); 8],
+            next: MpdtcState {
+                s_applied: s_next,
+                s_prev: state.s_applied,
+                ..*state
+            },
+        };
+    }
     let p = &cfg.params;
     let ts = p.control_period_s;
     let w = inp.omega_e_rad_s;
@@ -473,6 +505,7 @@ pub fn decide(state: &MpdtcState, inp: &MpdtcInputs, cfg: &MpdtcConfig) -> Mpdtc
     let s_next = select(&cands, &n);
     MpdtcOutputs {
         s_next,
+        input_fault: false,
         t_ref_mod_nm: t_ref,
         eps_v: eps,
         i_dq_k1_a: i1,
@@ -664,6 +697,34 @@ mod tests {
             ..Default::default()
         };
         assert_eq!(decide(&st, &inp, &c).s_next, 0b110);
+    }
+
+    #[test]
+    fn non_finite_inputs_hold_a_zero_vector_and_keep_the_state() {
+        let c = cfg();
+        let st = MpdtcState {
+            s_applied: 0b110,
+            int_nm: 0.01,
+            ..Default::default()
+        };
+        for bad in [f64::NAN, f64::INFINITY] {
+            let inp = MpdtcInputs {
+                i_q_a: bad,
+                t_ref_nm: 0.4,
+                ..Default::default()
+            };
+            let o = decide(&st, &inp, &c);
+            assert!(o.input_fault);
+            assert_eq!(o.s_next, 7, "111 is one transition from 110");
+            assert_eq!(o.next.int_nm, 0.01);
+            assert_eq!(o.next.obs_q, st.obs_q);
+            let inp = MpdtcInputs {
+                t_ref_nm: bad,
+                ..Default::default()
+            };
+            assert!(decide(&st, &inp, &c).input_fault);
+        }
+        assert!(!decide(&st, &MpdtcInputs::default(), &c).input_fault);
     }
 
     #[test]

@@ -104,6 +104,53 @@ fn fixed_matches_reference_on_random_vectors() {
     assert!(agree as f64 >= 0.99 * n as f64, "agree {agree}/{n}");
 }
 
+/// Extreme register and input values (full-scale currents, negative limit
+/// registers, any state) never panic and give a valid switch state.
+#[test]
+fn fixed_core_is_total_on_full_scale_inputs() {
+    let vals = [-16_777_216, -65_536, 0, 65_536, 16_777_215];
+    let coefs = [-131_072, 0, 131_071];
+    for (k, &v) in vals.iter().enumerate() {
+        for &c in &coefs {
+            let p = FixedParams {
+                a: c,
+                lambda: c,
+                u0: v,
+                u0_half: v,
+                u0_h: v,
+                psi_l: v,
+                kinv_t: v,
+                tol: v,
+                k_int: c,
+                int_lim: v,
+                int_conditional: k % 2 == 0,
+                kp_o: c,
+                ki_o: c,
+                eta_lim: -v,
+                w2: [c; 4],
+            };
+            let st = FixedState {
+                s_applied: (k % 8) as u8,
+                s_prev: 7,
+                eta_prev: (v, -v),
+                x: v,
+                band_reached: true,
+                iq_ref_prev: -v,
+                i_hat: (v, v),
+                nu: (-v, v),
+            };
+            let inp = fx::FixedInputs {
+                i_dq: (v, -v),
+                trig: [(c, -c); 3],
+                w_ts: c,
+                t_ref: c,
+            };
+            let o = fx::decide(&st, &inp, &p);
+            assert!(o.s_next < 8);
+        }
+    }
+}
+
 #[test]
 fn fixed_zero_vectors_are_exactly_zero() {
     let c = cfg(MpdtcParams::default());
@@ -231,7 +278,7 @@ fn model_errors_are_compensated_within_5ms() {
 /// eq. (13) does. (The observer cannot be switched off: Kp = 0 puts a pole
 /// on the unit circle, which `validate` refuses.)
 #[test]
-fn without_integrator_and_observer_the_error_stays() {
+fn without_integrator_the_band_error_stays() {
     let nom = MotorParams::default();
     let p = MpdtcParams {
         k_int_per_s: 0.0,
