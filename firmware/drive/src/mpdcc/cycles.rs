@@ -94,7 +94,7 @@ pub const EXPLORER_OPS_PAPER: &[Op] = &[
 ];
 
 /// One explorer evaluation of our default core ([`super::fpga::FpgaConfig::improved`]):
-/// three interpolation nodes, capacitor drift, stator damping, exact first step.
+/// four interpolation nodes, capacitor drift, stator damping, exact first step.
 pub const EXPLORER_OPS: &[Op] = &[
     op("load candidate, f_s", Reg, &[]),                    // 0
     op("D_vn = np_a P_n,a", B, &[0]),                       // 1
@@ -138,37 +138,45 @@ pub const EXPLORER_OPS: &[Op] = &[
     op("D2_a = dn2_a - t", B, &[34]),                       // 35
     op("t = 4 P0_a + 16 Q_a (node 4L)", B, &[23, 29]),      // 36
     op("D4_a = dn4_a - t", B, &[36]),                       // 37
-    op("t = 1 P0_b + 1 Q_b (node 1L)", B, &[24, 30]),       // 38
-    op("D1_b = dn1_b - t", B, &[38]),                       // 39
-    op("t = 2 P0_b + 4 Q_b (node 2L)", B, &[24, 30]),       // 40
-    op("D2_b = dn2_b - t", B, &[40]),                       // 41
-    op("t = 4 P0_b + 16 Q_b (node 4L)", B, &[24, 30]),      // 42
-    op("D4_b = dn4_b - t", B, &[42]),                       // 43
-    op("t = 1 P0_c + 1 Q_c (node 1L)", B, &[25, 31]),       // 44
-    op("D1_c = dn1_c - t", B, &[44]),                       // 45
-    op("t = 2 P0_c + 4 Q_c (node 2L)", B, &[25, 31]),       // 46
-    op("D2_c = dn2_c - t", B, &[46]),                       // 47
-    op("t = 4 P0_c + 16 Q_c (node 4L)", B, &[25, 31]),      // 48
-    op("D4_c = dn4_c - t", B, &[48]),                       // 49
+    op("t = 8 P0_a + 64 Q_a (node 8L)", B, &[23, 29]),      // 38
+    op("D8_a = dn8_a - t", B, &[38]),                       // 39
+    op("t = 1 P0_b + 1 Q_b (node 1L)", B, &[24, 30]),       // 40
+    op("D1_b = dn1_b - t", B, &[40]),                       // 41
+    op("t = 2 P0_b + 4 Q_b (node 2L)", B, &[24, 30]),       // 42
+    op("D2_b = dn2_b - t", B, &[42]),                       // 43
+    op("t = 4 P0_b + 16 Q_b (node 4L)", B, &[24, 30]),      // 44
+    op("D4_b = dn4_b - t", B, &[44]),                       // 45
+    op("t = 8 P0_b + 64 Q_b (node 8L)", B, &[24, 30]),      // 46
+    op("D8_b = dn8_b - t", B, &[46]),                       // 47
+    op("t = 1 P0_c + 1 Q_c (node 1L)", B, &[25, 31]),       // 48
+    op("D1_c = dn1_c - t", B, &[48]),                       // 49
+    op("t = 2 P0_c + 4 Q_c (node 2L)", B, &[25, 31]),       // 50
+    op("D2_c = dn2_c - t", B, &[50]),                       // 51
+    op("t = 4 P0_c + 16 Q_c (node 4L)", B, &[25, 31]),      // 52
+    op("D4_c = dn4_c - t", B, &[52]),                       // 53
+    op("t = 8 P0_c + 64 Q_c (node 8L)", B, &[25, 31]),      // 54
+    op("D8_c = dn8_c - t", B, &[54]),                       // 55
     op(
         "D1_a = dn1_a - g3_1 (u0_a + uh_a/L) (first step)",
         B,
         &[12, 20],
-    ), // 50
-    op("D1_b", B, &[13, 21]),                               // 51
-    op("D1_c", B, &[14, 22]),                               // 52
+    ), // 56
+    op("D1_b", B, &[13, 21]),                               // 57
+    op("D1_c", B, &[14, 22]),                               // 58
     op(
-        "Algorithm 2 x7, up to 3 pieces each (J_dl terms in cycle 1)",
+        "Algorithm 2 x7, up to 4 pieces each (J_dl terms in cycle 1)",
         Lanes,
-        &[33, 39, 45, 35, 41, 47, 37, 43, 49, 3, 4, 5, 6, 50, 51, 52],
-    ), // 53
-    op("min l_j, max J_dl", Tree(3), &[53]),                // 54
-    op("recip ROM [L*]", Reg, &[54]),                       // 55
-    op("J_sw = f_s recip", B, &[55]),                       // 56
-    op("e_vn = e_vn0 + interpolated D_vn at L*", B, &[54]), // 57
-    op("sq = e_vn^2", B, &[57]),                            // 58
-    op("J = lambda sq + J_sw", B, &[58, 56]),               // 59
-    op("return result", Reg, &[59]),                        // 60
+        &[
+            33, 41, 49, 35, 43, 51, 37, 45, 53, 39, 47, 55, 3, 4, 5, 6, 56, 57, 58,
+        ],
+    ), // 59
+    op("min l_j, max J_dl", Tree(3), &[59]),                // 60
+    op("recip ROM [L*]", Reg, &[60]),                       // 61
+    op("J_sw = f_s recip", B, &[61]),                       // 62
+    op("e_vn = e_vn0 + interpolated D_vn at L*", B, &[60]), // 63
+    op("sq = e_vn^2", B, &[63]),                            // 64
+    op("J = lambda sq + J_sw", B, &[64, 62]),               // 65
+    op("return result", Reg, &[65]),                        // 66
 ];
 
 /// The scheduler before dispatch ([`super::fpga::common_terms`] and
@@ -287,19 +295,32 @@ impl CycleModel {
     }
 }
 
-/// Worst-case cycles of one search lane: `M + 1` for the single chord;
-/// `2 (lambda + 1) + (M' + 1)` for three nodes (pieces of `L`, `L` and
-/// `N_bar - 2L` steps, `M' = ceil(log2(N_bar - 2L))`).
+/// Worst-case cycles of one search lane: `M + 1` for the single chord; for
+/// `K` nodes (as many as fit below `N_bar`) the sum over the pieces of
+/// `bits(cap) + 1`, pieces of `L`, `L`, `2L`, ... and the last one up to
+/// `N_bar`.
 pub fn worst_lane_cycles(nodes: u32, lambda: u32, m_bits: u32) -> u32 {
     let n_bar = 1u32 << m_bits;
     let big_l = 1u32 << lambda;
-    if nodes == 3 && 4 * big_l <= n_bar {
-        let rest = n_bar - 2 * big_l;
-        let m3 = (32 - (rest.max(2) - 1).leading_zeros()).max(1);
-        2 * (lambda + 1) + m3 + 1
-    } else {
-        m_bits + 1
+    let mut k = nodes.max(1);
+    while k > 1 && (big_l << (k - 1)) > n_bar {
+        k -= 1;
     }
+    if k == 1 {
+        return m_bits + 1;
+    }
+    let bits = |n: u32| (32 - (n.max(2) - 1).leading_zeros()).max(1);
+    let mut total = 0;
+    for i in 0..k {
+        let (start, len) = if i == 0 {
+            (0, big_l)
+        } else {
+            (big_l << (i - 1), big_l << (i - 1))
+        };
+        let cap = if i + 1 == k { n_bar - start } else { len };
+        total += bits(cap) + 1;
+    }
+    total
 }
 
 /// Per-phase breakdown of one worst-case decision.
@@ -418,7 +439,7 @@ pub struct Table2Row {
     pub paper_cycles: u32,
     /// Paper formula `47 + 2176/n` (unrounded), cycles.
     pub paper_formula_cycles: f64,
-    /// Our default core ([`EXPLORER_OPS`], 3 nodes), worst case over our
+    /// Our default core ([`EXPLORER_OPS`], 4 nodes), worst case over our
     /// candidate sets (216 candidates), cycles.
     pub model_cycles: u32,
     /// The paper's explorer structure ([`EXPLORER_OPS_PAPER`]) on our 216
@@ -459,7 +480,7 @@ pub fn table2_for(m_bits: u32, lambda: u32) -> [Table2Row; 6] {
     let ours = CycleModel::default();
     let paper = CycleModel::paper();
     let cmax = max_candidates();
-    let lw = worst_lane_cycles(3, lambda, m_bits);
+    let lw = worst_lane_cycles(4, lambda, m_bits);
     let lp = worst_lane_cycles(1, lambda, m_bits);
     core::array::from_fn(|i| {
         let n = i as u32 + 1;
@@ -553,10 +574,14 @@ mod tests {
             assert!(m.worst_case(n + 1, 216, 8).total < m.worst_case(n, 216, 8).total);
         }
         // Lane worst cases: M + 1 for one chord; L = 16, N_bar = 128, three
-        // pieces of 16, 16 and 96 steps: 5 + 5 + 8.
+        // pieces of 16, 16 and 96 steps: 5 + 5 + 8; L = 8, four pieces of 8,
+        // 8, 16 and 96: 4 + 4 + 5 + 8; L = 64: room for two nodes only
+        // (64, 128), pieces of 64 and 64: 7 + 7.
         assert_eq!(worst_lane_cycles(1, 4, 7), 8);
         assert_eq!(worst_lane_cycles(3, 4, 7), 18);
-        assert_eq!(worst_lane_cycles(3, 6, 7), 8);
+        assert_eq!(worst_lane_cycles(4, 3, 7), 21);
+        assert_eq!(worst_lane_cycles(3, 6, 7), 14);
+        assert_eq!(worst_lane_cycles(3, 7, 7), 8);
     }
 }
 
@@ -570,7 +595,7 @@ mod print {
         std::println!(
             "pre {} per-candidate {} kept {} max candidates {}",
             m.pre_cycles() + 1,
-            m.candidate_cycles(super::worst_lane_cycles(3, 4, 7)),
+            m.candidate_cycles(super::worst_lane_cycles(4, 3, 7)),
             m.kept_cycles(),
             super::max_candidates()
         );

@@ -129,9 +129,10 @@ pub struct FpgaConfig {
     /// voltages integrate `i(k) + Delta i(l)/2` instead of `i(k)` held
     /// (trapezoid, second order; `Delta i` from the candidate's prediction).
     pub current_midpoint: bool,
-    /// Interpolation nodes: 1 = the paper's single chord from `k` to `k+L`
-    /// (eq. 20); 3 = piecewise linear through `k+L`, `k+2L`, `k+4L`, the
-    /// last piece extended to `N_bar` (falls back to 1 when `4L > N_bar`).
+    /// Interpolation nodes `K` (1..=4): 1 = the paper's single chord from
+    /// `k` to `k+L` (eq. 20); `K > 1` = piecewise linear through
+    /// `k + 2^i L`, `i < K`, the last piece extended to `N_bar` (as many
+    /// nodes as fit below `N_bar` are used).
     pub nodes: u32,
 }
 
@@ -165,7 +166,7 @@ impl FpgaConfig {
             stator_damping: true,
             capacitor_drift: true,
             current_midpoint: false,
-            nodes: 3,
+            nodes: 4,
         }
     }
 
@@ -180,7 +181,7 @@ impl FpgaConfig {
             stator_damping: true,
             capacitor_drift: true,
             current_midpoint: false,
-            nodes: 3,
+            nodes: 4,
         }
     }
 }
@@ -196,7 +197,7 @@ pub enum FpgaError {
     Explorers,
     /// `p_correction` not finite or outside 0..=8.
     Correction,
-    /// `nodes` not 1 or 3.
+    /// `nodes` outside 1..=4.
     Nodes,
 }
 
@@ -209,7 +210,7 @@ impl core::fmt::Display for FpgaError {
             }
             FpgaError::Explorers => write!(f, "explorers must be in 1..=16"),
             FpgaError::Correction => write!(f, "p_correction must be finite and in 0..=8"),
-            FpgaError::Nodes => write!(f, "nodes must be 1 or 3"),
+            FpgaError::Nodes => write!(f, "nodes must be in 1..=4"),
         }
     }
 }
@@ -301,15 +302,16 @@ impl Coeffs {
         } else {
             0.0
         };
-        if cfg.nodes != 1 && cfg.nodes != 3 {
+        if !(1..=MAX_NODES as u32).contains(&cfg.nodes) {
             return Err(FpgaError::Nodes);
         }
         // Three nodes need 4 L <= N_bar; otherwise the single chord is used.
-        let nodes = if 4 * c.extrapolation_steps <= c.horizon_max_steps {
-            cfg.nodes
-        } else {
-            1
-        };
+        // Node K sits at 2^(K-1) L, which must not pass N_bar: use as many
+        // nodes as fit.
+        let mut nodes = cfg.nodes;
+        while nodes > 1 && (c.extrapolation_steps << (nodes - 1)) > c.horizon_max_steps {
+            nodes -= 1;
+        }
         let q = |name: &'static str, v: f64, f: u32| -> Result<i16, FpgaError> {
             match konst(v, f) {
                 (r, false) => Ok(r),
@@ -462,7 +464,7 @@ pub struct Common {
     pub e0: [i16; 7],
     /// Switch-independent error change over `m L` steps for the nodes
     /// `m = 1, 2, 4`, abc, Q2.13 (`[0]` is eq. 14's `k+L` term).
-    pub dn: [[i16; 3]; 3],
+    pub dn: [[i16; 3]; MAX_NODES],
     /// Same over one step (lazy check), abc, Q2.13.
     pub dn_1: [i16; 3],
     /// `i_s,abc(k)`, Q2.13.
@@ -472,7 +474,7 @@ pub struct Common {
     /// `L T/C_ph i_x`, wide (f27).
     pub pph: [i64; 3],
     /// Reference change over `m L` steps (`m = 1, 2, 4`), abc, Q2.13.
-    pub dref: [[i16; 3]; 3],
+    pub dref: [[i16; 3]; MAX_NODES],
     /// Registers copied for the explorers: `v_n`, `v_ph`, Q2.13.
     pub v_n: i16,
     /// Phase capacitor voltages, Q2.13.
@@ -530,8 +532,8 @@ pub fn common_terms(k: &Coeffs, x: &Inputs) -> Common {
     let dmp_b = p(k.c_d, to_q13(nat_b, F_W)) << 1;
     // Node m L: m (ref - nat) + m^2 (c_d nat - cor) + m^3 cub.
     let node = |m: i64, r: i64, d: i64, c2: i64, c3: i64| m * r + m * m * (d - c2) + m * m * m * c3;
-    let dn: [[i16; 3]; 3] = core::array::from_fn(|i| {
-        let m = [1i64, 2, 4][i];
+    let dn: [[i16; 3]; MAX_NODES] = core::array::from_fn(|i| {
+        let m = 1i64 << i;
         let ab = [
             to_q13(node(m, rate_a, dmp_a, cor_a, cub_a), F_W),
             to_q13(node(m, rate_b, dmp_b, cor_b, cub_b), F_W),
@@ -560,8 +562,8 @@ pub fn common_terms(k: &Coeffs, x: &Inputs) -> Common {
         ),
     ];
     // Reference change over m L (f28): rotation to third order.
-    let dref: [[i16; 3]; 3] = core::array::from_fn(|i| {
-        let m = [1i64, 2, 4][i];
+    let dref: [[i16; 3]; MAX_NODES] = core::array::from_fn(|i| {
+        let m = 1i64 << i;
         let ab = [
             to_q13(m * ref_a - m * m * k2a + m * m * m * (p(ks3, rb) << 1), F_W),
             to_q13(m * ref_b - m * m * k2b - m * m * m * (p(ks3, ra) << 1), F_W),
@@ -684,6 +686,12 @@ fn midpoint_inverter(
     w.map(|v| rshift_round(v, F_C + 1 + sh).clamp(-NODE_MAX, NODE_MAX))
 }
 
+/// Most interpolation nodes (`k + L`, `+2L`, `+4L`, `+8L`).
+pub const MAX_NODES: usize = 4;
+
+/// Node changes of one candidate: `[node][output]`, Q4.13.
+pub type Nodes = [[i32; 7]; MAX_NODES];
+
 /// Node registers are 18-bit Q4.13: values beyond +-2^17 saturate.
 pub const NODE_MAX: i64 = (1 << 17) - 1;
 
@@ -694,7 +702,8 @@ pub const NODE_MAX: i64 = (1 << 17) - 1;
 /// capacitor-drift change `Delta v(L)/2` (option `capacitor_drift`), the
 /// damped voltage term over `m L` is `m g3 (u0 + m uh) - m^2 gd u0`.
 pub fn node_deltas(k: &Coeffs, c: &Common, s: [u8; 3], i: usize) -> [i32; 7] {
-    let m = [1i64, 2, 4][i.min(2)];
+    let i = i.min(MAX_NODES - 1);
+    let m = 1i64 << i;
     let inv = inverter_terms(c, s);
     let mut v0 = [0i64; 3];
     let mut vh = [0i64; 3];
@@ -717,12 +726,12 @@ pub fn node_deltas(k: &Coeffs, c: &Common, s: [u8; 3], i: usize) -> [i32; 7] {
         let uh = 3 * vh[ph] - sh_;
         // f27 products: g3 u0, g3 uh, gd u0.
         let g = m * (k.g3 as i64 * u0) + m * m * (k.g3 as i64 * uh) - m * m * (k.gd as i64 * u0);
-        let v = c.dn[i.min(2)][ph] as i64 - rshift_round(g, F_C);
+        let v = c.dn[i][ph] as i64 - rshift_round(g, F_C);
         d[ph] = v.clamp(-NODE_MAX, NODE_MAX) as i32;
     }
     if k.current_midpoint {
         let cur = [d[0] as i64, d[1] as i64, d[2] as i64];
-        let w = midpoint_inverter(k, c, s, cur, m, 0, c.dref[i.min(2)]);
+        let w = midpoint_inverter(k, c, s, cur, m, 0, c.dref[i]);
         for j in 0..4 {
             d[3 + j] = w[j] as i32;
         }
@@ -746,12 +755,13 @@ fn bits_for(n: u32) -> u32 {
 }
 
 /// `l_j` of one output over the interpolation pieces: the paper's single
-/// chord (eq. 20) through `k` and `k+L`, or (3 nodes) the chords
-/// `[k, k+L]`, `[k+L, k+2L]`, `[k+2L, k+4L]`, the last one extended to
-/// `N_bar`. Each piece is one Algorithm-2 search with its own cap; the next
-/// piece is searched only when the previous one is capped (still inside at
-/// its end). Returns `(l_j, cycles)`.
-fn lane(k: &Coeffs, e0: i32, nodes: &[[i32; 7]; 3], j: usize) -> (u32, u32) {
+/// chord (eq. 20) through `k` and `k+L`, or (`K` nodes at `k + 2^i L`,
+/// `i < K`) the chords `[k, k+L]`, `[k+L, k+2L]`, `[k+2L, k+4L]`, ..., the
+/// last one extended to `N_bar`. Piece `i >= 1` is `2^(i-1) L` long, a power
+/// of two, so each piece is one exact Algorithm-2 search with its own cap;
+/// the next piece is searched only when the previous one is capped (still
+/// inside at its end). Returns `(l_j, cycles)`.
+fn lane(k: &Coeffs, e0: i32, nodes: &Nodes, j: usize) -> (u32, u32) {
     let bnd = k.bnd[j] as i32;
     let lam = k.lambda;
     let big_l = 1u32 << lam;
@@ -764,26 +774,23 @@ fn lane(k: &Coeffs, e0: i32, nodes: &[[i32; 7]; 3], j: usize) -> (u32, u32) {
         let sr = binsearch::lj_search(e0, nodes[0][j], bnd, lam, r);
         return (sr.lj.value().unwrap_or(0), sr.cycles);
     }
-    // (start value, change, log2 length, start step, cap)
-    let pieces = [
-        (e0, nodes[0][j], lam, 0u32, big_l),
-        (
-            e0 + nodes[0][j],
-            nodes[1][j] - nodes[0][j],
-            lam,
-            big_l,
-            big_l,
-        ),
-        (
-            e0 + nodes[1][j],
-            nodes[2][j] - nodes[1][j],
-            lam + 1,
-            2 * big_l,
-            k.n_bar - 2 * big_l,
-        ),
-    ];
+    let kn = k.nodes as usize;
     let mut cycles = 0;
-    for (i, &(a, d, ls, start, cap)) in pieces.iter().enumerate() {
+    for i in 0..kn {
+        // Piece i: from node i-1 (or k) to node i.
+        let (a, d, ls, start) = if i == 0 {
+            (e0, nodes[0][j], lam, 0u32)
+        } else {
+            let ls = lam + i as u32 - 1;
+            (
+                e0 + nodes[i - 1][j],
+                nodes[i][j] - nodes[i - 1][j],
+                ls,
+                big_l << (i - 1),
+            )
+        };
+        let last = i + 1 == kn;
+        let cap = if last { k.n_bar - start } else { 1u32 << ls };
         let r = SearchRange {
             m_bits: bits_for(cap),
             l_up: cap,
@@ -792,9 +799,7 @@ fn lane(k: &Coeffs, e0: i32, nodes: &[[i32; 7]; 3], j: usize) -> (u32, u32) {
         let sr = binsearch::lj_search(a, d, bnd, ls, r);
         cycles += sr.cycles;
         match sr.lj {
-            Lj::Capped(c) if i < 2 => {
-                let _ = c;
-            }
+            Lj::Capped(_) if !last => {}
             Lj::Capped(c) | Lj::Exact(c) => return (start + c, cycles),
             Lj::Below => return (start, cycles),
         }
@@ -804,11 +809,13 @@ fn lane(k: &Coeffs, e0: i32, nodes: &[[i32; 7]; 3], j: usize) -> (u32, u32) {
 
 /// One explorer evaluation (Sec. VI) of candidate `s`.
 pub fn explore(k: &Coeffs, c: &Common, s_prev: [u8; 3], s: [u8; 3]) -> ExplorerResult {
-    let nodes: [[i32; 7]; 3] = if k.nodes == 1 {
-        [node_deltas(k, c, s, 0), [0; 7], [0; 7]]
-    } else {
-        core::array::from_fn(|i| node_deltas(k, c, s, i))
-    };
+    let nodes: Nodes = core::array::from_fn(|i| {
+        if i < k.nodes as usize {
+            node_deltas(k, c, s, i)
+        } else {
+            [0; 7]
+        }
+    });
     let d = nodes[0].map(|v| sat16(v as i64));
     let d1 = if k.exact_first_step {
         Some(deltas(k, c, s, true))
@@ -861,18 +868,22 @@ pub fn explore(k: &Coeffs, c: &Common, s_prev: [u8; 3], s: [u8; 3]) -> ExplorerR
 }
 
 /// Interpolated change of the `v_n` error after `l` steps (for the terminal
-/// weight): `round(l D / L)` on the piece that contains `l`.
-fn v_n_change(k: &Coeffs, nodes: &[[i32; 7]; 3], l: u32) -> i64 {
+/// weight), on the piece that contains `l` (the last piece extended).
+fn v_n_change(k: &Coeffs, nodes: &Nodes, l: u32) -> i64 {
     let lam = k.lambda;
     let big_l = 1u32 << lam;
     let n = |i: usize| nodes[i][3] as i64;
     if k.nodes == 1 || l <= big_l {
         return rshift_round(l as i64 * n(0), lam);
     }
-    if l <= 2 * big_l {
-        return n(0) + rshift_round((l - big_l) as i64 * (n(1) - n(0)), lam);
+    // Piece i >= 1 spans [2^(i-1) L, 2^i L], length 2^(i-1) L.
+    let mut i = 1usize;
+    while i + 1 < k.nodes as usize && l > big_l << i {
+        i += 1;
     }
-    n(1) + rshift_round((l - 2 * big_l) as i64 * (n(2) - n(1)), lam + 1)
+    let start = big_l << (i - 1);
+    let ls = lam + i as u32 - 1;
+    n(i - 1) + rshift_round((l - start) as i64 * (n(i) - n(i - 1)), ls)
 }
 
 /// The FPGA MPDCC core: coefficients, the scheduler and `n` explorers.
@@ -965,13 +976,14 @@ mod tests {
 
     /// The piecewise lane against a direct scan of the piecewise-linear
     /// interpolant in exact integer arithmetic: `L*_j` = largest `l <= N_bar`
-    /// with every `l' in [0, l]` inside the bound.
+    /// with every `l' in [0, l]` inside the bound. Nodes at `2^i L`.
     #[test]
     fn piecewise_lane_matches_scan() {
         let p = DriveParams::default();
         let f = FpgaMpdcc::new(&p, FpgaConfig::improved(&p.machine)).unwrap();
         let k = f.coeffs();
-        assert_eq!(k.nodes, 3);
+        let kn = k.nodes as usize;
+        assert!(kn >= 3);
         let big_l = 1i64 << k.lambda;
         let mut s: u64 = 0x1234_5678_9ABC_DEF1;
         let mut next = || {
@@ -984,25 +996,30 @@ mod tests {
             let v = next();
             let bnd = 1 + (v % 1200) as i64;
             let e0 = ((v >> 12) % 3000) as i64 - 1500;
-            let d1 = ((v >> 24) % 4001) as i64 - 2000;
-            let d2 = d1 * 2 + ((v >> 36) % 801) as i64 - 400;
-            let d4 = d2 * 2 + ((v >> 46) % 1601) as i64 - 800;
-            let mut nodes = [[0i32; 7]; 3];
-            nodes[0][0] = d1 as i32;
-            nodes[1][0] = d2 as i32;
-            nodes[2][0] = d4 as i32;
+            let mut nodes = [[0i32; 7]; MAX_NODES];
+            let mut d = ((v >> 24) % 2001) as i64 - 1000;
+            let mut w = next();
+            for node in nodes.iter_mut().take(kn) {
+                node[0] = d as i32;
+                // Next node: roughly twice the change, with a random bend.
+                d = 2 * d + (w % 801) as i64 - 400;
+                w >>= 10;
+            }
             let mut kk = k.clone();
             kk.bnd[0] = bnd as i16;
             let (lj, _) = lane(&kk, e0 as i32, &nodes, 0);
-            // Scan: inside(l) scaled by the piece length.
+            let nv = |i: usize| e0 + nodes[i][0] as i64;
+            // inside(l), scaled by the length of the piece containing l.
             let inside = |l: i64| -> bool {
                 if l <= big_l {
-                    (e0 * big_l + l * d1).abs() <= bnd * big_l
-                } else if l <= 2 * big_l {
-                    ((e0 + d1) * big_l + (l - big_l) * (d2 - d1)).abs() <= bnd * big_l
-                } else {
-                    ((e0 + d2) * 2 * big_l + (l - 2 * big_l) * (d4 - d2)).abs() <= bnd * 2 * big_l
+                    return (e0 * big_l + l * nodes[0][0] as i64).abs() <= bnd * big_l;
                 }
+                let mut i = 1;
+                while i + 1 < kn && l > big_l << i {
+                    i += 1;
+                }
+                let (start, len) = (big_l << (i - 1), big_l << (i - 1));
+                (nv(i - 1) * len + (l - start) * (nv(i) - nv(i - 1))).abs() <= bnd * len
             };
             let mut want = 0u32;
             if inside(0) {
@@ -1010,7 +1027,7 @@ mod tests {
                     want += 1;
                 }
             }
-            assert_eq!(lj, want, "e0={e0} d=({d1},{d2},{d4}) bnd={bnd}");
+            assert_eq!(lj, want, "e0={e0} nodes={:?} bnd={bnd}", &nodes[..kn]);
         }
     }
 

@@ -238,8 +238,8 @@ fn chord_bound(l: f64, la: f64, lb: f64, ea: f64, eb: f64, m2: f64) -> f64 {
 /// single chord (eq. 20) and for our three nodes: at every `l` in
 /// `1..=N_bar` the interpolated error differs from the exact trajectory by at
 /// most [`chord_bound`] of the piece that `l` uses (node errors measured,
-/// `M2` = largest second difference of the exact trajectory over the
-/// horizon) plus 2 LSB of rounding.
+/// including the quantization of `a_j` at `k`; `M2` = largest second
+/// difference of the exact trajectory over the horizon) plus 2 LSB.
 #[test]
 fn interpolation_error_is_bounded() {
     let p = DriveParams::default();
@@ -260,7 +260,8 @@ fn interpolation_error_is_bounded() {
         let ex = exact_errors(&p, &st, s, n);
         for (which, f) in [&paper, &ours].iter().enumerate() {
             let c = fpga::common_terms(f.coeffs(), &x);
-            let nodes: [[i32; 7]; 3] =
+            let kn = f.coeffs().nodes as usize;
+            let nodes: fpga::Nodes =
                 core::array::from_fn(|i| fpga::node_deltas(f.coeffs(), &c, s, i));
             for j in 0..7 {
                 let a = to_f64(c.e0[j], F_I);
@@ -272,34 +273,22 @@ fn interpolation_error_is_bounded() {
                 m2max = m2max.max(m2);
                 for l in 1..=n {
                     let lf = l as f64;
-                    let (interp, bound) = if which == 0 || lf <= big_l {
+                    let (interp, bound) = if kn == 1 || lf <= big_l {
                         (
                             a + lf * (nv(0) - a) / big_l,
-                            chord_bound(lf, 0.0, big_l, 0.0, ne(0, big_l), m2),
-                        )
-                    } else if lf <= 2.0 * big_l {
-                        (
-                            nv(0) + (lf - big_l) * (nv(1) - nv(0)) / big_l,
-                            chord_bound(
-                                lf,
-                                big_l,
-                                2.0 * big_l,
-                                ne(0, big_l),
-                                ne(1, 2.0 * big_l),
-                                m2,
-                            ),
+                            chord_bound(lf, 0.0, big_l, (a - ex[0][j]).abs(), ne(0, big_l), m2),
                         )
                     } else {
+                        // Piece i spans [2^(i-1) L, 2^i L]; the last is extended.
+                        let mut i = 1;
+                        while i + 1 < kn && lf > big_l * (1u32 << i) as f64 {
+                            i += 1;
+                        }
+                        let la = big_l * (1u32 << (i - 1)) as f64;
+                        let lb = 2.0 * la;
                         (
-                            nv(1) + (lf - 2.0 * big_l) * (nv(2) - nv(1)) / (2.0 * big_l),
-                            chord_bound(
-                                lf,
-                                2.0 * big_l,
-                                4.0 * big_l,
-                                ne(1, 2.0 * big_l),
-                                ne(2, 4.0 * big_l),
-                                m2,
-                            ),
+                            nv(i - 1) + (lf - la) * (nv(i) - nv(i - 1)) / (lb - la),
+                            chord_bound(lf, la, lb, ne(i - 1, la), ne(i, lb), m2),
                         )
                     };
                     let err = (interp - ex[l][j]).abs();
@@ -319,7 +308,7 @@ fn interpolation_error_is_bounded() {
     }
     println!("interpolation: largest M2 = {m2max:.2e} pu/step^2 (random s(k-1), extreme voltages)");
     println!(
-        "worst current error at l = {probe:?}: paper chord {:.4?} pu, three nodes {:.4?} pu",
+        "worst current error at l = {probe:?}: paper chord {:.4?} pu, our nodes {:.4?} pu",
         worst[0], worst[1]
     );
     // Three nodes are better than the chord beyond L.
@@ -351,7 +340,7 @@ fn bad_input_is_rejected_without_state_change() {
         fpga::FpgaError::CoefficientRange("c_w")
     );
     let mut cfg = FpgaConfig::with_p(1.0);
-    cfg.nodes = 2;
+    cfg.nodes = 5;
     assert_eq!(FpgaMpdcc::new(&p, cfg).unwrap_err(), fpga::FpgaError::Nodes);
     assert_eq!(
         FpgaMpdcc::new(&p, FpgaConfig::with_p(f64::NAN)).unwrap_err(),
@@ -540,11 +529,17 @@ fn sweep_long_windows() {
             for &pc in &pcs {
                 let mut q = p;
                 q.controller.extrapolation_steps = l;
-                let fc = if std::env::var("FPGA_SWEEP_CFG").as_deref() == Ok("paper") {
+                let mut fc = if std::env::var("FPGA_SWEEP_CFG").as_deref() == Ok("paper") {
                     FpgaConfig::paper(pc)
                 } else {
                     FpgaConfig::with_p(pc)
                 };
+                if let Some(nn) = std::env::var("FPGA_SWEEP_NODES")
+                    .ok()
+                    .and_then(|v| v.parse().ok())
+                {
+                    fc.nodes = nn;
+                }
                 let mut f = FpgaMpdcc::new(&q, fc).unwrap();
                 let mut r = Reference::new(&q).unwrap();
                 let sh = closed_loop::run(&q, &cfg, &mut r, Some(&mut f), &mut |_| {}).unwrap();

@@ -257,7 +257,7 @@ pub struct ControllerParams {
     pub horizon_max_steps: u32,
     /// FPGA extrapolation point `L`, steps (a power of two, <= horizon).
     /// Used by the FPGA model only; here so that one file configures both.
-    /// 16: with the FPGA's three interpolation nodes (L, 2L, 4L) this gave
+    /// 8: with the FPGA's four interpolation nodes (L, 2L, 4L, 8L) this gave
     /// the smallest mismatch against the reference (docs/mpdcc-fpga.md).
     pub extrapolation_steps: u32,
 }
@@ -271,7 +271,7 @@ impl Default for ControllerParams {
             v_ph_bound_pu: 0.05,
             lambda_n: 20.0,
             horizon_max_steps: 128,
-            extrapolation_steps: 16,
+            extrapolation_steps: 8,
         }
     }
 }
