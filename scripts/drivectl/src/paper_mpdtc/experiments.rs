@@ -38,6 +38,7 @@ fn tuning_override(mut p: MpdtcParams) -> MpdtcParams {
     let Ok(v) = std::env::var("MPDTC_TUNE") else {
         return p;
     };
+    eprintln!("warning: MPDTC_TUNE={v} overrides the documented tuning");
     for kv in v.split(',') {
         let Some((k, x)) = kv.split_once('=') else {
             continue;
