@@ -76,7 +76,9 @@ mod tests {
 
     #[test]
     fn every_standard_rate_is_within_2_percent() {
-        for baud in [9600, 19_200, 38_400, 57_600, 115_200, 230_400, 460_800, 921_600] {
+        for baud in [
+            9600, 19_200, 38_400, 57_600, 115_200, 230_400, 460_800, 921_600,
+        ] {
             let d = uart_divisors(50_000_000, baud).unwrap();
             let err = d.baud(50_000_000).abs_diff(baud) as f64 / baud as f64;
             assert!(err < 0.02, "{baud}: {err}");

@@ -190,7 +190,11 @@ fn write_spec<W: Write>(out: &mut W, s: &Spec) -> fmt::Result {
 }
 
 /// Writes the reply of `cmd`, ending with `OK` or `ERR`.
-pub fn execute<W: Write>(cmd: Command<'_>, ctx: &Context, out: &mut W) -> Result<Action, fmt::Error> {
+pub fn execute<W: Write>(
+    cmd: Command<'_>,
+    ctx: &Context,
+    out: &mut W,
+) -> Result<Action, fmt::Error> {
     match cmd {
         Command::Help(None) => {
             out.write_str("commands (arguments in [], units in brackets):\r\n")?;
@@ -348,10 +352,22 @@ mod tests {
 
     #[test]
     fn arguments_are_checked() {
-        assert_eq!(reply("version x"), "ERR bad-args version: takes no arguments\r\n");
-        assert_eq!(reply("status x y"), "ERR bad-args status: takes no arguments\r\n");
-        assert_eq!(reply("debug"), "ERR bad-args debug: expected `debug panic`\r\n");
-        assert_eq!(reply("help a b"), "ERR bad-args help: takes at most one argument\r\n");
+        assert_eq!(
+            reply("version x"),
+            "ERR bad-args version: takes no arguments\r\n"
+        );
+        assert_eq!(
+            reply("status x y"),
+            "ERR bad-args status: takes no arguments\r\n"
+        );
+        assert_eq!(
+            reply("debug"),
+            "ERR bad-args debug: expected `debug panic`\r\n"
+        );
+        assert_eq!(
+            reply("help a b"),
+            "ERR bad-args help: takes at most one argument\r\n"
+        );
         assert_eq!(
             reply("status 1 2 3 4 5 6"),
             "ERR bad-args status: too many arguments\r\n"

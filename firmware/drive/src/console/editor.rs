@@ -213,7 +213,10 @@ mod tests {
         let mut input = vec![b'x'; LINE_MAX + 10];
         input.extend_from_slice(b"\r\nversion\r\n");
         let (lines, echo) = run(&input);
-        assert_eq!(lines, [Err(LineError::TooLong), Ok(String::from("version"))]);
+        assert_eq!(
+            lines,
+            [Err(LineError::TooLong), Ok(String::from("version"))]
+        );
         // Only what fitted was echoed.
         assert_eq!(echo.len(), LINE_MAX + 2 + "version".len() + 2);
     }
@@ -249,7 +252,10 @@ mod tests {
     #[test]
     fn stray_escape_does_not_eat_the_line_end() {
         let (lines, _) = run(b"help\x1b\rstatus\x1b[\r");
-        assert_eq!(lines, [Ok(String::from("help")), Ok(String::from("status"))]);
+        assert_eq!(
+            lines,
+            [Ok(String::from("help")), Ok(String::from("status"))]
+        );
     }
 
     #[test]
