@@ -367,3 +367,36 @@ fn fixed_in_the_loop_tracks_like_the_reference() {
         "{r:?}"
     );
 }
+
+/// Dead time (the paper's motivation for the observer, Section 2.3): with
+/// 1 us and 2 us dead time in the plant, unmodelled by the controller, the
+/// steady-state torque error stays below 1 % of 0.4 N m.
+#[test]
+fn dead_time_is_compensated() {
+    for dt in [1e-6, 2e-6] {
+        let m = MotorParams::default();
+        let mut plant = Plant::new(&m, dt, MechanicalMode::ConstantSpeed, 1000.0).unwrap();
+        let mut c = MpdtcRef::new(cfg(MpdtcParams::default()));
+        let d = DriveParams {
+            dead_time_s: dt,
+            ..Default::default()
+        };
+        let (mut s, mut n) = (0.0, 0);
+        sim::run(
+            &mut plant,
+            &mut c,
+            &d,
+            320,
+            |_| 0.4,
+            |p| {
+                if p.t_s >= 4e-3 {
+                    s += p.torque_nm;
+                    n += 1;
+                }
+            },
+        )
+        .unwrap();
+        let t = s / n as f64;
+        assert!((t - 0.4).abs() < 0.004, "dead time {dt}: {t}");
+    }
+}
