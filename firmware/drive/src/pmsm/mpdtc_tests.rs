@@ -400,3 +400,14 @@ fn dead_time_is_compensated() {
         assert!((t - 0.4).abs() < 0.004, "dead time {dt}: {t}");
     }
 }
+
+/// The default measurement age is the one of the paper's chain (mean of the
+/// last 4 of 4 samples per period: the mean instant is 1.5 ADC periods old).
+#[test]
+fn default_measurement_age_matches_the_drive() {
+    let d = DriveParams::default();
+    let m = super::params::samples_per_period(d.control_period_s, d.adc_sample_rate_hz).unwrap();
+    let age = super::mpdtc_ctrl::measurement_age_periods(d.adc_average_n, m as u32);
+    assert_eq!(age, 0.375);
+    assert_eq!(MpdtcParams::default().meas_age_periods, age);
+}
