@@ -308,6 +308,19 @@ mod tests {
         }
     }
 
+    /// The reduced 64-candidate set (an experiment) keeps the invariants too.
+    #[test]
+    fn reduced_candidate_reference_invariants() {
+        let p = DriveParams::default();
+        let mut c = Reference::with_reduced_candidates(&p).unwrap();
+        let cfg = LoopConfig {
+            warmup_periods: 2,
+            measure_periods: 10,
+        };
+        let r = run(&p, &cfg, &mut c, None, &mut |_| {}).unwrap();
+        check(&p, &r, 0.99);
+    }
+
     /// The shadow controller sees exactly the driving controller's states:
     /// a second reference as shadow never disagrees.
     #[test]

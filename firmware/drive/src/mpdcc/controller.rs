@@ -200,6 +200,67 @@ pub fn candidates(s_prev: [u8; 3]) -> heapless::Vec<[u8; 3], MAX_CANDIDATES> {
     v
 }
 
+/// Candidates of the reduced set (at most 64).
+pub const MAX_REDUCED_CANDIDATES: usize = 64;
+
+/// Per-phase options of the reduced set: stay, the redundant partner at the
+/// same level, one position one level up and one one level down. Where the
+/// new level has two positions, the one with fewer device turn-ons is
+/// taken; on a tie, the one whose phase-capacitor current `c(s) i` moves
+/// `v_ph` towards `v_ph_ref`; then the lower index.
+pub fn reduced_phase_options(s_prev: u8, i: f64, v_ph: f64, v_ph_ref: f64) -> heapless::Vec<u8, 4> {
+    let s_prev = s_prev & 7;
+    let lvl = anpc::TABLE[s_prev as usize].level;
+    let mut v = heapless::Vec::new();
+    let _ = v.push(s_prev);
+    if let Some(p) = (0..8u8).find(|&t| t != s_prev && anpc::TABLE[t as usize].level == lvl) {
+        let _ = v.push(p);
+    }
+    let want = if v_ph_ref >= v_ph { 1.0 } else { -1.0 };
+    for target in [lvl + 1, lvl - 1] {
+        let best = (0..8u8)
+            .filter(|&t| anpc::TABLE[t as usize].level == target)
+            .min_by(|&a, &b| {
+                let ka = anpc::phase_transitions(s_prev, a);
+                let kb = anpc::phase_transitions(s_prev, b);
+                // Helps = the capacitor current moves v_ph the wanted way (1) or not (0).
+                let ha = u8::from(anpc::TABLE[a as usize].ph_current as f64 * i * want > 0.0);
+                let hb = u8::from(anpc::TABLE[b as usize].ph_current as f64 * i * want > 0.0);
+                (ka, core::cmp::Reverse(ha), a).cmp(&(kb, core::cmp::Reverse(hb), b))
+            });
+        if let Some(t) = best {
+            let _ = v.push(t);
+        }
+    }
+    v.sort_unstable();
+    v
+}
+
+/// A reduced candidate set of at most 4 positions per phase, 64 in all (see
+/// [`reduced_phase_options`]), in ascending code order. Paper 001's Table II
+/// (`47 + 2176/n`, 2176 = 64 x 34) suggests a set of this size, built
+/// "taking into account ... the stator currents" (Sec. V); the text does
+/// not define it, so this is our guess, used only for an experiment with
+/// the reference (the default and the FPGA model use [`candidates`]).
+pub fn candidates_reduced(
+    s_prev: [u8; 3],
+    i_abc: [f64; 3],
+    v_ph: [f64; 3],
+    v_ph_ref: f64,
+) -> heapless::Vec<[u8; 3], MAX_REDUCED_CANDIDATES> {
+    let o: [heapless::Vec<u8, 4>; 3] =
+        core::array::from_fn(|x| reduced_phase_options(s_prev[x], i_abc[x], v_ph[x], v_ph_ref));
+    let mut v = heapless::Vec::new();
+    for &a in o[0].iter() {
+        for &b in o[1].iter() {
+            for &c in o[2].iter() {
+                let _ = v.push([a, b, c]);
+            }
+        }
+    }
+    v
+}
+
 /// Rotation of the current reference by angle `theta`: `R(theta) i`.
 #[inline]
 pub fn rotate(i: [f64; 2], cos_t: f64, sin_t: f64) -> [f64; 2] {
@@ -227,6 +288,36 @@ mod tests {
         }
         assert_eq!(candidates([3, 4, 3]).len(), 216);
         assert_eq!(candidates([0, 7, 0]).len(), 27);
+    }
+
+    #[test]
+    fn reduced_set_by_hand() {
+        // From s = 4 (level 0, d1 = 1): partner 3; up: 5 and 6 both cost one
+        // turn-on, i > 0 and v_ph below its reference -> the charging one (6);
+        // down: 1 and 2 both cost 3 -> charging one (2).
+        assert_eq!(
+            reduced_phase_options(4, 1.0, 0.4, 0.48).as_slice(),
+            &[2, 3, 4, 6]
+        );
+        // Same with v_ph above its reference -> the discharging ones (1, 5).
+        assert_eq!(
+            reduced_phase_options(4, 1.0, 0.5, 0.48).as_slice(),
+            &[1, 3, 4, 5]
+        );
+        // From 7 (level +2): stay and one level down, no partner.
+        assert_eq!(
+            reduced_phase_options(7, -1.0, 0.5, 0.48).as_slice(),
+            &[6, 7]
+        );
+        // From 5 (level +1): partner 6, up 7, down 4 (one turn-on) not 3 (three).
+        assert_eq!(
+            reduced_phase_options(5, 1.0, 0.5, 0.48).as_slice(),
+            &[4, 5, 6, 7]
+        );
+        let all = candidates_reduced([4, 3, 5], [1.0, -0.5, -0.5], [0.48; 3], 0.4825);
+        assert_eq!(all.len(), 64);
+        assert!(all.iter().all(|&s| anpc::admissible([4, 3, 5], s)));
+        assert!(all.windows(2).all(|w| w[0] < w[1]));
     }
 
     #[test]

@@ -20,7 +20,8 @@
 
 use super::anpc;
 use super::controller::{
-    candidates, rotate, Bounds, CtrlState, Decision, DecisionKind, MpdccController, StateError,
+    candidates, candidates_reduced, rotate, Bounds, CtrlState, Decision, DecisionKind,
+    MpdccController, StateError,
 };
 use super::machine::{self, clarke, inv_clarke, Discrete};
 use super::params::{DriveParams, ParamError};
@@ -48,6 +49,8 @@ pub struct Reference {
     disc_omega_r: f64,
     /// Phase current references `i*_abc(k+l)`, l = 0..=N_bar.
     iref: [[f64; 3]; MAX_H + 1],
+    /// Use [`candidates_reduced`] (an experiment) instead of all admissible positions.
+    reduced: bool,
 }
 
 impl Reference {
@@ -64,7 +67,16 @@ impl Reference {
             disc,
             disc_omega_r: w,
             iref: [[0.0; 3]; MAX_H + 1],
+            reduced: false,
         })
+    }
+
+    /// The same controller enumerating the reduced 64-candidate set of
+    /// [`candidates_reduced`] (the experiment on paper 001's Table II count).
+    pub fn with_reduced_candidates(p: &DriveParams) -> Result<Self, ParamError> {
+        let mut r = Self::new(p)?;
+        r.reduced = true;
+        Ok(r)
     }
 
     /// The bounds in use.
@@ -142,7 +154,11 @@ impl Reference {
 
 impl MpdccController for Reference {
     fn name(&self) -> &'static str {
-        "reference"
+        if self.reduced {
+            "reference (64 candidates)"
+        } else {
+            "reference"
+        }
     }
 
     fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
@@ -158,7 +174,15 @@ impl MpdccController for Reference {
                 candidates: 0,
             });
         }
-        let cands = candidates(st.s_prev);
+        let (full, red);
+        let cands: &[[u8; 3]] = if self.reduced {
+            let i_abc = inv_clarke([st.x_m[0], st.x_m[1]]);
+            red = candidates_reduced(st.s_prev, i_abc, st.v_ph_pu, self.bounds.v_ph_ref);
+            &red
+        } else {
+            full = candidates(st.s_prev);
+            &full
+        };
         let h = self.p.controller.horizon_max_steps;
         let lambda = self.p.controller.lambda_n;
         let mut best: Option<([u8; 3], f64, u32)> = None;
