@@ -45,6 +45,36 @@ module pl_regs #(
     output wire [  31:0] wdg_timeout_o,
     output wire          heartbeat_o,
     output wire [   2:0] fault_clr_o,
+    // MPDTC block: control, start strobe, inputs and parameters (raw
+    // register bits, two's complement where the table says so)
+    output wire          mpdtc_manual_o,
+    output wire          mpdtc_clr_o,
+    output wire          mpdtc_start_o,
+    output wire [  24:0] mp_id_o,
+    output wire [  24:0] mp_iq_o,
+    output wire [  17:0] mp_cos0_o,
+    output wire [  17:0] mp_sin0_o,
+    output wire [  17:0] mp_cos1_o,
+    output wire [  17:0] mp_sin1_o,
+    output wire [  17:0] mp_cos2_o,
+    output wire [  17:0] mp_sin2_o,
+    output wire [  17:0] mp_w_ts_o,
+    output wire [  17:0] mp_t_ref_o,
+    output wire [  17:0] mp_a_o,
+    output wire [  17:0] mp_lambda_o,
+    output wire [  24:0] mp_u0_o,
+    output wire [  24:0] mp_u0_half_o,
+    output wire [  24:0] mp_u0_h_o,
+    output wire [  24:0] mp_psi_l_o,
+    output wire [  24:0] mp_kinv_t_o,
+    output wire [  24:0] mp_tol_o,
+    output wire [  17:0] mp_k_int_o,
+    output wire [  24:0] mp_int_lim_o,
+    output wire          mp_int_cond_o,
+    output wire [  17:0] mp_kp_o_o,
+    output wire [  17:0] mp_ki_o_o,
+    output wire [  24:0] mp_eta_lim_o,
+    output wire [  71:0] mp_w2_o,
     // status inputs
     input  wire          gates_active_i,
     input  wire [   2:0] gate_hi_i,
@@ -61,7 +91,11 @@ module pl_regs #(
     input  wire [  15:0] enc_index_i,
     input  wire [   2:0] fault_status_i,
     input  wire [   2:0] fault_raw_i,
-    input  wire          fault_any_i
+    input  wire          fault_any_i,
+    input  wire          mpdtc_busy_i,
+    input  wire [   2:0] mpdtc_s_next_i,
+    input  wire [  15:0] mpdtc_done_cnt_i,
+    input  wire [  24:0] mpdtc_iq_ref_i
 );
 `include "regmap.vh"
 
@@ -100,6 +134,10 @@ module pl_regs #(
     reg [23:0] enc_window_q;
     reg [10:0] oc_limit_q;
     reg [31:0] wdg_timeout_q;
+    reg [ 1:0] mpdtc_ctrl_q;
+    reg [31:0] mpdtc_start_q;
+    // Plain RW words 4..33 of the MPDTC page (inputs, parameters).
+    reg [31:0] mp_q[4:33];
 
     // Write decode: one-hot select of the addressed register.
     wire [AW-1:0] wa = wr_addr_i;
@@ -121,10 +159,16 @@ module pl_regs #(
     wire w_fault_status = wr_i && wa == RM_FAULT_STATUS_ADDR;
     wire w_oc_limit = wr_i && wa == RM_OC_LIMIT_ADDR;
     wire w_wdg_timeout = wr_i && wa == RM_WDG_TIMEOUT_ADDR;
+    wire w_mpdtc_ctrl = wr_i && wa == RM_MPDTC_CTRL_ADDR;
+    wire w_mpdtc_start = wr_i && wa == RM_MPDTC_START_ADDR;
+    wire [31:0] mp_wmask = rm_mpdtc_plain_mask(wa[11:2]);
+    wire w_mp = wr_i && wa[14:12] == RM_BLK_MPDTC && wa[1:0] == 2'b00 && mp_wmask != 32'd0;
+    wire [31:0] ra_mask = rm_mpdtc_plain_mask(rd_addr_i[11:2]);
+    wire r_mp = rd_addr_i[14:12] == RM_BLK_MPDTC && rd_addr_i[1:0] == 2'b00 && ra_mask != 32'd0;
     wire w_any_ok = w_ctrl | w_err | w_heartbeat | w_scratch | w_gate_ctrl | w_dead_time
         | w_pwm_period | w_duty_a | w_duty_b | w_duty_c | w_sw_state | w_adc_ctrl
         | w_adc_period | w_enc_cpr | w_enc_window | w_fault_status | w_oc_limit
-        | w_wdg_timeout;
+        | w_wdg_timeout | w_mpdtc_ctrl | w_mpdtc_start | w_mp;
 
     // Merged write values (zero-extended current value underneath).
     wire [31:0] m_ctrl = merge({30'd0, ctrl_q}, wr_data_i, wr_strb_i);
@@ -153,6 +197,7 @@ module pl_regs #(
                                      RM_ENC_WINDOW_MIN, RM_ENC_WINDOW_MAX);
     wire [31:0] n_oc_limit = clamp(merge({21'd0, oc_limit_q}, wr_data_i, wr_strb_i),
                                    RM_OC_LIMIT_MIN, RM_OC_LIMIT_MAX);
+    wire [31:0] n_mpdtc_ctrl = merge({30'd0, mpdtc_ctrl_q}, wr_data_i, wr_strb_i);
     wire [31:0] n_wdg_timeout = clamp(merge(wdg_timeout_q, wr_data_i, wr_strb_i),
                                       RM_WDG_TIMEOUT_MIN, RM_WDG_TIMEOUT_MAX);
 
@@ -179,6 +224,8 @@ module pl_regs #(
             enc_window_q  <= RM_ENC_WINDOW_RESET[23:0];
             oc_limit_q    <= RM_OC_LIMIT_RESET[10:0];
             wdg_timeout_q <= RM_WDG_TIMEOUT_RESET;
+            mpdtc_ctrl_q  <= RM_MPDTC_CTRL_RESET[1:0];
+            mpdtc_start_q <= RM_MPDTC_START_RESET;
         end else begin
             if (w_ctrl && !ctrl_bad) ctrl_q <= m_ctrl[1:0];
             // ERR: set wins over a simultaneous clear.
@@ -200,6 +247,18 @@ module pl_regs #(
             if (w_enc_window) enc_window_q <= n_enc_window[23:0];
             if (w_oc_limit) oc_limit_q <= n_oc_limit[10:0];
             if (w_wdg_timeout) wdg_timeout_q <= n_wdg_timeout;
+            if (w_mpdtc_ctrl) mpdtc_ctrl_q <= n_mpdtc_ctrl[1:0];
+            if (w_mpdtc_start) mpdtc_start_q <= merge(mpdtc_start_q, wr_data_i, wr_strb_i);
+        end
+    end
+
+    // Plain MPDTC words: reset 0 (table), byte strobes, masked to the width.
+    integer wi;
+    always @(posedge clk_i) begin
+        for (wi = 4; wi <= 33; wi = wi + 1) begin
+            if (rst_i) mp_q[wi] <= 32'd0;
+            else if (w_mp && wa[7:2] == wi[5:0])
+                mp_q[wi] <= merge(mp_q[wi], wr_data_i, wr_strb_i) & mp_wmask;
         end
     end
 
@@ -239,7 +298,16 @@ module pl_regs #(
             RM_FAULT_RAW_ADDR: rd_data_o = {29'd0, fault_raw_i};
             RM_OC_LIMIT_ADDR: rd_data_o = {21'd0, oc_limit_q};
             RM_WDG_TIMEOUT_ADDR: rd_data_o = wdg_timeout_q;
-            default: rd_err_o = rd_i;
+            RM_MPDTC_CTRL_ADDR: rd_data_o = {30'd0, mpdtc_ctrl_q};
+            RM_MPDTC_START_ADDR: rd_data_o = mpdtc_start_q;
+            RM_MPDTC_STATUS_ADDR:
+            rd_data_o = {mpdtc_done_cnt_i, 12'd0, mpdtc_s_next_i, mpdtc_busy_i};
+            RM_MPDTC_LATENCY_ADDR: rd_data_o = RM_MPDTC_LATENCY_RESET;
+            RM_MPDTC_IQ_REF_ADDR: rd_data_o = {7'd0, mpdtc_iq_ref_i};
+            default: begin
+                if (r_mp) rd_data_o = mp_q[rd_addr_i[7:2]] & ra_mask;
+                else rd_err_o = rd_i;
+            end
         endcase
     end
 
@@ -260,6 +328,39 @@ module pl_regs #(
     assign wdg_timeout_o = wdg_timeout_q;
     assign heartbeat_o   = w_heartbeat;
     assign fault_clr_o   = w_fault_status ? m_err[2:0] : 3'b000;
+    assign mpdtc_manual_o = mpdtc_ctrl_q[0];
+    assign mpdtc_clr_o    = mpdtc_ctrl_q[1];
+    assign mpdtc_start_o  = w_mpdtc_start;
+    assign mp_id_o       = mp_q[RM_MPDTC_IN_ID_ADDR[7:2]][24:0];
+    assign mp_iq_o       = mp_q[RM_MPDTC_IN_IQ_ADDR[7:2]][24:0];
+    assign mp_cos0_o     = mp_q[RM_MPDTC_IN_COS0_ADDR[7:2]][17:0];
+    assign mp_sin0_o     = mp_q[RM_MPDTC_IN_SIN0_ADDR[7:2]][17:0];
+    assign mp_cos1_o     = mp_q[RM_MPDTC_IN_COS1_ADDR[7:2]][17:0];
+    assign mp_sin1_o     = mp_q[RM_MPDTC_IN_SIN1_ADDR[7:2]][17:0];
+    assign mp_cos2_o     = mp_q[RM_MPDTC_IN_COS2_ADDR[7:2]][17:0];
+    assign mp_sin2_o     = mp_q[RM_MPDTC_IN_SIN2_ADDR[7:2]][17:0];
+    assign mp_w_ts_o     = mp_q[RM_MPDTC_IN_W_TS_ADDR[7:2]][17:0];
+    assign mp_t_ref_o    = mp_q[RM_MPDTC_IN_T_REF_ADDR[7:2]][17:0];
+    assign mp_a_o        = mp_q[RM_MPDTC_P_A_ADDR[7:2]][17:0];
+    assign mp_lambda_o   = mp_q[RM_MPDTC_P_LAMBDA_ADDR[7:2]][17:0];
+    assign mp_u0_o       = mp_q[RM_MPDTC_P_U0_ADDR[7:2]][24:0];
+    assign mp_u0_half_o  = mp_q[RM_MPDTC_P_U0_HALF_ADDR[7:2]][24:0];
+    assign mp_u0_h_o     = mp_q[RM_MPDTC_P_U0_H_ADDR[7:2]][24:0];
+    assign mp_psi_l_o    = mp_q[RM_MPDTC_P_PSI_L_ADDR[7:2]][24:0];
+    assign mp_kinv_t_o   = mp_q[RM_MPDTC_P_KINV_T_ADDR[7:2]][24:0];
+    assign mp_tol_o      = mp_q[RM_MPDTC_P_TOL_ADDR[7:2]][24:0];
+    assign mp_k_int_o    = mp_q[RM_MPDTC_P_K_INT_ADDR[7:2]][17:0];
+    assign mp_int_lim_o  = mp_q[RM_MPDTC_P_INT_LIM_ADDR[7:2]][24:0];
+    assign mp_int_cond_o = mp_q[RM_MPDTC_P_INT_COND_ADDR[7:2]][0];
+    assign mp_kp_o_o     = mp_q[RM_MPDTC_P_KP_O_ADDR[7:2]][17:0];
+    assign mp_ki_o_o     = mp_q[RM_MPDTC_P_KI_O_ADDR[7:2]][17:0];
+    assign mp_eta_lim_o  = mp_q[RM_MPDTC_P_ETA_LIM_ADDR[7:2]][24:0];
+    assign mp_w2_o = {
+        mp_q[RM_MPDTC_P_W2_3_ADDR[7:2]][17:0],
+        mp_q[RM_MPDTC_P_W2_2_ADDR[7:2]][17:0],
+        mp_q[RM_MPDTC_P_W2_1_ADDR[7:2]][17:0],
+        mp_q[RM_MPDTC_P_W2_0_ADDR[7:2]][17:0]
+    };
 endmodule
 
 `default_nettype wire

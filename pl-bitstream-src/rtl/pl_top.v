@@ -6,7 +6,9 @@
 //   encoder_qei   <- sync2(A, B, Z)
 //   fault_block   <- raw samples, sync2(external fault), heartbeat, watchdog
 //   pwm_center    -> switching state in mode FOC-PWM
-//   PWM.SW_STATE  -> switching state in mode MPDTC (stand-in for mpdtc_core)
+//   mpdtc_core    -> switching state in mode MPDTC (inputs/parameters from
+//                    the MPDTC page, started by MPDTC_START); or PWM.SW_STATE
+//                    when MPDTC_CTRL.MANUAL = 1 (reset)
 //   gate_driver   <- selected state, DEAD_TIME, enable = GATE_EN && mode != off,
 //                    fault = fault_block trip (all gates off at the next edge)
 // Reset: s_axi_aresetn_i (active low, synchronous, from the PS reset block).
@@ -116,6 +118,19 @@ module pl_top (
     wire [31:0] wdg_timeout;
     wire        heartbeat;
     wire [ 2:0] fault_clr;
+    wire        mp_manual, mp_clr, mp_start;
+    wire [24:0] mp_id, mp_iq, mp_u0, mp_u0_half, mp_u0_h, mp_psi_l, mp_kinv_t, mp_tol;
+    wire [24:0] mp_int_lim, mp_eta_lim;
+    wire [17:0] mp_cos0, mp_sin0, mp_cos1, mp_sin1, mp_cos2, mp_sin2, mp_w_ts, mp_t_ref;
+    wire [17:0] mp_a, mp_lambda, mp_k_int, mp_kp_o, mp_ki_o;
+    wire        mp_int_cond;
+    wire [71:0] mp_w2;
+    wire        core_ready, core_valid;
+    wire [ 2:0] core_s_next;
+    wire [24:0] core_iq_ref;
+    reg  [ 2:0] core_s_q;
+    reg  [15:0] core_done_q;
+    reg  [24:0] core_iq_ref_q;
 
     wire [ 2:0] pwm_s;
     wire [15:0] pwm_count;
@@ -140,7 +155,8 @@ module pl_top (
     wire        fault_ext_n;
 
     // Switching-state source by mode (decoded in pl_regs from CTRL.MODE).
-    wire [ 2:0] state_sel = sel_pwm ? pwm_s : sel_state ? sw_state : 3'b000;
+    wire [ 2:0] mpdtc_state = mp_manual ? sw_state : core_s_q;
+    wire [ 2:0] state_sel = sel_pwm ? pwm_s : sel_state ? mpdtc_state : 3'b000;
     wire drive_en = gate_en && (sel_pwm || sel_state);
     wire fault_any = |fault_status;
 
@@ -175,6 +191,34 @@ module pl_top (
         .wdg_timeout_o (wdg_timeout),
         .heartbeat_o   (heartbeat),
         .fault_clr_o   (fault_clr),
+        .mpdtc_manual_o(mp_manual),
+        .mpdtc_clr_o   (mp_clr),
+        .mpdtc_start_o (mp_start),
+        .mp_id_o       (mp_id),
+        .mp_iq_o       (mp_iq),
+        .mp_cos0_o     (mp_cos0),
+        .mp_sin0_o     (mp_sin0),
+        .mp_cos1_o     (mp_cos1),
+        .mp_sin1_o     (mp_sin1),
+        .mp_cos2_o     (mp_cos2),
+        .mp_sin2_o     (mp_sin2),
+        .mp_w_ts_o     (mp_w_ts),
+        .mp_t_ref_o    (mp_t_ref),
+        .mp_a_o        (mp_a),
+        .mp_lambda_o   (mp_lambda),
+        .mp_u0_o       (mp_u0),
+        .mp_u0_half_o  (mp_u0_half),
+        .mp_u0_h_o     (mp_u0_h),
+        .mp_psi_l_o    (mp_psi_l),
+        .mp_kinv_t_o   (mp_kinv_t),
+        .mp_tol_o      (mp_tol),
+        .mp_k_int_o    (mp_k_int),
+        .mp_int_lim_o  (mp_int_lim),
+        .mp_int_cond_o (mp_int_cond),
+        .mp_kp_o_o     (mp_kp_o),
+        .mp_ki_o_o     (mp_ki_o),
+        .mp_eta_lim_o  (mp_eta_lim),
+        .mp_w2_o       (mp_w2),
         .gates_active_i(drive_en && !trip),
         .gate_hi_i     (gate_hi_o),
         .gate_lo_i     (gate_lo_o),
@@ -190,8 +234,93 @@ module pl_top (
         .enc_index_i   (enc_index),
         .fault_status_i(fault_status),
         .fault_raw_i   (fault_raw),
-        .fault_any_i   (fault_any)
+        .fault_any_i   (fault_any),
+        .mpdtc_busy_i  (!core_ready),
+        .mpdtc_s_next_i(core_s_q),
+        .mpdtc_done_cnt_i(core_done_q),
+        .mpdtc_iq_ref_i(core_iq_ref_q)
     );
+
+    // The MPDTC core: one decision per MPDTC_START write (ignored while busy
+    // or while MPDTC_CTRL.STATE_CLR holds the state at zero).
+    mpdtc_core u_mpdtc (
+        .clk_i           (clk_i),
+        .rst_i           (rst),
+        .in_valid_i      (mp_start && !mp_clr),
+        .in_ready_o      (core_ready),
+        .i_d_i           (mp_id),
+        .i_q_i           (mp_iq),
+        .cos0_i          (mp_cos0),
+        .sin0_i          (mp_sin0),
+        .cos1_i          (mp_cos1),
+        .sin1_i          (mp_sin1),
+        .cos2_i          (mp_cos2),
+        .sin2_i          (mp_sin2),
+        .w_ts_i          (mp_w_ts),
+        .t_ref_i         (mp_t_ref),
+        .p_a_i           (mp_a),
+        .p_lambda_i      (mp_lambda),
+        .p_u0_i          (mp_u0),
+        .p_u0_half_i     (mp_u0_half),
+        .p_u0_h_i        (mp_u0_h),
+        .p_psi_l_i       (mp_psi_l),
+        .p_kinv_t_i      (mp_kinv_t),
+        .p_tol_i         (mp_tol),
+        .p_k_int_i       (mp_k_int),
+        .p_int_lim_i     (mp_int_lim),
+        .p_int_cond_i    (mp_int_cond),
+        .p_kp_o_i        (mp_kp_o),
+        .p_ki_o_i        (mp_ki_o),
+        .p_eta_lim_i     (mp_eta_lim),
+        .p_w2_i          (mp_w2),
+        .st_load_i       (mp_clr),
+        .st_s_applied_i  (3'd0),
+        .st_s_prev_i     (3'd0),
+        .st_eta_d_i      (25'sd0),
+        .st_eta_q_i      (25'sd0),
+        .st_x_i          (25'sd0),
+        .st_band_i       (1'b0),
+        .st_iq_ref_prev_i(25'sd0),
+        .st_i_hat_d_i    (25'sd0),
+        .st_i_hat_q_i    (25'sd0),
+        .st_nu_d_i       (25'sd0),
+        .st_nu_q_i       (25'sd0),
+        .out_valid_o     (core_valid),
+        .s_next_o        (core_s_next),
+        .iq_ref_o        (core_iq_ref),
+        .eta_d_o         (),
+        .eta_q_o         (),
+        .i1_d_o          (),
+        .i1_q_o          (),
+        .i2_d_o          (),
+        .i2_q_o          (),
+        .err_o           (),
+        .cost2_o         (),
+        .st_s_applied_o  (),
+        .st_s_prev_o     (),
+        .st_eta_d_o      (),
+        .st_eta_q_o      (),
+        .st_x_o          (),
+        .st_band_o       (),
+        .st_iq_ref_prev_o(),
+        .st_i_hat_d_o    (),
+        .st_i_hat_q_o    (),
+        .st_nu_d_o       (),
+        .st_nu_q_o       ()
+    );
+
+    // S[k+1] is applied from the output strobe until the next decision.
+    always @(posedge clk_i) begin
+        if (rst || mp_clr) begin
+            core_s_q      <= 3'd0;
+            core_iq_ref_q <= 25'd0;
+        end else if (core_valid) begin
+            core_s_q      <= core_s_next;
+            core_iq_ref_q <= core_iq_ref;
+        end
+        if (rst) core_done_q <= 16'd0;
+        else if (core_valid) core_done_q <= core_done_q + 16'd1;
+    end
 
     sync2 #(.RESET_VAL(1'b0)) u_sync_a (.clk_i(clk_i), .rst_i(rst), .d_i(enc_a_i), .q_o(enc_a));
     sync2 #(.RESET_VAL(1'b0)) u_sync_b (.clk_i(clk_i), .rst_i(rst), .d_i(enc_b_i), .q_o(enc_b));

@@ -22,6 +22,7 @@ const TOPS: &[(&str, &[&str], &str)] = &[
         "pl_top",
         &[
             "pl_top.v",
+            "mpdtc_core.v",
             "axil_slave.v",
             "pl_regs.v",
             "regmap.vh",

@@ -200,7 +200,7 @@ pub const VERSION: Register = Register {
     offset: 0x004,
     access: Access::Ro,
     width: 32,
-    reset: 0x0001_0000,
+    reset: 0x0001_0001,
     format: "major.minor, 16 bits each",
     invalid: Invalid::AllValid,
     fields: &[
@@ -231,8 +231,8 @@ pub const CTRL: Register = Register {
         "MODE",
         0,
         2,
-        "0 off, 1 FOC-PWM (PWM comparators), 2 MPDTC (switching state; until \
-         mpdtc_core exists, PWM.SW_STATE); 3 is rejected",
+        "0 off, 1 FOC-PWM (PWM comparators), 2 MPDTC (mpdtc_core's S[k+1], or \
+         PWM.SW_STATE if MPDTC_CTRL.MANUAL); 3 is rejected",
     )],
     doc: "Selects the source of the switching state.",
 };
@@ -388,7 +388,7 @@ pub const SW_STATE: Register = Register {
     format: "bits SaSbSc (index 4 Sa + 2 Sb + Sc)",
     invalid: Invalid::AllValid,
     fields: &[],
-    doc: "Switching state applied in mode MPDTC (stand-in for the mpdtc_core output).",
+    doc: "Switching state applied in mode MPDTC when MPDTC_CTRL.MANUAL = 1.",
 };
 /// PWM/gates: gate outputs.
 pub const GATE_STATUS: Register = Register {
@@ -623,6 +623,297 @@ pub const WDG_TIMEOUT: Register = Register {
     doc: "Cycles without a HEARTBEAT write before the watchdog trips (reset 100 ms).",
 };
 
+// ---------------------------------------------------------------- block 1
+/// MPDTC: control.
+pub const MPDTC_CTRL: Register = Register {
+    name: "MPDTC_CTRL",
+    offset: 0x000,
+    access: Access::Rw,
+    width: 2,
+    reset: 0b11,
+    format: "bits",
+    invalid: Invalid::AllValid,
+    fields: &[
+        field(
+            "MANUAL",
+            0,
+            1,
+            "1 = in mode MPDTC the gates follow PWM.SW_STATE, 0 = they follow mpdtc_core's S[k+1]",
+        ),
+        field(
+            "STATE_CLR",
+            1,
+            1,
+            "1 = hold the core's state (S[k], S[k-1], observer, integrator) at zero",
+        ),
+    ],
+    doc: "Source of the MPDTC switching state and state reset (reset: manual, cleared).",
+};
+/// MPDTC: start.
+pub const MPDTC_START: Register = Register {
+    name: "MPDTC_START",
+    offset: 0x004,
+    access: Access::Rw,
+    width: 32,
+    reset: 0,
+    format: "any value",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "Every write starts one decision on the MPDTC_IN_* and MPDTC_P_* registers \
+          (ignored while the core is busy or STATE_CLR is set); reads back the last value.",
+};
+/// MPDTC: status.
+pub const MPDTC_STATUS: Register = Register {
+    name: "MPDTC_STATUS",
+    offset: 0x008,
+    access: Access::Ro,
+    width: 32,
+    reset: 0,
+    format: "bits and a counter",
+    invalid: Invalid::AllValid,
+    fields: &[
+        field("BUSY", 0, 1, "a decision is in flight"),
+        field("S_NEXT", 1, 3, "S[k+1] of the last decision (bits SaSbSc)"),
+        field(
+            "DONE_COUNT",
+            16,
+            16,
+            "decisions completed since reset (wraps)",
+        ),
+    ],
+    doc: "Core status; poll DONE_COUNT to see a decision complete.",
+};
+/// Fixed latency of `mpdtc_core`, clock cycles.
+pub const MPDTC_LATENCY_CYCLES: u32 = 20;
+/// MPDTC: latency.
+pub const MPDTC_LATENCY: Register = Register {
+    name: "MPDTC_LATENCY",
+    offset: 0x00C,
+    access: Access::Ro,
+    width: 8,
+    reset: MPDTC_LATENCY_CYCLES,
+    format: "unsigned, PL clock cycles",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "Input strobe to S[k+1], fixed; also the initiation interval.",
+};
+const CUR_FMT: &str = "CUR sQ8.16, two's complement in [24:0], A";
+const COEF_FMT: &str = "COEF sQ1.16, two's complement in [17:0]";
+const fn mp(
+    name: &'static str,
+    offset: u16,
+    width: u8,
+    format: &'static str,
+    doc: &'static str,
+) -> Register {
+    Register {
+        name,
+        offset,
+        access: Access::Rw,
+        width,
+        reset: 0,
+        format,
+        invalid: Invalid::AllValid,
+        fields: &[],
+        doc,
+    }
+}
+/// MPDTC input: measured i_d.
+pub const MPDTC_IN_ID: Register = mp(
+    "MPDTC_IN_ID",
+    0x010,
+    25,
+    CUR_FMT,
+    "Measured (averaged) i_d.",
+);
+/// MPDTC input: measured i_q.
+pub const MPDTC_IN_IQ: Register = mp(
+    "MPDTC_IN_IQ",
+    0x014,
+    25,
+    CUR_FMT,
+    "Measured (averaged) i_q.",
+);
+/// MPDTC input: cos of the angle at the middle of [k-1, k].
+pub const MPDTC_IN_COS0: Register = mp(
+    "MPDTC_IN_COS0",
+    0x018,
+    18,
+    COEF_FMT,
+    "cos, middle of [k-1, k].",
+);
+/// MPDTC input: sin of the angle at the middle of [k-1, k].
+pub const MPDTC_IN_SIN0: Register = mp(
+    "MPDTC_IN_SIN0",
+    0x01C,
+    18,
+    COEF_FMT,
+    "sin, middle of [k-1, k].",
+);
+/// MPDTC input: cos, middle of [k, k+1].
+pub const MPDTC_IN_COS1: Register = mp(
+    "MPDTC_IN_COS1",
+    0x020,
+    18,
+    COEF_FMT,
+    "cos, middle of [k, k+1].",
+);
+/// MPDTC input: sin, middle of [k, k+1].
+pub const MPDTC_IN_SIN1: Register = mp(
+    "MPDTC_IN_SIN1",
+    0x024,
+    18,
+    COEF_FMT,
+    "sin, middle of [k, k+1].",
+);
+/// MPDTC input: cos, middle of [k+1, k+2].
+pub const MPDTC_IN_COS2: Register = mp(
+    "MPDTC_IN_COS2",
+    0x028,
+    18,
+    COEF_FMT,
+    "cos, middle of [k+1, k+2].",
+);
+/// MPDTC input: sin, middle of [k+1, k+2].
+pub const MPDTC_IN_SIN2: Register = mp(
+    "MPDTC_IN_SIN2",
+    0x02C,
+    18,
+    COEF_FMT,
+    "sin, middle of [k+1, k+2].",
+);
+/// MPDTC input: electrical angle step per period.
+pub const MPDTC_IN_W_TS: Register = mp(
+    "MPDTC_IN_W_TS",
+    0x030,
+    18,
+    "COEF sQ1.16, rad per period",
+    "w_e Ts.",
+);
+/// MPDTC input: torque reference.
+pub const MPDTC_IN_T_REF: Register = mp(
+    "MPDTC_IN_T_REF",
+    0x034,
+    18,
+    "TRQ sQ3.14, two's complement in [17:0], N m",
+    "Torque reference T*.",
+);
+/// MPDTC parameter a.
+pub const MPDTC_P_A: Register = mp("MPDTC_P_A", 0x040, 18, COEF_FMT, "a = 1 - R Ts / L.");
+/// MPDTC parameter lambda.
+pub const MPDTC_P_LAMBDA: Register = mp(
+    "MPDTC_P_LAMBDA",
+    0x044,
+    18,
+    COEF_FMT,
+    "Measurement age, periods.",
+);
+/// MPDTC parameter U0.
+pub const MPDTC_P_U0: Register = mp("MPDTC_P_U0", 0x048, 25, CUR_FMT, "U0 = (Ts / L) 2/3 U_dc.");
+/// MPDTC parameter U0/2.
+pub const MPDTC_P_U0_HALF: Register = mp("MPDTC_P_U0_HALF", 0x04C, 25, CUR_FMT, "U0 / 2.");
+/// MPDTC parameter U0 sqrt(3)/2.
+pub const MPDTC_P_U0_H: Register = mp("MPDTC_P_U0_H", 0x050, 25, CUR_FMT, "U0 sqrt(3) / 2.");
+/// MPDTC parameter psi/L.
+pub const MPDTC_P_PSI_L: Register = mp("MPDTC_P_PSI_L", 0x054, 25, CUR_FMT, "psi / L.");
+/// MPDTC parameter 1/k_T.
+pub const MPDTC_P_KINV_T: Register = mp(
+    "MPDTC_P_KINV_T",
+    0x058,
+    25,
+    "KINV sQ8.16, two's complement in [24:0], A/(N m)",
+    "1 / k_T.",
+);
+/// MPDTC parameter band.
+pub const MPDTC_P_TOL: Register = mp(
+    "MPDTC_P_TOL",
+    0x05C,
+    24,
+    "CUR, non-negative (24 bits: negative values cannot be written)",
+    "Band T_tol / k_T.",
+);
+/// MPDTC parameter integrator gain.
+pub const MPDTC_P_K_INT: Register = mp(
+    "MPDTC_P_K_INT",
+    0x060,
+    18,
+    COEF_FMT,
+    "Integrator gain K Ts.",
+);
+/// MPDTC parameter integrator clamp.
+pub const MPDTC_P_INT_LIM: Register = mp(
+    "MPDTC_P_INT_LIM",
+    0x064,
+    24,
+    "CUR, non-negative (24 bits)",
+    "Integrator clamp.",
+);
+/// MPDTC parameter conditional integration.
+pub const MPDTC_P_INT_COND: Register = mp(
+    "MPDTC_P_INT_COND",
+    0x068,
+    1,
+    "bit",
+    "1 = integrate only after a decision with a candidate in the band.",
+);
+/// MPDTC parameter observer b Kp.
+pub const MPDTC_P_KP_O: Register = mp("MPDTC_P_KP_O", 0x06C, 18, COEF_FMT, "Observer b Kp.");
+/// MPDTC parameter observer b Kp Ki Ts.
+pub const MPDTC_P_KI_O: Register = mp("MPDTC_P_KI_O", 0x070, 18, COEF_FMT, "Observer b Kp Ki Ts.");
+/// MPDTC parameter observer clamp.
+pub const MPDTC_P_ETA_LIM: Register = mp(
+    "MPDTC_P_ETA_LIM",
+    0x074,
+    24,
+    "CUR, non-negative (24 bits)",
+    "Observer clamp b eps_max.",
+);
+const WGT_FMT: &str = "WGT sQ3.14, two's complement in [17:0]";
+/// MPDTC weight, 0 transitions.
+pub const MPDTC_P_W2_0: Register = mp(
+    "MPDTC_P_W2_0",
+    0x078,
+    18,
+    WGT_FMT,
+    "Cost weight, 0 transitions.",
+);
+/// MPDTC weight, 1 transition.
+pub const MPDTC_P_W2_1: Register = mp(
+    "MPDTC_P_W2_1",
+    0x07C,
+    18,
+    WGT_FMT,
+    "Cost weight, 1 transition.",
+);
+/// MPDTC weight, 2 transitions.
+pub const MPDTC_P_W2_2: Register = mp(
+    "MPDTC_P_W2_2",
+    0x080,
+    18,
+    WGT_FMT,
+    "Cost weight, 2 transitions.",
+);
+/// MPDTC weight, 3 transitions.
+pub const MPDTC_P_W2_3: Register = mp(
+    "MPDTC_P_W2_3",
+    0x084,
+    18,
+    WGT_FMT,
+    "Cost weight, 3 transitions.",
+);
+/// MPDTC output: modified reference.
+pub const MPDTC_IQ_REF: Register = Register {
+    name: "MPDTC_IQ_REF",
+    offset: 0x090,
+    access: Access::Ro,
+    width: 25,
+    reset: 0,
+    format: CUR_FMT,
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "i_q* of the last decision (telemetry).",
+};
+
 /// Block 0.
 pub const TOP: Block = Block {
     name: "TOP",
@@ -634,8 +925,43 @@ pub const TOP: Block = Block {
 pub const MPDTC: Block = Block {
     name: "MPDTC",
     index: 1,
-    doc: "Reserved for mpdtc_core (not implemented yet): every access is SLVERR.",
-    registers: &[],
+    doc: "mpdtc_core: inputs and parameter registers (formats: docs/mpdtc-fixed.md), \
+          start, status, telemetry.",
+    registers: &[
+        &MPDTC_CTRL,
+        &MPDTC_START,
+        &MPDTC_STATUS,
+        &MPDTC_LATENCY,
+        &MPDTC_IN_ID,
+        &MPDTC_IN_IQ,
+        &MPDTC_IN_COS0,
+        &MPDTC_IN_SIN0,
+        &MPDTC_IN_COS1,
+        &MPDTC_IN_SIN1,
+        &MPDTC_IN_COS2,
+        &MPDTC_IN_SIN2,
+        &MPDTC_IN_W_TS,
+        &MPDTC_IN_T_REF,
+        &MPDTC_P_A,
+        &MPDTC_P_LAMBDA,
+        &MPDTC_P_U0,
+        &MPDTC_P_U0_HALF,
+        &MPDTC_P_U0_H,
+        &MPDTC_P_PSI_L,
+        &MPDTC_P_KINV_T,
+        &MPDTC_P_TOL,
+        &MPDTC_P_K_INT,
+        &MPDTC_P_INT_LIM,
+        &MPDTC_P_INT_COND,
+        &MPDTC_P_KP_O,
+        &MPDTC_P_KI_O,
+        &MPDTC_P_ETA_LIM,
+        &MPDTC_P_W2_0,
+        &MPDTC_P_W2_1,
+        &MPDTC_P_W2_2,
+        &MPDTC_P_W2_3,
+        &MPDTC_IQ_REF,
+    ],
 };
 /// Block 2 (registers defined with the MPDCC core).
 pub const MPDCC: Block = Block {
@@ -797,7 +1123,8 @@ mod tests {
             lookup(0x43C0_6008).map(|(b, r)| (b.name, r.name)),
             Some(("FAULT", "OC_LIMIT"))
         );
-        assert_eq!(lookup(0x43C0_1000), None);
+        assert_eq!(lookup(0x43C0_1000).map(|(_, r)| r.name), Some("MPDTC_CTRL"));
+        assert_eq!(lookup(0x43C0_2000), None);
         assert_eq!(lookup(0x43C0_3002), None);
         assert_eq!(lookup(0x43C0_8000), None);
         assert_eq!(lookup(0x1000), None);

@@ -59,6 +59,26 @@ pub fn verilog() -> String {
         "localparam [31:0] RM_MODE_MPDTC = 32'd{};",
         regmap::mode::MPDTC
     );
+    // Plain RW words of the MPDTC page (inputs and parameters): their
+    // implemented-bit masks by word index, for the generic storage in pl_regs.
+    s.push_str(
+        "\n// Mask of the plain RW registers (all values valid) of the MPDTC page\n\
+         // at or above offset 0x010, by word index; 0 elsewhere.\n\
+         function automatic [31:0] rm_mpdtc_plain_mask(input [9:0] word);\n\
+         \x20   case (word)\n",
+    );
+    for r in regmap::MPDTC.registers {
+        if r.access == Access::Rw && r.invalid == Invalid::AllValid && r.offset >= 0x10 {
+            let _ = writeln!(
+                s,
+                "        10'd{}: rm_mpdtc_plain_mask = 32'h{:08x};  // {}",
+                r.offset / 4,
+                r.mask(),
+                r.name
+            );
+        }
+    }
+    s.push_str("        default: rm_mpdtc_plain_mask = 32'h00000000;\n    endcase\nendfunction\n");
     for b in BLOCKS {
         let _ = writeln!(s, "\n// Block {} {}: {}", b.index, b.name, b.doc);
         let _ = writeln!(s, "localparam [2:0] RM_BLK_{} = 3'd{};", b.name, b.index);
