@@ -113,13 +113,13 @@ pub struct FpgaConfig {
     /// Judge feasibility at `k+1` and `J_dl` with the one-step prediction
     /// (as the lazy check does) instead of the interpolated `a_j + Delta_j/L`.
     pub exact_first_step: bool,
-    /// Third-order rotation terms: scale the first-order rotation
-    /// coefficients `omega_r L T` and `omega_s L T` by `(1 - theta^2/6)`, i.e.
-    /// `sin(theta)` to third order (the paper stops at second order, `p`).
+    /// Third-order rotation terms: an `L^3` group `-(theta^2/6)` times the
+    /// first-order rotation terms of `omega_r` and `omega_s`, i.e. `sin(theta)`
+    /// to third order (the paper stops at second order, `p`).
     pub third_order: bool,
-    /// Second-order stator damping: scale the `L`-step machine rates by
-    /// `(1 - L T/(2 tau_s))` (the `-1/tau_s` row of `F^2 t^2/2`, which
-    /// multiplies the whole current rate; design-time constants).
+    /// Second-order stator damping: the machine rates over `t = m L T`
+    /// scaled by `(1 - t/(2 tau_s))` (the `-1/tau_s` row of `F^2 t^2/2`,
+    /// which multiplies the whole current rate), an `L^2` group.
     pub stator_damping: bool,
     /// Use the mid-interval output voltage: the phase and dc-link capacitor
     /// voltages drift over the `l` steps (eq. 18b), which moves `v_abc(s)`;
@@ -153,21 +153,13 @@ impl FpgaConfig {
         }
     }
 
-    /// Our default: the paper's structure plus the two accuracy options,
-    /// which cost one multiply in the scheduler and a few adders per
-    /// explorer (docs/mpdcc-fpga.md), with `p` from [`p_taylor`].
+    /// Our default: the paper's structure plus the accuracy options (all
+    /// but `current_midpoint`) and four interpolation nodes, with `p` from
+    /// [`p_taylor`]. Costs: a dozen multiplies in the scheduler, about 30
+    /// block operations and three more search pieces per candidate
+    /// (docs/mpdcc-fpga.md, [`super::cycles`]).
     pub fn improved(m: &super::params::MachineParams) -> Self {
-        Self {
-            explorers: 2,
-            p_correction: p_taylor(m),
-            ref_second_order: true,
-            exact_first_step: true,
-            third_order: true,
-            stator_damping: true,
-            capacitor_drift: true,
-            current_midpoint: false,
-            nodes: 4,
-        }
+        Self::with_p(p_taylor(m))
     }
 
     /// [`FpgaConfig::improved`] with another `p`.
@@ -592,9 +584,9 @@ pub fn common_terms(k: &Coeffs, x: &Inputs) -> Common {
     }
 }
 
-/// Wide voltage terms `g (3 v_x - sum v)` of candidate `s`: f27 with the
-/// L-step `g3` (Q1.14), f30 with the one-step `g3_1` (f17).
-fn voltage_terms(k: &Coeffs, c: &Common, s: [u8; 3], one_step: bool) -> [i64; 3] {
+/// Wide (f30) one-step voltage terms `g3_1 (3 v_x - sum v)` of candidate
+/// `s` (`g3_1` is f17); the `L`-step ones are in [`node_deltas`].
+fn voltage_terms_1(k: &Coeffs, c: &Common, s: [u8; 3]) -> [i64; 3] {
     let inv = inverter_terms(c, s);
     let mut v = [0i64; 3];
     for ph in 0..3 {
@@ -603,19 +595,16 @@ fn voltage_terms(k: &Coeffs, c: &Common, s: [u8; 3], one_step: bool) -> [i64; 3]
             + pos.n_coef as i64 * c.v_n as i64
             + pos.ph_coef as i64 * c.v_ph[ph] as i64;
         if k.capacitor_drift {
-            // Mid-interval voltage: the capacitor voltages drift linearly
-            // (eq. 18b), so the mean output voltage over the l steps is
-            // v(k) + Delta v(l)/2; Delta v_n = -inv[0], Delta v_ph = -inv[1+ph]
-            // (f27), halved and rounded to Q2.13 (and /L for one step).
+            // Mid-interval voltage over one step: v(k) + Delta v(L)/(2L);
+            // Delta v_n = -inv[0], Delta v_ph = -inv[1+ph] (f27), rounded to
+            // Q2.13.
             let dv = -(pos.n_coef as i64) * inv[0] - pos.ph_coef as i64 * inv[1 + ph];
-            let sh = F_C + 1 + if one_step { k.lambda } else { 0 };
-            v[ph] += rshift_round(dv, sh);
+            v[ph] += rshift_round(dv, F_C + 1 + k.lambda);
         }
     }
     let sum = v[0] + v[1] + v[2];
     // u_x = 3 v_x - sum v: exact, < 2^17 in magnitude (an 18-bit operand).
-    let g = if one_step { k.g3_1 } else { k.g3 };
-    v.map(|vx| g as i64 * (3 * vx - sum))
+    v.map(|vx| k.g3_1 as i64 * (3 * vx - sum))
 }
 
 /// Wide (f27) inverter error changes over `L` steps: `[v_n, v_ph,abc]`.
@@ -638,7 +627,7 @@ pub fn deltas(k: &Coeffs, c: &Common, s: [u8; 3], one_step: bool) -> [i16; 7] {
         return node_deltas(k, c, s, 0).map(|v| sat16(v as i64));
     }
     let sh = k.lambda;
-    let g = voltage_terms(k, c, s, true);
+    let g = voltage_terms_1(k, c, s);
     let inv = inverter_terms(c, s);
     // Voltage term: f30 (f17 x Q2.13) to Q2.13.
     let mut d = [0i16; 7];
