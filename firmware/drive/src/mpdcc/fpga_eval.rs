@@ -596,6 +596,8 @@ fn diagnose_mismatches() {
     let mut s_prev = [4u8; 3];
     let (mut lazy_fp, mut lazy_fn, mut l_off, mut cost_only, mut sw) = (0, 0, 0, 0, 0);
     let mut hist = [0u32; 9]; // |L*_fpga - L*_ref| of the reference's choice: 0..7, 8+
+    let mut signed = [0u32; 9]; // L*_fpga - L*_ref, -4..4 (clamped), all switching steps
+    let mut shown = 0;
     let mut ratio = std::vec::Vec::new();
     for k in 0..8000u64 {
         let th = dth * k as f64;
@@ -615,6 +617,56 @@ fn diagnose_mismatches() {
         let b = f.decide(&st).unwrap();
         if a.kind != DecisionKind::Kept {
             sw += 1;
+            // Signed L* error of the reference's choice, every switching step.
+            if let Some(out) = f.last_outcome() {
+                if let Some(fr) = out.results.iter().find(|x| x.s == a.s) {
+                    let dl = fr.l_star as i64 - a.horizon_steps as i64;
+                    signed[(dl.clamp(-4, 4) + 4) as usize] += 1;
+                    if (dl == -1 || dl == -2) && shown < 8 && std::env::var("FPGA_SHOW").is_ok() {
+                        shown += 1;
+                        let x = Inputs::quantize(&st).unwrap();
+                        let c = fpga::common_terms(f.coeffs(), &x);
+                        let k = f.coeffs();
+                        let ex = exact_errors(&p, &st, a.s, k.n_bar as usize);
+                        let bnd = [
+                            p.controller.delta_i_pu,
+                            p.controller.delta_i_pu,
+                            p.controller.delta_i_pu,
+                            p.controller.v_n_bound_pu,
+                            p.controller.v_ph_bound_pu,
+                            p.controller.v_ph_bound_pu,
+                            p.controller.v_ph_bound_pu,
+                        ];
+                        let le: [usize; 7] = core::array::from_fn(|j| {
+                            (1..ex.len())
+                                .find(|&l| ex[l][j].abs() > bnd[j])
+                                .map(|l| l - 1)
+                                .unwrap_or(ex.len() - 1)
+                        });
+                        let jb = (0..7).min_by_key(|&j| le[j]).unwrap();
+                        let l0 = a.horizon_steps as usize;
+                        let nodes: fpga::Nodes =
+                            core::array::from_fn(|i| fpga::node_deltas(k, &c, a.s, i));
+                        // Interpolated value of the binding output near the exit.
+                        let big_l = (1u32 << k.lambda) as f64;
+                        let a0 = to_f64(c.e0[jb], F_I);
+                        let interp = |l: f64| -> f64 {
+                            let nv = |i: usize| a0 + nodes[i][jb] as f64 / 8192.0;
+                            if l <= big_l {
+                                return a0 + l * (nv(0) - a0) / big_l;
+                            }
+                            let mut i = 1;
+                            while i + 1 < k.nodes as usize && l > big_l * (1u32 << i) as f64 {
+                                i += 1;
+                            }
+                            let la = big_l * (1u32 << (i - 1)) as f64;
+                            nv(i - 1) + (l - la) * (nv(i) - nv(i - 1)) / la
+                        };
+                        println!("  dl={dl} L*ref={l0} binding j={jb} bnd={:.4}: exact at L*-1,L*,L*+1 = {:.5} {:.5} {:.5}; interp = {:.5} {:.5} {:.5}; fpga l_j binding lane? e0={:.5}",
+                            bnd[jb], ex[l0 - 1][jb], ex[l0][jb], ex[l0 + 1][jb], interp(l0 as f64 - 1.0), interp(l0 as f64), interp(l0 as f64 + 1.0), a0);
+                    }
+                }
+            }
         }
         if a.s != b.s {
             match (a.kind == DecisionKind::Kept, b.kind == DecisionKind::Kept) {
@@ -697,6 +749,7 @@ fn diagnose_mismatches() {
         "switching {sw}: lazy says keep but ref switches {lazy_fp}, lazy says switch but ref keeps {lazy_fn}, L* of ref choice off {l_off}, same L* but other choice {cost_only}"
     );
     println!("|dL*| histogram of the reference's choice (0..7, 8+): {hist:?}");
+    println!("signed L*_fpga - L*_ref of the reference's choice, all switching steps (<=-4..>=4): {signed:?}");
     println!(
         "examples (ref choice: L*_ref, L*_fpga, fs; fpga choice: L*_ref, L*_fpga, fs): {ratio:?}"
     );
