@@ -877,3 +877,82 @@ fn diagnose_endpoint_error_vs_l() {
         );
     }
 }
+
+/// The bit-exact specification is frozen by a checksum over the raw outputs
+/// (decision, every candidate's `L*`, `J`, `J_dl`, `Delta_j`, cycles) for
+/// 3000 pseudo-random states. Any change of a rounding, a format or an
+/// operation order changes it: update the constant deliberately, together
+/// with the Verilog core and its test vectors. Parameters and states are
+/// pinned here (not taken from `DriveParams::default()` or the machine
+/// model), so only the FPGA arithmetic, the ANPC table and the candidate
+/// sets enter.
+#[test]
+fn bit_exact_checksum() {
+    let mut p = DriveParams::default();
+    {
+        let m = &mut p.machine;
+        (
+            m.v_rated_ll_rms_v,
+            m.i_rated_rms_a,
+            m.f_rated_hz,
+            m.pole_pairs,
+        ) = (3300.0, 356.0, 50.0, 5);
+        (m.r_s_pu, m.r_r_pu, m.x_ls_pu, m.x_lr_pu, m.x_m_pu) =
+            (0.0108, 0.0091, 0.1493, 0.1104, 2.3489);
+        let i = &mut p.inverter;
+        (i.v_dc_pu, i.c_dc_pu, i.c_ph_pu) = (1.930, 11.769, 4.0);
+        let c = &mut p.controller;
+        (c.ts_s, c.delta_i_pu, c.v_n_bound_pu, c.v_ph_bound_pu) = (25e-6, 0.12, 0.05, 0.05);
+        (c.lambda_n, c.horizon_max_steps, c.extrapolation_steps) = (20.0, 128, 8);
+    }
+    let f = FpgaMpdcc::new(&p, FpgaConfig::with_p(1.87464)).unwrap();
+    let mut rng = Rng(2024);
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325; // FNV-1a
+    let mut eat = |v: i64| {
+        for b in v.to_le_bytes() {
+            h ^= b as u64;
+            h = h.wrapping_mul(0x0100_0000_01b3);
+        }
+    };
+    let mut searched = 0;
+    for _ in 0..3000 {
+        let th = rng.range(0.0, 6.283);
+        let (c, s) = (libm::cos(th), libm::sin(th));
+        let (cp, sp) = (libm::cos(th - 1.18), libm::sin(th - 1.18));
+        let st = CtrlState {
+            x_m: [
+                c + rng.range(-0.1, 0.1),
+                s + rng.range(-0.1, 0.1),
+                0.9 * cp,
+                0.9 * sp,
+            ],
+            v_n_pu: rng.range(-0.05, 0.05),
+            v_ph_pu: core::array::from_fn(|_| 0.4825 + rng.range(-0.05, 0.05)),
+            omega_r_pu: 0.991,
+            omega_s_pu: 1.0,
+            i_ref_ab_pu: [c, s],
+            s_prev: core::array::from_fn(|_| (rng.next() * 8.0) as u8),
+        };
+        let x = Inputs::quantize(&st).unwrap();
+        let out = f.decide_raw(&x);
+        let d = out.decision;
+        eat(d.s[0] as i64 | (d.s[1] as i64) << 8 | (d.s[2] as i64) << 16);
+        eat(d.kind as i64);
+        eat(out.cycles as i64);
+        searched += !out.results.is_empty() as u32;
+        for r in out.results.iter() {
+            eat(r.l_star as i64);
+            eat(r.cost as i64);
+            eat(r.j_dl as i64);
+            for d in r.deltas {
+                eat(d as i64);
+            }
+        }
+    }
+    assert!(searched > 200, "{searched}");
+    println!("bit-exact checksum {h:#018x} over {searched} searches");
+    assert_eq!(h, GOLDEN, "bit-exact outputs changed: {h:#018x}");
+}
+
+/// See [`bit_exact_checksum`].
+const GOLDEN: u64 = 0xc05f_ca3a_b600_539c;
