@@ -419,6 +419,31 @@ impl CycleModel {
             total: self.search_cycles(n, &lanes[..c]),
         }
     }
+
+    /// Initiation interval of a pipelined explorer (a what-if, not the
+    /// paper's FSM design): a new candidate every `II` cycles, limited by
+    /// the block issue slots (`ceil(block ops / blocks)`) and by the search
+    /// lanes (busy `lane_worst` cycles per candidate unless duplicated).
+    pub fn pipelined_ii(&self, lane_worst: u32) -> u32 {
+        let ops = self
+            .explorer
+            .iter()
+            .filter(|o| o.kind == Kind::Block)
+            .count() as u32;
+        ops.div_ceil(self.explorer_blocks.max(1))
+            .max(lane_worst)
+            .max(1)
+    }
+
+    /// Worst case with pipelined explorers: each explorer takes
+    /// `ceil(|S|/n)` candidates, one every [`Self::pipelined_ii`] cycles,
+    /// the last one finishing one latency after it starts.
+    pub fn pipelined_worst_case(&self, n: u32, candidates: u32, lane_worst: u32) -> u32 {
+        let per = candidates.div_ceil(n.max(1));
+        let lat = self.candidate_cycles(lane_worst);
+        let ii = self.pipelined_ii(lane_worst);
+        self.pre_cycles() + 1 + (n.max(1) - 1) + per.saturating_sub(1) * ii + lat + 2
+    }
 }
 
 /// The paper's Table II, worst-case cycles for `n = 1..6` explorers.
@@ -454,6 +479,9 @@ pub struct Table2Row {
     pub model_per_candidate_paper_core: u32,
     /// Scheduler pre-phase (sample, common terms, lazy check), cycles.
     pub model_pre: u32,
+    /// What-if: our default core with pipelined explorers
+    /// ([`CycleModel::pipelined_worst_case`]), 216 candidates, cycles.
+    pub model_cycles_pipelined: u32,
 }
 
 /// Largest candidate set of the controllers (over all `s(k-1)`).
@@ -496,6 +524,7 @@ pub fn table2_for(m_bits: u32, lambda: u32) -> [Table2Row; 6] {
             model_per_candidate: w.per_candidate,
             model_per_candidate_paper_core: wp.per_candidate,
             model_pre: w.pre,
+            model_cycles_pipelined: ours.pipelined_worst_case(n, cmax, lw),
         }
     })
 }
@@ -573,6 +602,24 @@ mod tests {
         for n in 1..6 {
             assert!(m.worst_case(n + 1, 216, 8).total < m.worst_case(n, 216, 8).total);
         }
+        // Pipelining never takes longer than the sequential explorer, and an
+        // interval equal to the latency gives the sequential count back
+        // (up to the one-cycle dispatch skew per explorer).
+        for n in 1..=6 {
+            assert!(m.pipelined_worst_case(n, 216, 8) <= m.worst_case(n, 216, 8).total + n);
+        }
+        let seq = CycleModel {
+            explorer_blocks: 1,
+            ..CycleModel::paper()
+        };
+        let ii = seq.pipelined_ii(8);
+        assert_eq!(
+            ii,
+            EXPLORER_OPS_PAPER
+                .iter()
+                .filter(|o| o.kind == Kind::Block)
+                .count() as u32
+        );
         // Lane worst cases: M + 1 for one chord; L = 16, N_bar = 128, three
         // pieces of 16, 16 and 96 steps: 5 + 5 + 8; L = 8, four pieces of 8,
         // 8, 16 and 96: 4 + 4 + 5 + 8; L = 64: room for two nodes only
@@ -601,6 +648,12 @@ mod print {
         );
         let p = super::CycleModel::paper();
         std::println!("paper core: per-candidate {}", p.candidate_cycles(8));
+        let lw = super::worst_lane_cycles(4, 3, 7);
+        std::println!(
+            "pipelined II: ours {}, paper core {}",
+            m.pipelined_ii(lw),
+            p.pipelined_ii(8)
+        );
         for r in super::table2(7) {
             std::println!("{r:?}");
         }
