@@ -518,14 +518,19 @@ fn tables(r: &Report) -> String {
     let _ = writeln!(o, "\nTable II: worst-case clock cycles per decision\n");
     let _ = writeln!(
         o,
-        "| explorers | paper Table II | paper 47 + 2176/n | our cycle model |"
+        "| explorers | paper Table II | paper 47 + 2176/n | ours: paper structure, 64 candidates | ours: paper structure, 216 candidates | ours: default core, 216 candidates (model_cycles) |"
     );
-    let _ = writeln!(o, "|---|---|---|---|");
+    let _ = writeln!(o, "|---|---|---|---|---|---|");
     for c in &r.cycles {
         let _ = writeln!(
             o,
-            "| {} | {} | {:.1} | {} |",
-            c.explorers, c.paper_cycles, c.paper_formula_cycles, c.model_cycles
+            "| {} | {} | {:.1} | {} | {} | {} |",
+            c.explorers,
+            c.paper_cycles,
+            c.paper_formula_cycles,
+            c.model_cycles_64,
+            c.model_cycles_paper_core,
+            c.model_cycles
         );
     }
     let _ = writeln!(o, "\nruntime {:.1} s", r.runtime_s);
@@ -553,12 +558,19 @@ fn write_outputs(dir: &Path, r: &Report, traces: &[(f64, Vec<TraceSample>)]) -> 
         );
     }
     w("fig5.csv", csv)?;
-    let mut csv = String::from("explorers,paper_cycles,paper_formula_cycles,model_cycles\n");
+    let mut csv = String::from(
+        "explorers,paper_cycles,paper_formula_cycles,model_cycles_64,model_cycles_paper_core,model_cycles\n",
+    );
     for c in &r.cycles {
         let _ = writeln!(
             csv,
-            "{},{},{:.2},{}",
-            c.explorers, c.paper_cycles, c.paper_formula_cycles, c.model_cycles
+            "{},{},{:.2},{},{},{}",
+            c.explorers,
+            c.paper_cycles,
+            c.paper_formula_cycles,
+            c.model_cycles_64,
+            c.model_cycles_paper_core,
+            c.model_cycles
         );
     }
     w("table2_cycles.csv", csv)?;
@@ -654,7 +666,16 @@ fn write_outputs(dir: &Path, r: &Report, traces: &[(f64, Vec<TraceSample>)]) -> 
             true,
         ),
         series(
-            "our cycle model",
+            "ours, paper structure, 64 cand.",
+            r.cycles
+                .iter()
+                .map(|c| (c.explorers as f64, c.model_cycles_64 as f64))
+                .collect(),
+            "#2ca02c",
+            false,
+        ),
+        series(
+            "ours, default core, 216 cand.",
             r.cycles
                 .iter()
                 .map(|c| (c.explorers as f64, c.model_cycles as f64))
