@@ -308,6 +308,31 @@ mod tests {
         }
     }
 
+    /// Fig. 5's trend: widening the current bound lowers the switching
+    /// frequency and raises the THD; the ripple scales with the bound, so
+    /// doubling `delta_i` raises THD by well over half (a triangular ripple
+    /// of peak `delta_i` alone would double it).
+    #[test]
+    fn wider_bounds_trade_thd_for_switching() {
+        let mut out = [(0.0, 0.0); 2];
+        for (k, di) in [0.06, 0.12].into_iter().enumerate() {
+            let mut p = DriveParams::default();
+            p.controller.delta_i_pu = di;
+            let mut c = Reference::new(&p).unwrap();
+            let cfg = LoopConfig {
+                warmup_periods: 2,
+                measure_periods: 10,
+            };
+            let r = run(&p, &cfg, &mut c, None, &mut |_| {}).unwrap();
+            out[k] = (r.fsw_hz, r.thd_percent);
+        }
+        assert!(out[1].0 < out[0].0, "{out:?}");
+        assert!(
+            out[1].1 > 1.5 * out[0].1 && out[1].1 < 2.5 * out[0].1,
+            "{out:?}"
+        );
+    }
+
     /// The reduced 64-candidate set (an experiment) keeps the invariants too.
     #[test]
     fn reduced_candidate_reference_invariants() {
