@@ -165,6 +165,8 @@ module pl_regs #(
     wire w_mp = wr_i && wa[14:12] == RM_BLK_MPDTC && wa[1:0] == 2'b00 && mp_wmask != 32'd0;
     wire [31:0] ra_mask = rm_mpdtc_plain_mask(rd_addr_i[11:2]);
     wire r_mp = rd_addr_i[14:12] == RM_BLK_MPDTC && rd_addr_i[1:0] == 2'b00 && ra_mask != 32'd0;
+    // Word index kept inside the storage range (only used when r_mp).
+    wire [5:0] r_mp_idx = (rd_addr_i[7:2] >= 6'd4 && rd_addr_i[7:2] <= 6'd33) ? rd_addr_i[7:2] : 6'd4;
     wire w_any_ok = w_ctrl | w_err | w_heartbeat | w_scratch | w_gate_ctrl | w_dead_time
         | w_pwm_period | w_duty_a | w_duty_b | w_duty_c | w_sw_state | w_adc_ctrl
         | w_adc_period | w_enc_cpr | w_enc_window | w_fault_status | w_oc_limit
@@ -305,7 +307,7 @@ module pl_regs #(
             RM_MPDTC_LATENCY_ADDR: rd_data_o = RM_MPDTC_LATENCY_RESET;
             RM_MPDTC_IQ_REF_ADDR: rd_data_o = {7'd0, mpdtc_iq_ref_i};
             default: begin
-                if (r_mp) rd_data_o = mp_q[rd_addr_i[7:2]] & ra_mask;
+                if (r_mp) rd_data_o = mp_q[r_mp_idx] & ra_mask;
                 else rd_err_o = rd_i;
             end
         endcase
