@@ -116,6 +116,7 @@ fn run_console(con: &mut Uart) -> ! {
 }
 
 fn context(lines: u32, errors: u32) -> Context {
+    let (pl_id, pl_version) = pl::id_and_version();
     Context {
         version: env!("CARGO_PKG_VERSION"),
         git_hash: env!("FW_GIT_HASH"),
@@ -128,6 +129,8 @@ fn context(lines: u32, errors: u32) -> Context {
             errors,
             rx_overruns: RX.overruns.load(Ordering::Relaxed),
             gates_enabled: pl::gates_enabled(),
+            pl_id,
+            pl_version,
         },
     }
 }

@@ -21,3 +21,13 @@ pub fn gates_safe() {
 pub fn gates_enabled() -> bool {
     gate_ctrl().read() & regmap::GATE_CTRL_GATE_EN != 0
 }
+
+fn top_reg(reg: &regmap::Register) -> u32 {
+    // SAFETY: a 32-bit register of the top/ID page.
+    unsafe { (*(regmap::TOP.addr(reg) as *const RW<u32>)).read() }
+}
+
+/// The PL's `ID` and `VERSION` registers (both read 0 without a bitstream).
+pub fn id_and_version() -> (u32, u32) {
+    (top_reg(&regmap::ID), top_reg(&regmap::VERSION))
+}

@@ -67,6 +67,12 @@ fn status_ticks_advance_with_uptime() {
         "ticks {t0}->{t1} vs uptime {u0}->{u1}"
     );
     assert_eq!(field(&b, "gates"), Some("off"), "{b:?}");
+    // QEMU has no PL: the ID register reads 0.
+    assert!(
+        b.lines
+            .contains(&"pl: no bitstream (ID reads 0x00000000)".to_string()),
+        "{b:?}"
+    );
 }
 
 #[test]

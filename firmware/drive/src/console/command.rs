@@ -88,6 +88,10 @@ pub struct Status {
     pub rx_overruns: u32,
     /// Whether the PL gate-enable bit is set (false = safe state).
     pub gates_enabled: bool,
+    /// PL `ID` register (`regmap::ID_VALUE` when our bitstream is loaded).
+    pub pl_id: u32,
+    /// PL `VERSION` register (register-map version, major.minor).
+    pub pl_version: u32,
 }
 
 /// What the commands need to know about the firmware.
@@ -189,6 +193,25 @@ fn write_spec<W: Write>(out: &mut W, s: &Spec) -> fmt::Result {
     write!(out, " {}\r\n", s.help)
 }
 
+/// The `pl:` status line: whether our bitstream is there and speaks the
+/// register map this firmware was built against.
+fn write_pl<W: Write>(out: &mut W, id: u32, version: u32) -> fmt::Result {
+    let v = |x: u32| (x >> 16, x & 0xffff);
+    let (want_major, want_minor) = v(crate::regmap::VERSION.reset);
+    if id != crate::regmap::ID_VALUE {
+        return write!(out, "pl: no bitstream (ID reads 0x{id:08x})\r\n");
+    }
+    let (major, minor) = v(version);
+    write!(out, "pl: bitstream present, register map v{major}.{minor}")?;
+    if major != want_major {
+        write!(
+            out,
+            " INCOMPATIBLE (firmware expects v{want_major}.{want_minor})"
+        )?;
+    }
+    out.write_str("\r\n")
+}
+
 /// Writes the reply of `cmd`, ending with `OK` or `ERR`.
 pub fn execute<W: Write>(
     cmd: Command<'_>,
@@ -242,6 +265,7 @@ pub fn execute<W: Write>(
                 "off (safe state)"
             };
             write!(out, "gates: {gates}\r\n")?;
+            write_pl(out, s.pl_id, s.pl_version)?;
         }
         Command::DebugPanic => return Ok(Action::Panic),
     }
@@ -267,6 +291,8 @@ mod tests {
                 errors: 2,
                 rx_overruns: 0,
                 gates_enabled: false,
+                pl_id: 0,
+                pl_version: 0,
             },
         }
     }
@@ -329,6 +355,28 @@ mod tests {
         assert!(r.contains("ticks: 12000 (rate 1000 Hz)\r\n"), "{r}");
         assert!(r.contains("gates: off (safe state)\r\n"), "{r}");
         assert_one_final_line(&r);
+    }
+
+    #[test]
+    fn status_tells_whether_the_bitstream_is_loaded_and_compatible() {
+        let line = |id, version| {
+            let mut out = String::new();
+            write_pl(&mut out, id, version).unwrap();
+            out
+        };
+        let ours = crate::regmap::VERSION.reset;
+        assert_eq!(line(0, 0), "pl: no bitstream (ID reads 0x00000000)\r\n");
+        assert_eq!(
+            line(crate::regmap::ID_VALUE, ours),
+            std::format!(
+                "pl: bitstream present, register map v{}.{}\r\n",
+                ours >> 16,
+                ours & 0xffff
+            )
+        );
+        // A minor bump is compatible, a major one is flagged.
+        assert!(!line(crate::regmap::ID_VALUE, ours + 1).contains("INCOMPATIBLE"));
+        assert!(line(crate::regmap::ID_VALUE, ours + 0x1_0000).contains("INCOMPATIBLE"));
     }
 
     #[test]
