@@ -156,9 +156,20 @@ module mpdtc_core (
         ext18 = {{30{x[17]}}, x};
     endfunction
 
-    // COEF x CUR, exact (43 bits, kept in 48).
+    // 18 x 25-bit signed product at its exact width (43 bits): the operands
+    // are sign-extended to 43 bits by the context, so the result is exact.
+    function automatic signed [42:0] mul43(input signed [17:0] c, input signed [24:0] x);
+        mul43 = c * x;
+    endfunction
+
+    // COEF x CUR, exact, sign-extended to 48 bits explicitly (so that no
+    // tool sees undriven upper product bits).
     function automatic signed [47:0] mul(input signed [17:0] c, input signed [24:0] x);
-        mul = ext18(c) * ext25(x);
+        reg signed [42:0] p;
+        begin
+            p   = mul43(c, x);
+            mul = {{5{p[42]}}, p};
+        end
     endfunction
 
     // clamp(x, lim) for lim >= 0 (x wide).
@@ -270,7 +281,7 @@ module mpdtc_core (
         h_pq <= mul(pa, ih_q_q);
         ppsi_g <= -mul(g, ppsi);
         // T* (14 frac) x 1/k_T (16 frac) -> CUR: round half up >> 14.
-        iq_orig <= sat25((ext18(tref) * ext25(pkinv) + 48'sd8192) >>> 14);
+        iq_orig <= sat25((mul(tref, pkinv) + 48'sd8192) >>> 14);
         // For stage 8: i_m + the two saturation values of the lambda term.
         im_d_pmax <= sat25(ext25(im_d) + MAX25);
         im_d_pmin <= sat25(ext25(im_d) + MIN25);
@@ -488,13 +499,13 @@ module mpdtc_core (
             dc[s]  <= sat18((ext25(i2_d[s]) + 48'sd128) >>> 8);
             qc[s]  <= sat18((ext25(i2_q[s]) + 48'sd128) >>> 8);
             // 17
-            sq_d[s]   <= ext25(i2_d[s]) * ext18(dc[s]);
-            sq_q[s]   <= ext25(i2_q[s]) * ext18(qc[s]);
+            sq_d[s]   <= mul(dc[s], i2_d[s]);
+            sq_q[s]   <= mul(qc[s], i2_q[s]);
             inband[s] <= ext25(err[s]) <= ext25(ptol);
             ntr[s]    <= popcount3(s[2:0] ^ sa_q);
             err2[s]   <= err[s];
             // 18
-            cost2[s]   <= ext25(sat25((sq_d[s] + sq_q[s] + 48'sd4096) >>> 13)) * ext18(pw2[ntr[s]]);
+            cost2[s]   <= mul(pw2[ntr[s]], sat25((sq_d[s] + sq_q[s] + 48'sd4096) >>> 13));
             inband2[s] <= inband[s];
             ntr2[s]    <= ntr[s];
         end
