@@ -17,4 +17,5 @@ pub mod gates;
 pub mod mpdcc;
 pub mod pmsm;
 pub mod regmap;
+pub mod validate;
 pub mod zynq;

@@ -57,47 +57,8 @@
 //!   experiment inside the inverter's range at rated current and frequency,
 //!   which is what the issue asks for.
 
-use core::fmt;
-
-/// A parameter that failed validation: which field and why.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct ParamError {
-    /// Field name as written in the struct / TOML file.
-    pub field: &'static str,
-    /// Human-readable reason.
-    pub reason: &'static str,
-}
-
-impl fmt::Display for ParamError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "invalid parameter `{}`: {}", self.field, self.reason)
-    }
-}
-
-#[cfg(feature = "std")]
-impl std::error::Error for ParamError {}
-
-fn pos(field: &'static str, v: f64) -> Result<(), ParamError> {
-    if v.is_finite() && v > 0.0 {
-        Ok(())
-    } else {
-        Err(ParamError {
-            field,
-            reason: "must be finite and > 0",
-        })
-    }
-}
-
-fn finite(field: &'static str, v: f64) -> Result<(), ParamError> {
-    if v.is_finite() {
-        Ok(())
-    } else {
-        Err(ParamError {
-            field,
-            reason: "must be finite",
-        })
-    }
-}
+pub use crate::validate::ParamError;
+use crate::validate::{check_finite as finite, check_pos as pos};
 
 /// Induction machine of Table I, per unit.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -19,63 +19,12 @@
 //!   consistent with an ideal sinusoidal machine). We take the back-EMF one
 //!   because the plant's voltage equation is what the back-EMF constant measures.
 
-use core::fmt;
-
 /// Flux linkage from the back-EMF (speed) constant, Wb: `k_e / (sqrt(3) p)`.
 pub const PSI_PM_FROM_KE_WB: f64 = 0.009_287_9;
 /// Flux linkage from the torque constant, Wb: `k_T / (1.5 p)` = 0.113 / 10.5.
 pub const PSI_PM_FROM_KT_WB: f64 = 0.113 / 10.5;
 
-/// A parameter that failed validation: which field and why.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ParamError {
-    /// Field name as written in the struct / TOML file.
-    pub field: &'static str,
-    /// Human-readable reason (e.g. "must be finite and > 0").
-    pub reason: &'static str,
-}
-
-impl fmt::Display for ParamError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "invalid parameter `{}`: {}", self.field, self.reason)
-    }
-}
-
-#[cfg(feature = "std")]
-impl std::error::Error for ParamError {}
-
-pub(crate) fn check_pos(field: &'static str, v: f64) -> Result<(), ParamError> {
-    if v.is_finite() && v > 0.0 {
-        Ok(())
-    } else {
-        Err(ParamError {
-            field,
-            reason: "must be finite and > 0",
-        })
-    }
-}
-
-pub(crate) fn check_nonneg(field: &'static str, v: f64) -> Result<(), ParamError> {
-    if v.is_finite() && v >= 0.0 {
-        Ok(())
-    } else {
-        Err(ParamError {
-            field,
-            reason: "must be finite and >= 0",
-        })
-    }
-}
-
-pub(crate) fn check_finite(field: &'static str, v: f64) -> Result<(), ParamError> {
-    if v.is_finite() {
-        Ok(())
-    } else {
-        Err(ParamError {
-            field,
-            reason: "must be finite",
-        })
-    }
-}
+pub use crate::validate::{check_finite, check_nonneg, check_pos, ParamError};
 
 /// Surface PMSM + DC link (paper 000, Table 2; star-equivalent per phase).
 #[derive(Debug, Clone, Copy, PartialEq)]
