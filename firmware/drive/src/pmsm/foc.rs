@@ -54,13 +54,13 @@
 //! Measured (tests below; 16 kHz, exact model, torque sampled at 256 kHz,
 //! settling into a 5 % band as defined in `metrics`):
 //! - 0 -> 0.4 N m at 0.1 ms: settling 0.205 ms, overshoot 1.0 % at
-//!   standstill; 0.228 ms / 2.3 % at 300 rad/s electrical.
+//!   standstill; 0.228 ms / 2.5 % at 300 rad/s electrical.
 //! - -0.4 -> +0.4 N m (the Fig. 10 reversal): 0.271 ms, overshoot 0.5 %
 //!   (voltage-limited: 8.2 A needs at least 190 us at 27.7 V).
 //! - Carrier 16 kHz: 32 k gate transitions per leg per second.
 
 use super::frames::{clarke, inv_park, leg_voltage_alpha_beta, park};
-use super::params::{check_pos, MotorParams, ParamError};
+use super::params::{check_nonneg, check_pos, MotorParams, ParamError};
 use super::plant::{zoh_alpha_beta, Actuation};
 use super::sim::{Controller, Measurement};
 use super::svpwm;
@@ -119,6 +119,19 @@ impl FocParams {
             return Err(ParamError {
                 field: "closed_loop_pole",
                 reason: "must be in [0, 1)",
+            });
+        }
+        check_nonneg("measurement_lag_s", self.measurement_lag_s)?;
+        if self.measurement_lag_s >= 0.25 * self.period_s {
+            return Err(ParamError {
+                field: "measurement_lag_s",
+                reason: "must be below a quarter of period_s",
+            });
+        }
+        if !(0.0..=1.0).contains(&self.prediction_error_gain) {
+            return Err(ParamError {
+                field: "prediction_error_gain",
+                reason: "must be in [0, 1]",
             });
         }
         Ok(())
@@ -242,7 +255,8 @@ impl Controller for Foc {
             0.0
         };
         let lag = self.p.measurement_lag_s;
-        // The averaged current and angle describe t_k - lag. The averaging
+        // The averaged current and angle describe t_k - lag (the angle is
+        // averaged like the currents, `measure`). The averaging
         // window ends the previous period, in its 000 zero vector when the
         // largest duty leaves room for it (centre-aligned PWM); propagate
         // over the lag with zero voltage then, else with the period's mean.
@@ -251,15 +265,9 @@ impl Controller for Foc {
         } else {
             self.u_prev_ab
         };
-        let i_ab = zoh_alpha_beta(
-            mo,
-            clarke(m.i_abc_a),
-            u_win,
-            m.theta_e_rad - w * lag,
-            w,
-            lag,
-        );
-        let th = m.theta_e_rad;
+        let i_ab = zoh_alpha_beta(mo, clarke(m.i_abc_a), u_win, m.theta_e_rad, w, lag);
+        // Angle at t_k.
+        let th = m.theta_e_rad + w * lag;
         let g = self.p.prediction_error_gain;
         if let Some((pd, pq)) = self.pred_dq {
             let (md, mq) = park(i_ab.0, i_ab.1, th);
@@ -444,6 +452,20 @@ mod tests {
                 ..Default::default()
             };
             assert!(p.validate().is_err(), "{z}");
+        }
+        for (lag, g) in [
+            (f64::NAN, 0.1),
+            (-1e-6, 0.1),
+            (20e-6, 0.1),
+            (0.0, f64::NAN),
+            (0.0, 1.5),
+        ] {
+            let p = FocParams {
+                measurement_lag_s: lag,
+                prediction_error_gain: g,
+                ..Default::default()
+            };
+            assert!(p.validate().is_err(), "lag {lag} gain {g}");
         }
 
         assert!(FocParams {
