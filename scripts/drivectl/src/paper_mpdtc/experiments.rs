@@ -264,7 +264,7 @@ pub fn toggle_metrics(tr: &Trace) -> StepMetrics {
     let w = &tr.windows;
     let mut st = vec![];
     let mut ov: f64 = 0.0;
-    let (mut rip, mut mean, mut n) = (0.0, 0.0, 0usize);
+    let mut steady = vec![];
     let mut k = 1;
     while (k as f64) * TOGGLE_HALF_S < TOGGLE_RUN_S - 1e-9 {
         let t0 = k as f64 * TOGGLE_HALF_S;
@@ -287,20 +287,17 @@ pub fn toggle_metrics(tr: &Trace) -> StepMetrics {
             y1,
         ));
         // Steady state: from 2 ms after the step to the next step.
-        for x in w
-            .iter()
-            .filter(|x| x.t_s >= t0 + EVAL_S && x.t_s < t0 + TOGGLE_HALF_S)
-        {
-            let e = x.torque_nm - y1;
-            rip += e * e;
-            mean += e;
-            n += 1;
-        }
+        steady.extend(
+            w.iter()
+                .filter(|x| x.t_s >= t0 + EVAL_S && x.t_s < t0 + TOGGLE_HALF_S)
+                .map(|x| (x.torque_nm, y1)),
+        );
         k += 1;
     }
     let all: Option<Vec<f64>> = st.iter().copied().collect();
     let fsw = metrics::fsw_hz(tr.summary.transitions, tr.summary.duration_s);
-    let nn = n.max(1) as f64;
+    let (mean_err, ripple) =
+        drive::pmsm::metrics::error_mean_and_ripple_rms(steady).unwrap_or((0.0, 0.0));
     StepMetrics {
         settling_time_ms: all
             .as_ref()
@@ -311,8 +308,8 @@ pub fn toggle_metrics(tr: &Trace) -> StepMetrics {
         overshoot_percent: ov,
         fsw_khz: fsw * 1e-3,
         fsw_carrier_equiv_khz: 0.5 * fsw * 1e-3,
-        torque_ripple_rms_nm: (rip / nn - (mean / nn).powi(2)).max(0.0).sqrt(),
-        torque_mean_error_nm: mean / nn,
+        torque_ripple_rms_nm: ripple,
+        torque_mean_error_nm: mean_err,
     }
 }
 

@@ -1,28 +1,26 @@
-//! The metrics of the paper-000 experiments: A's definitions in
-//! `drive::pmsm::metrics` (one place), applied to window means, with the band
-//! chosen here.
+//! The metrics of the paper-000 experiments: the definitions of
+//! `drive::pmsm::metrics` (one place, band included), applied to window means.
 //!
 //! Signals are evaluated as the paper measures them: the plant value averaged
-//! over consecutive windows of one MPDTC period (15.625 us = 4 ADC samples at
-//! 256 kHz, "each four sampled phase currents are averaged"), identically for
-//! MPDTC and FOC, and time-stamped at the window end.
+//! over consecutive windows of one MPDTC period (the mean of 4 ADC samples at
+//! 256 kHz, 15.625 us, "each four sampled phase currents are averaged"),
+//! identically for MPDTC and FOC, and time-stamped at the window end.
 //!
 //! **Settling time** (`drive::pmsm::metrics::settling_time_s`): from the step
 //! to the end of the first window inside the band `y1 +- SETTLING_BAND
 //! |y1 - y0|` after which no window within the evaluation interval (2 ms
-//! after the step) leaves it; `None` if still outside at its end. Band 10 %: it must contain the steady-state ripple the
-//! torque tolerance band allows (T_tol = 0.08 N m = 10 % of the 0.8 N m
-//! toggle step of Fig. 10); a 5 % band would measure that ripple, not the
-//! dynamics. The same band is used for both controllers and every table.
+//! after the step) leaves it; `None` if still outside at its end. Band 10 %
+//! (`drive::pmsm::metrics::SETTLING_BAND_FRACTION`, reason there), the same
+//! for both controllers and every table.
 //!
 //! **Overshoot**, **switching frequency** (transitions per leg per second):
-//! A's definitions.
+//! `drive::pmsm::metrics`.
 
 use super::runs::Window;
 use drive::pmsm::metrics as m;
 
-/// Relative half-width of the settling band.
-pub const SETTLING_BAND: f64 = 0.10;
+/// Relative half-width of the settling band (the library's definition).
+pub const SETTLING_BAND: f64 = m::SETTLING_BAND_FRACTION;
 
 /// Settling time, s (see module doc).
 pub fn settling(
@@ -33,7 +31,7 @@ pub fn settling(
     y0: f64,
     y1: f64,
 ) -> Option<f64> {
-    let band = SETTLING_BAND * (y1 - y0).abs();
+    let band = m::settling_band(y0, y1);
     m::settling_time_s(
         w.iter().map(|x| (x.t_s, signal(x))),
         t0_s,
