@@ -205,7 +205,7 @@ pub fn bench(a: BenchArgs) -> Result<()> {
     use drive::pmsm::mpdtc_ctrl::{MpdtcFixed, MpdtcRef};
     use drive::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
     use drive::pmsm::params::{DriveParams, MotorParams};
-    use drive::pmsm::plant::{Actuation, MechanicalMode, Plant};
+    use drive::pmsm::plant::{MechanicalMode, Plant};
     use drive::pmsm::sim::{self, Controller};
     use std::time::Instant;
     anyhow::ensure!(
@@ -250,22 +250,26 @@ pub fn bench(a: BenchArgs) -> Result<()> {
         &drive,
         a.sim_s,
     )?;
-    // Open loop: one switch state per 15.625 us period, constant speed, as
-    // `drivectl sim replay` does (one sample per period).
-    let mut plant = Plant::new(&motor, 0.0, MechanicalMode::ConstantSpeed, 300.0).map_err(e)?;
-    let n = (a.sim_s / drive.control_period_s).round() as u64;
+    // Open loop: `drivectl sim replay`'s own code (one switch state per
+    // 15.625 us period, constant speed, one row per period), input prepared
+    // beforehand.
+    let rc = crate::sim::ReplayConfig {
+        r_s_ohm: motor.r_s_ohm,
+        l_d_h: motor.l_d_h,
+        l_q_h: motor.l_q_h,
+        psi_pm_wb: motor.psi_pm_wb,
+        pole_pairs: motor.pole_pairs,
+        u_dc_v: motor.u_dc_v,
+        omega_e_rad_s: 300.0,
+        period_s: drive.control_period_s,
+        dead_time_s: 0.0,
+    };
+    let n = (a.sim_s / drive.control_period_s).round() as usize;
+    let states: Vec<u8> = (0..n).map(|k| [4u8, 6, 2, 3, 1, 5, 0, 7][k % 8]).collect();
     let t = Instant::now();
-    let mut acc = 0.0;
-    for k in 0..n {
-        let s = [4u8, 6, 2, 3, 1, 5, 0, 7][(k % 8) as usize];
-        plant
-            .step(&Actuation::SwitchState(s), drive.control_period_s, 1, |p| {
-                acc += p.torque_nm()
-            })
-            .map_err(e)?;
-    }
+    let rows = crate::sim::simulate(&rc, &states)?;
     let replay = n as f64 / t.elapsed().as_secs_f64();
-    std::hint::black_box(acc);
+    std::hint::black_box(rows);
     println!(
         "{}",
         serde_json::to_string_pretty(&json!({

@@ -140,6 +140,8 @@ pub fn parse_states(text: &str) -> Result<Vec<u8>> {
     let (hline, header) = lines
         .next()
         .ok_or_else(|| anyhow!("empty switching file"))?;
+    // A UTF-8 byte order mark (spreadsheet exports) is not part of the header.
+    let header = header.trim_start_matches('\u{feff}');
     let unquote = |s: &str| s.trim().trim_matches('"').trim().to_string();
     let cols: Vec<String> = header.split(',').map(unquote).collect();
     let col = cols
@@ -179,7 +181,7 @@ pub fn parse_states(text: &str) -> Result<Vec<u8>> {
 }
 
 /// Runs the replay: the plant at constant speed from rest (i = 0, angle 0),
-/// each state held for one period. Usable for benchmarks (`bench pmsm`).
+/// each state held for one period. `bench pmsm` times this function.
 pub fn simulate(c: &ReplayConfig, states: &[u8]) -> Result<Vec<ReplayRow>> {
     let m = motor_of(c);
     let mut plant = Plant::new(
@@ -304,6 +306,10 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(e.contains("line 2"), "{e}");
+        assert_eq!(
+            parse_states("\u{feff}switch_state_abc\r\n011\r\n").unwrap(),
+            [3]
+        );
         assert!(parse_states("switch_state_abc\n").is_err());
         assert!(parse_states("").is_err());
     }

@@ -179,10 +179,10 @@ fn iq_settling(tr: &Trace) -> Option<f64> {
     )
 }
 
-/// Table 3: T_tol sweep (p = 0.1).
 /// Table 3 rows and the step traces (for the Fig. 8 plot).
 pub type Table3 = (Vec<Table3Row>, Vec<(f64, Trace)>);
 
+/// Table 3: T_tol sweep (p = 0.1), 0.4 N m step at 0.1 ms, 2.1 ms run.
 pub fn table3(drive: &DriveParams) -> Result<Table3> {
     let paper = [
         (0.02, 7.89, 0.12),
@@ -366,8 +366,11 @@ pub const BODE_AMP_NM: f64 = 0.3;
 /// Fig. 11: gain and phase of torque / reference at each frequency below
 /// half the controller's sample rate.
 /// Transient: the first 1 ms (at least 1 period) is discarded; the DFT runs
-/// over an integer number of periods (>= 2 ms) of window-mean torque,
-/// against the sine evaluated at the window centres.
+/// over an integer number of periods (>= 2 ms) of window-mean torque (the
+/// mean of the 4 ADC samples of each window), against the reference averaged
+/// over the same 4 sample instants: both pass through the same averaging
+/// filter (-0.2 dB and a 1.5-sample delay at 8 kHz), so the ratio is the
+/// torque loop's own response.
 pub fn bode<C: Controller>(
     drive: &DriveParams,
     mut make: impl FnMut() -> Result<C>,
@@ -388,15 +391,19 @@ pub fn bode<C: Controller>(
         let mut c = make()?;
         let r = move |t: f64| BODE_AMP_NM * (2.0 * PI * f * t).sin();
         let tr = runs::run(&mut c, &motor, drive, Mech::Free, dur, r)?;
-        let half = 0.5 * runs::WINDOW_SAMPLES as f64 / drive.adc_sample_rate_hz;
+        let t_adc = 1.0 / drive.adc_sample_rate_hz;
         let (mut yr, mut yi, mut rr, mut ri) = (0.0, 0.0, 0.0, 0.0);
         for x in tr.windows.iter() {
-            let tc = x.t_s - half;
+            // Window centre (the mean instant of its 4 samples).
+            let tc = x.t_s - 0.5 * (runs::WINDOW_SAMPLES - 1) as f64 * t_adc;
             if tc < t_skip || tc >= t_skip + n_per * per {
                 continue;
             }
             let (s, c) = (2.0 * PI * f * tc).sin_cos();
-            let rv = r(tc);
+            let rv = (0..runs::WINDOW_SAMPLES)
+                .map(|j| r(x.t_s - j as f64 * t_adc))
+                .sum::<f64>()
+                / runs::WINDOW_SAMPLES as f64;
             yr += x.torque_nm * c;
             yi -= x.torque_nm * s;
             rr += rv * c;

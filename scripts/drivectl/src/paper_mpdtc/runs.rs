@@ -36,9 +36,6 @@ pub struct Window {
 pub enum Mech {
     /// Free rotor with its inertia, no load, from rest.
     Free,
-    /// Constant electrical speed, rad/s.
-    #[allow(dead_code)] // kept for experiments at a held speed
-    Speed(f64),
 }
 
 /// Runs `ctrl` for `duration_s` against the plant `motor` (ideal inverter
@@ -58,7 +55,6 @@ pub fn run<C: Controller + ?Sized>(
             },
             0.0,
         ),
-        Mech::Speed(w) => (MechanicalMode::ConstantSpeed, w),
     };
     let mut plant = Plant::new(motor, drive.dead_time_s, mode, w0).map_err(|e| anyhow!("{e}"))?;
     let n = (duration_s / ctrl.period_s()).round() as u64;
