@@ -16,10 +16,10 @@
 //! | COEF | sQ1.16 | 18 | [-2, 2) | 1.53e-5 | `a`, `w Ts`, cos/sin, `lambda`, gains |
 //! | TRQ | sQ3.14 | 18 | [-8, 8) N m | 61 uN m | torque reference |
 //! | KINV | sQ8.16 | 25 | [-256, 256) A/N m | | `1 / k_T` |
-//! | CSQ | sQ8.8 | 18 | [-256, 256) A | 3.9 mA | current operand of the square (cost) |
+//! | CSQ | sQ8.8 (17 bits, held in 18) | 18 | [-256, 256) A | 3.9 mA | current operand of the square (cost); its `sat18` never engages |
 //! | MAG | uQ13.11 in s25 | 25 | [0, 8192) A^2 | 4.9e-4 A^2 | `|I|^2` |
 //! | WGT | sQ3.14 | 18 | [0, 8) | 6.1e-5 | `2^(n p)` (or `2^(2 n p)`), n = 0..3 |
-//! | COST | sQ16.25 | 43 (kept 48) | exact | | `WGT * MAG`, compared, never rounded |
+//! | COST | uQ16.25 (< 2^41) | 43 (kept 48) | exact | | `WGT * MAG`, compared, never rounded |
 //!
 //! Arithmetic rules (every operation of [`decide`] uses only these):
 //! - **Product** `COEF x CUR` is exact (43 bits, 32 fraction bits). A *MAC
