@@ -75,8 +75,9 @@
 //!     `V[k-1]` at the middle of [k-1, k]. Without it, every voltage change
 //!     shows up as a 0.3 A model error that the observer chases.
 
+use super::frames::{legs_switched, park, switch_state_alpha_beta};
 use super::observer::{observer_is_stable, AxisGains, AxisObserver};
-use super::params::{MotorParams, ParamError};
+use super::params::{check_nonneg, check_pos, MotorParams, ParamError};
 
 /// Table 1 of paper 000: original weight of the switching times, row `S[k]`,
 /// column `S[k+1]`, states indexed `4 Sa + 2 Sb + Sc`.
@@ -91,26 +92,24 @@ pub const SWITCH_WEIGHT: [[u8; 8]; 8] = [
     [8, 4, 4, 2, 4, 2, 2, 1],
 ];
 
-/// Number of legs that change between two switch states (0..=3).
+/// Number of legs that change between two switch states (0..=3), the `n`
+/// of `w_s^p = 2^(n p)` ([`legs_switched`]).
 pub fn transitions(from: u8, to: u8) -> u32 {
-    ((from ^ to) & 7).count_ones()
+    legs_switched(from, to)
 }
 
 /// Stator-frame voltage of a switch state, per unit of `2/3 U_dc`:
-/// `(u_alpha, u_beta)` = `(Sa - (Sb + Sc)/2, sqrt(3)/2 (Sb - Sc))`.
+/// `(u_alpha, u_beta)` = `(Sa - (Sb + Sc)/2, sqrt(3)/2 (Sb - Sc))`
+/// (the plant's [`switch_state_alpha_beta`] at `U_dc = 3/2`).
 pub fn state_vector_pu(s: u8) -> (f64, f64) {
-    let sa = ((s >> 2) & 1) as f64;
-    let sb = ((s >> 1) & 1) as f64;
-    let sc = (s & 1) as f64;
-    (sa - 0.5 * (sb + sc), 0.5 * libm::sqrt(3.0) * (sb - sc))
+    switch_state_alpha_beta(s, 1.5)
 }
 
-/// dq voltage of state `s` at rotor angle `th_rad`, V.
+/// dq voltage of state `s` at rotor angle `th_rad`, V: the plant's stator
+/// voltage ([`switch_state_alpha_beta`]) through [`park`].
 pub fn state_voltage_dq(s: u8, th_rad: f64, u_dc_v: f64) -> (f64, f64) {
-    let (a, b) = state_vector_pu(s);
-    let k = u_dc_v * 2.0 / 3.0;
-    let (sn, cs) = (libm::sin(th_rad), libm::cos(th_rad));
-    (k * (cs * a + sn * b), k * (-sn * a + cs * b))
+    let (a, b) = switch_state_alpha_beta(s, u_dc_v);
+    park(a, b, th_rad)
 }
 
 /// The norm `|I|` of eq. (12) (interpretation 9).
@@ -180,26 +179,7 @@ impl MpdtcParams {
     /// Checks ranges and the observer stability condition for `model`.
     pub fn validate(&self, model: &MotorParams) -> Result<(), ParamError> {
         model.validate()?;
-        let pos = |field, v: f64| {
-            if v.is_finite() && v > 0.0 {
-                Ok(())
-            } else {
-                Err(ParamError {
-                    field,
-                    reason: "must be finite and > 0",
-                })
-            }
-        };
-        let nonneg = |field, v: f64| {
-            if v.is_finite() && v >= 0.0 {
-                Ok(())
-            } else {
-                Err(ParamError {
-                    field,
-                    reason: "must be finite and >= 0",
-                })
-            }
-        };
+        let (pos, nonneg) = (check_pos, check_nonneg);
         pos("control_period_s", self.control_period_s)?;
         nonneg("t_tol_nm", self.t_tol_nm)?;
         if !(self.p_weight.is_finite() && (0.0..=0.5).contains(&self.p_weight)) {
@@ -366,7 +346,8 @@ pub struct Candidate {
     pub abs_err_nm: f64,
     /// Inside the tolerance band.
     pub in_band: bool,
-    /// Cost `J = 2^(n p) |I|` (A).
+    /// Cost `J = 2^(n p) |I|`: A^2 with the default squared norm, A with
+    /// the Euclidean one.
     pub cost: f64,
 }
 

@@ -37,7 +37,7 @@
 //! segment ends (trapezoid). The angle advances by `omega h` with the speed the
 //! electrical solution used, so angle and currents stay consistent.
 
-use super::frames::{clarke, inv_clarke, legs, park, state_from_legs, switch_state_alpha_beta};
+use super::frames::{inv_clarke, legs, park, state_from_legs, switch_state_alpha_beta};
 use super::params::{check_finite, check_nonneg, MotorParams, ParamError};
 use core::f64::consts::PI;
 
@@ -438,17 +438,6 @@ pub fn wrap_2pi(x: f64) -> f64 {
     } else {
         y
     }
-}
-
-/// Torque of a given `(i_alpha, i_beta)` at angle `theta` for `motor`, N m.
-pub fn torque_alpha_beta_nm(motor: &MotorParams, i_ab: (f64, f64), theta_e_rad: f64) -> f64 {
-    let (d, q) = park(i_ab.0, i_ab.1, theta_e_rad);
-    motor.torque_nm(d, q)
-}
-
-/// Phase currents to `(alpha, beta)` (re-export for convenience).
-pub fn i_alpha_beta(i_abc: [f64; 3]) -> (f64, f64) {
-    clarke(i_abc)
 }
 
 #[cfg(test)]

@@ -307,7 +307,10 @@ pub fn toggle_metrics(tr: &Trace) -> StepMetrics {
             .map(|v| v.iter().fold(0.0, |a: f64, &b| a.max(b)) * 1e3),
         overshoot_percent: ov,
         fsw_khz: fsw * 1e-3,
-        fsw_carrier_equiv_khz: 0.5 * fsw * 1e-3,
+        fsw_carrier_equiv_khz: metrics::fsw_carrier_equiv_hz(
+            tr.summary.transitions,
+            tr.summary.duration_s,
+        ) * 1e-3,
         torque_ripple_rms_nm: ripple,
         torque_mean_error_nm: mean_err,
     }

@@ -58,6 +58,11 @@ pub fn fsw_hz(transitions: [u64; 3], duration_s: f64) -> f64 {
     m::transitions_per_leg_per_s([0; 3], transitions, duration_s)
 }
 
+/// Carrier-equivalent switching frequency (half of [`fsw_hz`]), Hz.
+pub fn fsw_carrier_equiv_hz(transitions: [u64; 3], duration_s: f64) -> f64 {
+    m::equivalent_carrier_hz([0; 3], transitions, duration_s)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -79,5 +84,6 @@ mod tests {
         let ts = settling(&w, |x| x.torque_nm, 0.0, 1.0, 0.0, 1.0).unwrap();
         assert!((ts - 24e-6).abs() < 1e-12, "{ts}");
         assert_eq!(fsw_hz([30, 30, 30], 1e-3), 30e3);
+        assert_eq!(fsw_carrier_equiv_hz([30, 30, 30], 1e-3), 15e3);
     }
 }
