@@ -118,10 +118,17 @@ impl MachineParams {
         pos("x_ls_pu", self.x_ls_pu)?;
         pos("x_lr_pu", self.x_lr_pu)?;
         pos("x_m_pu", self.x_m_pu)?;
-        // D > 0 follows from positive leakages, but guard the derived values
-        // against overflow for absurd inputs.
-        pos("x_m_pu", self.d_pu())?;
-        pos("x_m_pu", self.tau_s_pu())?;
+        // D > 0 follows from positive leakages, but absurd magnitudes can
+        // overflow (or underflow) the derived values: say so, rather than
+        // blaming one field with a message it already passed.
+        let derived = [self.d_pu(), self.tau_s_pu(), self.tau_r_pu()];
+        if !derived.iter().all(|v| v.is_finite() && *v > 0.0) {
+            return Err(ParamError {
+                field: "r_s_pu, r_r_pu, x_ls_pu, x_lr_pu, x_m_pu",
+                reason: "derived D, tau_s or tau_r is not a finite positive number \
+                         (values far outside any per-unit machine)",
+            });
+        }
         Ok(())
     }
     /// Stator self reactance `X_s = X_ls + X_m`, pu.
@@ -313,11 +320,19 @@ impl OperatingPoint {
             });
         }
         pos("omega_s_pu", self.omega_s_pu)?;
+        // The closed loop runs whole fundamental periods (2 pi / (omega_s
+        // T_s,pu) steps each): below 0.1 pu (5 Hz) a run takes hours.
+        if !(0.1..=2.0).contains(&self.omega_s_pu) {
+            return Err(ParamError {
+                field: "omega_s_pu",
+                reason: "must be in 0.1..=2 pu (the experiments run whole fundamental periods)",
+            });
+        }
         finite("omega_r_pu", self.omega_r_pu)?;
-        if libm::fabs(self.omega_r_pu) > 2.0 || libm::fabs(self.omega_s_pu) > 2.0 {
+        if libm::fabs(self.omega_r_pu) > 2.0 {
             return Err(ParamError {
                 field: "omega_r_pu",
-                reason: "speeds must be within +-2 pu",
+                reason: "must be within +-2 pu",
             });
         }
         Ok(())
@@ -390,5 +405,22 @@ mod tests {
         let mut p = DriveParams::default();
         p.controller.lambda_n = -1.0;
         assert_eq!(p.validate().unwrap_err().field, "lambda_n");
+        let mut p = DriveParams::default();
+        p.operating_point.omega_s_pu = 1e-6;
+        assert_eq!(p.validate().unwrap_err().field, "omega_s_pu");
+        let mut p = DriveParams::default();
+        p.operating_point.omega_s_pu = 2.5;
+        assert_eq!(p.validate().unwrap_err().field, "omega_s_pu");
+        // Each field finite and positive, but the derived values overflow.
+        let mut p = DriveParams::default();
+        p.machine.x_m_pu = 1e300;
+        let e = p.validate().unwrap_err();
+        assert!(
+            e.field.contains("x_m_pu") && e.reason.contains("derived"),
+            "{e}"
+        );
+        let mut p = DriveParams::default();
+        p.machine.r_r_pu = 1e-310;
+        assert!(p.validate().unwrap_err().reason.contains("tau_r"));
     }
 }
