@@ -175,18 +175,19 @@ struct Report {
     runtime_s: f64,
 }
 
-/// Loads and validates the parameter file (defaults when absent).
+/// Loads and validates the parameter file (defaults when absent). Errors
+/// name the file and, for invalid values, the field.
 pub fn load_params(path: Option<&Path>) -> Result<DriveParams> {
-    let p = match path {
-        None => DriveParams::default(),
-        Some(f) => {
-            let text =
-                std::fs::read_to_string(f).with_context(|| format!("reading {}", f.display()))?;
-            toml::from_str::<DriveParams>(&text)
-                .with_context(|| format!("parsing {}", f.display()))?
-        }
+    let Some(f) = path else {
+        let p = DriveParams::default();
+        p.validate()
+            .map_err(|e| anyhow!("built-in parameters: {e}"))?;
+        return Ok(p);
     };
-    p.validate().map_err(|e| anyhow!("{e}"))?;
+    let text = std::fs::read_to_string(f).with_context(|| format!("reading {}", f.display()))?;
+    let p =
+        toml::from_str::<DriveParams>(&text).with_context(|| format!("parsing {}", f.display()))?;
+    p.validate().map_err(|e| anyhow!("{}: {e}", f.display()))?;
     Ok(p)
 }
 
@@ -198,12 +199,18 @@ fn fpga_for(p: &DriveParams) -> Result<FpgaMpdcc> {
     .map_err(|e| anyhow!("FPGA model: {e}"))
 }
 
-fn rel_diff_percent(a: f64, b_ref: f64) -> f64 {
+/// `(a - b_ref) / b_ref` in percent (0 when `b_ref` is 0).
+fn signed_diff_percent(a: f64, b_ref: f64) -> f64 {
     if b_ref.abs() < 1e-12 {
         0.0
     } else {
-        100.0 * (a - b_ref).abs() / b_ref.abs()
+        100.0 * (a - b_ref) / b_ref.abs()
     }
+}
+
+/// `|a - b_ref| / |b_ref|` in percent (0 when `b_ref` is 0).
+fn rel_diff_percent(a: f64, b_ref: f64) -> f64 {
+    signed_diff_percent(a, b_ref).abs()
 }
 
 fn run_loop(
@@ -313,7 +320,9 @@ fn build_report(a: &Args) -> Result<(Report, Vec<Trace>)> {
         let mut p = base;
         p.controller.extrapolation_steps = l;
         // Some L do not fit the FPGA's 16-bit coefficient formats at this
-        // T_s (the model says which): such rows are left out.
+        // T_s (the model says which): such rows are left out. Checked with
+        // the sweep's own bound (the file's `delta_i_pu` is not used here).
+        p.controller.delta_i_pu = DELTA_I_SWEEP_PU[0];
         if let Err(e) = fpga_for(&p) {
             eprintln!("L = {l}: skipped ({e})");
             continue;
@@ -353,13 +362,16 @@ fn build_report(a: &Args) -> Result<(Report, Vec<Trace>)> {
             fsw_hz: r.fsw_hz,
             thd_percent: r.thd_percent,
             deadlocks: r.deadlocks,
-            fsw_diff_vs_full_percent: 100.0 * (r.fsw_hz - f.reference.fsw_hz) / f.reference.fsw_hz,
-            thd_diff_vs_full_percent: 100.0 * (r.thd_percent - f.reference.thd_percent)
-                / f.reference.thd_percent,
+            fsw_diff_vs_full_percent: signed_diff_percent(r.fsw_hz, f.reference.fsw_hz),
+            thd_diff_vs_full_percent: signed_diff_percent(r.thd_percent, f.reference.thd_percent),
         });
     }
-    let m_bits = base.controller.horizon_max_steps.trailing_zeros();
-    let table2 = cycles::table2(m_bits).to_vec();
+    // Table II for the parameter file's N_bar and L (not the defaults').
+    let table2 = cycles::table2_for(
+        base.controller.horizon_max_steps.trailing_zeros(),
+        base.controller.extrapolation_steps.trailing_zeros(),
+    )
+    .to_vec();
     let report = Report {
         fig5,
         mismatch,
@@ -758,15 +770,14 @@ fn write_outputs(dir: &Path, r: &Report, traces: &[(f64, Vec<TraceSample>)]) -> 
             dashed: true,
             markers: false,
         });
+        let c = &r.params.controller;
+        let title = format!(
+            "Neutral point and phase capacitor voltages (bounds +-{} / +-{} pu)",
+            c.v_n_bound_pu, c.v_ph_bound_pu
+        );
         w(
             "capacitors_reference.svg",
-            svg::line_plot(
-                "Neutral point and phase capacitor voltages (bounds +-0.05 pu)",
-                "t (ms)",
-                "v (pu)",
-                &caps,
-                false,
-            ),
+            svg::line_plot(&title, "t (ms)", "v (pu)", &caps, false),
         )?;
     }
     Ok(())
