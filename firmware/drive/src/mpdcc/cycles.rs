@@ -180,7 +180,10 @@ pub const EXPLORER_OPS: &[Op] = &[
 ];
 
 /// The scheduler before dispatch ([`super::fpga::common_terms`] and
-/// [`super::fpga::lazy_ok`]), worst case (the lazy check fails).
+/// [`super::fpga::lazy_ok`]) of our default core (all accuracy options, four
+/// nodes), worst case (the lazy check fails). The paper-structure rows of
+/// Table II use it too, which overstates the paper's pre-phase by a few
+/// cycles (its common terms take 12 cycles, Sec. V-C).
 pub const SCHEDULER_OPS: &[Op] = &[
     op("sample state registers", Reg, &[]),                // 0
     op("kw = c_w omega_r", B, &[0]),                       // 1
@@ -201,64 +204,140 @@ pub const SCHEDULER_OPS: &[Op] = &[
     op("nat_b += c_r psi_b", B, &[15]),                    // 16
     op("nat_b -= kw psi_a", B, &[1, 16]),                  // 17
     op("rate_b = ks i*_a - nat_b", B, &[3, 17]),           // 18
-    op("cor_a = kp psi_a", B, &[5]),                       // 19
-    op("cor_a += k2 i*_a", B, &[6, 19]),                   // 20
-    op("cor_b = kp psi_b", B, &[5]),                       // 21
-    op("cor_b += k2 i*_b", B, &[6, 21]),                   // 22
-    op("cub_a = ks3 i*_b", B, &[10]),                      // 23
-    op("cub_a += kw3 psi_b", B, &[9, 23]),                 // 24
-    op("cub_b = -ks3 i*_a", B, &[10]),                     // 25
-    op("cub_b -= kw3 psi_a", B, &[9, 25]),                 // 26
-    op("dl_a = rate_a - cor_a + cub_a", B, &[14, 20, 24]), // 27
-    op("dl_b = rate_b - cor_b + cub_b", B, &[18, 22, 26]), // 28
-    op("d1_a = rate_a L^2 - cor_a L + cub_a", B, &[14, 20, 24]), // 29
-    op("d1_b = rate_b L^2 - cor_b L + cub_b", B, &[18, 22, 26]), // 30
-    op("s3h dl_b", B, &[28]),                              // 31
-    op("s3h d1_b", B, &[30]),                              // 32
-    op("dn_l,b", B, &[27, 31]),                            // 33
-    op("dn_l,c", B, &[27, 31]),                            // 34
-    op("dn_1,b", B, &[29, 32]),                            // 35
-    op("dn_1,c", B, &[29, 32]),                            // 36
-    op("s3h i_b", B, &[0]),                                // 37
-    op("i_b", B, &[37]),                                   // 38
-    op("i_c", B, &[37]),                                   // 39
-    op("e_a = i*_a - i_a", B, &[0]),                       // 40
-    op("e_b' = i*_b - i_b", B, &[0]),                      // 41
-    op("s3h e_b'", B, &[41]),                              // 42
-    op("e_b", B, &[40, 42]),                               // 43
-    op("e_c", B, &[40, 42]),                               // 44
-    op("e_vn = -v_n", B, &[0]),                            // 45
-    op("e_ph,a", B, &[0]),                                 // 46
-    op("e_ph,b", B, &[0]),                                 // 47
-    op("e_ph,c", B, &[0]),                                 // 48
-    op("P_n,a = c_n i_a", B, &[0]),                        // 49
-    op("P_n,b", B, &[38]),                                 // 50
-    op("P_n,c", B, &[39]),                                 // 51
-    op("P_ph,a = c_ph i_a", B, &[0]),                      // 52
-    op("P_ph,b", B, &[38]),                                // 53
-    op("P_ph,c", B, &[39]),                                // 54
-    op("v_a(s_prev) = ph v_ph,a + mux(rail Vdc/2 | v_n)", B, &[0]), // 55
-    op("v_b(s_prev) = ph v_ph,b + mux(rail Vdc/2 | v_n)", B, &[0]), // 56
-    op("v_c(s_prev) = ph v_ph,c + mux(rail Vdc/2 | v_n)", B, &[0]), // 57
-    op("sum = v_a + v_b", B, &[55, 56]),                   // 58
-    op("sum += v_c", B, &[57, 58]),                        // 59
-    op("u_a = 3 v_a - sum", B, &[55, 59]),                 // 60
-    op("u_b", B, &[56, 59]),                               // 61
-    op("u_c", B, &[57, 59]),                               // 62
-    op("e1_a = e_a + dn_1,a - g3 u_a / L", B, &[29, 40, 60]), // 63
-    op("e1_b", B, &[35, 43, 61]),                          // 64
-    op("e1_c", B, &[36, 44, 62]),                          // 65
-    op("e1_vn = e_vn + np_a P_n,a / L", B, &[45, 49]),     // 66
-    op("e1_vn += np_b P_n,b / L", B, &[50, 66]),           // 67
-    op("e1_vn += np_c P_n,c / L", B, &[51, 67]),           // 68
-    op("e1_ph,a = e_ph,a - c P_ph,a / L", B, &[46, 52]),   // 69
-    op("e1_ph,b", B, &[47, 53]),                           // 70
-    op("e1_ph,c", B, &[48, 54]),                           // 71
+    op("dmp_a = c_d nat_a (stator damping)", B, &[13]),    // 19
+    op("dmp_b = c_d nat_b", B, &[17]),                     // 20
+    op("kw1 = c_w1 omega_r (one-step products)", B, &[0]), // 21
+    op("ks1 = c_s1 omega_s", B, &[0]),                     // 22
+    op("nat1_a = -c_tau1 i_a", B, &[0]),                   // 23
+    op("nat1_a += c_r1 psi_a", B, &[23]),                  // 24
+    op("nat1_a += kw1 psi_b", B, &[21, 24]),               // 25
+    op("rate1_a = -ks1 i*_b - nat1_a", B, &[22, 25]),      // 26
+    op("nat1_b = -c_tau1 i_b", B, &[0]),                   // 27
+    op("nat1_b += c_r1 psi_b", B, &[27]),                  // 28
+    op("nat1_b -= kw1 psi_a", B, &[21, 28]),               // 29
+    op("rate1_b = ks1 i*_a - nat1_b", B, &[22, 29]),       // 30
+    op("cor_a = kp psi_a", B, &[5]),                       // 31
+    op("cor_a += k2 i*_a", B, &[6, 31]),                   // 32
+    op("cor_b = kp psi_b", B, &[5]),                       // 33
+    op("cor_b += k2 i*_b", B, &[6, 33]),                   // 34
+    op("cub_a = ks3 i*_b", B, &[10]),                      // 35
+    op("cub_a += kw3 psi_b", B, &[9, 35]),                 // 36
+    op("cub_b = -ks3 i*_a", B, &[10]),                     // 37
+    op("cub_b -= kw3 psi_a", B, &[9, 37]),                 // 38
     op(
-        "7 bound compares, AND (lazy check)",
+        "dl_a = rate_a + dmp_a - cor_a + cub_a (node L)",
+        B,
+        &[14, 19, 32, 36],
+    ), // 39
+    op(
+        "dl_b = rate_b + dmp_b - cor_b + cub_b",
+        B,
+        &[18, 20, 34, 38],
+    ), // 40
+    op(
+        "d1_a = rate1_a - cor_a / L^2 + cub_a / L^3 (one step)",
+        B,
+        &[26, 32, 36],
+    ), // 41
+    op(
+        "d1_b = rate1_b - cor_b / L^2 + cub_b / L^3",
+        B,
+        &[30, 34, 38],
+    ), // 42
+    op("s3h dl_b", B, &[40]),                              // 43
+    op("s3h d1_b", B, &[42]),                              // 44
+    op("dn_l,b", B, &[39, 43]),                            // 45
+    op("dn_l,c", B, &[39, 43]),                            // 46
+    op("dn_1,b", B, &[41, 44]),                            // 47
+    op("dn_1,c", B, &[41, 44]),                            // 48
+    op(
+        "dn_2L,a = 2 rate_a + 4 (dmp_a - cor_a) + 8 cub_a",
+        B,
+        &[14, 19, 32, 36],
+    ), // 49
+    op(
+        "dl_2L,b = 2 rate_b + 4 (dmp_b - cor_b) + 8 cub_b",
+        B,
+        &[18, 20, 34, 38],
+    ), // 50
+    op("s3h dl_2L,b", B, &[50]),                           // 51
+    op("dn_2L,b", B, &[49, 51]),                           // 52
+    op("dn_2L,c", B, &[49, 51]),                           // 53
+    op(
+        "dn_4L,a = 4 rate_a + 16 (dmp_a - cor_a) + 64 cub_a",
+        B,
+        &[14, 19, 32, 36],
+    ), // 54
+    op(
+        "dl_4L,b = 4 rate_b + 16 (dmp_b - cor_b) + 64 cub_b",
+        B,
+        &[18, 20, 34, 38],
+    ), // 55
+    op("s3h dl_4L,b", B, &[55]),                           // 56
+    op("dn_4L,b", B, &[54, 56]),                           // 57
+    op("dn_4L,c", B, &[54, 56]),                           // 58
+    op(
+        "dn_8L,a = 8 rate_a + 64 (dmp_a - cor_a) + 512 cub_a",
+        B,
+        &[14, 19, 32, 36],
+    ), // 59
+    op(
+        "dl_8L,b = 8 rate_b + 64 (dmp_b - cor_b) + 512 cub_b",
+        B,
+        &[18, 20, 34, 38],
+    ), // 60
+    op("s3h dl_8L,b", B, &[60]),                           // 61
+    op("dn_8L,b", B, &[59, 61]),                           // 62
+    op("dn_8L,c", B, &[59, 61]),                           // 63
+    op("s3h i_b", B, &[0]),                                // 64
+    op("i_b", B, &[64]),                                   // 65
+    op("i_c", B, &[64]),                                   // 66
+    op("e_a = i*_a - i_a", B, &[0]),                       // 67
+    op("e_b' = i*_b - i_b", B, &[0]),                      // 68
+    op("s3h e_b'", B, &[68]),                              // 69
+    op("e_b", B, &[67, 69]),                               // 70
+    op("e_c", B, &[67, 69]),                               // 71
+    op("e_vn = -v_n", B, &[0]),                            // 72
+    op("e_ph,a", B, &[0]),                                 // 73
+    op("e_ph,b", B, &[0]),                                 // 74
+    op("e_ph,c", B, &[0]),                                 // 75
+    op("P_n,a = c_n i_a", B, &[0]),                        // 76
+    op("P_n,b", B, &[65]),                                 // 77
+    op("P_n,c", B, &[66]),                                 // 78
+    op("P_ph,a = c_ph i_a", B, &[0]),                      // 79
+    op("P_ph,b", B, &[65]),                                // 80
+    op("P_ph,c", B, &[66]),                                // 81
+    op("v_a(s_prev) = ph v_ph,a + mux(rail Vdc/2 | v_n)", B, &[0]), // 82
+    op("v_b(s_prev) = ph v_ph,b + mux(rail Vdc/2 | v_n)", B, &[0]), // 83
+    op("v_c(s_prev) = ph v_ph,c + mux(rail Vdc/2 | v_n)", B, &[0]), // 84
+    op(
+        "v_a(s_prev) += (n D_vn + ph D_ph,a) / (2L) (capacitor drift)",
+        B,
+        &[76, 77, 78, 79, 82],
+    ), // 85
+    op("v_b(s_prev) += drift", B, &[76, 77, 78, 80, 83]),  // 86
+    op("v_c(s_prev) += drift", B, &[76, 77, 78, 81, 84]),  // 87
+    op("sum = v_a + v_b", B, &[85, 86]),                   // 88
+    op("sum += v_c", B, &[87, 88]),                        // 89
+    op("u_a = 3 v_a - sum", B, &[85, 89]),                 // 90
+    op("u_b", B, &[86, 89]),                               // 91
+    op("u_c", B, &[87, 89]),                               // 92
+    op("e1_a = e_a + dn_1,a - g3 u_a / L", B, &[41, 67, 90]), // 93
+    op("e1_b", B, &[47, 70, 91]),                          // 94
+    op("e1_c", B, &[48, 71, 92]),                          // 95
+    op("e1_vn = e_vn + np_a P_n,a / L", B, &[72, 76]),     // 96
+    op("e1_vn += np_b P_n,b / L", B, &[77, 96]),           // 97
+    op("e1_vn += np_c P_n,c / L", B, &[78, 97]),           // 98
+    op("e1_ph,a = e_ph,a - c P_ph,a / L", B, &[73, 79]),   // 99
+    op("e1_ph,b", B, &[74, 80]),                           // 100
+    op("e1_ph,c", B, &[75, 81]),                           // 101
+    op(
+        "7 bound compares, AND (lazy check); all nodes ready",
         Reg,
-        &[63, 64, 65, 68, 69, 70, 71],
-    ), // 72
+        &[
+            45, 46, 49, 52, 53, 54, 57, 58, 59, 62, 63, 93, 94, 95, 98, 99, 100, 101,
+        ],
+    ), // 102
 ];
 
 /// Hardware parameters of the cycle model.
