@@ -260,7 +260,7 @@ mod tests {
     ///   predictions overshoot more). Why not exactly inside: after a deadlock
     ///   (eqs. 15-16 minimize the worst excess, they cannot always remove it)
     ///   an output may stay outside for a few steps; with the reference this
-    ///   happens in ~0.05 % of the steps at `delta_i = 0.04 pu`;
+    ///   happens in ~0.1 % of the steps at `delta_i = 0.04 pu` (100 periods);
     /// - the current tracks its reference (fundamental within 2 % of
     ///   `1/sqrt(2)` pu rms) at a plausible MV switching frequency.
     fn check(p: &DriveParams, r: &LoopResult, inside_share: f64) {

@@ -3,17 +3,19 @@
 //! Part A (models, f64 reference, closed loop): `params`, `machine`, `anpc`,
 //! `controller` (the interface both implementations share), `reference`,
 //! `plant`, `closed_loop`, `stats`. See docs/mpdcc.md.
+//! Part B (16-bit FPGA model): `fixed`, `fpga`, `binsearch`, `scheduler`,
+//! `cycles`, `fpga_eval` (tests). See docs/mpdcc-fpga.md.
 pub mod anpc;
 pub mod binsearch;
 pub mod closed_loop;
 pub mod controller;
+pub mod cycles;
 pub mod fixed;
+pub mod fpga;
+pub mod fpga_eval;
 pub mod machine;
 pub mod params;
 pub mod plant;
 pub mod reference;
-pub mod stats;
-pub mod cycles;
-pub mod fpga;
 pub mod scheduler;
-pub mod fpga_eval;
+pub mod stats;
