@@ -37,12 +37,23 @@ pub fn run(a: Args) -> Result<()> {
         write_csv(dir, &r)?;
         plots::all(dir, &r)?;
     }
-    if a.json {
-        println!("{}", serde_json::to_string_pretty(&to_json(&r))?);
+    let text = if a.json {
+        serde_json::to_string_pretty(&to_json(&r))? + "\n"
     } else {
-        print!("{}", markdown(&r));
+        markdown(&r)
+    };
+    print_stdout(&text)
+}
+
+/// Writes `text` to stdout; a closed pipe (`| head`) ends quietly instead of
+/// panicking like `print!` does.
+fn print_stdout(text: &str) -> Result<()> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        r => r.context("writing to stdout"),
     }
-    Ok(())
 }
 
 fn to_json(r: &Results) -> serde_json::Value {
@@ -270,8 +281,8 @@ pub fn bench(a: BenchArgs) -> Result<()> {
     let rows = crate::sim::simulate(&rc, &states)?;
     let replay = n as f64 / t.elapsed().as_secs_f64();
     std::hint::black_box(rows);
-    println!(
-        "{}",
+    print_stdout(&format!(
+        "{}\n",
         serde_json::to_string_pretty(&json!({
             "closed_loop_periods_per_s": {"mpdtc_ref": mpdtc_ref, "mpdtc_fixed": mpdtc_fixed, "foc": foc},
             "closed_loop_simulated_s_per_s": {
@@ -282,6 +293,5 @@ pub fn bench(a: BenchArgs) -> Result<()> {
             "replay_steps_per_s": replay,
             "simulated_s_per_measurement": a.sim_s,
         }))?
-    );
-    Ok(())
+    ))
 }

@@ -28,40 +28,56 @@ pub const TOGGLE_HALF_S: f64 = 10e-3;
 pub const TOGGLE_RUN_S: f64 = 40e-3;
 
 fn mpdtc_cfg(p: MpdtcParams) -> Result<MpdtcConfig> {
-    let p = tuning_override(p);
+    let p = tuning_override(p)?;
     MpdtcConfig::new(MotorParams::default(), p).map_err(|e| anyhow!("{e}"))
 }
 
 /// Development aid: `MPDTC_TUNE="k_int_per_s=5000,cost_norm=euclidean"`
 /// overrides defaults of every MPDTC in the experiments (not for reports).
-fn tuning_override(mut p: MpdtcParams) -> MpdtcParams {
+/// An unknown key or a value that does not parse is an error.
+fn tuning_override(mut p: MpdtcParams) -> Result<MpdtcParams> {
+    use drive::pmsm::mpdtc_ref::CostNorm;
     let Ok(v) = std::env::var("MPDTC_TUNE") else {
-        return p;
+        return Ok(p);
     };
-    eprintln!("warning: MPDTC_TUNE={v} overrides the documented tuning");
-    for kv in v.split(',') {
-        let Some((k, x)) = kv.split_once('=') else {
-            continue;
+    static WARN: std::sync::Once = std::sync::Once::new();
+    WARN.call_once(|| eprintln!("warning: MPDTC_TUNE={v} overrides the documented tuning"));
+    for kv in v.split(',').filter(|kv| !kv.trim().is_empty()) {
+        let (k, x) = kv
+            .split_once('=')
+            .map(|(k, x)| (k.trim(), x.trim()))
+            .ok_or_else(|| anyhow!("MPDTC_TUNE: expected key=value, got {kv:?}"))?;
+        let num = || -> Result<f64> {
+            x.parse()
+                .map_err(|_| anyhow!("MPDTC_TUNE: {k} = {x:?} is not a number"))
         };
-        let f: f64 = x.parse().unwrap_or(f64::NAN);
         match k {
-            "k_int_per_s" => p.k_int_per_s = f,
-            "int_limit_nm" => p.int_limit_nm = f,
-            "obs_kp_v_per_a" => p.obs_kp_v_per_a = f,
-            "obs_ki_per_s" => p.obs_ki_per_s = f,
-            "meas_age_periods" => p.meas_age_periods = f,
-            "int_conditional" => p.int_conditional = f != 0.0,
-            "cost_norm" => {
-                p.cost_norm = if x == "euclidean" {
-                    drive::pmsm::mpdtc_ref::CostNorm::Euclidean
-                } else {
-                    drive::pmsm::mpdtc_ref::CostNorm::Squared
+            "k_int_per_s" => p.k_int_per_s = num()?,
+            "int_limit_nm" => p.int_limit_nm = num()?,
+            "obs_kp_v_per_a" => p.obs_kp_v_per_a = num()?,
+            "obs_ki_per_s" => p.obs_ki_per_s = num()?,
+            "meas_age_periods" => p.meas_age_periods = num()?,
+            "int_conditional" => {
+                p.int_conditional = match x {
+                    "0" | "false" => false,
+                    "1" | "true" => true,
+                    _ => anyhow::bail!("MPDTC_TUNE: int_conditional = {x:?}: expected 0/1"),
                 }
             }
-            _ => eprintln!("MPDTC_TUNE: unknown key {k}"),
+            "cost_norm" => {
+                p.cost_norm = match x {
+                    "squared" => CostNorm::Squared,
+                    "euclidean" => CostNorm::Euclidean,
+                    _ => anyhow::bail!("MPDTC_TUNE: cost_norm = {x:?}: expected squared/euclidean"),
+                }
+            }
+            _ => anyhow::bail!(
+                "MPDTC_TUNE: unknown key {k:?} (k_int_per_s, int_limit_nm, obs_kp_v_per_a, \
+                 obs_ki_per_s, meas_age_periods, int_conditional, cost_norm)"
+            ),
         }
     }
-    p
+    Ok(p)
 }
 
 fn step_ref(t: f64) -> f64 {
