@@ -197,6 +197,15 @@ pub fn simulate(c: &ReplayConfig, states: &[u8]) -> Result<Vec<ReplayRow>> {
             .step(&Actuation::SwitchState(s), c.period_s, 1, |_| {})
             .map_err(|e| anyhow!("{e}"))?;
         let (i_d_a, i_q_a) = plant.i_dq_a();
+        if !(i_d_a.is_finite() && i_q_a.is_finite()) {
+            bail!(
+                "step {}: the currents are not finite numbers (parameters out of any \
+                 physical range, e.g. omega_e_rad_s = {} or u_dc_v = {}); nothing written",
+                rows.len(),
+                c.omega_e_rad_s,
+                c.u_dc_v
+            );
+        }
         rows.push(ReplayRow {
             state: s,
             i_d_a,
@@ -321,6 +330,12 @@ mod tests {
             omega_e_rad_s: 0.0,
             ..parse_config(CFG).unwrap()
         };
+        let huge = ReplayConfig {
+            omega_e_rad_s: 1e300,
+            ..parse_config(CFG).unwrap()
+        };
+        let e = simulate(&huge, &[0b100]).unwrap_err().to_string();
+        assert!(e.contains("step 0") && e.contains("omega_e_rad_s"), "{e}");
         let rows = simulate(&c, &[0b100, 0b000]).unwrap();
         let want = 32.0 / 0.555 * (1.0 - (-0.555 * 1.5625e-5 / 0.00064f64).exp());
         assert!((rows[0].i_d_a - want).abs() < 1e-12);
