@@ -7,6 +7,10 @@
 //! - [`sim`]: the `Controller` trait and the closed-loop runner.
 //! - [`svpwm`], [`foc`]: the FOC baseline (PI + centre-aligned SVPWM).
 //! - [`metrics`]: settling time, overshoot, switching frequency, ripple.
+//! - [`mpdtc_ref`]: the MPDTC `f64` reference (interpretations of the paper
+//!   in its module doc); [`observer`]: eqs. (14)-(16) and their stability
+//!   test; [`mpdtc_fixed`]: the bit-accurate model of the PL core;
+//!   [`mpdtc_ctrl`]: both as [`sim::Controller`]s.
 pub mod foc;
 pub mod frames;
 pub mod measure;
