@@ -341,7 +341,6 @@ fn build_report(a: &Args) -> Result<(Report, Vec<Trace>)> {
         let mut spy = anatomy::Spy {
             reference: Reference::new(&p).map_err(|e| anyhow!("{e}"))?,
             fpga: fpga_for(&p)?,
-            lambda_n: p.controller.lambda_n,
             a: anatomy::Anatomy {
                 delta_i_pu: di,
                 ..Default::default()

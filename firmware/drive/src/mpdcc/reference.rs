@@ -143,6 +143,17 @@ impl Reference {
         ext
     }
 
+    /// Cost of eqs. (10)-(12) of moving from `s_prev` to `s` with extension
+    /// `e`: `f_s / L* + lambda_n v_n(k+L*)^2` (transitions per step), `+inf`
+    /// for `L* = 0`.
+    pub fn cost(&self, s_prev: [u8; 3], s: [u8; 3], e: &Extension) -> f64 {
+        if e.l_star == 0 {
+            return f64::INFINITY;
+        }
+        anpc::switch_transitions(s_prev, s) as f64 / e.l_star as f64
+            + self.p.controller.lambda_n * e.v_n_end * e.v_n_end
+    }
+
     /// `L*`, terminal `v_n` and first-step excess of candidate `s` from `st`
     /// (public for tests and experiments).
     pub fn evaluate(&mut self, st: &CtrlState, s: [u8; 3]) -> Result<Extension, StateError> {
@@ -184,14 +195,12 @@ impl MpdccController for Reference {
             &full
         };
         let h = self.p.controller.horizon_max_steps;
-        let lambda = self.p.controller.lambda_n;
         let mut best: Option<([u8; 3], f64, u32)> = None;
         let mut best_dl: Option<([u8; 3], f64)> = None;
         for &s in cands.iter() {
             let e = self.extend(st, s, h);
             if e.l_star > 0 {
-                let j = anpc::switch_transitions(st.s_prev, s) as f64 / e.l_star as f64
-                    + lambda * e.v_n_end * e.v_n_end;
+                let j = self.cost(st.s_prev, s, &e);
                 if best.is_none_or(|b| j < b.1) {
                     best = Some((s, j, e.l_star));
                 }

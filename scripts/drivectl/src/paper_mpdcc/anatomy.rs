@@ -6,7 +6,6 @@
 //! `L*` the reference's exact extension gives that candidate, and when both
 //! switch to different positions the two choices are priced with the
 //! reference's cost (eqs. 10-12).
-use drive::mpdcc::anpc;
 use drive::mpdcc::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
 use drive::mpdcc::fpga::FpgaMpdcc;
 use drive::mpdcc::reference::Reference;
@@ -16,7 +15,6 @@ use serde::Serialize;
 pub struct Spy {
     pub reference: Reference,
     pub fpga: FpgaMpdcc,
-    pub lambda_n: f64,
     pub a: Anatomy,
 }
 
@@ -95,12 +93,6 @@ impl Anatomy {
     }
 }
 
-impl Spy {
-    fn cost(&self, s_prev: [u8; 3], s: [u8; 3], l: u32, v_n: f64) -> f64 {
-        anpc::switch_transitions(s_prev, s) as f64 / l as f64 + self.lambda_n * v_n * v_n
-    }
-}
-
 impl MpdccController for Spy {
     fn name(&self) -> &'static str {
         "reference (watching the FPGA model)"
@@ -131,8 +123,8 @@ impl MpdccController for Spy {
                     if tf.l_star == 0 {
                         self.a.fpga_choice_infeasible += 1;
                     } else if tr.l_star > 0 {
-                        let jf = self.cost(st.s_prev, f.s, tf.l_star, tf.v_n_end);
-                        let jr = self.cost(st.s_prev, d.s, tr.l_star, tr.v_n_end);
+                        let jf = self.reference.cost(st.s_prev, f.s, &tf);
+                        let jr = self.reference.cost(st.s_prev, d.s, &tr);
                         self.a.cost_ratio_sum += if jr > 0.0 { jf / jr } else { 1.0 };
                     } else {
                         // Reference deadlock: both are eq. (16) choices; count as equal.
