@@ -37,7 +37,8 @@
 //!    instead of 0.20 ms for the 0.4 N m step, both measured with a 5 % band
 //!    when the rule was chosen); deadbeat (`z_c = 0`) gains
 //!    nothing measurable and is less robust. With `L` off by +-30 % in the
-//!    controller the pole moves to `1 - (1 - z_c) L_true/L_model`, i.e.
+//!    controller the pole moves to `1 - (1 - z_c) L_model/L_true` (the loop
+//!    gain scales with `b_true/b_model = L_model/L_true`), i.e.
 //!    -0.17 or 0.37: still stable and well damped.
 //! 5. **Anti-windup**: the PI is implemented as `v = K_p e + x` with
 //!    `x(k+1) = a x(k) + (1 - a) v_applied(k)` (a proportional gain plus
