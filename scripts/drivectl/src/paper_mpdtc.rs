@@ -295,3 +295,67 @@ pub fn bench(a: BenchArgs) -> Result<()> {
         }))?
     ))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Acceptance of issue 3: `paper mpdtc --json` carries the keys the issue
+    /// lists (units in the names), the rows in sweep order, and numbers where
+    /// numbers are due; the Markdown has the four tables.
+    #[test]
+    fn json_has_the_issue_keys_in_order() {
+        let r = experiments::all().unwrap();
+        let j = to_json(&r);
+        let obj = |v: &serde_json::Value, keys: &[&str]| {
+            for k in keys {
+                assert!(v.get(k).is_some(), "missing {k} in {v}");
+            }
+        };
+        obj(&j, &["table3", "table4", "step", "bode"]);
+        let t3: Vec<f64> = j["table3"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| {
+                obj(x, &["t_tol_nm", "id_max_a", "iq_settling_time_ms"]);
+                assert!(x["id_max_a"].as_f64().unwrap() > 0.0);
+                x["t_tol_nm"].as_f64().unwrap()
+            })
+            .collect();
+        assert_eq!(t3, [0.02, 0.04, 0.08, 0.12]);
+        let t4: Vec<f64> = j["table4"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| {
+                obj(x, &["p", "id_max_a", "fsw_khz"]);
+                assert!(x["fsw_khz"].as_f64().unwrap() > 0.0);
+                x["p"].as_f64().unwrap()
+            })
+            .collect();
+        assert_eq!(t4, [0.02, 0.1, 0.15, 0.2]);
+        for c in ["mpdtc", "foc"] {
+            let s = &j["step"][c];
+            obj(
+                s,
+                &[
+                    "settling_time_ms",
+                    "overshoot_percent",
+                    "fsw_khz",
+                    "torque_ripple_rms_nm",
+                ],
+            );
+            assert!(s["settling_time_ms"].as_f64().is_some(), "{c} settles");
+            let b = &j["bode"][c];
+            obj(b, &["bandwidth_hz", "points"]);
+            let pts = b["points"].as_array().unwrap();
+            assert!(pts.len() >= 14, "{c}: {} points", pts.len());
+            obj(&pts[0], &["freq_hz", "gain_db", "phase_deg"]);
+        }
+        let md = markdown(&r);
+        for t in ["Table 3", "Table 4", "Fig. 10", "Fig. 11"] {
+            assert!(md.contains(t), "{t}");
+        }
+    }
+}
