@@ -297,6 +297,15 @@ fn sweep(
     Ok((fig5, mismatch, traces))
 }
 
+/// Table II for the parameter file's `N_bar` and `L` (not the defaults').
+fn table2_for_params(p: &DriveParams) -> Vec<cycles::Table2Row> {
+    cycles::table2_for(
+        p.controller.horizon_max_steps.trailing_zeros(),
+        p.controller.extrapolation_steps.trailing_zeros(),
+    )
+    .to_vec()
+}
+
 /// Runs every experiment; the report plus the waveform traces.
 fn build_report(a: &Args) -> Result<(Report, Vec<Trace>)> {
     let t0 = Instant::now();
@@ -365,12 +374,7 @@ fn build_report(a: &Args) -> Result<(Report, Vec<Trace>)> {
             thd_diff_vs_full_percent: signed_diff_percent(r.thd_percent, f.reference.thd_percent),
         });
     }
-    // Table II for the parameter file's N_bar and L (not the defaults').
-    let table2 = cycles::table2_for(
-        base.controller.horizon_max_steps.trailing_zeros(),
-        base.controller.extrapolation_steps.trailing_zeros(),
-    )
-    .to_vec();
+    let table2 = table2_for_params(&base);
     let report = Report {
         fig5,
         mismatch,
@@ -891,6 +895,20 @@ mod tests {
         assert_eq!(traces.len(), 1);
     }
 
+    /// Table II follows the parameter file's extrapolation point: with
+    /// `L = 16` the default core's lanes search pieces of 16, 16, 32 and 64
+    /// steps (5 + 5 + 6 + 7 = 23 cycles worst case, not 21 as at `L = 8`).
+    #[test]
+    fn table2_uses_the_files_extrapolation_point() {
+        let mut p = DriveParams::default();
+        let t8 = table2_for_params(&p);
+        p.controller.extrapolation_steps = 16;
+        let t16 = table2_for_params(&p);
+        assert_eq!(cycles::worst_lane_cycles(4, 4, 7), 23);
+        assert_eq!(t16[0].model_per_candidate, t8[0].model_per_candidate + 2);
+        assert_eq!(t16, cycles::table2_for(7, 4).to_vec());
+    }
+
     #[test]
     fn bad_toml_is_rejected_with_reason() {
         let dir = std::env::temp_dir().join(format!("mpdcc-toml-{}", std::process::id()));
@@ -898,7 +916,7 @@ mod tests {
         let f = dir.join("bad.toml");
         std::fs::write(&f, "[machine]\nr_s_pu = -1.0\n").unwrap();
         let e = load_params(Some(&f)).unwrap_err().to_string();
-        assert!(e.contains("r_s_pu"), "{e}");
+        assert!(e.contains("r_s_pu") && e.contains("bad.toml"), "{e}");
         std::fs::write(&f, "[machine]\nr_s = 0.01\n").unwrap();
         assert!(load_params(Some(&f)).is_err());
         std::fs::remove_dir_all(&dir).unwrap();
