@@ -11,7 +11,7 @@
 //! saturation and word width below is part of the specification.
 //!
 //! # Prediction model (eqs. 4, 9, 13, 14, 17-18), as implemented
-//! With `T = T_s,pu`, `t = m L T` (node `m = 1, 2, 4`) and `v_abc(s)` held:
+//! With `T = T_s,pu`, `t = m L T` (node `m = 1, 2, 4, 8`) and `v_abc(s)` held:
 //!
 //! ```text
 //! Delta i_s  = t [ -i_s/tau_s + X_m/(D tau_r) psi_r - X_m/D omega_r J psi_r + X_r/D K v ]
@@ -297,9 +297,8 @@ impl Coeffs {
         if !(1..=MAX_NODES as u32).contains(&cfg.nodes) {
             return Err(FpgaError::Nodes);
         }
-        // Three nodes need 4 L <= N_bar; otherwise the single chord is used.
         // Node K sits at 2^(K-1) L, which must not pass N_bar: use as many
-        // nodes as fit.
+        // nodes as fit (down to the single chord).
         let mut nodes = cfg.nodes;
         while nodes > 1 && (c.extrapolation_steps << (nodes - 1)) > c.horizon_max_steps {
             nodes -= 1;
@@ -455,7 +454,7 @@ pub struct Common {
     /// Output errors at `k`, `a_j = y*_j(k) - y_j(k)`: `[i_abc, v_n, v_ph,abc]`, Q2.13.
     pub e0: [i16; 7],
     /// Switch-independent error change over `m L` steps for the nodes
-    /// `m = 1, 2, 4`, abc, Q2.13 (`[0]` is eq. 14's `k+L` term).
+    /// `m = 1, 2, 4, 8`, abc, Q2.13 (`[0]` is eq. 14's `k+L` term).
     pub dn: [[i16; 3]; MAX_NODES],
     /// Same over one step (lazy check), abc, Q2.13.
     pub dn_1: [i16; 3],
@@ -465,7 +464,7 @@ pub struct Common {
     pub pn: [i64; 3],
     /// `L T/C_ph i_x`, wide (f27).
     pub pph: [i64; 3],
-    /// Reference change over `m L` steps (`m = 1, 2, 4`), abc, Q2.13.
+    /// Reference change over `m L` steps (`m = 1, 2, 4, 8`), abc, Q2.13.
     pub dref: [[i16; 3]; MAX_NODES],
     /// Registers copied for the explorers: `v_n`, `v_ph`, Q2.13.
     pub v_n: i16,
@@ -684,8 +683,8 @@ pub type Nodes = [[i32; 7]; MAX_NODES];
 /// Node registers are 18-bit Q4.13: values beyond +-2^17 saturate.
 pub const NODE_MAX: i64 = (1 << 17) - 1;
 
-/// Error changes of candidate `s` over `m L` steps for node `i` (`m = 1, 2,
-/// 4` for `i = 0, 1, 2`), in 18-bit Q4.13 node registers.
+/// Error changes of candidate `s` over `m L` steps for node `i` (`m = 2^i`:
+/// 1, 2, 4, 8 for `i = 0..=3`), in 18-bit Q4.13 node registers.
 ///
 /// Voltage part: with `u0 = 3 v - sum v` at `k` and `uh` the same of half the
 /// capacitor-drift change `Delta v(L)/2` (option `capacitor_drift`), the
