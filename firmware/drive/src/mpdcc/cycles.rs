@@ -181,9 +181,8 @@ pub const EXPLORER_OPS: &[Op] = &[
 
 /// The scheduler before dispatch ([`super::fpga::common_terms`] and
 /// [`super::fpga::lazy_ok`]) of our default core (all accuracy options, four
-/// nodes), worst case (the lazy check fails). The paper-structure rows of
-/// Table II use it too, which overstates the paper's pre-phase by a few
-/// cycles (its common terms take 12 cycles, Sec. V-C).
+/// nodes), worst case (the lazy check fails). [`SCHEDULER_OPS_PAPER`] is the
+/// paper's structure.
 pub const SCHEDULER_OPS: &[Op] = &[
     op("sample state registers", Reg, &[]),                // 0
     op("kw = c_w omega_r", B, &[0]),                       // 1
@@ -340,6 +339,94 @@ pub const SCHEDULER_OPS: &[Op] = &[
     ), // 102
 ];
 
+/// The scheduler before dispatch with the paper's structure
+/// ([`super::fpga::FpgaConfig::paper`]: first-order rotations plus the `p`
+/// correction, one node, no stator damping, no capacitor drift), worst case;
+/// [`SCHEDULER_OPS`] without the operations of the accuracy options.
+pub const SCHEDULER_OPS_PAPER: &[Op] = &[
+    op("sample state registers", Reg, &[]),                // 0
+    op("kw = c_w omega_r", B, &[0]),                       // 1
+    op("w2 = omega_r^2", B, &[0]),                         // 2
+    op("ks = c_s omega_s", B, &[0]),                       // 3
+    op("kp = c_p w2", B, &[2]),                            // 4
+    op("nat_a = -c_tau i_a", B, &[0]),                     // 5
+    op("nat_a += c_r psi_a", B, &[5]),                     // 6
+    op("nat_a += kw psi_b", B, &[1, 6]),                   // 7
+    op("rate_a = -ks i*_b - nat_a", B, &[3, 7]),           // 8
+    op("nat_b = -c_tau i_b", B, &[0]),                     // 9
+    op("nat_b += c_r psi_b", B, &[9]),                     // 10
+    op("nat_b -= kw psi_a", B, &[1, 10]),                  // 11
+    op("rate_b = ks i*_a - nat_b", B, &[3, 11]),           // 12
+    op("kw1 = c_w1 omega_r (one-step products)", B, &[0]), // 13
+    op("ks1 = c_s1 omega_s", B, &[0]),                     // 14
+    op("nat1_a = -c_tau1 i_a", B, &[0]),                   // 15
+    op("nat1_a += c_r1 psi_a", B, &[15]),                  // 16
+    op("nat1_a += kw1 psi_b", B, &[13, 16]),               // 17
+    op("rate1_a = -ks1 i*_b - nat1_a", B, &[14, 17]),      // 18
+    op("nat1_b = -c_tau1 i_b", B, &[0]),                   // 19
+    op("nat1_b += c_r1 psi_b", B, &[19]),                  // 20
+    op("nat1_b -= kw1 psi_a", B, &[13, 20]),               // 21
+    op("rate1_b = ks1 i*_a - nat1_b", B, &[14, 21]),       // 22
+    op("cor_a = kp psi_a", B, &[4]),                       // 23
+    op("cor_b = kp psi_b", B, &[4]),                       // 24
+    op("dl_a = rate_a - cor_a (node L)", B, &[0, 1, 2, 3, 7, 8, 23]), // 25
+    op("dl_b = rate_b - cor_b", B, &[0, 1, 2, 3, 11, 12, 24]), // 26
+    op(
+        "d1_a = rate1_a - cor_a / L^2 (one step)",
+        B,
+        &[0, 1, 2, 3, 18, 23],
+    ), // 27
+    op("d1_b = rate1_b - cor_b / L^2", B, &[0, 1, 2, 3, 22, 24]), // 28
+    op("s3h dl_b", B, &[26]),                              // 29
+    op("s3h d1_b", B, &[28]),                              // 30
+    op("dn_l,b", B, &[25, 29]),                            // 31
+    op("dn_l,c", B, &[25, 29]),                            // 32
+    op("dn_1,b", B, &[27, 30]),                            // 33
+    op("dn_1,c", B, &[27, 30]),                            // 34
+    op("s3h i_b", B, &[0]),                                // 35
+    op("i_b", B, &[35]),                                   // 36
+    op("i_c", B, &[35]),                                   // 37
+    op("e_a = i*_a - i_a", B, &[0]),                       // 38
+    op("e_b' = i*_b - i_b", B, &[0]),                      // 39
+    op("s3h e_b'", B, &[39]),                              // 40
+    op("e_b", B, &[38, 40]),                               // 41
+    op("e_c", B, &[38, 40]),                               // 42
+    op("e_vn = -v_n", B, &[0]),                            // 43
+    op("e_ph,a", B, &[0]),                                 // 44
+    op("e_ph,b", B, &[0]),                                 // 45
+    op("e_ph,c", B, &[0]),                                 // 46
+    op("P_n,a = c_n i_a", B, &[0]),                        // 47
+    op("P_n,b", B, &[36]),                                 // 48
+    op("P_n,c", B, &[37]),                                 // 49
+    op("P_ph,a = c_ph i_a", B, &[0]),                      // 50
+    op("P_ph,b", B, &[36]),                                // 51
+    op("P_ph,c", B, &[37]),                                // 52
+    op("v_a(s_prev) = ph v_ph,a + mux(rail Vdc/2 | v_n)", B, &[0]), // 53
+    op("v_b(s_prev) = ph v_ph,b + mux(rail Vdc/2 | v_n)", B, &[0]), // 54
+    op("v_c(s_prev) = ph v_ph,c + mux(rail Vdc/2 | v_n)", B, &[0]), // 55
+    op("sum = v_a + v_b", B, &[47, 48, 49, 50, 51, 53, 54]), // 56
+    op("sum += v_c", B, &[47, 48, 49, 52, 55, 56]),        // 57
+    op("u_a = 3 v_a - sum", B, &[47, 48, 49, 50, 53, 57]), // 58
+    op("u_b", B, &[47, 48, 49, 51, 54, 57]),               // 59
+    op("u_c", B, &[47, 48, 49, 52, 55, 57]),               // 60
+    op("e1_a = e_a + dn_1,a - g3 u_a / L", B, &[27, 38, 58]), // 61
+    op("e1_b", B, &[33, 41, 59]),                          // 62
+    op("e1_c", B, &[34, 42, 60]),                          // 63
+    op("e1_vn = e_vn + np_a P_n,a / L", B, &[43, 47]),     // 64
+    op("e1_vn += np_b P_n,b / L", B, &[48, 64]),           // 65
+    op("e1_vn += np_c P_n,c / L", B, &[49, 65]),           // 66
+    op("e1_ph,a = e_ph,a - c P_ph,a / L", B, &[44, 50]),   // 67
+    op("e1_ph,b", B, &[45, 51]),                           // 68
+    op("e1_ph,c", B, &[46, 52]),                           // 69
+    op(
+        "7 bound compares, AND (lazy check)",
+        Reg,
+        &[
+            0, 1, 2, 3, 7, 8, 11, 12, 23, 24, 31, 32, 61, 62, 63, 66, 67, 68, 69,
+        ],
+    ), // 70
+];
+
 /// Hardware parameters of the cycle model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct CycleModel {
@@ -351,6 +438,8 @@ pub struct CycleModel {
     pub block_latency: u32,
     /// The explorer's program ([`EXPLORER_OPS`] or [`EXPLORER_OPS_PAPER`]).
     pub explorer: &'static [Op],
+    /// The scheduler's pre-phase ([`SCHEDULER_OPS`] or [`SCHEDULER_OPS_PAPER`]).
+    pub scheduler: &'static [Op],
 }
 
 impl Default for CycleModel {
@@ -360,15 +449,18 @@ impl Default for CycleModel {
             scheduler_blocks: 4,
             block_latency: 3,
             explorer: EXPLORER_OPS,
+            scheduler: SCHEDULER_OPS,
         }
     }
 }
 
 impl CycleModel {
-    /// The explorer with the paper's structure (one chord, no options).
+    /// The explorer and scheduler with the paper's structure (one chord, no
+    /// options).
     pub fn paper() -> Self {
         Self {
             explorer: EXPLORER_OPS_PAPER,
+            scheduler: SCHEDULER_OPS_PAPER,
             ..Self::default()
         }
     }
@@ -453,7 +545,7 @@ impl CycleModel {
 
     /// Cycles of the scheduler's pre-phase (common terms and lazy check).
     pub fn pre_cycles(&self) -> u32 {
-        self.makespan(SCHEDULER_OPS, self.scheduler_blocks, 0)
+        self.makespan(self.scheduler, self.scheduler_blocks, 0)
     }
 
     /// A decision that keeps `s(k-1)`: pre-phase plus the output register.
@@ -556,8 +648,11 @@ pub struct Table2Row {
     pub model_per_candidate: u32,
     /// Per-candidate explorer latency, paper structure, cycles.
     pub model_per_candidate_paper_core: u32,
-    /// Scheduler pre-phase (sample, common terms, lazy check), cycles.
+    /// Scheduler pre-phase (sample, common terms, lazy check), our default
+    /// core, cycles.
     pub model_pre: u32,
+    /// Scheduler pre-phase, paper structure ([`SCHEDULER_OPS_PAPER`]), cycles.
+    pub model_pre_paper_core: u32,
     /// What-if: our default core with pipelined explorers
     /// ([`CycleModel::pipelined_worst_case`]), 216 candidates, cycles.
     pub model_cycles_pipelined: u32,
@@ -603,6 +698,7 @@ pub fn table2_for(m_bits: u32, lambda: u32) -> [Table2Row; 6] {
             model_per_candidate: w.per_candidate,
             model_per_candidate_paper_core: wp.per_candidate,
             model_pre: w.pre,
+            model_pre_paper_core: wp.pre,
             model_cycles_pipelined: ours.pipelined_worst_case(n, cmax, lw),
         }
     })
@@ -623,7 +719,12 @@ mod tests {
 
     #[test]
     fn programs_are_in_dependency_order() {
-        for ops in [EXPLORER_OPS, EXPLORER_OPS_PAPER, SCHEDULER_OPS] {
+        for ops in [
+            EXPLORER_OPS,
+            EXPLORER_OPS_PAPER,
+            SCHEDULER_OPS,
+            SCHEDULER_OPS_PAPER,
+        ] {
             for (i, o) in ops.iter().enumerate() {
                 assert!(o.deps.iter().all(|&d| d < i), "{}", o.name);
             }
@@ -726,7 +827,11 @@ mod print {
             super::max_candidates()
         );
         let p = super::CycleModel::paper();
-        std::println!("paper core: per-candidate {}", p.candidate_cycles(8));
+        std::println!(
+            "paper core: pre {} per-candidate {}",
+            p.pre_cycles() + 1,
+            p.candidate_cycles(8)
+        );
         let lw = super::worst_lane_cycles(4, 3, 7);
         std::println!(
             "pipelined II: ours {}, paper core {}",
