@@ -249,3 +249,38 @@ fn piped_input_into_scripts_qemu() {
     assert!(text.contains("\r\nfirmware "), "{text}");
     assert!(text.contains("\r\nticks: "), "{text}");
 }
+
+/// The serial-port path of `drivectl` (what a board uses), end to end: QEMU
+/// puts the console UART on a pseudo-terminal, `drivectl` opens it with the
+/// `serialport` crate at 115200 8N1.
+#[test]
+fn serial_port_link_through_a_pty() {
+    use drivectl::link::{Qemu, Session};
+    use std::io::{BufRead, BufReader};
+    use std::process::{Command, Stdio};
+    let q = Qemu::new(elf());
+    let mut child = Command::new("qemu-system-arm")
+        .args(q.args("pty"))
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    // QEMU announces on stdout: "char device redirected to /dev/pts/N (label serial1)".
+    let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
+    let pty = loop {
+        let line = lines.next().expect("QEMU names its pty before exiting").unwrap();
+        if let Some(rest) = line.split("redirected to ").nth(1) {
+            break rest.split_whitespace().next().unwrap().to_string();
+        }
+    };
+    let result = std::panic::catch_unwind(|| {
+        let mut s = Session::open_serial(&pty, 115_200, TIMEOUT).expect("open the pty");
+        let r = cmd(&mut s, "version");
+        assert!(r.is_ok() && r.lines[0].starts_with("firmware "), "{r:?}");
+        assert_err(&cmd(&mut s, "nope"), "unknown-command");
+    });
+    let _ = child.kill();
+    let _ = child.wait();
+    result.unwrap();
+}

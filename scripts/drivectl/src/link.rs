@@ -210,11 +210,22 @@ impl Session {
 
     /// Sends an empty line and waits for the prompt it produces, dropping
     /// whatever came before.
+    /// Tries three times: a board may still be booting (bytes sent before
+    /// its receiver is on are lost).
     pub fn sync(&mut self, timeout: Duration) -> Result<()> {
-        self.drain_quiet(Duration::from_millis(200), timeout)?;
-        self.send(b"\r")?;
-        self.read_until(PROMPT.as_bytes(), timeout)?;
-        Ok(())
+        let attempt = timeout / 3;
+        let mut last = None;
+        for _ in 0..3 {
+            self.drain_quiet(Duration::from_millis(200), attempt)?;
+            self.send(b"\r")?;
+            match self.read_until(PROMPT.as_bytes(), attempt) {
+                Ok(_) => return Ok(()),
+                Err(e) => last = Some(e),
+            }
+        }
+        Err(last
+            .expect("three attempts")
+            .context("no prompt from the firmware"))
     }
 
     pub fn send(&mut self, bytes: &[u8]) -> Result<()> {

@@ -64,6 +64,11 @@ enum BenchCmd {
 /// Errors are the user's to read: one line of causes, exit code 2, never a
 /// backtrace (anyhow prints one from `main` when RUST_BACKTRACE is set).
 fn main() {
+    // `drivectl paper mpdtc | head` must end quietly, as other command-line
+    // tools do, not panic on the closed pipe: restore SIGPIPE's default action,
+    // which Rust's runtime sets to "ignore".
+    // SAFETY: called before any other thread exists; SIG_DFL is always valid.
+    unsafe { libc::signal(libc::SIGPIPE, libc::SIG_DFL) };
     if let Err(e) = dispatch(Cli::parse().cmd) {
         eprintln!("drivectl: error: {e:#}");
         std::process::exit(2);

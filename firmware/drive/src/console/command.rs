@@ -31,7 +31,8 @@ pub const COMMANDS: &[Spec] = &[
     Spec {
         name: "status",
         args: "",
-        help: "uptime [s], timer ticks [count] and rate [Hz], console counters, gates, PL bitstream",
+        help:
+            "uptime [s], timer ticks [count] and rate [Hz], console counters, gates, PL bitstream",
     },
     Spec {
         name: "debug",
