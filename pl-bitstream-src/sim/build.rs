@@ -46,7 +46,17 @@ fn run(cmd: &mut Command) {
     assert!(status.success(), "{cmd:?} failed with {status}");
 }
 
+/// Gate-level option: `RTL_SIM_MPDTC_NETLIST=<netlist.v>` (a yosys
+/// `write_verilog` of the synthesised `mpdtc_core`, see `scripts/rtl-gatesim`)
+/// makes the `mpdtc_core` harness simulate that netlist with yosys' Xilinx
+/// cell models instead of the RTL, so the same bit-exact tests check what
+/// synthesis produced.
+const NETLIST_ENV: &str = "RTL_SIM_MPDTC_NETLIST";
+
 fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
+    let netlist = (top == "mpdtc_core")
+        .then(|| env::var(NETLIST_ENV).ok())
+        .flatten();
     let mdir = out.join(format!("obj_{top}"));
     let mut cmd = Command::new("verilator");
     cmd.arg("--cc")
@@ -61,8 +71,30 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         .args(["-MAKEFLAGS", "OPT_FAST=-O1 OPT_SLOW=-O1 OPT_GLOBAL=-O1"])
         .arg("-Wno-fatal")
         .arg(format!("-I{}", rtl.display()));
-    for f in files.iter().filter(|f| f.ends_with(".v")) {
-        cmd.arg(rtl.join(f));
+    if let Some(n) = netlist {
+        // yosys' data directory next to its binary (<prefix>/share/yosys).
+        let bin = String::from_utf8(
+            Command::new("sh")
+                .args(["-c", "command -v yosys"])
+                .output()
+                .expect("sh")
+                .stdout,
+        )
+        .unwrap();
+        let prefix = PathBuf::from(bin.trim())
+            .parent()
+            .and_then(Path::parent)
+            .map(Path::to_path_buf);
+        let cells = prefix
+            .expect("yosys not found")
+            .join("share/yosys/xilinx/cells_sim.v");
+        println!("cargo:rerun-if-changed={n}");
+        println!("cargo:warning=mpdtc_core: simulating the gate-level netlist {n}");
+        cmd.args(["-Wno-lint", "-Wno-style"]).arg(n).arg(cells);
+    } else {
+        for f in files.iter().filter(|f| f.ends_with(".v")) {
+            cmd.arg(rtl.join(f));
+        }
     }
     run(&mut cmd);
     let lib = out.join(format!("libvtop_{top}.a"));
@@ -94,6 +126,7 @@ fn main() {
     let rtl = manifest.join("../rtl");
     let out = PathBuf::from(env::var("OUT_DIR").unwrap());
     println!("cargo:rerun-if-changed=build.rs");
+    println!("cargo:rerun-if-env-changed={NETLIST_ENV}");
 
     let vroot = String::from_utf8(
         Command::new("verilator")
