@@ -75,6 +75,11 @@ module pl_regs #(
     output wire [  17:0] mp_ki_o_o,
     output wire [  24:0] mp_eta_lim_o,
     output wire [  71:0] mp_w2_o,
+    // control sequence (mpdtc_seq): alignment settings
+    output wire [   2:0] align_vec_o,
+    output wire [  15:0] align_period_o,
+    output wire [  15:0] align_on_o,
+    output wire [  31:0] align_time_o,
     // status inputs
     input  wire          gates_active_i,
     input  wire [   2:0] gate_hi_i,
@@ -95,7 +100,9 @@ module pl_regs #(
     input  wire          mpdtc_busy_i,
     input  wire [   2:0] mpdtc_s_next_i,
     input  wire [  15:0] mpdtc_done_cnt_i,
-    input  wire [  24:0] mpdtc_iq_ref_i
+    input  wire [  24:0] mpdtc_iq_ref_i,
+    input  wire [  31:0] seq_status_i,
+    input  wire [  15:0] align_pos_i
 );
 `include "regmap.vh"
 
@@ -136,6 +143,10 @@ module pl_regs #(
     reg [31:0] wdg_timeout_q;
     reg [ 1:0] mpdtc_ctrl_q;
     reg [31:0] mpdtc_start_q;
+    reg [ 2:0] align_vec_q;
+    reg [15:0] align_period_q;
+    reg [15:0] align_on_q;
+    reg [31:0] align_time_q;
     // Plain RW words 4..33 of the MPDTC page (inputs, parameters).
     reg [31:0] mp_q[4:33];
 
@@ -161,6 +172,10 @@ module pl_regs #(
     wire w_wdg_timeout = wr_i && wa == RM_WDG_TIMEOUT_ADDR;
     wire w_mpdtc_ctrl = wr_i && wa == RM_MPDTC_CTRL_ADDR;
     wire w_mpdtc_start = wr_i && wa == RM_MPDTC_START_ADDR;
+    wire w_align_vec = wr_i && wa == RM_MPDTC_ALIGN_VEC_ADDR;
+    wire w_align_period = wr_i && wa == RM_MPDTC_ALIGN_PERIOD_ADDR;
+    wire w_align_on = wr_i && wa == RM_MPDTC_ALIGN_ON_ADDR;
+    wire w_align_time = wr_i && wa == RM_MPDTC_ALIGN_TIME_ADDR;
     wire [31:0] mp_wmask = rm_mpdtc_plain_mask(wa[11:2]);
     wire w_mp = wr_i && wa[14:12] == RM_BLK_MPDTC && wa[1:0] == 2'b00 && mp_wmask != 32'd0;
     wire [31:0] ra_mask = rm_mpdtc_plain_mask(rd_addr_i[11:2]);
@@ -170,7 +185,8 @@ module pl_regs #(
     wire w_any_ok = w_ctrl | w_err | w_heartbeat | w_scratch | w_gate_ctrl | w_dead_time
         | w_pwm_period | w_duty_a | w_duty_b | w_duty_c | w_sw_state | w_adc_ctrl
         | w_adc_period | w_enc_cpr | w_enc_window | w_fault_status | w_oc_limit
-        | w_wdg_timeout | w_mpdtc_ctrl | w_mpdtc_start | w_mp;
+        | w_wdg_timeout | w_mpdtc_ctrl | w_mpdtc_start | w_mp
+        | w_align_vec | w_align_period | w_align_on | w_align_time;
 
     // Merged write values (zero-extended current value underneath).
     wire [31:0] m_ctrl = merge({30'd0, ctrl_q}, wr_data_i, wr_strb_i);
@@ -200,6 +216,13 @@ module pl_regs #(
     wire [31:0] n_oc_limit = clamp(merge({21'd0, oc_limit_q}, wr_data_i, wr_strb_i),
                                    RM_OC_LIMIT_MIN, RM_OC_LIMIT_MAX);
     wire [31:0] n_mpdtc_ctrl = merge({30'd0, mpdtc_ctrl_q}, wr_data_i, wr_strb_i);
+    wire [31:0] n_align_vec = merge({29'd0, align_vec_q}, wr_data_i, wr_strb_i);
+    wire [31:0] n_align_period = clamp(merge({16'd0, align_period_q}, wr_data_i, wr_strb_i),
+                                       RM_MPDTC_ALIGN_PERIOD_MIN, RM_MPDTC_ALIGN_PERIOD_MAX);
+    wire [31:0] n_align_on = clamp(merge({16'd0, align_on_q}, wr_data_i, wr_strb_i),
+                                   RM_MPDTC_ALIGN_ON_MIN, RM_MPDTC_ALIGN_ON_MAX);
+    wire [31:0] n_align_time = clamp(merge(align_time_q, wr_data_i, wr_strb_i),
+                                     RM_MPDTC_ALIGN_TIME_MIN, RM_MPDTC_ALIGN_TIME_MAX);
     wire [31:0] n_wdg_timeout = clamp(merge(wdg_timeout_q, wr_data_i, wr_strb_i),
                                       RM_WDG_TIMEOUT_MIN, RM_WDG_TIMEOUT_MAX);
 
@@ -228,6 +251,10 @@ module pl_regs #(
             wdg_timeout_q <= RM_WDG_TIMEOUT_RESET;
             mpdtc_ctrl_q  <= RM_MPDTC_CTRL_RESET[1:0];
             mpdtc_start_q <= RM_MPDTC_START_RESET;
+            align_vec_q   <= RM_MPDTC_ALIGN_VEC_RESET[2:0];
+            align_period_q <= RM_MPDTC_ALIGN_PERIOD_RESET[15:0];
+            align_on_q    <= RM_MPDTC_ALIGN_ON_RESET[15:0];
+            align_time_q  <= RM_MPDTC_ALIGN_TIME_RESET;
         end else begin
             if (w_ctrl && !ctrl_bad) ctrl_q <= m_ctrl[1:0];
             // ERR: set wins over a simultaneous clear.
@@ -251,6 +278,10 @@ module pl_regs #(
             if (w_wdg_timeout) wdg_timeout_q <= n_wdg_timeout;
             if (w_mpdtc_ctrl) mpdtc_ctrl_q <= n_mpdtc_ctrl[1:0];
             if (w_mpdtc_start) mpdtc_start_q <= merge(mpdtc_start_q, wr_data_i, wr_strb_i);
+            if (w_align_vec) align_vec_q <= n_align_vec[2:0];
+            if (w_align_period) align_period_q <= n_align_period[15:0];
+            if (w_align_on) align_on_q <= n_align_on[15:0];
+            if (w_align_time) align_time_q <= n_align_time;
         end
     end
 
@@ -306,6 +337,12 @@ module pl_regs #(
             rd_data_o = {mpdtc_done_cnt_i, 12'd0, mpdtc_s_next_i, mpdtc_busy_i};
             RM_MPDTC_LATENCY_ADDR: rd_data_o = RM_MPDTC_LATENCY_RESET;
             RM_MPDTC_IQ_REF_ADDR: rd_data_o = {7'd0, mpdtc_iq_ref_i};
+            RM_MPDTC_SEQ_STATUS_ADDR: rd_data_o = seq_status_i;
+            RM_MPDTC_ALIGN_VEC_ADDR: rd_data_o = {29'd0, align_vec_q};
+            RM_MPDTC_ALIGN_PERIOD_ADDR: rd_data_o = {16'd0, align_period_q};
+            RM_MPDTC_ALIGN_ON_ADDR: rd_data_o = {16'd0, align_on_q};
+            RM_MPDTC_ALIGN_TIME_ADDR: rd_data_o = align_time_q;
+            RM_MPDTC_ALIGN_POS_ADDR: rd_data_o = {16'd0, align_pos_i};
             default: begin
                 if (r_mp) rd_data_o = mp_q[r_mp_idx] & ra_mask;
                 else rd_err_o = rd_i;
@@ -357,6 +394,10 @@ module pl_regs #(
     assign mp_kp_o_o     = mp_q[RM_MPDTC_P_KP_O_ADDR[7:2]][17:0];
     assign mp_ki_o_o     = mp_q[RM_MPDTC_P_KI_O_ADDR[7:2]][17:0];
     assign mp_eta_lim_o  = mp_q[RM_MPDTC_P_ETA_LIM_ADDR[7:2]][24:0];
+    assign align_vec_o    = align_vec_q;
+    assign align_period_o = align_period_q;
+    assign align_on_o     = align_on_q;
+    assign align_time_o   = align_time_q;
     assign mp_w2_o = {
         mp_q[RM_MPDTC_P_W2_3_ADDR[7:2]][17:0],
         mp_q[RM_MPDTC_P_W2_2_ADDR[7:2]][17:0],

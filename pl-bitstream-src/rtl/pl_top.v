@@ -6,9 +6,14 @@
 //   encoder_qei   <- sync2(A, B, Z)
 //   fault_block   <- raw samples, sync2(external fault), heartbeat, watchdog
 //   pwm_center    -> switching state in mode FOC-PWM
-//   mpdtc_core    -> switching state in mode MPDTC (inputs/parameters from
-//                    the MPDTC page, started by MPDTC_START); or PWM.SW_STATE
-//                    when MPDTC_CTRL.MANUAL = 1 (reset)
+//   mpdtc_seq     -> in mode MPDTC with MPDTC_CTRL.MANUAL = 0: the paper's
+//                    control sequence IDLE, INITIAL (rotor alignment), SAMPLE,
+//                    MPDTC, PWM around mpdtc_core (see mpdtc_seq.v); gates
+//                    only while the sequence is out of IDLE
+//   mpdtc_core    -> S[k+1] to mpdtc_seq (inputs/parameters from the MPDTC
+//                    page; started by the sequence, or by MPDTC_START while
+//                    the sequence is IDLE); PWM.SW_STATE drives the gates
+//                    instead when MPDTC_CTRL.MANUAL = 1 (reset)
 //   gate_driver   <- selected state, DEAD_TIME, enable = GATE_EN && mode != off,
 //                    fault = fault_block trip (all gates off at the next edge)
 // Reset: s_axi_aresetn_i (active low, synchronous, from the PS reset block).
@@ -125,6 +130,13 @@ module pl_top (
     wire [17:0] mp_a, mp_lambda, mp_k_int, mp_kp_o, mp_ki_o;
     wire        mp_int_cond;
     wire [71:0] mp_w2;
+    wire [ 2:0] align_vec;
+    wire [15:0] align_period, align_on;
+    wire [31:0] align_time;
+    wire        seq_start, seq_clr, seq_drive, seq_sampled, seq_aligned;
+    wire [ 2:0] seq_s, seq_state;
+    wire [ 7:0] seq_overruns;
+    wire [15:0] seq_periods, seq_align_pos;
     wire        core_ready, core_valid;
     wire [ 2:0] core_s_next;
     wire [24:0] core_iq_ref;
@@ -155,10 +167,13 @@ module pl_top (
     wire        fault_ext_n;
 
     // Switching-state source by mode (decoded in pl_regs from CTRL.MODE).
-    wire [ 2:0] mpdtc_state = mp_manual ? sw_state : core_s_q;
+    // Mode MPDTC: PWM.SW_STATE when MANUAL, else the control sequence, whose
+    // drive enable is low in IDLE and whenever its run condition is false.
+    wire [ 2:0] mpdtc_state = mp_manual ? sw_state : seq_s;
     wire [ 2:0] state_sel = sel_pwm ? pwm_s : sel_state ? mpdtc_state : 3'b000;
-    wire drive_en = gate_en && (sel_pwm || sel_state);
+    wire drive_en = gate_en && (sel_pwm || (sel_state && (mp_manual || seq_drive)));
     wire fault_any = |fault_status;
+    wire seq_run = sel_state && gate_en && !mp_manual && !mp_clr && !fault_any && !trip;
 
     pl_regs #(
         .AW(15)
@@ -219,6 +234,10 @@ module pl_top (
         .mp_ki_o_o     (mp_ki_o),
         .mp_eta_lim_o  (mp_eta_lim),
         .mp_w2_o       (mp_w2),
+        .align_vec_o   (align_vec),
+        .align_period_o(align_period),
+        .align_on_o    (align_on),
+        .align_time_o  (align_time),
         .gates_active_i(drive_en && !trip),
         .gate_hi_i     (gate_hi_o),
         .gate_lo_i     (gate_lo_o),
@@ -238,15 +257,45 @@ module pl_top (
         .mpdtc_busy_i  (!core_ready),
         .mpdtc_s_next_i(core_s_q),
         .mpdtc_done_cnt_i(core_done_q),
-        .mpdtc_iq_ref_i(core_iq_ref_q)
+        .mpdtc_iq_ref_i(core_iq_ref_q),
+        .seq_status_i  ({seq_periods, seq_overruns, 3'd0, seq_aligned, seq_sampled, seq_state}),
+        .align_pos_i   (seq_align_pos)
     );
 
-    // The MPDTC core: one decision per MPDTC_START write (ignored while busy
-    // or while MPDTC_CTRL.STATE_CLR holds the state at zero).
+    mpdtc_seq u_seq (
+        .clk_i         (clk_i),
+        .rst_i         (rst),
+        .run_i         (seq_run),
+        .sample_i      (adc_avg_valid_o),
+        .start_i       (mp_start),
+        .core_ready_i  (core_ready),
+        .core_valid_i  (core_valid),
+        .core_s_i      (core_s_next),
+        .align_vec_i   (align_vec),
+        .align_period_i(align_period),
+        .align_on_i    (align_on),
+        .align_time_i  (align_time),
+        .enc_pos_i     (enc_pos),
+        .core_start_o  (seq_start),
+        .core_clr_o    (seq_clr),
+        .drive_o       (seq_drive),
+        .s_o           (seq_s),
+        .state_o       (seq_state),
+        .sampled_o     (seq_sampled),
+        .aligned_o     (seq_aligned),
+        .overruns_o    (seq_overruns),
+        .periods_o     (seq_periods),
+        .align_pos_o   (seq_align_pos)
+    );
+
+    // The MPDTC core: started by the sequence (SAMPLE), or by an MPDTC_START
+    // write while the sequence is IDLE (ignored while busy or while
+    // MPDTC_CTRL.STATE_CLR holds the state at zero); the sequence's INITIAL
+    // also holds the state at zero.
     mpdtc_core u_mpdtc (
         .clk_i           (clk_i),
         .rst_i           (rst),
-        .in_valid_i      (mp_start && !mp_clr),
+        .in_valid_i      (seq_start && !mp_clr),
         .in_ready_o      (core_ready),
         .i_d_i           (mp_id),
         .i_q_i           (mp_iq),
@@ -273,7 +322,7 @@ module pl_top (
         .p_ki_o_i        (mp_ki_o),
         .p_eta_lim_i     (mp_eta_lim),
         .p_w2_i          (mp_w2),
-        .st_load_i       (mp_clr),
+        .st_load_i       (mp_clr || seq_clr),
         .st_s_applied_i  (3'd0),
         .st_s_prev_i     (3'd0),
         .st_eta_d_i      (25'sd0),
@@ -309,7 +358,7 @@ module pl_top (
         .st_nu_q_o       ()
     );
 
-    // S[k+1] is applied from the output strobe until the next decision.
+    // S[k+1] of the last decision, for MPDTC_STATUS (the sequence applies it).
     always @(posedge clk_i) begin
         if (rst || mp_clr) begin
             core_s_q      <= 3'd0;
@@ -430,6 +479,13 @@ module pl_top (
             if ($past(fault_any && fault_clr == 3'b000)) assert (fault_any);
             // Mode off or GATE_EN = 0 also turns every gate off.
             if ($past(!drive_en)) assert (gate_hi_o == 3'b000 && gate_lo_o == 3'b000);
+            // The control sequence: back in IDLE one clock after its run
+            // condition fails (any fault or trip, GATE_EN = 0, mode or
+            // MANUAL change), and in mode MPDTC with MANUAL = 0 the gates are
+            // off one clock after any cycle the sequence is IDLE.
+            if ($past(fault_any || trip || !gate_en || !sel_state)) assert (seq_state == 3'd0);
+            if ($past(sel_state && !mp_manual && seq_state == 3'd0))
+                assert (gate_hi_o == 3'b000 && gate_lo_o == 3'b000);
             // No leg has both gates on.
             assert ((gate_hi_o & gate_lo_o) == 3'b000);
         end

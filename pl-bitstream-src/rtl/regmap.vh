@@ -9,7 +9,7 @@ localparam [31:0] RM_MODE_FOC_PWM = 32'd1;
 localparam [31:0] RM_MODE_MPDTC = 32'd2;
 
 // Mask of the plain RW registers (all values valid) of the MPDTC page
-// at or above offset 0x010, by word index; 0 elsewhere.
+// at offsets 0x010..0x084, by word index; 0 elsewhere.
 function automatic [31:0] rm_mpdtc_plain_mask(input [9:0] word);
     case (word)
         10'd4: rm_mpdtc_plain_mask = 32'h01ffffff;  // MPDTC_IN_ID
@@ -51,7 +51,7 @@ localparam integer RM_ID_W = 32;
 localparam [31:0] RM_ID_RESET = 32'h50534452;
 localparam [14:0] RM_VERSION_ADDR = 15'h0004;
 localparam integer RM_VERSION_W = 32;
-localparam [31:0] RM_VERSION_RESET = 32'h00010001;
+localparam [31:0] RM_VERSION_RESET = 32'h00010002;
 localparam integer RM_VERSION_MINOR_LSB = 0;
 localparam integer RM_VERSION_MINOR_W = 16;
 localparam integer RM_VERSION_MAJOR_LSB = 16;
@@ -196,6 +196,40 @@ localparam [31:0] RM_MPDTC_P_W2_3_RESET = 32'h00000000;
 localparam [14:0] RM_MPDTC_IQ_REF_ADDR = 15'h1090;
 localparam integer RM_MPDTC_IQ_REF_W = 25;
 localparam [31:0] RM_MPDTC_IQ_REF_RESET = 32'h00000000;
+localparam [14:0] RM_MPDTC_SEQ_STATUS_ADDR = 15'h10a0;
+localparam integer RM_MPDTC_SEQ_STATUS_W = 32;
+localparam [31:0] RM_MPDTC_SEQ_STATUS_RESET = 32'h00000000;
+localparam integer RM_MPDTC_SEQ_STATUS_STATE_LSB = 0;
+localparam integer RM_MPDTC_SEQ_STATUS_STATE_W = 3;
+localparam integer RM_MPDTC_SEQ_STATUS_SAMPLED_LSB = 3;
+localparam integer RM_MPDTC_SEQ_STATUS_SAMPLED_W = 1;
+localparam integer RM_MPDTC_SEQ_STATUS_ALIGNED_LSB = 4;
+localparam integer RM_MPDTC_SEQ_STATUS_ALIGNED_W = 1;
+localparam integer RM_MPDTC_SEQ_STATUS_OVERRUNS_LSB = 8;
+localparam integer RM_MPDTC_SEQ_STATUS_OVERRUNS_W = 8;
+localparam integer RM_MPDTC_SEQ_STATUS_PERIODS_LSB = 16;
+localparam integer RM_MPDTC_SEQ_STATUS_PERIODS_W = 16;
+localparam [14:0] RM_MPDTC_ALIGN_VEC_ADDR = 15'h10a4;
+localparam integer RM_MPDTC_ALIGN_VEC_W = 3;
+localparam [31:0] RM_MPDTC_ALIGN_VEC_RESET = 32'h00000004;
+localparam [14:0] RM_MPDTC_ALIGN_PERIOD_ADDR = 15'h10a8;
+localparam integer RM_MPDTC_ALIGN_PERIOD_W = 16;
+localparam [31:0] RM_MPDTC_ALIGN_PERIOD_RESET = 32'h00001388;
+localparam [31:0] RM_MPDTC_ALIGN_PERIOD_MIN = 32'h00000002;
+localparam [31:0] RM_MPDTC_ALIGN_PERIOD_MAX = 32'h0000ffff;
+localparam [14:0] RM_MPDTC_ALIGN_ON_ADDR = 15'h10ac;
+localparam integer RM_MPDTC_ALIGN_ON_W = 16;
+localparam [31:0] RM_MPDTC_ALIGN_ON_RESET = 32'h000000fa;
+localparam [31:0] RM_MPDTC_ALIGN_ON_MIN = 32'h00000000;
+localparam [31:0] RM_MPDTC_ALIGN_ON_MAX = 32'h00007fff;
+localparam [14:0] RM_MPDTC_ALIGN_TIME_ADDR = 15'h10b0;
+localparam integer RM_MPDTC_ALIGN_TIME_W = 32;
+localparam [31:0] RM_MPDTC_ALIGN_TIME_RESET = 32'h02faf080;
+localparam [31:0] RM_MPDTC_ALIGN_TIME_MIN = 32'h00000001;
+localparam [31:0] RM_MPDTC_ALIGN_TIME_MAX = 32'hffffffff;
+localparam [14:0] RM_MPDTC_ALIGN_POS_ADDR = 15'h10b4;
+localparam integer RM_MPDTC_ALIGN_POS_W = 16;
+localparam [31:0] RM_MPDTC_ALIGN_POS_RESET = 32'h00000000;
 
 // Block 2 MPDCC: Reserved for the MPDCC core (not implemented yet): every access is SLVERR.
 localparam [2:0] RM_BLK_MPDCC = 3'd2;

@@ -23,6 +23,7 @@ const TOPS: &[(&str, &[&str], &str)] = &[
         &[
             "pl_top.v",
             "mpdtc_core.v",
+            "mpdtc_seq.v",
             "axil_slave.v",
             "pl_regs.v",
             "regmap.vh",

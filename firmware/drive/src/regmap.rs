@@ -200,7 +200,7 @@ pub const VERSION: Register = Register {
     offset: 0x004,
     access: Access::Ro,
     width: 32,
-    reset: 0x0001_0001,
+    reset: 0x0001_0002,
     format: "major.minor, 16 bits each",
     invalid: Invalid::AllValid,
     fields: &[
@@ -638,7 +638,9 @@ pub const MPDTC_CTRL: Register = Register {
             "MANUAL",
             0,
             1,
-            "1 = in mode MPDTC the gates follow PWM.SW_STATE, 0 = they follow mpdtc_core's S[k+1]",
+            "1 = in mode MPDTC the gates follow PWM.SW_STATE, 0 = the control sequence \
+             (MPDTC_SEQ_STATUS: alignment, then mpdtc_core's S[k+1] at each control-period \
+             boundary) drives them",
         ),
         field(
             "STATE_CLR",
@@ -659,8 +661,11 @@ pub const MPDTC_START: Register = Register {
     format: "any value",
     invalid: Invalid::AllValid,
     fields: &[],
-    doc: "Every write starts one decision on the MPDTC_IN_* and MPDTC_P_* registers \
-          (ignored while the core is busy or STATE_CLR is set); reads back the last value.",
+    doc: "While the control sequence is IDLE, every write starts one decision on the \
+          MPDTC_IN_* and MPDTC_P_* registers (ignored while the core is busy or STATE_CLR \
+          is set). In SAMPLE a write is the PS's hand-shake \"inputs of this period \
+          written\": the decision starts once the period's ADC sample is in; writes in \
+          INITIAL, MPDTC and PWM are ignored. Reads back the last value.",
 };
 /// MPDTC: status.
 pub const MPDTC_STATUS: Register = Register {
@@ -914,6 +919,136 @@ pub const MPDTC_IQ_REF: Register = Register {
     doc: "i_q* of the last decision (telemetry).",
 };
 
+/// `MPDTC_SEQ_STATUS.STATE` values: the control sequence of paper 000
+/// (section 3), `mpdtc_seq`.
+pub mod seq_state {
+    /// Gates off; waits for mode MPDTC, GATE_EN, MANUAL = 0, STATE_CLR = 0, no fault.
+    pub const IDLE: u32 = 0;
+    /// Rotor alignment (chopped alignment vector for MPDTC_ALIGN_TIME cycles).
+    pub const INITIAL: u32 = 1;
+    /// Waits for the period's averaged ADC sample and the PS's MPDTC_START.
+    pub const SAMPLE: u32 = 2;
+    /// The core decides (20 cycles).
+    pub const MPDTC: u32 = 3;
+    /// S[k+1] waits for the next control-period boundary (ADC average strobe).
+    pub const PWM: u32 = 4;
+}
+/// MPDTC: control-sequence status.
+pub const MPDTC_SEQ_STATUS: Register = Register {
+    name: "MPDTC_SEQ_STATUS",
+    offset: 0x0A0,
+    access: Access::Ro,
+    width: 32,
+    reset: 0,
+    format: "enum, bits and counters",
+    invalid: Invalid::AllValid,
+    fields: &[
+        field(
+            "STATE",
+            0,
+            3,
+            "0 IDLE, 1 INITIAL (alignment), 2 SAMPLE, 3 MPDTC, 4 PWM (regmap::seq_state)",
+        ),
+        field(
+            "SAMPLED",
+            3,
+            1,
+            "SAMPLE has this period's averaged ADC sample (waits for MPDTC_START)",
+        ),
+        field(
+            "ALIGNED",
+            4,
+            1,
+            "the alignment of the current run finished (MPDTC_ALIGN_POS valid); 0 from IDLE",
+        ),
+        field(
+            "OVERRUNS",
+            8,
+            8,
+            "control-period boundaries that found no S[k+1] ready (in SAMPLE with the \
+             sample taken, or in MPDTC): S[k] held one more period (wraps)",
+        ),
+        field(
+            "PERIODS",
+            16,
+            16,
+            "control periods completed: S[k+1] applied at a boundary (wraps)",
+        ),
+    ],
+    doc: "State of the control sequence (mpdtc_seq), active in mode MPDTC with \
+          MPDTC_CTRL.MANUAL = 0 and STATE_CLR = 0. Counters keep their values through IDLE.",
+};
+/// MPDTC: alignment vector.
+pub const MPDTC_ALIGN_VEC: Register = Register {
+    name: "MPDTC_ALIGN_VEC",
+    offset: 0x0A4,
+    access: Access::Rw,
+    width: 3,
+    reset: 0b100,
+    format: "bits SaSbSc (index 4 Sa + 2 Sb + Sc)",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "Switching state of the rotor alignment (INITIAL): 100 = phase a upper, b and c \
+          lower, the voltage vector on the a axis = d axis at angle 0. 000 and 111 are \
+          zero vectors (no alignment current).",
+};
+/// MPDTC: alignment chopper period.
+pub const MPDTC_ALIGN_PERIOD: Register = Register {
+    name: "MPDTC_ALIGN_PERIOD",
+    offset: 0x0A8,
+    access: Access::Rw,
+    width: 16,
+    reset: 5000,
+    format: "unsigned, PL clock cycles",
+    invalid: Invalid::Clamp { min: 2, max: 65535 },
+    fields: &[],
+    doc: "Period P of the alignment chopper (reset 50 us = 20 kHz). Read at every cycle.",
+};
+/// MPDTC: alignment on-time.
+pub const MPDTC_ALIGN_ON: Register = Register {
+    name: "MPDTC_ALIGN_ON",
+    offset: 0x0AC,
+    access: Access::Rw,
+    width: 16,
+    reset: 250,
+    format: "unsigned, PL clock cycles per chopper period",
+    invalid: Invalid::Clamp { min: 0, max: 32767 },
+    fields: &[],
+    doc: "Cycles with MPDTC_ALIGN_VEC at the start of each chopper period, the zero vector \
+          000 for the rest; the hardware caps it at floor(P / 2) (duty <= 50 %, never \
+          full time). Reset 250 / 5000 = 5 %: about 0.05 x (2/3 x 48 V) / 0.555 ohm = 2.9 A \
+          in phase a for the paper's motor (less the dead time).",
+};
+/// MPDTC: alignment duration.
+pub const MPDTC_ALIGN_TIME: Register = Register {
+    name: "MPDTC_ALIGN_TIME",
+    offset: 0x0B0,
+    access: Access::Rw,
+    width: 32,
+    reset: 50_000_000,
+    format: "unsigned, PL clock cycles",
+    invalid: Invalid::Clamp {
+        min: 1,
+        max: u32::MAX,
+    },
+    fields: &[],
+    doc: "Duration of INITIAL (rotor alignment), reset 0.5 s.",
+};
+/// MPDTC: encoder position at the end of the alignment.
+pub const MPDTC_ALIGN_POS: Register = Register {
+    name: "MPDTC_ALIGN_POS",
+    offset: 0x0B4,
+    access: Access::Ro,
+    width: 16,
+    reset: 0,
+    format: "unsigned, counts (as ENC_POS)",
+    invalid: Invalid::AllValid,
+    fields: &[],
+    doc: "ENC_POS latched when INITIAL ends (rotor d axis on phase a): the angle \
+          reference; the PS uses theta_e = (ENC_POS - ALIGN_POS) pp 2 pi / ENC_CPR. \
+          The encoder counter itself is not changed.",
+};
+
 /// Block 0.
 pub const TOP: Block = Block {
     name: "TOP",
@@ -961,6 +1096,12 @@ pub const MPDTC: Block = Block {
         &MPDTC_P_W2_2,
         &MPDTC_P_W2_3,
         &MPDTC_IQ_REF,
+        &MPDTC_SEQ_STATUS,
+        &MPDTC_ALIGN_VEC,
+        &MPDTC_ALIGN_PERIOD,
+        &MPDTC_ALIGN_ON,
+        &MPDTC_ALIGN_TIME,
+        &MPDTC_ALIGN_POS,
     ],
 };
 /// Block 2 (registers defined with the MPDCC core).

@@ -99,6 +99,12 @@ pub struct PlTopSim {
     pub inp: PtIn,
     /// Clock cycles run.
     pub cycles: u64,
+    /// Built-in converter model: `Some((conv, data))` answers every
+    /// `adc_cnv_o` pulse `conv + 1` cycles later with a one-cycle
+    /// `adc_drdy_i` and `adc_data_i = data` (in every [`Self::step`], so
+    /// also during AXI transfers). `None` (default): the test drives the ADC.
+    pub adc_echo: Option<(u32, u64)>,
+    adc_pending: Option<u32>,
 }
 
 impl PlTopSim {
@@ -113,6 +119,8 @@ impl PlTopSim {
                 ..PtIn::default()
             },
             cycles: 0,
+            adc_echo: None,
+            adc_pending: None,
         };
         for _ in 0..4 {
             s.step();
@@ -123,10 +131,27 @@ impl PlTopSim {
 
     /// One clock cycle; returns the outputs as sampled by the rising edge.
     pub fn step(&mut self) -> PtOut {
+        if let Some((_, data)) = self.adc_echo {
+            self.inp.adc_drdy = 0;
+            match self.adc_pending {
+                Some(0) => {
+                    self.inp.adc_drdy = 1;
+                    self.inp.adc_data = data;
+                    self.adc_pending = None;
+                }
+                Some(t) => self.adc_pending = Some(t - 1),
+                None => {}
+            }
+        }
         let mut out = PtOut::default();
         // SAFETY: live object; both structs are repr(C) and match the shim.
         unsafe { pt_step(self.ptr.as_ptr(), &self.inp, &mut out) };
         self.cycles += 1;
+        if let Some((conv, _)) = self.adc_echo {
+            if out.adc_cnv == 1 {
+                self.adc_pending = Some(conv);
+            }
+        }
         out
     }
 

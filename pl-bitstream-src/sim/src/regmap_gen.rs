@@ -63,12 +63,17 @@ pub fn verilog() -> String {
     // implemented-bit masks by word index, for the generic storage in pl_regs.
     s.push_str(
         "\n// Mask of the plain RW registers (all values valid) of the MPDTC page\n\
-         // at or above offset 0x010, by word index; 0 elsewhere.\n\
+         // at offsets 0x010..0x084, by word index; 0 elsewhere.\n\
          function automatic [31:0] rm_mpdtc_plain_mask(input [9:0] word);\n\
          \x20   case (word)\n",
     );
     for r in regmap::MPDTC.registers {
-        if r.access == Access::Rw && r.invalid == Invalid::AllValid && r.offset >= 0x10 {
+        // Words 4..33 (0x010..=0x084): the generic storage of pl_regs; the
+        // sequence registers above have their own flops.
+        if r.access == Access::Rw
+            && r.invalid == Invalid::AllValid
+            && (0x10..=0x84).contains(&r.offset)
+        {
             let _ = writeln!(
                 s,
                 "        10'd{}: rm_mpdtc_plain_mask = 32'h{:08x};  // {}",

@@ -1,17 +1,20 @@
 //! Closed loop through the Verilated `pl_top`: the Rust PMSM plant and
 //! measurement chain, the MPDTC decisions computed by `mpdtc_core` inside
 //! `pl_top`, driven only through the AXI-Lite port (inputs and parameters
-//! written to the MPDTC page, MPDTC_START, MPDTC_STATUS polled). A 0.4 N m
-//! reference step must reproduce the pure-Rust run (`MpdtcFixed`, the same
-//! fixed-point model) decision for decision, and the gates must follow the
-//! decisions.
+//! written to the MPDTC page, MPDTC_START, MPDTC_STATUS polled) and paced by
+//! the control sequence (`mpdtc_seq`): after the rotor alignment (INITIAL),
+//! each period waits in SAMPLE for the averaged ADC sample and the START
+//! hand-shake, decides (MPDTC) and applies S[k+1] at the next ADC average
+//! strobe (PWM). A 0.4 N m reference step must reproduce the pure-Rust run
+//! (`MpdtcFixed`, the same fixed-point model) decision for decision, and the
+//! gates must hold S[k] until the boundary and follow S[k+1] after it.
 use drive::pmsm::mpdtc_ctrl::{fixed_inputs, inputs_from_measurement, MpdtcFixed};
 use drive::pmsm::mpdtc_fixed::FixedParams;
 use drive::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
 use drive::pmsm::params::{DriveParams, MotorParams};
 use drive::pmsm::plant::{MechanicalMode, Plant};
 use drive::pmsm::sim::{self, Actuation, Controller, Measurement};
-use drive::regmap::{self as rm, mode, Register};
+use drive::regmap::{self as rm, mode, seq_state, Register};
 use rtl_sim::pl_top::{axi_addr, PlTopSim, OKAY};
 
 fn a(r: &Register) -> u16 {
@@ -30,6 +33,15 @@ struct RtlMpdtc {
     cfg: MpdtcConfig,
     decisions: Vec<u8>,
     gate_mismatch: u64,
+}
+
+/// ADC period of the harness (cycles): one averaged sample = one control
+/// period of the sequence every 4 x 100 = 400 cycles (the plant runs on its
+/// own clock; the PL is only paced by its own ADC strobe).
+const ADC_PERIOD: u32 = 100;
+
+fn seq_status(sim: &mut PlTopSim) -> u32 {
+    sim.read_ok(a(&rm::MPDTC_SEQ_STATUS))
 }
 
 impl RtlMpdtc {
@@ -62,13 +74,25 @@ impl RtlMpdtc {
         {
             w(r, v);
         }
-        // Core state released (it was held at zero since reset), core drives
-        // the gates in mode MPDTC.
+        w(&rm::MPDTC_ALIGN_TIME, 1000);
+        // Core state released (it was held at zero since reset), the control
+        // sequence drives the gates in mode MPDTC.
         w(&rm::MPDTC_CTRL, 0);
         let t = |r: &Register| axi_addr(&rm::TOP, r);
+        assert_eq!(
+            sim.write(axi_addr(&rm::ADC, &rm::ADC_PERIOD), ADC_PERIOD),
+            OKAY
+        );
+        sim.adc_echo = Some((10, 0));
         assert_eq!(sim.write(t(&rm::CTRL), mode::MPDTC), OKAY);
         assert_eq!(sim.write(axi_addr(&rm::PWM, &rm::DEAD_TIME), 10), OKAY);
         assert_eq!(sim.write(axi_addr(&rm::PWM, &rm::GATE_CTRL), 1), OKAY);
+        // Alignment, then SAMPLE with the first averaged sample.
+        let mut polls = 0;
+        while seq_status(&mut sim) & 0xF != seq_state::SAMPLE | 8 {
+            polls += 1;
+            assert!(polls < 2000, "sequence never reached SAMPLE");
+        }
         Self {
             sim,
             cfg,
@@ -113,12 +137,31 @@ impl Controller for RtlMpdtc {
         }
         assert_eq!(st >> 16, (before + 1) & 0xFFFF, "exactly one decision");
         let s = ((st >> 1) & 7) as u8;
-        // The gates follow S[k+1] once the dead time has passed.
+        assert_eq!(seq_status(sim) & 7, seq_state::PWM, "S[k+1] waits in PWM");
+        // Until the boundary the gates hold S[k] (000 before the first).
+        let prev = self.decisions.last().copied().unwrap_or(0);
+        let mut n = 0;
+        loop {
+            let o = sim.step();
+            if o.adc_avg_valid == 1 {
+                break;
+            }
+            if (o.gate_hi, o.gate_lo) != (prev, !prev & 7) {
+                self.gate_mismatch += 1;
+            }
+            n += 1;
+            assert!(n <= 4 * ADC_PERIOD, "no control-period boundary");
+        }
+        // After it they follow S[k+1] once the dead time has passed.
         sim.idle(30);
         let o = sim.peek();
         if (o.gate_hi, o.gate_lo) != (s, !s & 7) {
             self.gate_mismatch += 1;
         }
+        let st = seq_status(sim);
+        assert_eq!(st & 0xF, seq_state::SAMPLE | 8, "SAMPLE with the sample");
+        assert_eq!(st >> 16, self.decisions.len() as u32 + 1, "PERIODS");
+        assert_eq!(st >> 8 & 0xFF, 0, "no overrun");
         self.decisions.push(s);
         Actuation::SwitchState(s)
     }
