@@ -269,7 +269,10 @@ fn serial_port_link_through_a_pty() {
     // QEMU announces on stdout: "char device redirected to /dev/pts/N (label serial1)".
     let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
     let pty = loop {
-        let line = lines.next().expect("QEMU names its pty before exiting").unwrap();
+        let line = lines
+            .next()
+            .expect("QEMU names its pty before exiting")
+            .unwrap();
         if let Some(rest) = line.split("redirected to ").nth(1) {
             break rest.split_whitespace().next().unwrap().to_string();
         }
