@@ -14,7 +14,8 @@
 //                    page; started by the sequence, or by MPDTC_START while
 //                    the sequence is IDLE); PWM.SW_STATE drives the gates
 //                    instead when MPDTC_CTRL.MANUAL = 1 (reset)
-//   gate_driver   <- selected state, DEAD_TIME, enable = GATE_EN && mode != off,
+//   gate_driver   <- selected state, DEAD_TIME, enable = GATE_EN && mode != off
+//                    (&& sequence out of IDLE in mode MPDTC without MANUAL),
 //                    fault = fault_block trip (all gates off at the next edge)
 // Reset: s_axi_aresetn_i (active low, synchronous, from the PS reset block).
 // Safety chain: a fault condition present in cycle t (over-current on a raw

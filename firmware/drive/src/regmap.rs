@@ -251,7 +251,8 @@ pub const STATUS: Register = Register {
             "GATES_ACTIVE",
             2,
             1,
-            "the gate driver is enabled (GATE_EN, mode not off, no fault)",
+            "the gate driver is enabled (GATE_EN, mode not off, no fault; in mode MPDTC \
+             with MPDTC_CTRL.MANUAL = 0 also the control sequence out of IDLE)",
         ),
         field(
             "FAULT",
