@@ -64,6 +64,32 @@ fn random_state(p: &DriveParams, rng: &mut Rng) -> CtrlState {
 
 /// Exact error trajectory `y*(k+l) - y(k+l)`, l = 0..=n, with `s` held: the
 /// reference's model (exact machine discretization, eq. (2) for the inverter).
+/// The bounds of the 7 outputs (3 currents, v_n, 3 v_ph), pu.
+fn output_bounds(p: &DriveParams) -> [f64; 7] {
+    let c = &p.controller;
+    [
+        c.delta_i_pu,
+        c.delta_i_pu,
+        c.delta_i_pu,
+        c.v_n_bound_pu,
+        c.v_ph_bound_pu,
+        c.v_ph_bound_pu,
+        c.v_ph_bound_pu,
+    ]
+}
+
+/// Per output, the last step at which the exact error trajectory `ex` (from
+/// [`exact_errors`]) is still inside its bound.
+fn exact_exit_steps(p: &DriveParams, ex: &[[f64; 7]]) -> [usize; 7] {
+    let bnd = output_bounds(p);
+    core::array::from_fn(|j| {
+        (1..ex.len())
+            .find(|&l| ex[l][j].abs() > bnd[j])
+            .map(|l| l - 1)
+            .unwrap_or(ex.len() - 1)
+    })
+}
+
 fn exact_errors(p: &DriveParams, st: &CtrlState, s: [u8; 3], n: usize) -> std::vec::Vec<[f64; 7]> {
     let inv = &p.inverter;
     let ts = p.controller.ts_pu(&p.machine);
@@ -628,21 +654,8 @@ fn diagnose_mismatches() {
                         let c = fpga::common_terms(f.coeffs(), &x);
                         let k = f.coeffs();
                         let ex = exact_errors(&p, &st, a.s, k.n_bar as usize);
-                        let bnd = [
-                            p.controller.delta_i_pu,
-                            p.controller.delta_i_pu,
-                            p.controller.delta_i_pu,
-                            p.controller.v_n_bound_pu,
-                            p.controller.v_ph_bound_pu,
-                            p.controller.v_ph_bound_pu,
-                            p.controller.v_ph_bound_pu,
-                        ];
-                        let le: [usize; 7] = core::array::from_fn(|j| {
-                            (1..ex.len())
-                                .find(|&l| ex[l][j].abs() > bnd[j])
-                                .map(|l| l - 1)
-                                .unwrap_or(ex.len() - 1)
-                        });
+                        let bnd = output_bounds(&p);
+                        let le = exact_exit_steps(&p, &ex);
                         let jb = (0..7).min_by_key(|&j| le[j]).unwrap();
                         let l0 = a.horizon_steps as usize;
                         let nodes: fpga::Nodes =
@@ -705,21 +718,7 @@ fn diagnose_mismatches() {
                             .unwrap_or(0)
                         });
                         let ex = exact_errors(&p, &st, a.s, k.n_bar as usize);
-                        let bnd = [
-                            p.controller.delta_i_pu,
-                            p.controller.delta_i_pu,
-                            p.controller.delta_i_pu,
-                            p.controller.v_n_bound_pu,
-                            p.controller.v_ph_bound_pu,
-                            p.controller.v_ph_bound_pu,
-                            p.controller.v_ph_bound_pu,
-                        ];
-                        let le: [usize; 7] = core::array::from_fn(|j| {
-                            (1..ex.len())
-                                .find(|&l| ex[l][j].abs() > bnd[j])
-                                .map(|l| l - 1)
-                                .unwrap_or(ex.len() - 1)
-                        });
+                        let le = exact_exit_steps(&p, &ex);
                         println!("  fpga l_j {lf:?} exact l_j {le:?}");
                         for j in 0..3 {
                             let a0 = to_f64(c.e0[j], F_I);
