@@ -3,6 +3,7 @@
 //! on the target.
 //!
 //! Modules, one job each:
+//! - [`bus`]: the `RegisterBus` trait every PL driver talks through.
 //! - [`console`]: the UART console line editor and command grammar.
 //! - [`pmsm`]: paper 000 (PMSM + 2-level inverter, FOC baseline, MPDTC).
 //! - [`mpdcc`]: paper 001 (induction machine + 5L-ANPC, MPDCC).
@@ -12,6 +13,7 @@
 #[cfg(feature = "std")]
 extern crate std;
 
+pub mod bus;
 pub mod console;
 pub mod gates;
 pub mod mpdcc;
