@@ -1,10 +1,23 @@
-//! Generates `pl-bitstream-src/rtl/regmap.vh` and `docs/register-map.md`
-//! from the one table, `drive::regmap`. `cargo run -p rtl-sim --bin
-//! regmap-gen` writes them; the test `tests/regmap_files.rs` fails when the
-//! committed files differ from what this produces.
+//! Generates from the one table, `drive::regmap`, every file that repeats
+//! it: `pl-bitstream-src/rtl/regmap.vh`, `docs/register-map.md` and the typed
+//! accessors `firmware/drive/src/regs.rs` ([`rust`]). `cargo run -p rtl-sim
+//! --bin regmap-gen` writes them; the test `tests/regmap_files.rs` fails when
+//! the committed files differ from what this produces.
 use std::fmt::Write;
 
-use drive::regmap::{self, Access, Invalid, Register, BLOCKS};
+pub mod rust;
+
+/// Every generated file: (repository-relative path, contents) for the
+/// table `blocks`.
+pub fn files(blocks: &[&Block]) -> Vec<(&'static str, String)> {
+    vec![
+        (VERILOG_PATH, verilog()),
+        (MARKDOWN_PATH, markdown()),
+        (rust::RUST_PATH, rust::rust(blocks)),
+    ]
+}
+
+use drive::regmap::{self, Access, Block, Invalid, Register, BLOCKS};
 
 /// Repository-relative path of the Verilog header.
 pub const VERILOG_PATH: &str = "pl-bitstream-src/rtl/regmap.vh";

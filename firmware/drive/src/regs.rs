@@ -1,0 +1,4971 @@
+// Generated from firmware/drive/src/regmap.rs by `cargo run -p rtl-sim --bin
+// regmap-gen`; do not edit (a test fails when this file is stale).
+//! Typed access to the PL registers, one module per block.
+//!
+//! Per register a zero-sized type (`regs::pwm::DeadTime`, the table name in
+//! camel case) with its absolute `ADDR`, its table entry `DEF`, and the
+//! accesses its type allows: RW `read`/`write`/`modify`, RO `read`, W1C
+//! `read`/`write` (no `modify`: writing back what was read would clear every
+//! set flag). Its value type (`DeadTimeValue`) has a getter and a `with_*`
+//! setter per field (`bool` for one bit, else `u32` masked to the field's
+//! width); a register without fields has one field, `value`. What the
+//! hardware does with an out-of-range word (mask, clamp, reject) is in each
+//! register's doc. Every access is one whole-word `RegisterBus` access:
+//!
+//! ```
+//! # use drive::bus::{BusError, RegisterBus};
+//! # struct Bus(u32);
+//! # impl RegisterBus for Bus {
+//! #     fn read(&mut self, _: usize) -> Result<u32, BusError> { Ok(self.0) }
+//! #     fn write(&mut self, _: usize, v: u32) -> Result<(), BusError> { self.0 = v; Ok(()) }
+//! # }
+//! use drive::regs::pwm::{DeadTime, DeadTimeValue, GateCtrl};
+//! let mut bus = Bus(0);
+//! DeadTime::write(&mut bus, DeadTimeValue::ZERO.with_value(100))?;
+//! GateCtrl::modify(&mut bus, |v| v.with_gate_en(true))?;
+//! assert!(GateCtrl::read(&mut bus)?.gate_en());
+//! # Ok::<(), BusError>(())
+//! ```
+
+use crate::bus::{BusError, RegisterBus};
+use crate::regmap::{self, Register};
+
+/// Block 0 `TOP` at `0x43C00000`: Identification, mode, status, heartbeat.
+pub mod top {
+    use super::*;
+
+    /// Absolute address of the block.
+    pub const BASE: usize = 0x43C00000;
+
+    /// `TOP.ID` at `0x43C00000` (RO, 32 bits, reset `0x50534452`): Identifies the bitstream.
+    ///
+    /// Format: ASCII "PSDR". Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct Id;
+
+    impl Id {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C00000;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ID;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<IdValue, BusError> {
+            bus.read(Self::ADDR).map(IdValue)
+        }
+    }
+
+    /// A value of [`Id`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct IdValue(u32);
+
+    impl IdValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x50534452);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (ASCII "PSDR").
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for IdValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `TOP.VERSION` at `0x43C00004` (RO, 32 bits, reset `0x10002`): Version of this register map (bumped when the table changes).
+    ///
+    /// Format: major.minor, 16 bits each. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct Version;
+
+    impl Version {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C00004;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::VERSION;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<VersionValue, BusError> {
+            bus.read(Self::ADDR).map(VersionValue)
+        }
+    }
+
+    /// A value of [`Version`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct VersionValue(u32);
+
+    impl VersionValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x10002);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `MINOR` (bits 15:0, 16 bits): minor version
+        pub const fn minor(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `MINOR` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_minor(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `MAJOR` (bits 31:16, 16 bits): major version
+        pub const fn major(self) -> u32 {
+            (self.0 >> 16) & 0xFFFF
+        }
+
+        /// Sets `MAJOR` (bits 31:16, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_major(self, v: u32) -> Self {
+            Self((self.0 & !(0xFFFF << 16)) | ((v & 0xFFFF) << 16))
+        }
+    }
+
+    impl Default for VersionValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `TOP.CTRL` at `0x43C00008` (RW, 2 bits, reset `0x0`): Selects the source of the switching state.
+    ///
+    /// Format: enum. Writes: the hardware rejects a word above 2: the register keeps its value and `ERR.BAD_VALUE` is set.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct Ctrl;
+
+    impl Ctrl {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C00008;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CTRL;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CtrlValue, BusError> {
+            bus.read(Self::ADDR).map(CtrlValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CtrlValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CtrlValue) -> CtrlValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`Ctrl`]; bits above bit 1 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CtrlValue(u32);
+
+    impl CtrlValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `MODE` (bits 1:0, 2 bits): 0 off, 1 FOC-PWM (PWM comparators), 2 MPDTC (mpdtc_core's S[k+1], or PWM.SW_STATE if MPDTC_CTRL.MANUAL); 3 is rejected
+        pub const fn mode(self) -> u32 {
+            self.0 & 0x3
+        }
+
+        /// Sets `MODE` (bits 1:0, 2 bits) to the low 2 bits of `v` (higher bits are dropped).
+        pub const fn with_mode(self, v: u32) -> Self {
+            Self((self.0 & !0x3) | (v & 0x3))
+        }
+    }
+
+    impl Default for CtrlValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `TOP.STATUS` at `0x43C0000C` (RO, 4 bits, reset `0x0`): Summary of the drive state.
+    ///
+    /// Format: bits. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct Status;
+
+    impl Status {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0000C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::STATUS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<StatusValue, BusError> {
+            bus.read(Self::ADDR).map(StatusValue)
+        }
+    }
+
+    /// A value of [`Status`]; bits above bit 3 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct StatusValue(u32);
+
+    impl StatusValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `MODE` (bits 1:0, 2 bits): CTRL.MODE
+        pub const fn mode(self) -> u32 {
+            self.0 & 0x3
+        }
+
+        /// Sets `MODE` (bits 1:0, 2 bits) to the low 2 bits of `v` (higher bits are dropped).
+        pub const fn with_mode(self, v: u32) -> Self {
+            Self((self.0 & !0x3) | (v & 0x3))
+        }
+
+        /// `GATES_ACTIVE` (bit 2): the gate driver is enabled (GATE_EN, mode not off, no fault; in mode MPDTC with MPDTC_CTRL.MANUAL = 0 also the control sequence out of IDLE)
+        pub const fn gates_active(self) -> bool {
+            (self.0 >> 2) & 1 != 0
+        }
+
+        /// Sets `GATES_ACTIVE` (bit 2).
+        pub const fn with_gates_active(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 2)) | ((v as u32) << 2))
+        }
+
+        /// `FAULT` (bit 3): a fault is latched (FAULT.FAULT_STATUS != 0)
+        pub const fn fault(self) -> bool {
+            (self.0 >> 3) & 1 != 0
+        }
+
+        /// Sets `FAULT` (bit 3).
+        pub const fn with_fault(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 3)) | ((v as u32) << 3))
+        }
+    }
+
+    impl Default for StatusValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `TOP.ERR` at `0x43C00010` (W1C, 2 bits, reset `0x0`): Sticky access-error flags.
+    ///
+    /// Format: bits, sticky. Writes: write 1 to clear (a bit whose condition is still present stays set).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct Err;
+
+    impl Err {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C00010;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ERR;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<ErrValue, BusError> {
+            bus.read(Self::ADDR).map(ErrValue)
+        }
+
+        /// Writes `value`: every 1 bit clears that flag.
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: ErrValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+    }
+
+    /// A value of [`Err`]; bits above bit 1 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct ErrValue(u32);
+
+    impl ErrValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `BAD_VALUE` (bit 0): a write was rejected (out of range)
+        pub const fn bad_value(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `BAD_VALUE` (bit 0).
+        pub const fn with_bad_value(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+
+        /// `BAD_ADDR` (bit 1): an access hit an unmapped offset or wrote a read-only register (SLVERR)
+        pub const fn bad_addr(self) -> bool {
+            (self.0 >> 1) & 1 != 0
+        }
+
+        /// Sets `BAD_ADDR` (bit 1).
+        pub const fn with_bad_addr(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 1)) | ((v as u32) << 1))
+        }
+    }
+
+    impl Default for ErrValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `TOP.HEARTBEAT` at `0x43C00014` (RW, 32 bits, reset `0x0`): Every write restarts the watchdog (FAULT.WDG_TIMEOUT); reads back the last value.
+    ///
+    /// Format: any value. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct Heartbeat;
+
+    impl Heartbeat {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C00014;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::HEARTBEAT;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<HeartbeatValue, BusError> {
+            bus.read(Self::ADDR).map(HeartbeatValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: HeartbeatValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(HeartbeatValue) -> HeartbeatValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`Heartbeat`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct HeartbeatValue(u32);
+
+    impl HeartbeatValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (any value).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for HeartbeatValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `TOP.SCRATCH` at `0x43C00018` (RW, 32 bits, reset `0x0`): No effect; for bus tests.
+    ///
+    /// Format: any value. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct Scratch;
+
+    impl Scratch {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C00018;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::SCRATCH;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<ScratchValue, BusError> {
+            bus.read(Self::ADDR).map(ScratchValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: ScratchValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(ScratchValue) -> ScratchValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`Scratch`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct ScratchValue(u32);
+
+    impl ScratchValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (any value).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for ScratchValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+}
+
+/// Block 1 `MPDTC` at `0x43C01000`: mpdtc_core: inputs and parameter registers (formats: docs/mpdtc-fixed.md), start, status, telemetry.
+pub mod mpdtc {
+    use super::*;
+
+    /// Absolute address of the block.
+    pub const BASE: usize = 0x43C01000;
+
+    /// `MPDTC.MPDTC_CTRL` at `0x43C01000` (RW, 2 bits, reset `0x3`): Source of the MPDTC switching state and state reset (reset: manual, cleared).
+    ///
+    /// Format: bits. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcCtrl;
+
+    impl MpdtcCtrl {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01000;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_CTRL;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcCtrlValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcCtrlValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcCtrlValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcCtrlValue) -> MpdtcCtrlValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcCtrl`]; bits above bit 1 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcCtrlValue(u32);
+
+    impl MpdtcCtrlValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x3);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `MANUAL` (bit 0): 1 = in mode MPDTC the gates follow PWM.SW_STATE, 0 = the control sequence (MPDTC_SEQ_STATUS: alignment, then mpdtc_core's S[k+1] at each control-period boundary) drives them
+        pub const fn manual(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `MANUAL` (bit 0).
+        pub const fn with_manual(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+
+        /// `STATE_CLR` (bit 1): 1 = hold the core's state (S[k], S[k-1], observer, integrator) at zero
+        pub const fn state_clr(self) -> bool {
+            (self.0 >> 1) & 1 != 0
+        }
+
+        /// Sets `STATE_CLR` (bit 1).
+        pub const fn with_state_clr(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 1)) | ((v as u32) << 1))
+        }
+    }
+
+    impl Default for MpdtcCtrlValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_START` at `0x43C01004` (RW, 32 bits, reset `0x0`): While the control sequence is IDLE, every write starts one decision on the MPDTC_IN_* and MPDTC_P_* registers (ignored while the core is busy or STATE_CLR is set). In SAMPLE a write is the PS's hand-shake "inputs of this period written": the decision starts once the period's ADC sample is in; writes in INITIAL, MPDTC and PWM are ignored. Reads back the last value.
+    ///
+    /// Format: any value. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcStart;
+
+    impl MpdtcStart {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01004;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_START;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcStartValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcStartValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcStartValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcStartValue) -> MpdtcStartValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcStart`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcStartValue(u32);
+
+    impl MpdtcStartValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (any value).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for MpdtcStartValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_STATUS` at `0x43C01008` (RO, 32 bits, reset `0x0`): Core status; poll DONE_COUNT to see a decision complete.
+    ///
+    /// Format: bits and a counter. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcStatus;
+
+    impl MpdtcStatus {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01008;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_STATUS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcStatusValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcStatusValue)
+        }
+    }
+
+    /// A value of [`MpdtcStatus`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcStatusValue(u32);
+
+    impl MpdtcStatusValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `BUSY` (bit 0): a decision is in flight
+        pub const fn busy(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `BUSY` (bit 0).
+        pub const fn with_busy(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+
+        /// `S_NEXT` (bits 3:1, 3 bits): S[k+1] of the last decision (bits SaSbSc)
+        pub const fn s_next(self) -> u32 {
+            (self.0 >> 1) & 0x7
+        }
+
+        /// Sets `S_NEXT` (bits 3:1, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_s_next(self, v: u32) -> Self {
+            Self((self.0 & !(0x7 << 1)) | ((v & 0x7) << 1))
+        }
+
+        /// `DONE_COUNT` (bits 31:16, 16 bits): decisions completed since reset (wraps)
+        pub const fn done_count(self) -> u32 {
+            (self.0 >> 16) & 0xFFFF
+        }
+
+        /// Sets `DONE_COUNT` (bits 31:16, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_done_count(self, v: u32) -> Self {
+            Self((self.0 & !(0xFFFF << 16)) | ((v & 0xFFFF) << 16))
+        }
+    }
+
+    impl Default for MpdtcStatusValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_LATENCY` at `0x43C0100C` (RO, 8 bits, reset `0x14`): Input strobe to S[k+1], fixed; also the initiation interval.
+    ///
+    /// Format: unsigned, PL clock cycles. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcLatency;
+
+    impl MpdtcLatency {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0100C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_LATENCY;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcLatencyValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcLatencyValue)
+        }
+    }
+
+    /// A value of [`MpdtcLatency`]; bits above bit 7 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcLatencyValue(u32);
+
+    impl MpdtcLatencyValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x14);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 7:0, 8 bits): The whole register (unsigned, PL clock cycles).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFF
+        }
+
+        /// Sets `VALUE` (bits 7:0, 8 bits) to the low 8 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFF) | (v & 0xFF))
+        }
+    }
+
+    impl Default for MpdtcLatencyValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_IN_ID` at `0x43C01010` (RW, 25 bits, reset `0x0`): Measured (averaged) i_d.
+    ///
+    /// Format: CUR sQ8.16, two's complement in [24:0], A. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInId;
+
+    impl MpdtcInId {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01010;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_IN_ID;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcInIdValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcInIdValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcInIdValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcInIdValue) -> MpdtcInIdValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcInId`]; bits above bit 24 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInIdValue(u32);
+
+    impl MpdtcInIdValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 24:0, 25 bits): The whole register (CUR sQ8.16, two's complement in [24:0], A).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x1FFFFFF
+        }
+
+        /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+    }
+
+    impl Default for MpdtcInIdValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_IN_IQ` at `0x43C01014` (RW, 25 bits, reset `0x0`): Measured (averaged) i_q.
+    ///
+    /// Format: CUR sQ8.16, two's complement in [24:0], A. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInIq;
+
+    impl MpdtcInIq {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01014;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_IN_IQ;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcInIqValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcInIqValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcInIqValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcInIqValue) -> MpdtcInIqValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcInIq`]; bits above bit 24 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInIqValue(u32);
+
+    impl MpdtcInIqValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 24:0, 25 bits): The whole register (CUR sQ8.16, two's complement in [24:0], A).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x1FFFFFF
+        }
+
+        /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+    }
+
+    impl Default for MpdtcInIqValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_IN_COS0` at `0x43C01018` (RW, 18 bits, reset `0x0`): cos, middle of [k-1, k].
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInCos0;
+
+    impl MpdtcInCos0 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01018;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_IN_COS0;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcInCos0Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcInCos0Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcInCos0Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcInCos0Value) -> MpdtcInCos0Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcInCos0`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInCos0Value(u32);
+
+    impl MpdtcInCos0Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcInCos0Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_IN_SIN0` at `0x43C0101C` (RW, 18 bits, reset `0x0`): sin, middle of [k-1, k].
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInSin0;
+
+    impl MpdtcInSin0 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0101C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_IN_SIN0;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcInSin0Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcInSin0Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcInSin0Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcInSin0Value) -> MpdtcInSin0Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcInSin0`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInSin0Value(u32);
+
+    impl MpdtcInSin0Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcInSin0Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_IN_COS1` at `0x43C01020` (RW, 18 bits, reset `0x0`): cos, middle of [k, k+1].
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInCos1;
+
+    impl MpdtcInCos1 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01020;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_IN_COS1;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcInCos1Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcInCos1Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcInCos1Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcInCos1Value) -> MpdtcInCos1Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcInCos1`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInCos1Value(u32);
+
+    impl MpdtcInCos1Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcInCos1Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_IN_SIN1` at `0x43C01024` (RW, 18 bits, reset `0x0`): sin, middle of [k, k+1].
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInSin1;
+
+    impl MpdtcInSin1 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01024;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_IN_SIN1;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcInSin1Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcInSin1Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcInSin1Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcInSin1Value) -> MpdtcInSin1Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcInSin1`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInSin1Value(u32);
+
+    impl MpdtcInSin1Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcInSin1Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_IN_COS2` at `0x43C01028` (RW, 18 bits, reset `0x0`): cos, middle of [k+1, k+2].
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInCos2;
+
+    impl MpdtcInCos2 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01028;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_IN_COS2;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcInCos2Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcInCos2Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcInCos2Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcInCos2Value) -> MpdtcInCos2Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcInCos2`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInCos2Value(u32);
+
+    impl MpdtcInCos2Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcInCos2Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_IN_SIN2` at `0x43C0102C` (RW, 18 bits, reset `0x0`): sin, middle of [k+1, k+2].
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInSin2;
+
+    impl MpdtcInSin2 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0102C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_IN_SIN2;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcInSin2Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcInSin2Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcInSin2Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcInSin2Value) -> MpdtcInSin2Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcInSin2`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInSin2Value(u32);
+
+    impl MpdtcInSin2Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcInSin2Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_IN_W_TS` at `0x43C01030` (RW, 18 bits, reset `0x0`): w_e Ts.
+    ///
+    /// Format: COEF sQ1.16, rad per period. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInWTs;
+
+    impl MpdtcInWTs {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01030;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_IN_W_TS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcInWTsValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcInWTsValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcInWTsValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcInWTsValue) -> MpdtcInWTsValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcInWTs`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInWTsValue(u32);
+
+    impl MpdtcInWTsValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, rad per period).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcInWTsValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_IN_T_REF` at `0x43C01034` (RW, 18 bits, reset `0x0`): Torque reference T*.
+    ///
+    /// Format: TRQ sQ3.14, two's complement in [17:0], N m. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInTRef;
+
+    impl MpdtcInTRef {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01034;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_IN_T_REF;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcInTRefValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcInTRefValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcInTRefValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcInTRefValue) -> MpdtcInTRefValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcInTRef`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcInTRefValue(u32);
+
+    impl MpdtcInTRefValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (TRQ sQ3.14, two's complement in [17:0], N m).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcInTRefValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_A` at `0x43C01040` (RW, 18 bits, reset `0x0`): a = 1 - R Ts / L.
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPA;
+
+    impl MpdtcPA {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01040;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_A;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPAValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPAValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPAValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPAValue) -> MpdtcPAValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPA`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPAValue(u32);
+
+    impl MpdtcPAValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcPAValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_LAMBDA` at `0x43C01044` (RW, 18 bits, reset `0x0`): Measurement age, periods.
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPLambda;
+
+    impl MpdtcPLambda {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01044;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_LAMBDA;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPLambdaValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPLambdaValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPLambdaValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPLambdaValue) -> MpdtcPLambdaValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPLambda`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPLambdaValue(u32);
+
+    impl MpdtcPLambdaValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcPLambdaValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_U0` at `0x43C01048` (RW, 25 bits, reset `0x0`): U0 = (Ts / L) 2/3 U_dc.
+    ///
+    /// Format: CUR sQ8.16, two's complement in [24:0], A. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPU0;
+
+    impl MpdtcPU0 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01048;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_U0;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPU0Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPU0Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPU0Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPU0Value) -> MpdtcPU0Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPU0`]; bits above bit 24 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPU0Value(u32);
+
+    impl MpdtcPU0Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 24:0, 25 bits): The whole register (CUR sQ8.16, two's complement in [24:0], A).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x1FFFFFF
+        }
+
+        /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+    }
+
+    impl Default for MpdtcPU0Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_U0_HALF` at `0x43C0104C` (RW, 25 bits, reset `0x0`): U0 / 2.
+    ///
+    /// Format: CUR sQ8.16, two's complement in [24:0], A. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPU0Half;
+
+    impl MpdtcPU0Half {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0104C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_U0_HALF;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPU0HalfValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPU0HalfValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPU0HalfValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPU0HalfValue) -> MpdtcPU0HalfValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPU0Half`]; bits above bit 24 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPU0HalfValue(u32);
+
+    impl MpdtcPU0HalfValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 24:0, 25 bits): The whole register (CUR sQ8.16, two's complement in [24:0], A).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x1FFFFFF
+        }
+
+        /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+    }
+
+    impl Default for MpdtcPU0HalfValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_U0_H` at `0x43C01050` (RW, 25 bits, reset `0x0`): U0 sqrt(3) / 2.
+    ///
+    /// Format: CUR sQ8.16, two's complement in [24:0], A. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPU0H;
+
+    impl MpdtcPU0H {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01050;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_U0_H;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPU0HValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPU0HValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPU0HValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPU0HValue) -> MpdtcPU0HValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPU0H`]; bits above bit 24 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPU0HValue(u32);
+
+    impl MpdtcPU0HValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 24:0, 25 bits): The whole register (CUR sQ8.16, two's complement in [24:0], A).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x1FFFFFF
+        }
+
+        /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+    }
+
+    impl Default for MpdtcPU0HValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_PSI_L` at `0x43C01054` (RW, 25 bits, reset `0x0`): psi / L.
+    ///
+    /// Format: CUR sQ8.16, two's complement in [24:0], A. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPPsiL;
+
+    impl MpdtcPPsiL {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01054;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_PSI_L;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPPsiLValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPPsiLValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPPsiLValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPPsiLValue) -> MpdtcPPsiLValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPPsiL`]; bits above bit 24 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPPsiLValue(u32);
+
+    impl MpdtcPPsiLValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 24:0, 25 bits): The whole register (CUR sQ8.16, two's complement in [24:0], A).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x1FFFFFF
+        }
+
+        /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+    }
+
+    impl Default for MpdtcPPsiLValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_KINV_T` at `0x43C01058` (RW, 25 bits, reset `0x0`): 1 / k_T.
+    ///
+    /// Format: KINV sQ8.16, two's complement in [24:0], A/(N m). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPKinvT;
+
+    impl MpdtcPKinvT {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01058;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_KINV_T;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPKinvTValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPKinvTValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPKinvTValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPKinvTValue) -> MpdtcPKinvTValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPKinvT`]; bits above bit 24 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPKinvTValue(u32);
+
+    impl MpdtcPKinvTValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 24:0, 25 bits): The whole register (KINV sQ8.16, two's complement in [24:0], A/(N m)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x1FFFFFF
+        }
+
+        /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+    }
+
+    impl Default for MpdtcPKinvTValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_TOL` at `0x43C0105C` (RW, 24 bits, reset `0x0`): Band T_tol / k_T.
+    ///
+    /// Format: CUR, non-negative (24 bits: negative values cannot be written). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPTol;
+
+    impl MpdtcPTol {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0105C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_TOL;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPTolValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPTolValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPTolValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPTolValue) -> MpdtcPTolValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPTol`]; bits above bit 23 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPTolValue(u32);
+
+    impl MpdtcPTolValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 23:0, 24 bits): The whole register (CUR, non-negative (24 bits: negative values cannot be written)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFFFF
+        }
+
+        /// Sets `VALUE` (bits 23:0, 24 bits) to the low 24 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFFFF) | (v & 0xFFFFFF))
+        }
+    }
+
+    impl Default for MpdtcPTolValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_K_INT` at `0x43C01060` (RW, 18 bits, reset `0x0`): Integrator gain K Ts.
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPKInt;
+
+    impl MpdtcPKInt {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01060;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_K_INT;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPKIntValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPKIntValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPKIntValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPKIntValue) -> MpdtcPKIntValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPKInt`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPKIntValue(u32);
+
+    impl MpdtcPKIntValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcPKIntValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_INT_LIM` at `0x43C01064` (RW, 24 bits, reset `0x0`): Integrator clamp.
+    ///
+    /// Format: CUR, non-negative (24 bits). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPIntLim;
+
+    impl MpdtcPIntLim {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01064;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_INT_LIM;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPIntLimValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPIntLimValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPIntLimValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPIntLimValue) -> MpdtcPIntLimValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPIntLim`]; bits above bit 23 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPIntLimValue(u32);
+
+    impl MpdtcPIntLimValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 23:0, 24 bits): The whole register (CUR, non-negative (24 bits)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFFFF
+        }
+
+        /// Sets `VALUE` (bits 23:0, 24 bits) to the low 24 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFFFF) | (v & 0xFFFFFF))
+        }
+    }
+
+    impl Default for MpdtcPIntLimValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_INT_COND` at `0x43C01068` (RW, 1 bits, reset `0x0`): 1 = integrate only after a decision with a candidate in the band.
+    ///
+    /// Format: bit. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPIntCond;
+
+    impl MpdtcPIntCond {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01068;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_INT_COND;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPIntCondValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPIntCondValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPIntCondValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPIntCondValue) -> MpdtcPIntCondValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPIntCond`]; bits above bit 0 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPIntCondValue(u32);
+
+    impl MpdtcPIntCondValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bit 0): The whole register (bit).
+        pub const fn value(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `VALUE` (bit 0).
+        pub const fn with_value(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+    }
+
+    impl Default for MpdtcPIntCondValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_KP_O` at `0x43C0106C` (RW, 18 bits, reset `0x0`): Observer b Kp.
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPKpO;
+
+    impl MpdtcPKpO {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0106C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_KP_O;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPKpOValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPKpOValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPKpOValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPKpOValue) -> MpdtcPKpOValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPKpO`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPKpOValue(u32);
+
+    impl MpdtcPKpOValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcPKpOValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_KI_O` at `0x43C01070` (RW, 18 bits, reset `0x0`): Observer b Kp Ki Ts.
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPKiO;
+
+    impl MpdtcPKiO {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01070;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_KI_O;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPKiOValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPKiOValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPKiOValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPKiOValue) -> MpdtcPKiOValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPKiO`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPKiOValue(u32);
+
+    impl MpdtcPKiOValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcPKiOValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_ETA_LIM` at `0x43C01074` (RW, 24 bits, reset `0x0`): Observer clamp b eps_max.
+    ///
+    /// Format: CUR, non-negative (24 bits). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPEtaLim;
+
+    impl MpdtcPEtaLim {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01074;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_ETA_LIM;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPEtaLimValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPEtaLimValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPEtaLimValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPEtaLimValue) -> MpdtcPEtaLimValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPEtaLim`]; bits above bit 23 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPEtaLimValue(u32);
+
+    impl MpdtcPEtaLimValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 23:0, 24 bits): The whole register (CUR, non-negative (24 bits)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFFFF
+        }
+
+        /// Sets `VALUE` (bits 23:0, 24 bits) to the low 24 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFFFF) | (v & 0xFFFFFF))
+        }
+    }
+
+    impl Default for MpdtcPEtaLimValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_W2_0` at `0x43C01078` (RW, 18 bits, reset `0x0`): Cost weight, 0 transitions.
+    ///
+    /// Format: WGT sQ3.14, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPW20;
+
+    impl MpdtcPW20 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01078;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_W2_0;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPW20Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPW20Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPW20Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPW20Value) -> MpdtcPW20Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPW20`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPW20Value(u32);
+
+    impl MpdtcPW20Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (WGT sQ3.14, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcPW20Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_W2_1` at `0x43C0107C` (RW, 18 bits, reset `0x0`): Cost weight, 1 transition.
+    ///
+    /// Format: WGT sQ3.14, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPW21;
+
+    impl MpdtcPW21 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0107C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_W2_1;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPW21Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPW21Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPW21Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPW21Value) -> MpdtcPW21Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPW21`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPW21Value(u32);
+
+    impl MpdtcPW21Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (WGT sQ3.14, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcPW21Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_W2_2` at `0x43C01080` (RW, 18 bits, reset `0x0`): Cost weight, 2 transitions.
+    ///
+    /// Format: WGT sQ3.14, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPW22;
+
+    impl MpdtcPW22 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01080;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_W2_2;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPW22Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPW22Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPW22Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPW22Value) -> MpdtcPW22Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPW22`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPW22Value(u32);
+
+    impl MpdtcPW22Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (WGT sQ3.14, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcPW22Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_P_W2_3` at `0x43C01084` (RW, 18 bits, reset `0x0`): Cost weight, 3 transitions.
+    ///
+    /// Format: WGT sQ3.14, two's complement in [17:0]. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPW23;
+
+    impl MpdtcPW23 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01084;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_P_W2_3;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcPW23Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcPW23Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcPW23Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcPW23Value) -> MpdtcPW23Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcPW23`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcPW23Value(u32);
+
+    impl MpdtcPW23Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (WGT sQ3.14, two's complement in [17:0]).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcPW23Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_IQ_REF` at `0x43C01090` (RO, 25 bits, reset `0x0`): i_q* of the last decision (telemetry).
+    ///
+    /// Format: CUR sQ8.16, two's complement in [24:0], A. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcIqRef;
+
+    impl MpdtcIqRef {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C01090;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_IQ_REF;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcIqRefValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcIqRefValue)
+        }
+    }
+
+    /// A value of [`MpdtcIqRef`]; bits above bit 24 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcIqRefValue(u32);
+
+    impl MpdtcIqRefValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 24:0, 25 bits): The whole register (CUR sQ8.16, two's complement in [24:0], A).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x1FFFFFF
+        }
+
+        /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+    }
+
+    impl Default for MpdtcIqRefValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_SEQ_STATUS` at `0x43C010A0` (RO, 32 bits, reset `0x0`): State of the control sequence (mpdtc_seq), active in mode MPDTC with MPDTC_CTRL.MANUAL = 0 and STATE_CLR = 0. Counters keep their values through IDLE.
+    ///
+    /// Format: enum, bits and counters. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcSeqStatus;
+
+    impl MpdtcSeqStatus {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010A0;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_SEQ_STATUS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcSeqStatusValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcSeqStatusValue)
+        }
+    }
+
+    /// A value of [`MpdtcSeqStatus`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcSeqStatusValue(u32);
+
+    impl MpdtcSeqStatusValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `STATE` (bits 2:0, 3 bits): 0 IDLE, 1 INITIAL (alignment), 2 SAMPLE, 3 MPDTC, 4 PWM (regmap::seq_state)
+        pub const fn state(self) -> u32 {
+            self.0 & 0x7
+        }
+
+        /// Sets `STATE` (bits 2:0, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_state(self, v: u32) -> Self {
+            Self((self.0 & !0x7) | (v & 0x7))
+        }
+
+        /// `SAMPLED` (bit 3): SAMPLE has this period's averaged ADC sample (waits for MPDTC_START)
+        pub const fn sampled(self) -> bool {
+            (self.0 >> 3) & 1 != 0
+        }
+
+        /// Sets `SAMPLED` (bit 3).
+        pub const fn with_sampled(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 3)) | ((v as u32) << 3))
+        }
+
+        /// `ALIGNED` (bit 4): the alignment of the current run finished (MPDTC_ALIGN_POS valid); 0 from IDLE
+        pub const fn aligned(self) -> bool {
+            (self.0 >> 4) & 1 != 0
+        }
+
+        /// Sets `ALIGNED` (bit 4).
+        pub const fn with_aligned(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 4)) | ((v as u32) << 4))
+        }
+
+        /// `OVERRUNS` (bits 15:8, 8 bits): control-period boundaries that found no S[k+1] ready (in SAMPLE with the sample taken, or in MPDTC): S[k] held one more period (wraps)
+        pub const fn overruns(self) -> u32 {
+            (self.0 >> 8) & 0xFF
+        }
+
+        /// Sets `OVERRUNS` (bits 15:8, 8 bits) to the low 8 bits of `v` (higher bits are dropped).
+        pub const fn with_overruns(self, v: u32) -> Self {
+            Self((self.0 & !(0xFF << 8)) | ((v & 0xFF) << 8))
+        }
+
+        /// `PERIODS` (bits 31:16, 16 bits): control periods completed: S[k+1] applied at a boundary (wraps)
+        pub const fn periods(self) -> u32 {
+            (self.0 >> 16) & 0xFFFF
+        }
+
+        /// Sets `PERIODS` (bits 31:16, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_periods(self, v: u32) -> Self {
+            Self((self.0 & !(0xFFFF << 16)) | ((v & 0xFFFF) << 16))
+        }
+    }
+
+    impl Default for MpdtcSeqStatusValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_ALIGN_VEC` at `0x43C010A4` (RW, 3 bits, reset `0x4`): Switching state of the rotor alignment (INITIAL): 100 = phase a upper, b and c lower, the voltage vector on the a axis = d axis at angle 0. 000 and 111 are zero vectors (no alignment current).
+    ///
+    /// Format: bits SaSbSc (index 4 Sa + 2 Sb + Sc). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcAlignVec;
+
+    impl MpdtcAlignVec {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010A4;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_ALIGN_VEC;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcAlignVecValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcAlignVecValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcAlignVecValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcAlignVecValue) -> MpdtcAlignVecValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcAlignVec`]; bits above bit 2 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcAlignVecValue(u32);
+
+    impl MpdtcAlignVecValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x4);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 2:0, 3 bits): The whole register (bits SaSbSc (index 4 Sa + 2 Sb + Sc)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x7
+        }
+
+        /// Sets `VALUE` (bits 2:0, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x7) | (v & 0x7))
+        }
+    }
+
+    impl Default for MpdtcAlignVecValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_ALIGN_PERIOD` at `0x43C010A8` (RW, 16 bits, reset `0x1388`): Period P of the alignment chopper (reset 50 us = 20 kHz). Read at every cycle.
+    ///
+    /// Format: unsigned, PL clock cycles. Writes: the hardware clamps the written word to 2..=65535 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcAlignPeriod;
+
+    impl MpdtcAlignPeriod {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010A8;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_ALIGN_PERIOD;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+        ) -> Result<MpdtcAlignPeriodValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcAlignPeriodValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcAlignPeriodValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcAlignPeriodValue) -> MpdtcAlignPeriodValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcAlignPeriod`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcAlignPeriodValue(u32);
+
+    impl MpdtcAlignPeriodValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x1388);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, PL clock cycles).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdtcAlignPeriodValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_ALIGN_ON` at `0x43C010AC` (RW, 16 bits, reset `0xFA`): Cycles with MPDTC_ALIGN_VEC at the start of each chopper period, the zero vector 000 for the rest; the hardware caps it at floor(P / 2) (duty <= 50 %, never full time). Reset 250 / 5000 = 5 %: about 0.05 x (2/3 x 48 V) / 0.555 ohm = 2.9 A in phase a for the paper's motor (less the dead time).
+    ///
+    /// Format: unsigned, PL clock cycles per chopper period. Writes: the hardware clamps the written word to 0..=32767 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcAlignOn;
+
+    impl MpdtcAlignOn {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010AC;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_ALIGN_ON;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcAlignOnValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcAlignOnValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcAlignOnValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcAlignOnValue) -> MpdtcAlignOnValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcAlignOn`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcAlignOnValue(u32);
+
+    impl MpdtcAlignOnValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0xFA);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, PL clock cycles per chopper period).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdtcAlignOnValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_ALIGN_TIME` at `0x43C010B0` (RW, 32 bits, reset `0x2FAF080`): Duration of INITIAL (rotor alignment), reset 0.5 s.
+    ///
+    /// Format: unsigned, PL clock cycles. Writes: the hardware clamps the written word to 1..=4294967295 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcAlignTime;
+
+    impl MpdtcAlignTime {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010B0;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_ALIGN_TIME;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcAlignTimeValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcAlignTimeValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcAlignTimeValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcAlignTimeValue) -> MpdtcAlignTimeValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcAlignTime`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcAlignTimeValue(u32);
+
+    impl MpdtcAlignTimeValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x2FAF080);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (unsigned, PL clock cycles).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for MpdtcAlignTimeValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_ALIGN_POS` at `0x43C010B4` (RO, 16 bits, reset `0x0`): ENC_POS latched when INITIAL ends (rotor d axis on phase a): the angle reference; the PS uses theta_e = (ENC_POS - ALIGN_POS) pp 2 pi / ENC_CPR. The encoder counter itself is not changed.
+    ///
+    /// Format: unsigned, counts (as ENC_POS). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcAlignPos;
+
+    impl MpdtcAlignPos {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010B4;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_ALIGN_POS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcAlignPosValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcAlignPosValue)
+        }
+    }
+
+    /// A value of [`MpdtcAlignPos`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcAlignPosValue(u32);
+
+    impl MpdtcAlignPosValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, counts (as ENC_POS)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdtcAlignPosValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+}
+
+/// Block 2 `MPDCC` at `0x43C02000`: Reserved for the MPDCC core (not implemented yet): every access is SLVERR.
+pub mod mpdcc {
+
+    /// Absolute address of the block.
+    pub const BASE: usize = 0x43C02000;
+}
+
+/// Block 3 `PWM` at `0x43C03000`: Gate enable, dead time, centre-aligned PWM, switching state.
+pub mod pwm {
+    use super::*;
+
+    /// Absolute address of the block.
+    pub const BASE: usize = 0x43C03000;
+
+    /// `PWM.GATE_CTRL` at `0x43C03000` (RW, 1 bits, reset `0x0`): Gate enable.
+    ///
+    /// Format: bit. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct GateCtrl;
+
+    impl GateCtrl {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C03000;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::GATE_CTRL;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<GateCtrlValue, BusError> {
+            bus.read(Self::ADDR).map(GateCtrlValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: GateCtrlValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(GateCtrlValue) -> GateCtrlValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`GateCtrl`]; bits above bit 0 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct GateCtrlValue(u32);
+
+    impl GateCtrlValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `GATE_EN` (bit 0): 1 = gates follow the selected controller, 0 = all gates off (safe state); held at 0 by the hardware while a fault is latched
+        pub const fn gate_en(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `GATE_EN` (bit 0).
+        pub const fn with_gate_en(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+    }
+
+    impl Default for GateCtrlValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `PWM.DEAD_TIME` at `0x43C03004` (RW, 10 bits, reset `0x32`): Cycles with both gates of a leg off before either turns on (reset 500 ns).
+    ///
+    /// Format: unsigned, PL clock cycles (10 ns); 0 acts as 1. Writes: the hardware clamps the written word to 0..=1023 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct DeadTime;
+
+    impl DeadTime {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C03004;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::DEAD_TIME;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<DeadTimeValue, BusError> {
+            bus.read(Self::ADDR).map(DeadTimeValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: DeadTimeValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(DeadTimeValue) -> DeadTimeValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`DeadTime`]; bits above bit 9 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct DeadTimeValue(u32);
+
+    impl DeadTimeValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x32);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 9:0, 10 bits): The whole register (unsigned, PL clock cycles (10 ns); 0 acts as 1).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FF
+        }
+
+        /// Sets `VALUE` (bits 9:0, 10 bits) to the low 10 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FF) | (v & 0x3FF))
+        }
+    }
+
+    impl Default for DeadTimeValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `PWM.PWM_PERIOD` at `0x43C03008` (RW, 16 bits, reset `0x9C4`): Up-down counter top: f_pwm = 100 MHz / (2 PWM_PERIOD) (reset 20 kHz). Takes effect at the next counter bottom.
+    ///
+    /// Format: unsigned, PL clock cycles. Writes: the hardware clamps the written word to 2..=65535 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct PwmPeriod;
+
+    impl PwmPeriod {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C03008;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::PWM_PERIOD;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<PwmPeriodValue, BusError> {
+            bus.read(Self::ADDR).map(PwmPeriodValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: PwmPeriodValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(PwmPeriodValue) -> PwmPeriodValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`PwmPeriod`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct PwmPeriodValue(u32);
+
+    impl PwmPeriodValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x9C4);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, PL clock cycles).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for PwmPeriodValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `PWM.DUTY_A` at `0x43C0300C` (RW, 16 bits, reset `0x4E2`): Upper switch on while the counter < DUTY (centre aligned): duty = DUTY / PWM_PERIOD; >= PWM_PERIOD is 100 %. Loaded at the counter bottom.
+    ///
+    /// Format: unsigned, PL clock cycles (compare value). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct DutyA;
+
+    impl DutyA {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0300C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::DUTY_A;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<DutyAValue, BusError> {
+            bus.read(Self::ADDR).map(DutyAValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: DutyAValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(DutyAValue) -> DutyAValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`DutyA`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct DutyAValue(u32);
+
+    impl DutyAValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x4E2);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, PL clock cycles (compare value)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for DutyAValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `PWM.DUTY_B` at `0x43C03010` (RW, 16 bits, reset `0x4E2`): Upper switch on while the counter < DUTY (centre aligned): duty = DUTY / PWM_PERIOD; >= PWM_PERIOD is 100 %. Loaded at the counter bottom.
+    ///
+    /// Format: unsigned, PL clock cycles (compare value). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct DutyB;
+
+    impl DutyB {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C03010;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::DUTY_B;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<DutyBValue, BusError> {
+            bus.read(Self::ADDR).map(DutyBValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: DutyBValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(DutyBValue) -> DutyBValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`DutyB`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct DutyBValue(u32);
+
+    impl DutyBValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x4E2);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, PL clock cycles (compare value)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for DutyBValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `PWM.DUTY_C` at `0x43C03014` (RW, 16 bits, reset `0x4E2`): Upper switch on while the counter < DUTY (centre aligned): duty = DUTY / PWM_PERIOD; >= PWM_PERIOD is 100 %. Loaded at the counter bottom.
+    ///
+    /// Format: unsigned, PL clock cycles (compare value). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct DutyC;
+
+    impl DutyC {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C03014;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::DUTY_C;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<DutyCValue, BusError> {
+            bus.read(Self::ADDR).map(DutyCValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: DutyCValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(DutyCValue) -> DutyCValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`DutyC`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct DutyCValue(u32);
+
+    impl DutyCValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x4E2);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, PL clock cycles (compare value)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for DutyCValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `PWM.SW_STATE` at `0x43C03018` (RW, 3 bits, reset `0x0`): Switching state applied in mode MPDTC when MPDTC_CTRL.MANUAL = 1.
+    ///
+    /// Format: bits SaSbSc (index 4 Sa + 2 Sb + Sc). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct SwState;
+
+    impl SwState {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C03018;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::SW_STATE;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<SwStateValue, BusError> {
+            bus.read(Self::ADDR).map(SwStateValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: SwStateValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(SwStateValue) -> SwStateValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`SwState`]; bits above bit 2 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct SwStateValue(u32);
+
+    impl SwStateValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 2:0, 3 bits): The whole register (bits SaSbSc (index 4 Sa + 2 Sb + Sc)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x7
+        }
+
+        /// Sets `VALUE` (bits 2:0, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x7) | (v & 0x7))
+        }
+    }
+
+    impl Default for SwStateValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `PWM.GATE_STATUS` at `0x43C0301C` (RO, 9 bits, reset `0x0`): Gate driver outputs as driven now.
+    ///
+    /// Format: bits, leg a = highest bit of each field. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct GateStatus;
+
+    impl GateStatus {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0301C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::GATE_STATUS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<GateStatusValue, BusError> {
+            bus.read(Self::ADDR).map(GateStatusValue)
+        }
+    }
+
+    /// A value of [`GateStatus`]; bits above bit 8 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct GateStatusValue(u32);
+
+    impl GateStatusValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `HI` (bits 2:0, 3 bits): upper gates (a, b, c = bits 2, 1, 0)
+        pub const fn hi(self) -> u32 {
+            self.0 & 0x7
+        }
+
+        /// Sets `HI` (bits 2:0, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_hi(self, v: u32) -> Self {
+            Self((self.0 & !0x7) | (v & 0x7))
+        }
+
+        /// `LO` (bits 5:3, 3 bits): lower gates
+        pub const fn lo(self) -> u32 {
+            (self.0 >> 3) & 0x7
+        }
+
+        /// Sets `LO` (bits 5:3, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_lo(self, v: u32) -> Self {
+            Self((self.0 & !(0x7 << 3)) | ((v & 0x7) << 3))
+        }
+
+        /// `STATE` (bits 8:6, 3 bits): switching state requested by the selected source
+        pub const fn state(self) -> u32 {
+            (self.0 >> 6) & 0x7
+        }
+
+        /// Sets `STATE` (bits 8:6, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_state(self, v: u32) -> Self {
+            Self((self.0 & !(0x7 << 6)) | ((v & 0x7) << 6))
+        }
+    }
+
+    impl Default for GateStatusValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `PWM.PWM_COUNT` at `0x43C03020` (RO, 17 bits, reset `0x0`): Centre-aligned PWM counter.
+    ///
+    /// Format: unsigned, PL clock cycles. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct PwmCount;
+
+    impl PwmCount {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C03020;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::PWM_COUNT;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<PwmCountValue, BusError> {
+            bus.read(Self::ADDR).map(PwmCountValue)
+        }
+    }
+
+    /// A value of [`PwmCount`]; bits above bit 16 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct PwmCountValue(u32);
+
+    impl PwmCountValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `COUNT` (bits 15:0, 16 bits): up-down counter
+        pub const fn count(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `COUNT` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_count(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `DOWN` (bit 16): 1 while counting down
+        pub const fn down(self) -> bool {
+            (self.0 >> 16) & 1 != 0
+        }
+
+        /// Sets `DOWN` (bit 16).
+        pub const fn with_down(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 16)) | ((v as u32) << 16))
+        }
+    }
+
+    impl Default for PwmCountValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+}
+
+/// Block 4 `ADC` at `0x43C04000`: ADC front end: 3 phase currents, sampled every ADC_PERIOD, averaged by 4.
+pub mod adc {
+    use super::*;
+
+    /// Absolute address of the block.
+    pub const BASE: usize = 0x43C04000;
+
+    /// `ADC.ADC_CTRL` at `0x43C04000` (RW, 1 bits, reset `0x1`): ADC front-end control.
+    ///
+    /// Format: bit. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcCtrl;
+
+    impl AdcCtrl {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C04000;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ADC_CTRL;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<AdcCtrlValue, BusError> {
+            bus.read(Self::ADDR).map(AdcCtrlValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: AdcCtrlValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(AdcCtrlValue) -> AdcCtrlValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`AdcCtrl`]; bits above bit 0 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcCtrlValue(u32);
+
+    impl AdcCtrlValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x1);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `ENABLE` (bit 0): 1 = convert every ADC_PERIOD (on from reset, so the over-current trip works)
+        pub const fn enable(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `ENABLE` (bit 0).
+        pub const fn with_enable(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+    }
+
+    impl Default for AdcCtrlValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `ADC.ADC_PERIOD` at `0x43C04004` (RW, 16 bits, reset `0x187`): Cycles between conversion starts: 391 = 255.75 kHz (nearest to the paper's 256 kHz); 4 samples are averaged, so results come at 1/4 of it.
+    ///
+    /// Format: unsigned, PL clock cycles. Writes: the hardware clamps the written word to 16..=65535 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcPeriod;
+
+    impl AdcPeriod {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C04004;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ADC_PERIOD;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<AdcPeriodValue, BusError> {
+            bus.read(Self::ADDR).map(AdcPeriodValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: AdcPeriodValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(AdcPeriodValue) -> AdcPeriodValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`AdcPeriod`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcPeriodValue(u32);
+
+    impl AdcPeriodValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x187);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, PL clock cycles).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for AdcPeriodValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `ADC.ADC_IA` at `0x43C04008` (RO, 16 bits, reset `0x0`): Latest average of 4 samples of this phase current.
+    ///
+    /// Format: signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum of 4 / 4). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcIa;
+
+    impl AdcIa {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C04008;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ADC_IA;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<AdcIaValue, BusError> {
+            bus.read(Self::ADDR).map(AdcIaValue)
+        }
+    }
+
+    /// A value of [`AdcIa`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcIaValue(u32);
+
+    impl AdcIaValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum of 4 / 4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for AdcIaValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `ADC.ADC_IB` at `0x43C0400C` (RO, 16 bits, reset `0x0`): Latest average of 4 samples of this phase current.
+    ///
+    /// Format: signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum of 4 / 4). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcIb;
+
+    impl AdcIb {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0400C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ADC_IB;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<AdcIbValue, BusError> {
+            bus.read(Self::ADDR).map(AdcIbValue)
+        }
+    }
+
+    /// A value of [`AdcIb`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcIbValue(u32);
+
+    impl AdcIbValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum of 4 / 4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for AdcIbValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `ADC.ADC_IC` at `0x43C04010` (RO, 16 bits, reset `0x0`): Latest average of 4 samples of this phase current.
+    ///
+    /// Format: signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum of 4 / 4). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcIc;
+
+    impl AdcIc {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C04010;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ADC_IC;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<AdcIcValue, BusError> {
+            bus.read(Self::ADDR).map(AdcIcValue)
+        }
+    }
+
+    /// A value of [`AdcIc`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcIcValue(u32);
+
+    impl AdcIcValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum of 4 / 4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for AdcIcValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `ADC.ADC_COUNT` at `0x43C04014` (RO, 32 bits, reset `0x0`): Averaged results produced since reset.
+    ///
+    /// Format: unsigned, wraps. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcCount;
+
+    impl AdcCount {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C04014;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ADC_COUNT;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<AdcCountValue, BusError> {
+            bus.read(Self::ADDR).map(AdcCountValue)
+        }
+    }
+
+    /// A value of [`AdcCount`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcCountValue(u32);
+
+    impl AdcCountValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (unsigned, wraps).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for AdcCountValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+}
+
+/// Block 5 `ENC` at `0x43C05000`: Incremental encoder (A/B quadrature + index).
+pub mod enc {
+    use super::*;
+
+    /// Absolute address of the block.
+    pub const BASE: usize = 0x43C05000;
+
+    /// `ENC.ENC_CPR` at `0x43C05000` (RW, 16 bits, reset `0x1000`): Position wraps at ENC_CPR.
+    ///
+    /// Format: unsigned, quadrature counts (4 per line) per mechanical revolution. Writes: the hardware clamps the written word to 4..=65535 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct EncCpr;
+
+    impl EncCpr {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C05000;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ENC_CPR;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<EncCprValue, BusError> {
+            bus.read(Self::ADDR).map(EncCprValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: EncCprValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(EncCprValue) -> EncCprValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`EncCpr`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct EncCprValue(u32);
+
+    impl EncCprValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x1000);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, quadrature counts (4 per line) per mechanical revolution).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for EncCprValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `ENC.ENC_POS` at `0x43C05004` (RO, 16 bits, reset `0x0`): Mechanical position; the index pulse sets it to 0.
+    ///
+    /// Format: unsigned, counts in 0..ENC_CPR-1. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct EncPos;
+
+    impl EncPos {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C05004;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ENC_POS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<EncPosValue, BusError> {
+            bus.read(Self::ADDR).map(EncPosValue)
+        }
+    }
+
+    /// A value of [`EncPos`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct EncPosValue(u32);
+
+    impl EncPosValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, counts in 0..ENC_CPR-1).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for EncPosValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `ENC.ENC_SPEED` at `0x43C05008` (RO, 16 bits, reset `0x0`): Counts moved during the last complete window (positive = A leads B).
+    ///
+    /// Format: signed 16-bit, counts per ENC_WINDOW (saturated). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct EncSpeed;
+
+    impl EncSpeed {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C05008;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ENC_SPEED;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<EncSpeedValue, BusError> {
+            bus.read(Self::ADDR).map(EncSpeedValue)
+        }
+    }
+
+    /// A value of [`EncSpeed`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct EncSpeedValue(u32);
+
+    impl EncSpeedValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit, counts per ENC_WINDOW (saturated)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for EncSpeedValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `ENC.ENC_WINDOW` at `0x43C0500C` (RW, 24 bits, reset `0x186A0`): Speed measurement window (reset 1 ms).
+    ///
+    /// Format: unsigned, PL clock cycles. Writes: the hardware clamps the written word to 100..=16777215 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct EncWindow;
+
+    impl EncWindow {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0500C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ENC_WINDOW;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<EncWindowValue, BusError> {
+            bus.read(Self::ADDR).map(EncWindowValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: EncWindowValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(EncWindowValue) -> EncWindowValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`EncWindow`]; bits above bit 23 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct EncWindowValue(u32);
+
+    impl EncWindowValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x186A0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 23:0, 24 bits): The whole register (unsigned, PL clock cycles).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFFFF
+        }
+
+        /// Sets `VALUE` (bits 23:0, 24 bits) to the low 24 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFFFF) | (v & 0xFFFFFF))
+        }
+    }
+
+    impl Default for EncWindowValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `ENC.ENC_INDEX` at `0x43C05010` (RO, 16 bits, reset `0x0`): Index pulses seen since reset.
+    ///
+    /// Format: unsigned, wraps. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct EncIndex;
+
+    impl EncIndex {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C05010;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ENC_INDEX;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<EncIndexValue, BusError> {
+            bus.read(Self::ADDR).map(EncIndexValue)
+        }
+    }
+
+    /// A value of [`EncIndex`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct EncIndexValue(u32);
+
+    impl EncIndexValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, wraps).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for EncIndexValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+}
+
+/// Block 6 `FAULT` at `0x43C06000`: Over-current, external and watchdog faults, latched.
+pub mod fault {
+    use super::*;
+
+    /// Absolute address of the block.
+    pub const BASE: usize = 0x43C06000;
+
+    /// `FAULT.FAULT_STATUS` at `0x43C06000` (W1C, 3 bits, reset `0x0`): Any set bit forces all gates off (at the clock edge after the condition) and holds GATE_EN at 0; a bit clears on a written 1 unless its condition is present in that cycle. Then GATE_EN must be written 1 again.
+    ///
+    /// Format: bits, latched. Writes: write 1 to clear (a bit whose condition is still present stays set).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct FaultStatus;
+
+    impl FaultStatus {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C06000;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::FAULT_STATUS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<FaultStatusValue, BusError> {
+            bus.read(Self::ADDR).map(FaultStatusValue)
+        }
+
+        /// Writes `value`: every 1 bit clears that flag.
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: FaultStatusValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+    }
+
+    /// A value of [`FaultStatus`]; bits above bit 2 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct FaultStatusValue(u32);
+
+    impl FaultStatusValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `OVERCURRENT` (bit 0): |ADC sample| > OC_LIMIT on a phase
+        pub const fn overcurrent(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `OVERCURRENT` (bit 0).
+        pub const fn with_overcurrent(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+
+        /// `EXTERNAL` (bit 1): external fault input asserted
+        pub const fn external(self) -> bool {
+            (self.0 >> 1) & 1 != 0
+        }
+
+        /// Sets `EXTERNAL` (bit 1).
+        pub const fn with_external(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 1)) | ((v as u32) << 1))
+        }
+
+        /// `WATCHDOG` (bit 2): no HEARTBEAT write for WDG_TIMEOUT cycles
+        pub const fn watchdog(self) -> bool {
+            (self.0 >> 2) & 1 != 0
+        }
+
+        /// Sets `WATCHDOG` (bit 2).
+        pub const fn with_watchdog(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 2)) | ((v as u32) << 2))
+        }
+    }
+
+    impl Default for FaultStatusValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `FAULT.FAULT_RAW` at `0x43C06004` (RO, 3 bits, reset `0x0`): The fault conditions now, unlatched.
+    ///
+    /// Format: bits, as FAULT_STATUS. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct FaultRaw;
+
+    impl FaultRaw {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C06004;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::FAULT_RAW;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<FaultRawValue, BusError> {
+            bus.read(Self::ADDR).map(FaultRawValue)
+        }
+    }
+
+    /// A value of [`FaultRaw`]; bits above bit 2 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct FaultRawValue(u32);
+
+    impl FaultRawValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 2:0, 3 bits): The whole register (bits, as FAULT_STATUS).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x7
+        }
+
+        /// Sets `VALUE` (bits 2:0, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x7) | (v & 0x7))
+        }
+    }
+
+    impl Default for FaultRawValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `FAULT.OC_LIMIT` at `0x43C06008` (RW, 11 bits, reset `0x708`): Trip when a raw sample's magnitude exceeds it (-2048 always trips).
+    ///
+    /// Format: unsigned ADC counts (as ADC_IA). Writes: the hardware clamps the written word to 0..=2047 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct OcLimit;
+
+    impl OcLimit {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C06008;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::OC_LIMIT;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<OcLimitValue, BusError> {
+            bus.read(Self::ADDR).map(OcLimitValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: OcLimitValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(OcLimitValue) -> OcLimitValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`OcLimit`]; bits above bit 10 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct OcLimitValue(u32);
+
+    impl OcLimitValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x708);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 10:0, 11 bits): The whole register (unsigned ADC counts (as ADC_IA)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x7FF
+        }
+
+        /// Sets `VALUE` (bits 10:0, 11 bits) to the low 11 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x7FF) | (v & 0x7FF))
+        }
+    }
+
+    impl Default for OcLimitValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `FAULT.WDG_TIMEOUT` at `0x43C0600C` (RW, 32 bits, reset `0x989680`): Cycles without a HEARTBEAT write before the watchdog trips (reset 100 ms).
+    ///
+    /// Format: unsigned, PL clock cycles. Writes: the hardware clamps the written word to 1000..=4294967295 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct WdgTimeout;
+
+    impl WdgTimeout {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0600C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::WDG_TIMEOUT;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<WdgTimeoutValue, BusError> {
+            bus.read(Self::ADDR).map(WdgTimeoutValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: WdgTimeoutValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(WdgTimeoutValue) -> WdgTimeoutValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`WdgTimeout`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct WdgTimeoutValue(u32);
+
+    impl WdgTimeoutValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x989680);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (unsigned, PL clock cycles).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for WdgTimeoutValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+}
+
+/// Block 7 `CAPTURE` at `0x43C07000`: Reserved for the capture buffer (not implemented yet): every access is SLVERR.
+pub mod capture {
+
+    /// Absolute address of the block.
+    pub const BASE: usize = 0x43C07000;
+}
