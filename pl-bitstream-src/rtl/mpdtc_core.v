@@ -39,8 +39,10 @@
 //  17  squares i2 x CSQ; in-band flags; transition counts
 //  18  |I|^2 = sat(round((sq_d + sq_q) >> 13)), J^2 = |I|^2 x WGT[n]
 //  19  8-way lexicographic minimum (band, J^2 or error, n, index) -> S[k+1]
-// Parameters must satisfy the model's own preconditions: eta_lim, int_lim
-// >= 0 (the Rust model's clamp panics otherwise).
+// eta_lim and int_lim are meant to be >= 0 (the registers hold 24 bits, so
+// the PL always passes a non-negative value); a negative limit is still
+// defined, by the same comparator chain as the Rust model's clamp
+// (x > lim ? lim : x < -lim ? -lim : x).
 `default_nettype none
 
 module mpdtc_core (

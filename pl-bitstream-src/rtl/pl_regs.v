@@ -1,110 +1,129 @@
-// pl_regs: the PL register file behind axil_slave, decoded from regmap.vh
-// (generated from firmware/drive/src/regmap.rs, the one source of truth).
+// Generated from firmware/drive/src/regmap.rs by `cargo run -p regmap-gen`;
+// do not edit (a test fails when this file is stale).
 //
-// Register-bus side (from axil_slave): wr_i/rd_i are one-cycle strobes;
-// wr_err_o/rd_err_o/rd_data_o are combinational. Write rules (as the
-// table's Register::apply_write): byte strobes merge into the current value,
-// then the 32-bit word is masked to the width (all valid), clamped as a whole
-// (RM_*_MIN/MAX) or rejected (CTRL: > RM_CTRL_MAX keeps the old value and
-// sets ERR.BAD_VALUE). Unmapped offsets and writes to RO registers give
-// SLVERR and set ERR.BAD_ADDR. W1C bits (ERR here, FAULT_STATUS in
-// fault_block via fault_clr_o) clear on a written 1.
-// GATE_EN is held at 0 while a fault is latched (fault_any_i).
+// pl_regs: the PL register file behind axil_slave. Register-bus side:
+// wr_i/rd_i are one-cycle strobes; wr_err_o/rd_err_o/rd_data_o are
+// combinational. Write rules (as the table's Register::apply_write): byte
+// strobes merge into the current value, then the 32-bit word is masked to
+// the width (all valid), clamped as a whole to the table's bounds, or
+// rejected (above the bound: the register keeps its value and
+// ERR.BAD_VALUE is set).
+// Unmapped offsets, and writes to RO registers, answer SLVERR and set
+// ERR.BAD_ADDR. W1C flags clear on a written 1.
+//
+// Ports towards the cores, one per field (a register without fields is
+// one port), named <register>[_<field>] in lower case: RW fields are
+// outputs _o of the stored bits; RO fields are inputs _i; W1C flags kept
+// in a core are inputs _i with a one-cycle output _clr_o of the written
+// ones; a strobe register gives only _we_o (one cycle per write); a
+// register the hardware can clear has an input _hw_clr_i that holds it at
+// 0 and wins over a write. RO constants and ERR have no port.
 `default_nettype none
 
-module pl_regs #(
-    parameter integer AW = 15
-) (
-    input  wire          clk_i,
-    input  wire          rst_i,
+module pl_regs (
+    input  wire        clk_i,
+    input  wire        rst_i,
     // register bus
-    input  wire          wr_i,
-    input  wire [AW-1:0] wr_addr_i,
-    input  wire [  31:0] wr_data_i,
-    input  wire [   3:0] wr_strb_i,
-    output reg           wr_err_o,
-    input  wire          rd_i,
-    input  wire [AW-1:0] rd_addr_i,
-    output reg  [  31:0] rd_data_o,
-    output reg           rd_err_o,
-    // control outputs
-    output wire          sel_pwm_o,    // CTRL.MODE = FOC-PWM
-    output wire          sel_state_o,  // CTRL.MODE = MPDTC
-    output wire          gate_en_o,
-    output wire [   9:0] dead_time_o,
-    output wire [  15:0] pwm_period_o,
-    output wire [  15:0] duty_a_o,
-    output wire [  15:0] duty_b_o,
-    output wire [  15:0] duty_c_o,
-    output wire [   2:0] sw_state_o,
-    output wire          adc_en_o,
-    output wire [  15:0] adc_period_o,
-    output wire [  15:0] enc_cpr_o,
-    output wire [  23:0] enc_window_o,
-    output wire [  10:0] oc_limit_o,
-    output wire [  31:0] wdg_timeout_o,
-    output wire          heartbeat_o,
-    output wire [   2:0] fault_clr_o,
-    // MPDTC block: control, start strobe, inputs and parameters (raw
-    // register bits, two's complement where the table says so)
-    output wire          mpdtc_manual_o,
-    output wire          mpdtc_clr_o,
-    output wire          mpdtc_start_o,
-    output wire [  24:0] mp_id_o,
-    output wire [  24:0] mp_iq_o,
-    output wire [  17:0] mp_cos0_o,
-    output wire [  17:0] mp_sin0_o,
-    output wire [  17:0] mp_cos1_o,
-    output wire [  17:0] mp_sin1_o,
-    output wire [  17:0] mp_cos2_o,
-    output wire [  17:0] mp_sin2_o,
-    output wire [  17:0] mp_w_ts_o,
-    output wire [  17:0] mp_t_ref_o,
-    output wire [  17:0] mp_a_o,
-    output wire [  17:0] mp_lambda_o,
-    output wire [  24:0] mp_u0_o,
-    output wire [  24:0] mp_u0_half_o,
-    output wire [  24:0] mp_u0_h_o,
-    output wire [  24:0] mp_psi_l_o,
-    output wire [  24:0] mp_kinv_t_o,
-    output wire [  24:0] mp_tol_o,
-    output wire [  17:0] mp_k_int_o,
-    output wire [  24:0] mp_int_lim_o,
-    output wire          mp_int_cond_o,
-    output wire [  17:0] mp_kp_o_o,
-    output wire [  17:0] mp_ki_o_o,
-    output wire [  24:0] mp_eta_lim_o,
-    output wire [  71:0] mp_w2_o,
-    // control sequence (mpdtc_seq): alignment settings
-    output wire [   2:0] align_vec_o,
-    output wire [  15:0] align_period_o,
-    output wire [  15:0] align_on_o,
-    output wire [  31:0] align_time_o,
-    // status inputs
-    input  wire          gates_active_i,
-    input  wire [   2:0] gate_hi_i,
-    input  wire [   2:0] gate_lo_i,
-    input  wire [   2:0] state_sel_i,
-    input  wire [  15:0] pwm_count_i,
-    input  wire          pwm_down_i,
-    input  wire [  15:0] adc_ia_i,
-    input  wire [  15:0] adc_ib_i,
-    input  wire [  15:0] adc_ic_i,
-    input  wire [  31:0] adc_count_i,
-    input  wire [  15:0] enc_pos_i,
-    input  wire [  15:0] enc_speed_i,
-    input  wire [  15:0] enc_index_i,
-    input  wire [   2:0] fault_status_i,
-    input  wire [   2:0] fault_raw_i,
-    input  wire          fault_any_i,
-    input  wire          mpdtc_busy_i,
-    input  wire [   2:0] mpdtc_s_next_i,
-    input  wire [  15:0] mpdtc_done_cnt_i,
-    input  wire [  24:0] mpdtc_iq_ref_i,
-    input  wire [  31:0] seq_status_i,
-    input  wire [  15:0] align_pos_i
+    input  wire        wr_i,
+    input  wire [14:0] wr_addr_i,
+    input  wire [31:0] wr_data_i,
+    input  wire [ 3:0] wr_strb_i,
+    output wire        wr_err_o,
+    input  wire        rd_i,
+    input  wire [14:0] rd_addr_i,
+    output reg  [31:0] rd_data_o,
+    output reg         rd_err_o,
+    // block TOP
+    output wire   [1:0] ctrl_mode_o,
+    input  wire   [1:0] status_mode_i,
+    input  wire         status_gates_active_i,
+    input  wire         status_fault_i,
+    output wire         heartbeat_we_o,
+    output wire  [31:0] scratch_o,
+    // block MPDTC
+    output wire         mpdtc_ctrl_manual_o,
+    output wire         mpdtc_ctrl_state_clr_o,
+    output wire         mpdtc_start_we_o,
+    input  wire         mpdtc_status_busy_i,
+    input  wire   [2:0] mpdtc_status_s_next_i,
+    input  wire  [15:0] mpdtc_status_done_count_i,
+    output wire  [24:0] mpdtc_in_id_o,
+    output wire  [24:0] mpdtc_in_iq_o,
+    output wire  [17:0] mpdtc_in_cos0_o,
+    output wire  [17:0] mpdtc_in_sin0_o,
+    output wire  [17:0] mpdtc_in_cos1_o,
+    output wire  [17:0] mpdtc_in_sin1_o,
+    output wire  [17:0] mpdtc_in_cos2_o,
+    output wire  [17:0] mpdtc_in_sin2_o,
+    output wire  [17:0] mpdtc_in_w_ts_o,
+    output wire  [17:0] mpdtc_in_t_ref_o,
+    output wire  [17:0] mpdtc_p_a_o,
+    output wire  [17:0] mpdtc_p_lambda_o,
+    output wire  [24:0] mpdtc_p_u0_o,
+    output wire  [24:0] mpdtc_p_u0_half_o,
+    output wire  [24:0] mpdtc_p_u0_h_o,
+    output wire  [24:0] mpdtc_p_psi_l_o,
+    output wire  [24:0] mpdtc_p_kinv_t_o,
+    output wire  [23:0] mpdtc_p_tol_o,
+    output wire  [17:0] mpdtc_p_k_int_o,
+    output wire  [23:0] mpdtc_p_int_lim_o,
+    output wire         mpdtc_p_int_cond_o,
+    output wire  [17:0] mpdtc_p_kp_o_o,
+    output wire  [17:0] mpdtc_p_ki_o_o,
+    output wire  [23:0] mpdtc_p_eta_lim_o,
+    output wire  [17:0] mpdtc_p_w2_0_o,
+    output wire  [17:0] mpdtc_p_w2_1_o,
+    output wire  [17:0] mpdtc_p_w2_2_o,
+    output wire  [17:0] mpdtc_p_w2_3_o,
+    input  wire  [24:0] mpdtc_iq_ref_i,
+    input  wire   [2:0] mpdtc_seq_status_state_i,
+    input  wire         mpdtc_seq_status_sampled_i,
+    input  wire         mpdtc_seq_status_aligned_i,
+    input  wire   [7:0] mpdtc_seq_status_overruns_i,
+    input  wire  [15:0] mpdtc_seq_status_periods_i,
+    output wire   [2:0] mpdtc_align_vec_o,
+    output wire  [15:0] mpdtc_align_period_o,
+    output wire  [15:0] mpdtc_align_on_o,
+    output wire  [31:0] mpdtc_align_time_o,
+    input  wire  [15:0] mpdtc_align_pos_i,
+    // block PWM
+    output wire         gate_ctrl_gate_en_o,
+    input  wire         gate_ctrl_hw_clr_i,
+    output wire   [9:0] dead_time_o,
+    output wire  [15:0] pwm_period_o,
+    output wire  [15:0] duty_a_o,
+    output wire  [15:0] duty_b_o,
+    output wire  [15:0] duty_c_o,
+    output wire   [2:0] sw_state_o,
+    input  wire   [2:0] gate_status_hi_i,
+    input  wire   [2:0] gate_status_lo_i,
+    input  wire   [2:0] gate_status_state_i,
+    input  wire  [15:0] pwm_count_count_i,
+    input  wire         pwm_count_down_i,
+    // block ADC
+    output wire         adc_ctrl_enable_o,
+    output wire  [15:0] adc_period_o,
+    input  wire  [15:0] adc_ia_i,
+    input  wire  [15:0] adc_ib_i,
+    input  wire  [15:0] adc_ic_i,
+    input  wire  [31:0] adc_count_i,
+    // block ENC
+    output wire  [15:0] enc_cpr_o,
+    input  wire  [15:0] enc_pos_i,
+    input  wire  [15:0] enc_speed_i,
+    output wire  [23:0] enc_window_o,
+    input  wire  [15:0] enc_index_i,
+    // block FAULT
+    input  wire         fault_status_overcurrent_i,
+    input  wire         fault_status_external_i,
+    input  wire         fault_status_watchdog_i,
+    output wire         fault_status_overcurrent_clr_o,
+    output wire         fault_status_external_clr_o,
+    output wire         fault_status_watchdog_clr_o,
+    input  wire   [2:0] fault_raw_i,
+    output wire  [10:0] oc_limit_o,
+    output wire  [31:0] wdg_timeout_o
 );
-`include "regmap.vh"
 
     // Byte-strobe merge of a write over the current (zero-extended) value.
     function automatic [31:0] merge(input [31:0] old, input [31:0] data, input [3:0] strb);
@@ -124,174 +143,289 @@ module pl_regs #(
         end
     endfunction
 
-    reg [ 1:0] ctrl_q;
-    reg [ 1:0] err_q;
-    reg [31:0] heartbeat_q;
-    reg [31:0] scratch_q;
-    reg        gate_en_q;
-    reg [ 9:0] dead_time_q;
-    reg [15:0] pwm_period_q;
-    reg [15:0] duty_a_q;
-    reg [15:0] duty_b_q;
-    reg [15:0] duty_c_q;
-    reg [ 2:0] sw_state_q;
-    reg        adc_en_q;
-    reg [15:0] adc_period_q;
-    reg [15:0] enc_cpr_q;
-    reg [23:0] enc_window_q;
-    reg [10:0] oc_limit_q;
-    reg [31:0] wdg_timeout_q;
-    reg [ 1:0] mpdtc_ctrl_q;
-    reg [31:0] mpdtc_start_q;
-    reg [ 2:0] align_vec_q;
-    reg [15:0] align_period_q;
-    reg [15:0] align_on_q;
-    reg [31:0] align_time_q;
-    // Plain RW words 4..33 of the MPDTC page (inputs, parameters).
-    reg [31:0] mp_q[4:33];
+    // Storage.
+    reg   [1:0] ctrl_q;
+    reg   [1:0] err_q;
+    reg  [31:0] heartbeat_q;
+    reg  [31:0] scratch_q;
+    reg   [1:0] mpdtc_ctrl_q;
+    reg  [31:0] mpdtc_start_q;
+    reg  [24:0] mpdtc_in_id_q;
+    reg  [24:0] mpdtc_in_iq_q;
+    reg  [17:0] mpdtc_in_cos0_q;
+    reg  [17:0] mpdtc_in_sin0_q;
+    reg  [17:0] mpdtc_in_cos1_q;
+    reg  [17:0] mpdtc_in_sin1_q;
+    reg  [17:0] mpdtc_in_cos2_q;
+    reg  [17:0] mpdtc_in_sin2_q;
+    reg  [17:0] mpdtc_in_w_ts_q;
+    reg  [17:0] mpdtc_in_t_ref_q;
+    reg  [17:0] mpdtc_p_a_q;
+    reg  [17:0] mpdtc_p_lambda_q;
+    reg  [24:0] mpdtc_p_u0_q;
+    reg  [24:0] mpdtc_p_u0_half_q;
+    reg  [24:0] mpdtc_p_u0_h_q;
+    reg  [24:0] mpdtc_p_psi_l_q;
+    reg  [24:0] mpdtc_p_kinv_t_q;
+    reg  [23:0] mpdtc_p_tol_q;
+    reg  [17:0] mpdtc_p_k_int_q;
+    reg  [23:0] mpdtc_p_int_lim_q;
+    reg         mpdtc_p_int_cond_q;
+    reg  [17:0] mpdtc_p_kp_o_q;
+    reg  [17:0] mpdtc_p_ki_o_q;
+    reg  [23:0] mpdtc_p_eta_lim_q;
+    reg  [17:0] mpdtc_p_w2_0_q;
+    reg  [17:0] mpdtc_p_w2_1_q;
+    reg  [17:0] mpdtc_p_w2_2_q;
+    reg  [17:0] mpdtc_p_w2_3_q;
+    reg   [2:0] mpdtc_align_vec_q;
+    reg  [15:0] mpdtc_align_period_q;
+    reg  [15:0] mpdtc_align_on_q;
+    reg  [31:0] mpdtc_align_time_q;
+    reg         gate_ctrl_q;
+    reg   [9:0] dead_time_q;
+    reg  [15:0] pwm_period_q;
+    reg  [15:0] duty_a_q;
+    reg  [15:0] duty_b_q;
+    reg  [15:0] duty_c_q;
+    reg   [2:0] sw_state_q;
+    reg         adc_ctrl_q;
+    reg  [15:0] adc_period_q;
+    reg  [15:0] enc_cpr_q;
+    reg  [23:0] enc_window_q;
+    reg  [10:0] oc_limit_q;
+    reg  [31:0] wdg_timeout_q;
 
-    // Write decode: one-hot select of the addressed register.
-    wire [AW-1:0] wa = wr_addr_i;
-    wire w_ctrl = wr_i && wa == RM_CTRL_ADDR;
-    wire w_err = wr_i && wa == RM_ERR_ADDR;
-    wire w_heartbeat = wr_i && wa == RM_HEARTBEAT_ADDR;
-    wire w_scratch = wr_i && wa == RM_SCRATCH_ADDR;
-    wire w_gate_ctrl = wr_i && wa == RM_GATE_CTRL_ADDR;
-    wire w_dead_time = wr_i && wa == RM_DEAD_TIME_ADDR;
-    wire w_pwm_period = wr_i && wa == RM_PWM_PERIOD_ADDR;
-    wire w_duty_a = wr_i && wa == RM_DUTY_A_ADDR;
-    wire w_duty_b = wr_i && wa == RM_DUTY_B_ADDR;
-    wire w_duty_c = wr_i && wa == RM_DUTY_C_ADDR;
-    wire w_sw_state = wr_i && wa == RM_SW_STATE_ADDR;
-    wire w_adc_ctrl = wr_i && wa == RM_ADC_CTRL_ADDR;
-    wire w_adc_period = wr_i && wa == RM_ADC_PERIOD_ADDR;
-    wire w_enc_cpr = wr_i && wa == RM_ENC_CPR_ADDR;
-    wire w_enc_window = wr_i && wa == RM_ENC_WINDOW_ADDR;
-    wire w_fault_status = wr_i && wa == RM_FAULT_STATUS_ADDR;
-    wire w_oc_limit = wr_i && wa == RM_OC_LIMIT_ADDR;
-    wire w_wdg_timeout = wr_i && wa == RM_WDG_TIMEOUT_ADDR;
-    wire w_mpdtc_ctrl = wr_i && wa == RM_MPDTC_CTRL_ADDR;
-    wire w_mpdtc_start = wr_i && wa == RM_MPDTC_START_ADDR;
-    wire w_align_vec = wr_i && wa == RM_MPDTC_ALIGN_VEC_ADDR;
-    wire w_align_period = wr_i && wa == RM_MPDTC_ALIGN_PERIOD_ADDR;
-    wire w_align_on = wr_i && wa == RM_MPDTC_ALIGN_ON_ADDR;
-    wire w_align_time = wr_i && wa == RM_MPDTC_ALIGN_TIME_ADDR;
-    wire [31:0] mp_wmask = rm_mpdtc_plain_mask(wa[11:2]);
-    wire w_mp = wr_i && wa[14:12] == RM_BLK_MPDTC && wa[1:0] == 2'b00 && mp_wmask != 32'd0;
-    wire [31:0] ra_mask = rm_mpdtc_plain_mask(rd_addr_i[11:2]);
-    wire r_mp = rd_addr_i[14:12] == RM_BLK_MPDTC && rd_addr_i[1:0] == 2'b00 && ra_mask != 32'd0;
-    // Word index kept inside the storage range (only used when r_mp).
-    wire [5:0] r_mp_idx = (rd_addr_i[7:2] >= 6'd4 && rd_addr_i[7:2] <= 6'd33) ? rd_addr_i[7:2] : 6'd4;
-    wire w_any_ok = w_ctrl | w_err | w_heartbeat | w_scratch | w_gate_ctrl | w_dead_time
-        | w_pwm_period | w_duty_a | w_duty_b | w_duty_c | w_sw_state | w_adc_ctrl
-        | w_adc_period | w_enc_cpr | w_enc_window | w_fault_status | w_oc_limit
-        | w_wdg_timeout | w_mpdtc_ctrl | w_mpdtc_start | w_mp
-        | w_align_vec | w_align_period | w_align_on | w_align_time;
-
-    // Merged write values (zero-extended current value underneath).
-    wire [31:0] m_ctrl = merge({30'd0, ctrl_q}, wr_data_i, wr_strb_i);
-    wire [31:0] m_err = merge(32'd0, wr_data_i, wr_strb_i);  // W1C: ones written
-    wire ctrl_bad = m_ctrl > RM_CTRL_MAX;
-
-    // Next values of the RW registers: byte merge, then mask (by the
-    // assignment width) or clamp as the table says.
+    // Write decode, and the word each write leaves (merged, clamped).
+    wire w_ctrl = wr_i && wr_addr_i == 15'h0008;
+    wire [31:0] n_ctrl = merge({30'd0, ctrl_q}, wr_data_i, wr_strb_i);
+    wire bad_ctrl = n_ctrl > 32'h00000002;
+    wire w_err = wr_i && wr_addr_i == 15'h0010;
+    wire [31:0] n_err = merge(32'd0, wr_data_i, wr_strb_i);
+    wire w_heartbeat = wr_i && wr_addr_i == 15'h0014;
     wire [31:0] n_heartbeat = merge(heartbeat_q, wr_data_i, wr_strb_i);
+    wire w_scratch = wr_i && wr_addr_i == 15'h0018;
     wire [31:0] n_scratch = merge(scratch_q, wr_data_i, wr_strb_i);
-    wire [31:0] n_gate_ctrl = merge({31'd0, gate_en_q}, wr_data_i, wr_strb_i);
-    wire [31:0] n_dead_time = clamp(merge({22'd0, dead_time_q}, wr_data_i, wr_strb_i),
-                                    RM_DEAD_TIME_MIN, RM_DEAD_TIME_MAX);
-    wire [31:0] n_pwm_period = clamp(merge({16'd0, pwm_period_q}, wr_data_i, wr_strb_i),
-                                     RM_PWM_PERIOD_MIN, RM_PWM_PERIOD_MAX);
-    wire [31:0] n_duty_a = merge({16'd0, duty_a_q}, wr_data_i, wr_strb_i);
-    wire [31:0] n_duty_b = merge({16'd0, duty_b_q}, wr_data_i, wr_strb_i);
-    wire [31:0] n_duty_c = merge({16'd0, duty_c_q}, wr_data_i, wr_strb_i);
-    wire [31:0] n_sw_state = merge({29'd0, sw_state_q}, wr_data_i, wr_strb_i);
-    wire [31:0] n_adc_ctrl = merge({31'd0, adc_en_q}, wr_data_i, wr_strb_i);
-    wire [31:0] n_adc_period = clamp(merge({16'd0, adc_period_q}, wr_data_i, wr_strb_i),
-                                     RM_ADC_PERIOD_MIN, RM_ADC_PERIOD_MAX);
-    wire [31:0] n_enc_cpr = clamp(merge({16'd0, enc_cpr_q}, wr_data_i, wr_strb_i),
-                                  RM_ENC_CPR_MIN, RM_ENC_CPR_MAX);
-    wire [31:0] n_enc_window = clamp(merge({8'd0, enc_window_q}, wr_data_i, wr_strb_i),
-                                     RM_ENC_WINDOW_MIN, RM_ENC_WINDOW_MAX);
-    wire [31:0] n_oc_limit = clamp(merge({21'd0, oc_limit_q}, wr_data_i, wr_strb_i),
-                                   RM_OC_LIMIT_MIN, RM_OC_LIMIT_MAX);
+    wire w_mpdtc_ctrl = wr_i && wr_addr_i == 15'h1000;
     wire [31:0] n_mpdtc_ctrl = merge({30'd0, mpdtc_ctrl_q}, wr_data_i, wr_strb_i);
-    wire [31:0] n_align_vec = merge({29'd0, align_vec_q}, wr_data_i, wr_strb_i);
-    wire [31:0] n_align_period = clamp(merge({16'd0, align_period_q}, wr_data_i, wr_strb_i),
-                                       RM_MPDTC_ALIGN_PERIOD_MIN, RM_MPDTC_ALIGN_PERIOD_MAX);
-    wire [31:0] n_align_on = clamp(merge({16'd0, align_on_q}, wr_data_i, wr_strb_i),
-                                   RM_MPDTC_ALIGN_ON_MIN, RM_MPDTC_ALIGN_ON_MAX);
-    wire [31:0] n_align_time = clamp(merge(align_time_q, wr_data_i, wr_strb_i),
-                                     RM_MPDTC_ALIGN_TIME_MIN, RM_MPDTC_ALIGN_TIME_MAX);
-    wire [31:0] n_wdg_timeout = clamp(merge(wdg_timeout_q, wr_data_i, wr_strb_i),
-                                      RM_WDG_TIMEOUT_MIN, RM_WDG_TIMEOUT_MAX);
+    wire w_mpdtc_start = wr_i && wr_addr_i == 15'h1004;
+    wire [31:0] n_mpdtc_start = merge(mpdtc_start_q, wr_data_i, wr_strb_i);
+    wire w_mpdtc_in_id = wr_i && wr_addr_i == 15'h1010;
+    wire [31:0] n_mpdtc_in_id = merge({7'd0, mpdtc_in_id_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_in_iq = wr_i && wr_addr_i == 15'h1014;
+    wire [31:0] n_mpdtc_in_iq = merge({7'd0, mpdtc_in_iq_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_in_cos0 = wr_i && wr_addr_i == 15'h1018;
+    wire [31:0] n_mpdtc_in_cos0 = merge({14'd0, mpdtc_in_cos0_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_in_sin0 = wr_i && wr_addr_i == 15'h101c;
+    wire [31:0] n_mpdtc_in_sin0 = merge({14'd0, mpdtc_in_sin0_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_in_cos1 = wr_i && wr_addr_i == 15'h1020;
+    wire [31:0] n_mpdtc_in_cos1 = merge({14'd0, mpdtc_in_cos1_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_in_sin1 = wr_i && wr_addr_i == 15'h1024;
+    wire [31:0] n_mpdtc_in_sin1 = merge({14'd0, mpdtc_in_sin1_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_in_cos2 = wr_i && wr_addr_i == 15'h1028;
+    wire [31:0] n_mpdtc_in_cos2 = merge({14'd0, mpdtc_in_cos2_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_in_sin2 = wr_i && wr_addr_i == 15'h102c;
+    wire [31:0] n_mpdtc_in_sin2 = merge({14'd0, mpdtc_in_sin2_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_in_w_ts = wr_i && wr_addr_i == 15'h1030;
+    wire [31:0] n_mpdtc_in_w_ts = merge({14'd0, mpdtc_in_w_ts_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_in_t_ref = wr_i && wr_addr_i == 15'h1034;
+    wire [31:0] n_mpdtc_in_t_ref = merge({14'd0, mpdtc_in_t_ref_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_a = wr_i && wr_addr_i == 15'h1040;
+    wire [31:0] n_mpdtc_p_a = merge({14'd0, mpdtc_p_a_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_lambda = wr_i && wr_addr_i == 15'h1044;
+    wire [31:0] n_mpdtc_p_lambda = merge({14'd0, mpdtc_p_lambda_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_u0 = wr_i && wr_addr_i == 15'h1048;
+    wire [31:0] n_mpdtc_p_u0 = merge({7'd0, mpdtc_p_u0_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_u0_half = wr_i && wr_addr_i == 15'h104c;
+    wire [31:0] n_mpdtc_p_u0_half = merge({7'd0, mpdtc_p_u0_half_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_u0_h = wr_i && wr_addr_i == 15'h1050;
+    wire [31:0] n_mpdtc_p_u0_h = merge({7'd0, mpdtc_p_u0_h_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_psi_l = wr_i && wr_addr_i == 15'h1054;
+    wire [31:0] n_mpdtc_p_psi_l = merge({7'd0, mpdtc_p_psi_l_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_kinv_t = wr_i && wr_addr_i == 15'h1058;
+    wire [31:0] n_mpdtc_p_kinv_t = merge({7'd0, mpdtc_p_kinv_t_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_tol = wr_i && wr_addr_i == 15'h105c;
+    wire [31:0] n_mpdtc_p_tol = merge({8'd0, mpdtc_p_tol_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_k_int = wr_i && wr_addr_i == 15'h1060;
+    wire [31:0] n_mpdtc_p_k_int = merge({14'd0, mpdtc_p_k_int_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_int_lim = wr_i && wr_addr_i == 15'h1064;
+    wire [31:0] n_mpdtc_p_int_lim = merge({8'd0, mpdtc_p_int_lim_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_int_cond = wr_i && wr_addr_i == 15'h1068;
+    wire [31:0] n_mpdtc_p_int_cond = merge({31'd0, mpdtc_p_int_cond_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_kp_o = wr_i && wr_addr_i == 15'h106c;
+    wire [31:0] n_mpdtc_p_kp_o = merge({14'd0, mpdtc_p_kp_o_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_ki_o = wr_i && wr_addr_i == 15'h1070;
+    wire [31:0] n_mpdtc_p_ki_o = merge({14'd0, mpdtc_p_ki_o_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_eta_lim = wr_i && wr_addr_i == 15'h1074;
+    wire [31:0] n_mpdtc_p_eta_lim = merge({8'd0, mpdtc_p_eta_lim_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_w2_0 = wr_i && wr_addr_i == 15'h1078;
+    wire [31:0] n_mpdtc_p_w2_0 = merge({14'd0, mpdtc_p_w2_0_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_w2_1 = wr_i && wr_addr_i == 15'h107c;
+    wire [31:0] n_mpdtc_p_w2_1 = merge({14'd0, mpdtc_p_w2_1_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_w2_2 = wr_i && wr_addr_i == 15'h1080;
+    wire [31:0] n_mpdtc_p_w2_2 = merge({14'd0, mpdtc_p_w2_2_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_p_w2_3 = wr_i && wr_addr_i == 15'h1084;
+    wire [31:0] n_mpdtc_p_w2_3 = merge({14'd0, mpdtc_p_w2_3_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_align_vec = wr_i && wr_addr_i == 15'h10a4;
+    wire [31:0] n_mpdtc_align_vec = merge({29'd0, mpdtc_align_vec_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_align_period = wr_i && wr_addr_i == 15'h10a8;
+    wire [31:0] n_mpdtc_align_period = clamp(merge({16'd0, mpdtc_align_period_q}, wr_data_i, wr_strb_i), 32'h00000002, 32'h0000ffff);
+    wire w_mpdtc_align_on = wr_i && wr_addr_i == 15'h10ac;
+    wire [31:0] n_mpdtc_align_on = clamp(merge({16'd0, mpdtc_align_on_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h00007fff);
+    wire w_mpdtc_align_time = wr_i && wr_addr_i == 15'h10b0;
+    wire [31:0] n_mpdtc_align_time = clamp(merge(mpdtc_align_time_q, wr_data_i, wr_strb_i), 32'h00000001, 32'hffffffff);
+    wire w_gate_ctrl = wr_i && wr_addr_i == 15'h3000;
+    wire [31:0] n_gate_ctrl = merge({31'd0, gate_ctrl_q}, wr_data_i, wr_strb_i);
+    wire w_dead_time = wr_i && wr_addr_i == 15'h3004;
+    wire [31:0] n_dead_time = clamp(merge({22'd0, dead_time_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h000003ff);
+    wire w_pwm_period = wr_i && wr_addr_i == 15'h3008;
+    wire [31:0] n_pwm_period = clamp(merge({16'd0, pwm_period_q}, wr_data_i, wr_strb_i), 32'h00000002, 32'h0000ffff);
+    wire w_duty_a = wr_i && wr_addr_i == 15'h300c;
+    wire [31:0] n_duty_a = merge({16'd0, duty_a_q}, wr_data_i, wr_strb_i);
+    wire w_duty_b = wr_i && wr_addr_i == 15'h3010;
+    wire [31:0] n_duty_b = merge({16'd0, duty_b_q}, wr_data_i, wr_strb_i);
+    wire w_duty_c = wr_i && wr_addr_i == 15'h3014;
+    wire [31:0] n_duty_c = merge({16'd0, duty_c_q}, wr_data_i, wr_strb_i);
+    wire w_sw_state = wr_i && wr_addr_i == 15'h3018;
+    wire [31:0] n_sw_state = merge({29'd0, sw_state_q}, wr_data_i, wr_strb_i);
+    wire w_adc_ctrl = wr_i && wr_addr_i == 15'h4000;
+    wire [31:0] n_adc_ctrl = merge({31'd0, adc_ctrl_q}, wr_data_i, wr_strb_i);
+    wire w_adc_period = wr_i && wr_addr_i == 15'h4004;
+    wire [31:0] n_adc_period = clamp(merge({16'd0, adc_period_q}, wr_data_i, wr_strb_i), 32'h00000010, 32'h0000ffff);
+    wire w_enc_cpr = wr_i && wr_addr_i == 15'h5000;
+    wire [31:0] n_enc_cpr = clamp(merge({16'd0, enc_cpr_q}, wr_data_i, wr_strb_i), 32'h00000004, 32'h0000ffff);
+    wire w_enc_window = wr_i && wr_addr_i == 15'h500c;
+    wire [31:0] n_enc_window = clamp(merge({8'd0, enc_window_q}, wr_data_i, wr_strb_i), 32'h00000064, 32'h00ffffff);
+    wire w_fault_status = wr_i && wr_addr_i == 15'h6000;
+    wire [31:0] n_fault_status = merge(32'd0, wr_data_i, wr_strb_i);
+    wire w_oc_limit = wr_i && wr_addr_i == 15'h6008;
+    wire [31:0] n_oc_limit = clamp(merge({21'd0, oc_limit_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h000007ff);
+    wire w_wdg_timeout = wr_i && wr_addr_i == 15'h600c;
+    wire [31:0] n_wdg_timeout = clamp(merge(wdg_timeout_q, wr_data_i, wr_strb_i), 32'h000003e8, 32'hffffffff);
+    wire w_any_ok = w_ctrl | w_err | w_heartbeat | w_scratch | w_mpdtc_ctrl
+        | w_mpdtc_start | w_mpdtc_in_id | w_mpdtc_in_iq | w_mpdtc_in_cos0 | w_mpdtc_in_sin0
+        | w_mpdtc_in_cos1 | w_mpdtc_in_sin1 | w_mpdtc_in_cos2 | w_mpdtc_in_sin2 | w_mpdtc_in_w_ts
+        | w_mpdtc_in_t_ref | w_mpdtc_p_a | w_mpdtc_p_lambda | w_mpdtc_p_u0 | w_mpdtc_p_u0_half
+        | w_mpdtc_p_u0_h | w_mpdtc_p_psi_l | w_mpdtc_p_kinv_t | w_mpdtc_p_tol | w_mpdtc_p_k_int
+        | w_mpdtc_p_int_lim | w_mpdtc_p_int_cond | w_mpdtc_p_kp_o | w_mpdtc_p_ki_o | w_mpdtc_p_eta_lim
+        | w_mpdtc_p_w2_0 | w_mpdtc_p_w2_1 | w_mpdtc_p_w2_2 | w_mpdtc_p_w2_3 | w_mpdtc_align_vec
+        | w_mpdtc_align_period | w_mpdtc_align_on | w_mpdtc_align_time | w_gate_ctrl | w_dead_time
+        | w_pwm_period | w_duty_a | w_duty_b | w_duty_c | w_sw_state
+        | w_adc_ctrl | w_adc_period | w_enc_cpr | w_enc_window | w_fault_status
+        | w_oc_limit | w_wdg_timeout;
+    // Access errors of this cycle (set ERR).
+    wire bad_value = (w_ctrl && bad_ctrl);
+    wire bad_addr = (wr_i && !w_any_ok) || (rd_i && rd_err_o);
 
-    always @(*) begin
-        wr_err_o = wr_i && !w_any_ok;
-    end
+    assign wr_err_o = wr_i && !w_any_ok;
 
     always @(posedge clk_i) begin
         if (rst_i) begin
-            ctrl_q        <= RM_CTRL_RESET[1:0];
-            err_q         <= RM_ERR_RESET[1:0];
-            heartbeat_q   <= RM_HEARTBEAT_RESET;
-            scratch_q     <= RM_SCRATCH_RESET;
-            gate_en_q     <= RM_GATE_CTRL_RESET[0];
-            dead_time_q   <= RM_DEAD_TIME_RESET[9:0];
-            pwm_period_q  <= RM_PWM_PERIOD_RESET[15:0];
-            duty_a_q      <= RM_DUTY_A_RESET[15:0];
-            duty_b_q      <= RM_DUTY_B_RESET[15:0];
-            duty_c_q      <= RM_DUTY_C_RESET[15:0];
-            sw_state_q    <= RM_SW_STATE_RESET[2:0];
-            adc_en_q      <= RM_ADC_CTRL_RESET[0];
-            adc_period_q  <= RM_ADC_PERIOD_RESET[15:0];
-            enc_cpr_q     <= RM_ENC_CPR_RESET[15:0];
-            enc_window_q  <= RM_ENC_WINDOW_RESET[23:0];
-            oc_limit_q    <= RM_OC_LIMIT_RESET[10:0];
-            wdg_timeout_q <= RM_WDG_TIMEOUT_RESET;
-            mpdtc_ctrl_q  <= RM_MPDTC_CTRL_RESET[1:0];
-            mpdtc_start_q <= RM_MPDTC_START_RESET;
-            align_vec_q   <= RM_MPDTC_ALIGN_VEC_RESET[2:0];
-            align_period_q <= RM_MPDTC_ALIGN_PERIOD_RESET[15:0];
-            align_on_q    <= RM_MPDTC_ALIGN_ON_RESET[15:0];
-            align_time_q  <= RM_MPDTC_ALIGN_TIME_RESET;
+            ctrl_q <= 2'h0;
+            err_q <= 2'h0;
+            heartbeat_q <= 32'h0;
+            scratch_q <= 32'h0;
+            mpdtc_ctrl_q <= 2'h3;
+            mpdtc_start_q <= 32'h0;
+            mpdtc_in_id_q <= 25'h0;
+            mpdtc_in_iq_q <= 25'h0;
+            mpdtc_in_cos0_q <= 18'h0;
+            mpdtc_in_sin0_q <= 18'h0;
+            mpdtc_in_cos1_q <= 18'h0;
+            mpdtc_in_sin1_q <= 18'h0;
+            mpdtc_in_cos2_q <= 18'h0;
+            mpdtc_in_sin2_q <= 18'h0;
+            mpdtc_in_w_ts_q <= 18'h0;
+            mpdtc_in_t_ref_q <= 18'h0;
+            mpdtc_p_a_q <= 18'h0;
+            mpdtc_p_lambda_q <= 18'h0;
+            mpdtc_p_u0_q <= 25'h0;
+            mpdtc_p_u0_half_q <= 25'h0;
+            mpdtc_p_u0_h_q <= 25'h0;
+            mpdtc_p_psi_l_q <= 25'h0;
+            mpdtc_p_kinv_t_q <= 25'h0;
+            mpdtc_p_tol_q <= 24'h0;
+            mpdtc_p_k_int_q <= 18'h0;
+            mpdtc_p_int_lim_q <= 24'h0;
+            mpdtc_p_int_cond_q <= 1'h0;
+            mpdtc_p_kp_o_q <= 18'h0;
+            mpdtc_p_ki_o_q <= 18'h0;
+            mpdtc_p_eta_lim_q <= 24'h0;
+            mpdtc_p_w2_0_q <= 18'h0;
+            mpdtc_p_w2_1_q <= 18'h0;
+            mpdtc_p_w2_2_q <= 18'h0;
+            mpdtc_p_w2_3_q <= 18'h0;
+            mpdtc_align_vec_q <= 3'h4;
+            mpdtc_align_period_q <= 16'h1388;
+            mpdtc_align_on_q <= 16'hfa;
+            mpdtc_align_time_q <= 32'h2faf080;
+            gate_ctrl_q <= 1'h0;
+            dead_time_q <= 10'h32;
+            pwm_period_q <= 16'h9c4;
+            duty_a_q <= 16'h4e2;
+            duty_b_q <= 16'h4e2;
+            duty_c_q <= 16'h4e2;
+            sw_state_q <= 3'h0;
+            adc_ctrl_q <= 1'h1;
+            adc_period_q <= 16'h187;
+            enc_cpr_q <= 16'h1000;
+            enc_window_q <= 24'h186a0;
+            oc_limit_q <= 11'h708;
+            wdg_timeout_q <= 32'h989680;
         end else begin
-            if (w_ctrl && !ctrl_bad) ctrl_q <= m_ctrl[1:0];
-            // ERR: set wins over a simultaneous clear.
-            err_q <= (err_q & ~(w_err ? m_err[1:0] : 2'b00))
-                | {(wr_i && !w_any_ok) || (rd_i && rd_err_o), w_ctrl && ctrl_bad};
-            if (w_heartbeat) heartbeat_q <= n_heartbeat;
-            if (w_scratch) scratch_q <= n_scratch;
-            if (fault_any_i) gate_en_q <= 1'b0;
-            else if (w_gate_ctrl) gate_en_q <= n_gate_ctrl[0];
+            if (w_ctrl && !bad_ctrl) ctrl_q <= n_ctrl[1:0];
+            // A flag set in this cycle wins over its clear.
+            err_q <= (err_q & ~(w_err ? n_err[1:0] : 2'd0)) | {bad_addr, bad_value};
+            if (w_heartbeat) heartbeat_q <= n_heartbeat[31:0];
+            if (w_scratch) scratch_q <= n_scratch[31:0];
+            if (w_mpdtc_ctrl) mpdtc_ctrl_q <= n_mpdtc_ctrl[1:0];
+            if (w_mpdtc_start) mpdtc_start_q <= n_mpdtc_start[31:0];
+            if (w_mpdtc_in_id) mpdtc_in_id_q <= n_mpdtc_in_id[24:0];
+            if (w_mpdtc_in_iq) mpdtc_in_iq_q <= n_mpdtc_in_iq[24:0];
+            if (w_mpdtc_in_cos0) mpdtc_in_cos0_q <= n_mpdtc_in_cos0[17:0];
+            if (w_mpdtc_in_sin0) mpdtc_in_sin0_q <= n_mpdtc_in_sin0[17:0];
+            if (w_mpdtc_in_cos1) mpdtc_in_cos1_q <= n_mpdtc_in_cos1[17:0];
+            if (w_mpdtc_in_sin1) mpdtc_in_sin1_q <= n_mpdtc_in_sin1[17:0];
+            if (w_mpdtc_in_cos2) mpdtc_in_cos2_q <= n_mpdtc_in_cos2[17:0];
+            if (w_mpdtc_in_sin2) mpdtc_in_sin2_q <= n_mpdtc_in_sin2[17:0];
+            if (w_mpdtc_in_w_ts) mpdtc_in_w_ts_q <= n_mpdtc_in_w_ts[17:0];
+            if (w_mpdtc_in_t_ref) mpdtc_in_t_ref_q <= n_mpdtc_in_t_ref[17:0];
+            if (w_mpdtc_p_a) mpdtc_p_a_q <= n_mpdtc_p_a[17:0];
+            if (w_mpdtc_p_lambda) mpdtc_p_lambda_q <= n_mpdtc_p_lambda[17:0];
+            if (w_mpdtc_p_u0) mpdtc_p_u0_q <= n_mpdtc_p_u0[24:0];
+            if (w_mpdtc_p_u0_half) mpdtc_p_u0_half_q <= n_mpdtc_p_u0_half[24:0];
+            if (w_mpdtc_p_u0_h) mpdtc_p_u0_h_q <= n_mpdtc_p_u0_h[24:0];
+            if (w_mpdtc_p_psi_l) mpdtc_p_psi_l_q <= n_mpdtc_p_psi_l[24:0];
+            if (w_mpdtc_p_kinv_t) mpdtc_p_kinv_t_q <= n_mpdtc_p_kinv_t[24:0];
+            if (w_mpdtc_p_tol) mpdtc_p_tol_q <= n_mpdtc_p_tol[23:0];
+            if (w_mpdtc_p_k_int) mpdtc_p_k_int_q <= n_mpdtc_p_k_int[17:0];
+            if (w_mpdtc_p_int_lim) mpdtc_p_int_lim_q <= n_mpdtc_p_int_lim[23:0];
+            if (w_mpdtc_p_int_cond) mpdtc_p_int_cond_q <= n_mpdtc_p_int_cond[0:0];
+            if (w_mpdtc_p_kp_o) mpdtc_p_kp_o_q <= n_mpdtc_p_kp_o[17:0];
+            if (w_mpdtc_p_ki_o) mpdtc_p_ki_o_q <= n_mpdtc_p_ki_o[17:0];
+            if (w_mpdtc_p_eta_lim) mpdtc_p_eta_lim_q <= n_mpdtc_p_eta_lim[23:0];
+            if (w_mpdtc_p_w2_0) mpdtc_p_w2_0_q <= n_mpdtc_p_w2_0[17:0];
+            if (w_mpdtc_p_w2_1) mpdtc_p_w2_1_q <= n_mpdtc_p_w2_1[17:0];
+            if (w_mpdtc_p_w2_2) mpdtc_p_w2_2_q <= n_mpdtc_p_w2_2[17:0];
+            if (w_mpdtc_p_w2_3) mpdtc_p_w2_3_q <= n_mpdtc_p_w2_3[17:0];
+            if (w_mpdtc_align_vec) mpdtc_align_vec_q <= n_mpdtc_align_vec[2:0];
+            if (w_mpdtc_align_period) mpdtc_align_period_q <= n_mpdtc_align_period[15:0];
+            if (w_mpdtc_align_on) mpdtc_align_on_q <= n_mpdtc_align_on[15:0];
+            if (w_mpdtc_align_time) mpdtc_align_time_q <= n_mpdtc_align_time[31:0];
+            if (gate_ctrl_hw_clr_i) gate_ctrl_q <= 1'd0;
+            else if (w_gate_ctrl) gate_ctrl_q <= n_gate_ctrl[0:0];
             if (w_dead_time) dead_time_q <= n_dead_time[9:0];
             if (w_pwm_period) pwm_period_q <= n_pwm_period[15:0];
             if (w_duty_a) duty_a_q <= n_duty_a[15:0];
             if (w_duty_b) duty_b_q <= n_duty_b[15:0];
             if (w_duty_c) duty_c_q <= n_duty_c[15:0];
             if (w_sw_state) sw_state_q <= n_sw_state[2:0];
-            if (w_adc_ctrl) adc_en_q <= n_adc_ctrl[0];
+            if (w_adc_ctrl) adc_ctrl_q <= n_adc_ctrl[0:0];
             if (w_adc_period) adc_period_q <= n_adc_period[15:0];
             if (w_enc_cpr) enc_cpr_q <= n_enc_cpr[15:0];
             if (w_enc_window) enc_window_q <= n_enc_window[23:0];
             if (w_oc_limit) oc_limit_q <= n_oc_limit[10:0];
-            if (w_wdg_timeout) wdg_timeout_q <= n_wdg_timeout;
-            if (w_mpdtc_ctrl) mpdtc_ctrl_q <= n_mpdtc_ctrl[1:0];
-            if (w_mpdtc_start) mpdtc_start_q <= merge(mpdtc_start_q, wr_data_i, wr_strb_i);
-            if (w_align_vec) align_vec_q <= n_align_vec[2:0];
-            if (w_align_period) align_period_q <= n_align_period[15:0];
-            if (w_align_on) align_on_q <= n_align_on[15:0];
-            if (w_align_time) align_time_q <= n_align_time;
-        end
-    end
-
-    // Plain MPDTC words: reset 0 (table), byte strobes, masked to the width.
-    integer wi;
-    always @(posedge clk_i) begin
-        for (wi = 4; wi <= 33; wi = wi + 1) begin
-            if (rst_i) mp_q[wi] <= 32'd0;
-            else if (w_mp && wa[7:2] == wi[5:0])
-                mp_q[wi] <= merge(mp_q[wi], wr_data_i, wr_strb_i) & mp_wmask;
+            if (w_wdg_timeout) wdg_timeout_q <= n_wdg_timeout[31:0];
         end
     end
 
@@ -300,110 +434,135 @@ module pl_regs #(
         rd_data_o = 32'd0;
         rd_err_o  = 1'b0;
         case (rd_addr_i)
-            RM_ID_ADDR: rd_data_o = RM_ID_RESET;
-            RM_VERSION_ADDR: rd_data_o = RM_VERSION_RESET;
-            RM_CTRL_ADDR: rd_data_o = {30'd0, ctrl_q};
-            RM_STATUS_ADDR: rd_data_o = {28'd0, fault_any_i, gates_active_i, ctrl_q};
-            RM_ERR_ADDR: rd_data_o = {30'd0, err_q};
-            RM_HEARTBEAT_ADDR: rd_data_o = heartbeat_q;
-            RM_SCRATCH_ADDR: rd_data_o = scratch_q;
-            RM_GATE_CTRL_ADDR: rd_data_o = {31'd0, gate_en_q};
-            RM_DEAD_TIME_ADDR: rd_data_o = {22'd0, dead_time_q};
-            RM_PWM_PERIOD_ADDR: rd_data_o = {16'd0, pwm_period_q};
-            RM_DUTY_A_ADDR: rd_data_o = {16'd0, duty_a_q};
-            RM_DUTY_B_ADDR: rd_data_o = {16'd0, duty_b_q};
-            RM_DUTY_C_ADDR: rd_data_o = {16'd0, duty_c_q};
-            RM_SW_STATE_ADDR: rd_data_o = {29'd0, sw_state_q};
-            RM_GATE_STATUS_ADDR: rd_data_o = {23'd0, state_sel_i, gate_lo_i, gate_hi_i};
-            RM_PWM_COUNT_ADDR: rd_data_o = {15'd0, pwm_down_i, pwm_count_i};
-            RM_ADC_CTRL_ADDR: rd_data_o = {31'd0, adc_en_q};
-            RM_ADC_PERIOD_ADDR: rd_data_o = {16'd0, adc_period_q};
-            RM_ADC_IA_ADDR: rd_data_o = {16'd0, adc_ia_i};
-            RM_ADC_IB_ADDR: rd_data_o = {16'd0, adc_ib_i};
-            RM_ADC_IC_ADDR: rd_data_o = {16'd0, adc_ic_i};
-            RM_ADC_COUNT_ADDR: rd_data_o = adc_count_i;
-            RM_ENC_CPR_ADDR: rd_data_o = {16'd0, enc_cpr_q};
-            RM_ENC_POS_ADDR: rd_data_o = {16'd0, enc_pos_i};
-            RM_ENC_SPEED_ADDR: rd_data_o = {16'd0, enc_speed_i};
-            RM_ENC_WINDOW_ADDR: rd_data_o = {8'd0, enc_window_q};
-            RM_ENC_INDEX_ADDR: rd_data_o = {16'd0, enc_index_i};
-            RM_FAULT_STATUS_ADDR: rd_data_o = {29'd0, fault_status_i};
-            RM_FAULT_RAW_ADDR: rd_data_o = {29'd0, fault_raw_i};
-            RM_OC_LIMIT_ADDR: rd_data_o = {21'd0, oc_limit_q};
-            RM_WDG_TIMEOUT_ADDR: rd_data_o = wdg_timeout_q;
-            RM_MPDTC_CTRL_ADDR: rd_data_o = {30'd0, mpdtc_ctrl_q};
-            RM_MPDTC_START_ADDR: rd_data_o = mpdtc_start_q;
-            RM_MPDTC_STATUS_ADDR:
-            rd_data_o = {mpdtc_done_cnt_i, 12'd0, mpdtc_s_next_i, mpdtc_busy_i};
-            RM_MPDTC_LATENCY_ADDR: rd_data_o = RM_MPDTC_LATENCY_RESET;
-            RM_MPDTC_IQ_REF_ADDR: rd_data_o = {7'd0, mpdtc_iq_ref_i};
-            RM_MPDTC_SEQ_STATUS_ADDR: rd_data_o = seq_status_i;
-            RM_MPDTC_ALIGN_VEC_ADDR: rd_data_o = {29'd0, align_vec_q};
-            RM_MPDTC_ALIGN_PERIOD_ADDR: rd_data_o = {16'd0, align_period_q};
-            RM_MPDTC_ALIGN_ON_ADDR: rd_data_o = {16'd0, align_on_q};
-            RM_MPDTC_ALIGN_TIME_ADDR: rd_data_o = align_time_q;
-            RM_MPDTC_ALIGN_POS_ADDR: rd_data_o = {16'd0, align_pos_i};
-            default: begin
-                if (r_mp) rd_data_o = mp_q[r_mp_idx] & ra_mask;
-                else rd_err_o = rd_i;
-            end
+            15'h0000: rd_data_o = 32'h50534452;  // ID
+            15'h0004: rd_data_o = 32'h00010002;  // VERSION
+            15'h0008: rd_data_o = {30'd0, ctrl_q};  // CTRL
+            15'h000c: rd_data_o = {28'd0, status_fault_i, status_gates_active_i, status_mode_i};  // STATUS
+            15'h0010: rd_data_o = {30'd0, err_q};  // ERR
+            15'h0014: rd_data_o = heartbeat_q;  // HEARTBEAT
+            15'h0018: rd_data_o = scratch_q;  // SCRATCH
+            15'h1000: rd_data_o = {30'd0, mpdtc_ctrl_q};  // MPDTC_CTRL
+            15'h1004: rd_data_o = mpdtc_start_q;  // MPDTC_START
+            15'h1008: rd_data_o = {mpdtc_status_done_count_i, 12'd0, mpdtc_status_s_next_i, mpdtc_status_busy_i};  // MPDTC_STATUS
+            15'h100c: rd_data_o = 32'h00000014;  // MPDTC_LATENCY
+            15'h1010: rd_data_o = {7'd0, mpdtc_in_id_q};  // MPDTC_IN_ID
+            15'h1014: rd_data_o = {7'd0, mpdtc_in_iq_q};  // MPDTC_IN_IQ
+            15'h1018: rd_data_o = {14'd0, mpdtc_in_cos0_q};  // MPDTC_IN_COS0
+            15'h101c: rd_data_o = {14'd0, mpdtc_in_sin0_q};  // MPDTC_IN_SIN0
+            15'h1020: rd_data_o = {14'd0, mpdtc_in_cos1_q};  // MPDTC_IN_COS1
+            15'h1024: rd_data_o = {14'd0, mpdtc_in_sin1_q};  // MPDTC_IN_SIN1
+            15'h1028: rd_data_o = {14'd0, mpdtc_in_cos2_q};  // MPDTC_IN_COS2
+            15'h102c: rd_data_o = {14'd0, mpdtc_in_sin2_q};  // MPDTC_IN_SIN2
+            15'h1030: rd_data_o = {14'd0, mpdtc_in_w_ts_q};  // MPDTC_IN_W_TS
+            15'h1034: rd_data_o = {14'd0, mpdtc_in_t_ref_q};  // MPDTC_IN_T_REF
+            15'h1040: rd_data_o = {14'd0, mpdtc_p_a_q};  // MPDTC_P_A
+            15'h1044: rd_data_o = {14'd0, mpdtc_p_lambda_q};  // MPDTC_P_LAMBDA
+            15'h1048: rd_data_o = {7'd0, mpdtc_p_u0_q};  // MPDTC_P_U0
+            15'h104c: rd_data_o = {7'd0, mpdtc_p_u0_half_q};  // MPDTC_P_U0_HALF
+            15'h1050: rd_data_o = {7'd0, mpdtc_p_u0_h_q};  // MPDTC_P_U0_H
+            15'h1054: rd_data_o = {7'd0, mpdtc_p_psi_l_q};  // MPDTC_P_PSI_L
+            15'h1058: rd_data_o = {7'd0, mpdtc_p_kinv_t_q};  // MPDTC_P_KINV_T
+            15'h105c: rd_data_o = {8'd0, mpdtc_p_tol_q};  // MPDTC_P_TOL
+            15'h1060: rd_data_o = {14'd0, mpdtc_p_k_int_q};  // MPDTC_P_K_INT
+            15'h1064: rd_data_o = {8'd0, mpdtc_p_int_lim_q};  // MPDTC_P_INT_LIM
+            15'h1068: rd_data_o = {31'd0, mpdtc_p_int_cond_q};  // MPDTC_P_INT_COND
+            15'h106c: rd_data_o = {14'd0, mpdtc_p_kp_o_q};  // MPDTC_P_KP_O
+            15'h1070: rd_data_o = {14'd0, mpdtc_p_ki_o_q};  // MPDTC_P_KI_O
+            15'h1074: rd_data_o = {8'd0, mpdtc_p_eta_lim_q};  // MPDTC_P_ETA_LIM
+            15'h1078: rd_data_o = {14'd0, mpdtc_p_w2_0_q};  // MPDTC_P_W2_0
+            15'h107c: rd_data_o = {14'd0, mpdtc_p_w2_1_q};  // MPDTC_P_W2_1
+            15'h1080: rd_data_o = {14'd0, mpdtc_p_w2_2_q};  // MPDTC_P_W2_2
+            15'h1084: rd_data_o = {14'd0, mpdtc_p_w2_3_q};  // MPDTC_P_W2_3
+            15'h1090: rd_data_o = {7'd0, mpdtc_iq_ref_i};  // MPDTC_IQ_REF
+            15'h10a0: rd_data_o = {mpdtc_seq_status_periods_i, mpdtc_seq_status_overruns_i, 3'd0, mpdtc_seq_status_aligned_i, mpdtc_seq_status_sampled_i, mpdtc_seq_status_state_i};  // MPDTC_SEQ_STATUS
+            15'h10a4: rd_data_o = {29'd0, mpdtc_align_vec_q};  // MPDTC_ALIGN_VEC
+            15'h10a8: rd_data_o = {16'd0, mpdtc_align_period_q};  // MPDTC_ALIGN_PERIOD
+            15'h10ac: rd_data_o = {16'd0, mpdtc_align_on_q};  // MPDTC_ALIGN_ON
+            15'h10b0: rd_data_o = mpdtc_align_time_q;  // MPDTC_ALIGN_TIME
+            15'h10b4: rd_data_o = {16'd0, mpdtc_align_pos_i};  // MPDTC_ALIGN_POS
+            15'h3000: rd_data_o = {31'd0, gate_ctrl_q};  // GATE_CTRL
+            15'h3004: rd_data_o = {22'd0, dead_time_q};  // DEAD_TIME
+            15'h3008: rd_data_o = {16'd0, pwm_period_q};  // PWM_PERIOD
+            15'h300c: rd_data_o = {16'd0, duty_a_q};  // DUTY_A
+            15'h3010: rd_data_o = {16'd0, duty_b_q};  // DUTY_B
+            15'h3014: rd_data_o = {16'd0, duty_c_q};  // DUTY_C
+            15'h3018: rd_data_o = {29'd0, sw_state_q};  // SW_STATE
+            15'h301c: rd_data_o = {23'd0, gate_status_state_i, gate_status_lo_i, gate_status_hi_i};  // GATE_STATUS
+            15'h3020: rd_data_o = {15'd0, pwm_count_down_i, pwm_count_count_i};  // PWM_COUNT
+            15'h4000: rd_data_o = {31'd0, adc_ctrl_q};  // ADC_CTRL
+            15'h4004: rd_data_o = {16'd0, adc_period_q};  // ADC_PERIOD
+            15'h4008: rd_data_o = {16'd0, adc_ia_i};  // ADC_IA
+            15'h400c: rd_data_o = {16'd0, adc_ib_i};  // ADC_IB
+            15'h4010: rd_data_o = {16'd0, adc_ic_i};  // ADC_IC
+            15'h4014: rd_data_o = adc_count_i;  // ADC_COUNT
+            15'h5000: rd_data_o = {16'd0, enc_cpr_q};  // ENC_CPR
+            15'h5004: rd_data_o = {16'd0, enc_pos_i};  // ENC_POS
+            15'h5008: rd_data_o = {16'd0, enc_speed_i};  // ENC_SPEED
+            15'h500c: rd_data_o = {8'd0, enc_window_q};  // ENC_WINDOW
+            15'h5010: rd_data_o = {16'd0, enc_index_i};  // ENC_INDEX
+            15'h6000: rd_data_o = {29'd0, fault_status_watchdog_i, fault_status_external_i, fault_status_overcurrent_i};  // FAULT_STATUS
+            15'h6004: rd_data_o = {29'd0, fault_raw_i};  // FAULT_RAW
+            15'h6008: rd_data_o = {21'd0, oc_limit_q};  // OC_LIMIT
+            15'h600c: rd_data_o = wdg_timeout_q;  // WDG_TIMEOUT
+            default: rd_err_o = rd_i;
         endcase
     end
 
-    assign sel_pwm_o     = {30'd0, ctrl_q} == RM_MODE_FOC_PWM;
-    assign sel_state_o   = {30'd0, ctrl_q} == RM_MODE_MPDTC;
-    assign gate_en_o     = gate_en_q;
-    assign dead_time_o   = dead_time_q;
-    assign pwm_period_o  = pwm_period_q;
-    assign duty_a_o      = duty_a_q;
-    assign duty_b_o      = duty_b_q;
-    assign duty_c_o      = duty_c_q;
-    assign sw_state_o    = sw_state_q;
-    assign adc_en_o      = adc_en_q;
-    assign adc_period_o  = adc_period_q;
-    assign enc_cpr_o     = enc_cpr_q;
-    assign enc_window_o  = enc_window_q;
-    assign oc_limit_o    = oc_limit_q;
+    // Fields to the cores.
+    assign ctrl_mode_o = ctrl_q;
+    assign heartbeat_we_o = w_heartbeat;
+    assign scratch_o = scratch_q;
+    assign mpdtc_ctrl_manual_o = mpdtc_ctrl_q[0];
+    assign mpdtc_ctrl_state_clr_o = mpdtc_ctrl_q[1];
+    assign mpdtc_start_we_o = w_mpdtc_start;
+    assign mpdtc_in_id_o = mpdtc_in_id_q;
+    assign mpdtc_in_iq_o = mpdtc_in_iq_q;
+    assign mpdtc_in_cos0_o = mpdtc_in_cos0_q;
+    assign mpdtc_in_sin0_o = mpdtc_in_sin0_q;
+    assign mpdtc_in_cos1_o = mpdtc_in_cos1_q;
+    assign mpdtc_in_sin1_o = mpdtc_in_sin1_q;
+    assign mpdtc_in_cos2_o = mpdtc_in_cos2_q;
+    assign mpdtc_in_sin2_o = mpdtc_in_sin2_q;
+    assign mpdtc_in_w_ts_o = mpdtc_in_w_ts_q;
+    assign mpdtc_in_t_ref_o = mpdtc_in_t_ref_q;
+    assign mpdtc_p_a_o = mpdtc_p_a_q;
+    assign mpdtc_p_lambda_o = mpdtc_p_lambda_q;
+    assign mpdtc_p_u0_o = mpdtc_p_u0_q;
+    assign mpdtc_p_u0_half_o = mpdtc_p_u0_half_q;
+    assign mpdtc_p_u0_h_o = mpdtc_p_u0_h_q;
+    assign mpdtc_p_psi_l_o = mpdtc_p_psi_l_q;
+    assign mpdtc_p_kinv_t_o = mpdtc_p_kinv_t_q;
+    assign mpdtc_p_tol_o = mpdtc_p_tol_q;
+    assign mpdtc_p_k_int_o = mpdtc_p_k_int_q;
+    assign mpdtc_p_int_lim_o = mpdtc_p_int_lim_q;
+    assign mpdtc_p_int_cond_o = mpdtc_p_int_cond_q;
+    assign mpdtc_p_kp_o_o = mpdtc_p_kp_o_q;
+    assign mpdtc_p_ki_o_o = mpdtc_p_ki_o_q;
+    assign mpdtc_p_eta_lim_o = mpdtc_p_eta_lim_q;
+    assign mpdtc_p_w2_0_o = mpdtc_p_w2_0_q;
+    assign mpdtc_p_w2_1_o = mpdtc_p_w2_1_q;
+    assign mpdtc_p_w2_2_o = mpdtc_p_w2_2_q;
+    assign mpdtc_p_w2_3_o = mpdtc_p_w2_3_q;
+    assign mpdtc_align_vec_o = mpdtc_align_vec_q;
+    assign mpdtc_align_period_o = mpdtc_align_period_q;
+    assign mpdtc_align_on_o = mpdtc_align_on_q;
+    assign mpdtc_align_time_o = mpdtc_align_time_q;
+    assign gate_ctrl_gate_en_o = gate_ctrl_q;
+    assign dead_time_o = dead_time_q;
+    assign pwm_period_o = pwm_period_q;
+    assign duty_a_o = duty_a_q;
+    assign duty_b_o = duty_b_q;
+    assign duty_c_o = duty_c_q;
+    assign sw_state_o = sw_state_q;
+    assign adc_ctrl_enable_o = adc_ctrl_q;
+    assign adc_period_o = adc_period_q;
+    assign enc_cpr_o = enc_cpr_q;
+    assign enc_window_o = enc_window_q;
+    assign fault_status_overcurrent_clr_o = w_fault_status ? n_fault_status[0] : 1'd0;
+    assign fault_status_external_clr_o = w_fault_status ? n_fault_status[1] : 1'd0;
+    assign fault_status_watchdog_clr_o = w_fault_status ? n_fault_status[2] : 1'd0;
+    assign oc_limit_o = oc_limit_q;
     assign wdg_timeout_o = wdg_timeout_q;
-    assign heartbeat_o   = w_heartbeat;
-    assign fault_clr_o   = w_fault_status ? m_err[2:0] : 3'b000;
-    assign mpdtc_manual_o = mpdtc_ctrl_q[0];
-    assign mpdtc_clr_o    = mpdtc_ctrl_q[1];
-    assign mpdtc_start_o  = w_mpdtc_start;
-    assign mp_id_o       = mp_q[RM_MPDTC_IN_ID_ADDR[7:2]][24:0];
-    assign mp_iq_o       = mp_q[RM_MPDTC_IN_IQ_ADDR[7:2]][24:0];
-    assign mp_cos0_o     = mp_q[RM_MPDTC_IN_COS0_ADDR[7:2]][17:0];
-    assign mp_sin0_o     = mp_q[RM_MPDTC_IN_SIN0_ADDR[7:2]][17:0];
-    assign mp_cos1_o     = mp_q[RM_MPDTC_IN_COS1_ADDR[7:2]][17:0];
-    assign mp_sin1_o     = mp_q[RM_MPDTC_IN_SIN1_ADDR[7:2]][17:0];
-    assign mp_cos2_o     = mp_q[RM_MPDTC_IN_COS2_ADDR[7:2]][17:0];
-    assign mp_sin2_o     = mp_q[RM_MPDTC_IN_SIN2_ADDR[7:2]][17:0];
-    assign mp_w_ts_o     = mp_q[RM_MPDTC_IN_W_TS_ADDR[7:2]][17:0];
-    assign mp_t_ref_o    = mp_q[RM_MPDTC_IN_T_REF_ADDR[7:2]][17:0];
-    assign mp_a_o        = mp_q[RM_MPDTC_P_A_ADDR[7:2]][17:0];
-    assign mp_lambda_o   = mp_q[RM_MPDTC_P_LAMBDA_ADDR[7:2]][17:0];
-    assign mp_u0_o       = mp_q[RM_MPDTC_P_U0_ADDR[7:2]][24:0];
-    assign mp_u0_half_o  = mp_q[RM_MPDTC_P_U0_HALF_ADDR[7:2]][24:0];
-    assign mp_u0_h_o     = mp_q[RM_MPDTC_P_U0_H_ADDR[7:2]][24:0];
-    assign mp_psi_l_o    = mp_q[RM_MPDTC_P_PSI_L_ADDR[7:2]][24:0];
-    assign mp_kinv_t_o   = mp_q[RM_MPDTC_P_KINV_T_ADDR[7:2]][24:0];
-    assign mp_tol_o      = mp_q[RM_MPDTC_P_TOL_ADDR[7:2]][24:0];
-    assign mp_k_int_o    = mp_q[RM_MPDTC_P_K_INT_ADDR[7:2]][17:0];
-    assign mp_int_lim_o  = mp_q[RM_MPDTC_P_INT_LIM_ADDR[7:2]][24:0];
-    assign mp_int_cond_o = mp_q[RM_MPDTC_P_INT_COND_ADDR[7:2]][0];
-    assign mp_kp_o_o     = mp_q[RM_MPDTC_P_KP_O_ADDR[7:2]][17:0];
-    assign mp_ki_o_o     = mp_q[RM_MPDTC_P_KI_O_ADDR[7:2]][17:0];
-    assign mp_eta_lim_o  = mp_q[RM_MPDTC_P_ETA_LIM_ADDR[7:2]][24:0];
-    assign align_vec_o    = align_vec_q;
-    assign align_period_o = align_period_q;
-    assign align_on_o     = align_on_q;
-    assign align_time_o   = align_time_q;
-    assign mp_w2_o = {
-        mp_q[RM_MPDTC_P_W2_3_ADDR[7:2]][17:0],
-        mp_q[RM_MPDTC_P_W2_2_ADDR[7:2]][17:0],
-        mp_q[RM_MPDTC_P_W2_1_ADDR[7:2]][17:0],
-        mp_q[RM_MPDTC_P_W2_0_ADDR[7:2]][17:0]
-    };
 endmodule
 
 `default_nettype wire

@@ -1,7 +1,8 @@
 // pl_top: the PL design behind the PS's AXI GP0 port.
 //
 //   AXI4-Lite slave (15-bit address = 8 pages of 4 KiB at 0x43C0_0000)
-//     -> axil_slave -> pl_regs (register map: regmap.vh / docs/register-map.md)
+//     -> axil_slave -> pl_regs (generated from the register map, one port per
+//        field: docs/register-map.md)
 //   adc_frontend  -> raw samples to fault_block, averages to registers
 //   encoder_qei   <- sync2(A, B, Z)
 //   fault_block   <- raw samples, sync2(external fault), heartbeat, watchdog
@@ -62,6 +63,7 @@ module pl_top (
     // (trigger for a PL controller or a PS interrupt)
     output wire        adc_avg_valid_o
 );
+`include "regmap.vh"
     wire rst = !s_axi_aresetn_i;
 
     wire        wr;
@@ -107,8 +109,7 @@ module pl_top (
         .rd_err_i   (rd_err)
     );
 
-    wire        sel_pwm;
-    wire        sel_state;
+    wire [ 1:0] ctrl_mode;
     wire        gate_en;
     wire [ 9:0] dead_time;
     wire [15:0] pwm_period;
@@ -125,8 +126,9 @@ module pl_top (
     wire        heartbeat;
     wire [ 2:0] fault_clr;
     wire        mp_manual, mp_clr, mp_start;
-    wire [24:0] mp_id, mp_iq, mp_u0, mp_u0_half, mp_u0_h, mp_psi_l, mp_kinv_t, mp_tol;
-    wire [24:0] mp_int_lim, mp_eta_lim;
+    wire [24:0] mp_id, mp_iq, mp_u0, mp_u0_half, mp_u0_h, mp_psi_l, mp_kinv_t;
+    // Non-negative CUR values: 24 register bits, the core's sign bit is 0.
+    wire [23:0] mp_tol, mp_int_lim, mp_eta_lim;
     wire [17:0] mp_cos0, mp_sin0, mp_cos1, mp_sin1, mp_cos2, mp_sin2, mp_w_ts, mp_t_ref;
     wire [17:0] mp_a, mp_lambda, mp_k_int, mp_kp_o, mp_ki_o;
     wire        mp_int_cond;
@@ -167,7 +169,9 @@ module pl_top (
     wire        enc_z;
     wire        fault_ext_n;
 
-    // Switching-state source by mode (decoded in pl_regs from CTRL.MODE).
+    // Switching-state source by mode (CTRL.MODE).
+    wire sel_pwm = {30'd0, ctrl_mode} == RM_MODE_FOC_PWM;
+    wire sel_state = {30'd0, ctrl_mode} == RM_MODE_MPDTC;
     // Mode MPDTC: PWM.SW_STATE when MANUAL, else the control sequence, whose
     // drive enable is low in IDLE and whenever its run condition is false.
     wire [ 2:0] mpdtc_state = mp_manual ? sw_state : seq_s;
@@ -176,91 +180,109 @@ module pl_top (
     wire fault_any = |fault_status;
     wire seq_run = sel_state && gate_en && !mp_manual && !mp_clr && !fault_any && !trip;
 
-    pl_regs #(
-        .AW(15)
-    ) u_regs (
-        .clk_i         (clk_i),
-        .rst_i         (rst),
-        .wr_i          (wr),
-        .wr_addr_i     (wr_addr),
-        .wr_data_i     (wr_data),
-        .wr_strb_i     (wr_strb),
-        .wr_err_o      (wr_err),
-        .rd_i          (rd),
-        .rd_addr_i     (rd_addr),
-        .rd_data_o     (rd_data),
-        .rd_err_o      (rd_err),
-        .sel_pwm_o     (sel_pwm),
-        .sel_state_o   (sel_state),
-        .gate_en_o     (gate_en),
-        .dead_time_o   (dead_time),
-        .pwm_period_o  (pwm_period),
-        .duty_a_o      (duty_a),
-        .duty_b_o      (duty_b),
-        .duty_c_o      (duty_c),
-        .sw_state_o    (sw_state),
-        .adc_en_o      (adc_en),
-        .adc_period_o  (adc_period),
-        .enc_cpr_o     (enc_cpr),
-        .enc_window_o  (enc_window),
-        .oc_limit_o    (oc_limit),
-        .wdg_timeout_o (wdg_timeout),
-        .heartbeat_o   (heartbeat),
-        .fault_clr_o   (fault_clr),
-        .mpdtc_manual_o(mp_manual),
-        .mpdtc_clr_o   (mp_clr),
-        .mpdtc_start_o (mp_start),
-        .mp_id_o       (mp_id),
-        .mp_iq_o       (mp_iq),
-        .mp_cos0_o     (mp_cos0),
-        .mp_sin0_o     (mp_sin0),
-        .mp_cos1_o     (mp_cos1),
-        .mp_sin1_o     (mp_sin1),
-        .mp_cos2_o     (mp_cos2),
-        .mp_sin2_o     (mp_sin2),
-        .mp_w_ts_o     (mp_w_ts),
-        .mp_t_ref_o    (mp_t_ref),
-        .mp_a_o        (mp_a),
-        .mp_lambda_o   (mp_lambda),
-        .mp_u0_o       (mp_u0),
-        .mp_u0_half_o  (mp_u0_half),
-        .mp_u0_h_o     (mp_u0_h),
-        .mp_psi_l_o    (mp_psi_l),
-        .mp_kinv_t_o   (mp_kinv_t),
-        .mp_tol_o      (mp_tol),
-        .mp_k_int_o    (mp_k_int),
-        .mp_int_lim_o  (mp_int_lim),
-        .mp_int_cond_o (mp_int_cond),
-        .mp_kp_o_o     (mp_kp_o),
-        .mp_ki_o_o     (mp_ki_o),
-        .mp_eta_lim_o  (mp_eta_lim),
-        .mp_w2_o       (mp_w2),
-        .align_vec_o   (align_vec),
-        .align_period_o(align_period),
-        .align_on_o    (align_on),
-        .align_time_o  (align_time),
-        .gates_active_i(drive_en && !trip),
-        .gate_hi_i     (gate_hi_o),
-        .gate_lo_i     (gate_lo_o),
-        .state_sel_i   (state_sel),
-        .pwm_count_i   (pwm_count),
-        .pwm_down_i    (pwm_down),
-        .adc_ia_i      (avg_a),
-        .adc_ib_i      (avg_b),
-        .adc_ic_i      (avg_c),
-        .adc_count_i   (avg_count),
-        .enc_pos_i     (enc_pos),
-        .enc_speed_i   (enc_speed),
-        .enc_index_i   (enc_index),
-        .fault_status_i(fault_status),
-        .fault_raw_i   (fault_raw),
-        .fault_any_i   (fault_any),
-        .mpdtc_busy_i  (!core_ready),
-        .mpdtc_s_next_i(core_s_q),
-        .mpdtc_done_cnt_i(core_done_q),
-        .mpdtc_iq_ref_i(core_iq_ref_q),
-        .seq_status_i  ({seq_periods, seq_overruns, 3'd0, seq_aligned, seq_sampled, seq_state}),
-        .align_pos_i   (seq_align_pos)
+    // The generated register file: one port per field (docs/register-map.md).
+    pl_regs u_regs (
+        .clk_i                      (clk_i),
+        .rst_i                      (rst),
+        .wr_i                       (wr),
+        .wr_addr_i                  (wr_addr),
+        .wr_data_i                  (wr_data),
+        .wr_strb_i                  (wr_strb),
+        .wr_err_o                   (wr_err),
+        .rd_i                       (rd),
+        .rd_addr_i                  (rd_addr),
+        .rd_data_o                  (rd_data),
+        .rd_err_o                   (rd_err),
+        // TOP
+        .ctrl_mode_o                (ctrl_mode),
+        .status_mode_i              (ctrl_mode),
+        .status_gates_active_i      (drive_en && !trip),
+        .status_fault_i             (fault_any),
+        .heartbeat_we_o             (heartbeat),
+        .scratch_o                  (),
+        // MPDTC
+        .mpdtc_ctrl_manual_o        (mp_manual),
+        .mpdtc_ctrl_state_clr_o     (mp_clr),
+        .mpdtc_start_we_o           (mp_start),
+        .mpdtc_status_busy_i        (!core_ready),
+        .mpdtc_status_s_next_i      (core_s_q),
+        .mpdtc_status_done_count_i  (core_done_q),
+        .mpdtc_in_id_o              (mp_id),
+        .mpdtc_in_iq_o              (mp_iq),
+        .mpdtc_in_cos0_o            (mp_cos0),
+        .mpdtc_in_sin0_o            (mp_sin0),
+        .mpdtc_in_cos1_o            (mp_cos1),
+        .mpdtc_in_sin1_o            (mp_sin1),
+        .mpdtc_in_cos2_o            (mp_cos2),
+        .mpdtc_in_sin2_o            (mp_sin2),
+        .mpdtc_in_w_ts_o            (mp_w_ts),
+        .mpdtc_in_t_ref_o           (mp_t_ref),
+        .mpdtc_p_a_o                (mp_a),
+        .mpdtc_p_lambda_o           (mp_lambda),
+        .mpdtc_p_u0_o               (mp_u0),
+        .mpdtc_p_u0_half_o          (mp_u0_half),
+        .mpdtc_p_u0_h_o             (mp_u0_h),
+        .mpdtc_p_psi_l_o            (mp_psi_l),
+        .mpdtc_p_kinv_t_o           (mp_kinv_t),
+        .mpdtc_p_tol_o              (mp_tol),
+        .mpdtc_p_k_int_o            (mp_k_int),
+        .mpdtc_p_int_lim_o          (mp_int_lim),
+        .mpdtc_p_int_cond_o         (mp_int_cond),
+        .mpdtc_p_kp_o_o             (mp_kp_o),
+        .mpdtc_p_ki_o_o             (mp_ki_o),
+        .mpdtc_p_eta_lim_o          (mp_eta_lim),
+        .mpdtc_p_w2_0_o             (mp_w2[17:0]),
+        .mpdtc_p_w2_1_o             (mp_w2[35:18]),
+        .mpdtc_p_w2_2_o             (mp_w2[53:36]),
+        .mpdtc_p_w2_3_o             (mp_w2[71:54]),
+        .mpdtc_iq_ref_i             (core_iq_ref_q),
+        .mpdtc_seq_status_state_i   (seq_state),
+        .mpdtc_seq_status_sampled_i (seq_sampled),
+        .mpdtc_seq_status_aligned_i (seq_aligned),
+        .mpdtc_seq_status_overruns_i(seq_overruns),
+        .mpdtc_seq_status_periods_i (seq_periods),
+        .mpdtc_align_vec_o          (align_vec),
+        .mpdtc_align_period_o       (align_period),
+        .mpdtc_align_on_o           (align_on),
+        .mpdtc_align_time_o         (align_time),
+        .mpdtc_align_pos_i          (seq_align_pos),
+        // PWM
+        .gate_ctrl_gate_en_o        (gate_en),
+        .gate_ctrl_hw_clr_i         (fault_any),
+        .dead_time_o                (dead_time),
+        .pwm_period_o               (pwm_period),
+        .duty_a_o                   (duty_a),
+        .duty_b_o                   (duty_b),
+        .duty_c_o                   (duty_c),
+        .sw_state_o                 (sw_state),
+        .gate_status_hi_i           (gate_hi_o),
+        .gate_status_lo_i           (gate_lo_o),
+        .gate_status_state_i        (state_sel),
+        .pwm_count_count_i          (pwm_count),
+        .pwm_count_down_i           (pwm_down),
+        // ADC
+        .adc_ctrl_enable_o          (adc_en),
+        .adc_period_o               (adc_period),
+        .adc_ia_i                   (avg_a),
+        .adc_ib_i                   (avg_b),
+        .adc_ic_i                   (avg_c),
+        .adc_count_i                (avg_count),
+        // ENC
+        .enc_cpr_o                  (enc_cpr),
+        .enc_pos_i                  (enc_pos),
+        .enc_speed_i                (enc_speed),
+        .enc_window_o               (enc_window),
+        .enc_index_i                (enc_index),
+        // FAULT
+        .fault_status_overcurrent_i    (fault_status[0]),
+        .fault_status_external_i       (fault_status[1]),
+        .fault_status_watchdog_i       (fault_status[2]),
+        .fault_status_overcurrent_clr_o(fault_clr[0]),
+        .fault_status_external_clr_o   (fault_clr[1]),
+        .fault_status_watchdog_clr_o   (fault_clr[2]),
+        .fault_raw_i                (fault_raw),
+        .oc_limit_o                 (oc_limit),
+        .wdg_timeout_o              (wdg_timeout)
     );
 
     mpdtc_seq u_seq (
@@ -315,13 +337,13 @@ module pl_top (
         .p_u0_h_i        (mp_u0_h),
         .p_psi_l_i       (mp_psi_l),
         .p_kinv_t_i      (mp_kinv_t),
-        .p_tol_i         (mp_tol),
+        .p_tol_i         ({1'b0, mp_tol}),
         .p_k_int_i       (mp_k_int),
-        .p_int_lim_i     (mp_int_lim),
+        .p_int_lim_i     ({1'b0, mp_int_lim}),
         .p_int_cond_i    (mp_int_cond),
         .p_kp_o_i        (mp_kp_o),
         .p_ki_o_i        (mp_ki_o),
-        .p_eta_lim_i     (mp_eta_lim),
+        .p_eta_lim_i     ({1'b0, mp_eta_lim}),
         .p_w2_i          (mp_w2),
         .st_load_i       (mp_clr || seq_clr),
         .st_s_applied_i  (3'd0),

@@ -1,5 +1,5 @@
-// Generated from firmware/drive/src/regmap.rs by `cargo run -p rtl-sim --bin
-// regmap-gen`; do not edit (a test fails when this file is stale).
+// Generated from firmware/drive/src/regmap.rs by `cargo run -p regmap-gen`;
+// do not edit (a test fails when this file is stale).
 // Included inside module bodies. RM_<REG>_ADDR: byte address in the
 // 15-bit AXI window (page << 12 | offset); _W: implemented bits;
 // _RESET; _MIN/_MAX: clamp or reject bounds; _<FIELD>_LSB/_W: fields.
@@ -7,42 +7,6 @@ localparam integer RM_AXI_ADDR_W = 15;
 localparam [31:0] RM_MODE_OFF = 32'd0;
 localparam [31:0] RM_MODE_FOC_PWM = 32'd1;
 localparam [31:0] RM_MODE_MPDTC = 32'd2;
-
-// Mask of the plain RW registers (all values valid) of the MPDTC page
-// at offsets 0x010..0x084, by word index; 0 elsewhere.
-function automatic [31:0] rm_mpdtc_plain_mask(input [9:0] word);
-    case (word)
-        10'd4: rm_mpdtc_plain_mask = 32'h01ffffff;  // MPDTC_IN_ID
-        10'd5: rm_mpdtc_plain_mask = 32'h01ffffff;  // MPDTC_IN_IQ
-        10'd6: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_IN_COS0
-        10'd7: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_IN_SIN0
-        10'd8: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_IN_COS1
-        10'd9: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_IN_SIN1
-        10'd10: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_IN_COS2
-        10'd11: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_IN_SIN2
-        10'd12: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_IN_W_TS
-        10'd13: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_IN_T_REF
-        10'd16: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_P_A
-        10'd17: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_P_LAMBDA
-        10'd18: rm_mpdtc_plain_mask = 32'h01ffffff;  // MPDTC_P_U0
-        10'd19: rm_mpdtc_plain_mask = 32'h01ffffff;  // MPDTC_P_U0_HALF
-        10'd20: rm_mpdtc_plain_mask = 32'h01ffffff;  // MPDTC_P_U0_H
-        10'd21: rm_mpdtc_plain_mask = 32'h01ffffff;  // MPDTC_P_PSI_L
-        10'd22: rm_mpdtc_plain_mask = 32'h01ffffff;  // MPDTC_P_KINV_T
-        10'd23: rm_mpdtc_plain_mask = 32'h00ffffff;  // MPDTC_P_TOL
-        10'd24: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_P_K_INT
-        10'd25: rm_mpdtc_plain_mask = 32'h00ffffff;  // MPDTC_P_INT_LIM
-        10'd26: rm_mpdtc_plain_mask = 32'h00000001;  // MPDTC_P_INT_COND
-        10'd27: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_P_KP_O
-        10'd28: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_P_KI_O
-        10'd29: rm_mpdtc_plain_mask = 32'h00ffffff;  // MPDTC_P_ETA_LIM
-        10'd30: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_P_W2_0
-        10'd31: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_P_W2_1
-        10'd32: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_P_W2_2
-        10'd33: rm_mpdtc_plain_mask = 32'h0003ffff;  // MPDTC_P_W2_3
-        default: rm_mpdtc_plain_mask = 32'h00000000;
-    endcase
-endfunction
 
 // Block 0 TOP: Identification, mode, status, heartbeat.
 localparam [2:0] RM_BLK_TOP = 3'd0;

@@ -5,6 +5,7 @@
 //! Modules, one job each:
 //! - [`bus`]: the `RegisterBus` trait every PL driver talks through.
 //! - [`console`]: the UART console line editor and command grammar.
+//! - [`fixedpoint`]: the rounding shift shared by every fixed-point model.
 //! - [`regmap`]: the PL register map, the one table; [`regs`]: typed
 //!   access to its registers over a `RegisterBus`, generated from it.
 //! - [`pmsm`]: paper 000 (PMSM + 2-level inverter, FOC baseline, MPDTC).
@@ -17,6 +18,7 @@ extern crate std;
 
 pub mod bus;
 pub mod console;
+pub mod fixedpoint;
 pub mod gates;
 pub mod mpdcc;
 pub mod pmsm;

@@ -3,11 +3,15 @@
 //! AXI4-Lite on the PS's GP0 port, 32-bit registers, base [`BASE_ADDR`], one
 //! 4 KiB page per block ([`BLOCK_SIZE`]) in the order of [`BLOCKS`]. This
 //! table is `const` data so that the `no_std` firmware uses it directly; the
-//! generator in `rtl-sim` (`cargo run -p rtl-sim --bin regmap-gen`) writes
-//! from it `pl-bitstream-src/rtl/regmap.vh` (Verilog localparams used by the
-//! RTL) and `docs/register-map.md`; a test fails when those are stale, and
-//! the AXI-Lite tests in `rtl-sim` check the Verilated register file against
+//! generator `regmap-gen` (`cargo run -p regmap-gen`) writes from it the
+//! register file `pl-bitstream-src/rtl/pl_regs.v` (storage, decode, write
+//! rules, read mux, one port per field as [`Hw`] says), the Verilog header
+//! `pl-bitstream-src/rtl/regmap.vh`, the typed accessors [`crate::regs`] and
+//! `docs/register-map.md`; a test fails when those are stale, and the
+//! AXI-Lite tests in `rtl-sim` check the Verilated register file against
 //! every entry (reset value, access type, implemented bits, clamping).
+//! Adding a register is one entry here plus its `BLOCKS` slot (see
+//! docs/register-map.md).
 //!
 //! Conventions: offsets are bytes within the block, word aligned; bits above
 //! [`Register::width`] read 0. Byte strobes are honoured on RW registers; the
@@ -60,6 +64,30 @@ pub enum Invalid {
     },
 }
 
+/// How a register meets the hardware: the ports the generated register
+/// file (`pl-bitstream-src/rtl/pl_regs.v`) gives it. Port names are the
+/// register name in lower case, then `_<field>` for each field (a register
+/// without fields is one port), then the suffix.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Hw {
+    /// RW: stored in the register file, each field an output `_o` to its
+    /// core. RO: each field an input `_i` from its core. W1C: the flags live
+    /// in the core; each field is an input `_i` and a one-cycle output
+    /// `_clr_o` (the written ones).
+    Plain,
+    /// RO: reads its reset value; no port.
+    Const,
+    /// RW: stored for read-back only; the core gets a one-cycle write strobe
+    /// `_we_o` (every write, whatever the value).
+    Strobe,
+    /// RW as [`Hw::Plain`], and the input `_hw_clr_i` holds the register at
+    /// 0 (it wins over a write in the same cycle).
+    HwClear,
+    /// W1C: the register file's own access-error flags, fields `BAD_VALUE`
+    /// and `BAD_ADDR` (see the module doc); no port.
+    Errors,
+}
+
 /// A bit field of a register.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Field {
@@ -90,6 +118,9 @@ pub struct Register {
     pub format: &'static str,
     /// What out-of-range writes do.
     pub invalid: Invalid,
+    /// What the PL does with the register besides storing or reading it:
+    /// which ports of the generated register file it has.
+    pub hw: Hw,
     /// Bit fields (empty: the register is one number).
     pub fields: &'static [Field],
     /// Meaning.
@@ -191,6 +222,7 @@ pub const ID: Register = Register {
     reset: ID_VALUE,
     format: "ASCII \"PSDR\"",
     invalid: Invalid::AllValid,
+    hw: Hw::Const,
     fields: &[],
     doc: "Identifies the bitstream.",
 };
@@ -203,6 +235,7 @@ pub const VERSION: Register = Register {
     reset: 0x0001_0002,
     format: "major.minor, 16 bits each",
     invalid: Invalid::AllValid,
+    hw: Hw::Const,
     fields: &[
         field("MINOR", 0, 16, "minor version"),
         field("MAJOR", 16, 16, "major version"),
@@ -227,6 +260,7 @@ pub const CTRL: Register = Register {
     reset: mode::OFF,
     format: "enum",
     invalid: Invalid::Reject { max: mode::MPDTC },
+    hw: Hw::Plain,
     fields: &[field(
         "MODE",
         0,
@@ -245,6 +279,7 @@ pub const STATUS: Register = Register {
     reset: 0,
     format: "bits",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[
         field("MODE", 0, 2, "CTRL.MODE"),
         field(
@@ -272,6 +307,7 @@ pub const ERR: Register = Register {
     reset: 0,
     format: "bits, sticky",
     invalid: Invalid::AllValid,
+    hw: Hw::Errors,
     fields: &[
         field("BAD_VALUE", 0, 1, "a write was rejected (out of range)"),
         field(
@@ -292,6 +328,7 @@ pub const HEARTBEAT: Register = Register {
     reset: 0,
     format: "any value",
     invalid: Invalid::AllValid,
+    hw: Hw::Strobe,
     fields: &[],
     doc: "Every write restarts the watchdog (FAULT.WDG_TIMEOUT); reads back the last value.",
 };
@@ -304,12 +341,14 @@ pub const SCRATCH: Register = Register {
     reset: 0,
     format: "any value",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[],
     doc: "No effect; for bus tests.",
 };
 
 // ---------------------------------------------------------------- block 3
-/// PWM/gates: gate enable. Fixed by the lead: offset 0, bit 0, reset 0.
+/// PWM/gates: gate enable. Fixed at offset 0, bit 0, reset 0: the panic
+/// handler's one store relies on it.
 pub const GATE_CTRL: Register = Register {
     name: "GATE_CTRL",
     offset: 0x000,
@@ -318,6 +357,7 @@ pub const GATE_CTRL: Register = Register {
     reset: 0,
     format: "bit",
     invalid: Invalid::AllValid,
+    hw: Hw::HwClear,
     fields: &[field(
         "GATE_EN",
         0,
@@ -343,6 +383,7 @@ pub const DEAD_TIME: Register = Register {
         min: 0,
         max: DEAD_TIME_MAX,
     },
+    hw: Hw::Plain,
     fields: &[],
     doc: "Cycles with both gates of a leg off before either turns on (reset 500 ns).",
 };
@@ -355,6 +396,7 @@ pub const PWM_PERIOD: Register = Register {
     reset: 2500,
     format: "unsigned, PL clock cycles",
     invalid: Invalid::Clamp { min: 2, max: 65535 },
+    hw: Hw::Plain,
     fields: &[],
     doc: "Up-down counter top: f_pwm = 100 MHz / (2 PWM_PERIOD) (reset 20 kHz). \
           Takes effect at the next counter bottom.",
@@ -368,6 +410,7 @@ const fn duty(name: &'static str, offset: u16) -> Register {
         reset: 1250,
         format: "unsigned, PL clock cycles (compare value)",
         invalid: Invalid::AllValid,
+        hw: Hw::Plain,
         fields: &[],
         doc: "Upper switch on while the counter < DUTY (centre aligned): duty = \
               DUTY / PWM_PERIOD; >= PWM_PERIOD is 100 %. Loaded at the counter bottom.",
@@ -388,6 +431,7 @@ pub const SW_STATE: Register = Register {
     reset: 0,
     format: "bits SaSbSc (index 4 Sa + 2 Sb + Sc)",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[],
     doc: "Switching state applied in mode MPDTC when MPDTC_CTRL.MANUAL = 1.",
 };
@@ -400,6 +444,7 @@ pub const GATE_STATUS: Register = Register {
     reset: 0,
     format: "bits, leg a = highest bit of each field",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[
         field("HI", 0, 3, "upper gates (a, b, c = bits 2, 1, 0)"),
         field("LO", 3, 3, "lower gates"),
@@ -421,6 +466,7 @@ pub const PWM_COUNT: Register = Register {
     reset: 0,
     format: "unsigned, PL clock cycles",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[
         field("COUNT", 0, 16, "up-down counter"),
         field("DOWN", 16, 1, "1 while counting down"),
@@ -438,6 +484,7 @@ pub const ADC_CTRL: Register = Register {
     reset: 1,
     format: "bit",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[field(
         "ENABLE",
         0,
@@ -458,6 +505,7 @@ pub const ADC_PERIOD: Register = Register {
         min: 16,
         max: 65535,
     },
+    hw: Hw::Plain,
     fields: &[],
     doc: "Cycles between conversion starts: 391 = 255.75 kHz (nearest to the \
           paper's 256 kHz); 4 samples are averaged, so results come at 1/4 of it.",
@@ -472,6 +520,7 @@ const fn adc_result(name: &'static str, offset: u16) -> Register {
         format: "signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); \
                  floor(sum of 4 / 4)",
         invalid: Invalid::AllValid,
+        hw: Hw::Plain,
         fields: &[],
         doc: "Latest average of 4 samples of this phase current.",
     }
@@ -491,6 +540,7 @@ pub const ADC_COUNT: Register = Register {
     reset: 0,
     format: "unsigned, wraps",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[],
     doc: "Averaged results produced since reset.",
 };
@@ -505,6 +555,7 @@ pub const ENC_CPR: Register = Register {
     reset: 4096,
     format: "unsigned, quadrature counts (4 per line) per mechanical revolution",
     invalid: Invalid::Clamp { min: 4, max: 65535 },
+    hw: Hw::Plain,
     fields: &[],
     doc: "Position wraps at ENC_CPR.",
 };
@@ -517,6 +568,7 @@ pub const ENC_POS: Register = Register {
     reset: 0,
     format: "unsigned, counts in 0..ENC_CPR-1",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[],
     doc: "Mechanical position; the index pulse sets it to 0.",
 };
@@ -529,6 +581,7 @@ pub const ENC_SPEED: Register = Register {
     reset: 0,
     format: "signed 16-bit, counts per ENC_WINDOW (saturated)",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[],
     doc: "Counts moved during the last complete window (positive = A leads B).",
 };
@@ -544,6 +597,7 @@ pub const ENC_WINDOW: Register = Register {
         min: 100,
         max: 0x00FF_FFFF,
     },
+    hw: Hw::Plain,
     fields: &[],
     doc: "Speed measurement window (reset 1 ms).",
 };
@@ -556,6 +610,7 @@ pub const ENC_INDEX: Register = Register {
     reset: 0,
     format: "unsigned, wraps",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[],
     doc: "Index pulses seen since reset.",
 };
@@ -570,6 +625,7 @@ pub const FAULT_STATUS: Register = Register {
     reset: 0,
     format: "bits, latched",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[
         field("OVERCURRENT", 0, 1, "|ADC sample| > OC_LIMIT on a phase"),
         field("EXTERNAL", 1, 1, "external fault input asserted"),
@@ -593,6 +649,7 @@ pub const FAULT_RAW: Register = Register {
     reset: 0,
     format: "bits, as FAULT_STATUS",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[],
     doc: "The fault conditions now, unlatched.",
 };
@@ -605,6 +662,7 @@ pub const OC_LIMIT: Register = Register {
     reset: 1800,
     format: "unsigned ADC counts (as ADC_IA)",
     invalid: Invalid::Clamp { min: 0, max: 2047 },
+    hw: Hw::Plain,
     fields: &[],
     doc: "Trip when a raw sample's magnitude exceeds it (-2048 always trips).",
 };
@@ -620,6 +678,7 @@ pub const WDG_TIMEOUT: Register = Register {
         min: 1000,
         max: u32::MAX,
     },
+    hw: Hw::Plain,
     fields: &[],
     doc: "Cycles without a HEARTBEAT write before the watchdog trips (reset 100 ms).",
 };
@@ -634,6 +693,7 @@ pub const MPDTC_CTRL: Register = Register {
     reset: 0b11,
     format: "bits",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[
         field(
             "MANUAL",
@@ -661,6 +721,7 @@ pub const MPDTC_START: Register = Register {
     reset: 0,
     format: "any value",
     invalid: Invalid::AllValid,
+    hw: Hw::Strobe,
     fields: &[],
     doc: "While the control sequence is IDLE, every write starts one decision on the \
           MPDTC_IN_* and MPDTC_P_* registers (ignored while the core is busy or STATE_CLR \
@@ -677,6 +738,7 @@ pub const MPDTC_STATUS: Register = Register {
     reset: 0,
     format: "bits and a counter",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[
         field("BUSY", 0, 1, "a decision is in flight"),
         field("S_NEXT", 1, 3, "S[k+1] of the last decision (bits SaSbSc)"),
@@ -700,6 +762,7 @@ pub const MPDTC_LATENCY: Register = Register {
     reset: MPDTC_LATENCY_CYCLES,
     format: "unsigned, PL clock cycles",
     invalid: Invalid::AllValid,
+    hw: Hw::Const,
     fields: &[],
     doc: "Input strobe to S[k+1], fixed; also the initiation interval.",
 };
@@ -720,6 +783,7 @@ const fn mp(
         reset: 0,
         format,
         invalid: Invalid::AllValid,
+        hw: Hw::Plain,
         fields: &[],
         doc,
     }
@@ -916,6 +980,7 @@ pub const MPDTC_IQ_REF: Register = Register {
     reset: 0,
     format: CUR_FMT,
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[],
     doc: "i_q* of the last decision (telemetry).",
 };
@@ -943,6 +1008,7 @@ pub const MPDTC_SEQ_STATUS: Register = Register {
     reset: 0,
     format: "enum, bits and counters",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[
         field(
             "STATE",
@@ -988,6 +1054,7 @@ pub const MPDTC_ALIGN_VEC: Register = Register {
     reset: 0b100,
     format: "bits SaSbSc (index 4 Sa + 2 Sb + Sc)",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[],
     doc: "Switching state of the rotor alignment (INITIAL): 100 = phase a upper, b and c \
           lower, the voltage vector on the a axis = d axis at angle 0. 000 and 111 are \
@@ -1002,6 +1069,7 @@ pub const MPDTC_ALIGN_PERIOD: Register = Register {
     reset: 5000,
     format: "unsigned, PL clock cycles",
     invalid: Invalid::Clamp { min: 2, max: 65535 },
+    hw: Hw::Plain,
     fields: &[],
     doc: "Period P of the alignment chopper (reset 50 us = 20 kHz). Read at every cycle.",
 };
@@ -1014,6 +1082,7 @@ pub const MPDTC_ALIGN_ON: Register = Register {
     reset: 250,
     format: "unsigned, PL clock cycles per chopper period",
     invalid: Invalid::Clamp { min: 0, max: 32767 },
+    hw: Hw::Plain,
     fields: &[],
     doc: "Cycles with MPDTC_ALIGN_VEC at the start of each chopper period, the zero vector \
           000 for the rest; the hardware caps it at floor(P / 2) (duty <= 50 %, never \
@@ -1032,6 +1101,7 @@ pub const MPDTC_ALIGN_TIME: Register = Register {
         min: 1,
         max: u32::MAX,
     },
+    hw: Hw::Plain,
     fields: &[],
     doc: "Duration of INITIAL (rotor alignment), reset 0.5 s.",
 };
@@ -1044,6 +1114,7 @@ pub const MPDTC_ALIGN_POS: Register = Register {
     reset: 0,
     format: "unsigned, counts (as ENC_POS)",
     invalid: Invalid::AllValid,
+    hw: Hw::Plain,
     fields: &[],
     doc: "ENC_POS latched when INITIAL ends (rotor d axis on phase a): the angle \
           reference; the PS uses theta_e = (ENC_POS - ALIGN_POS) pp 2 pi / ENC_CPR. \
@@ -1195,7 +1266,7 @@ mod tests {
 
     #[test]
     fn fixed_addresses() {
-        // Fixed by the lead (panic handler): block 3, offset 0, bit 0.
+        // Fixed (the panic handler's one store): block 3, offset 0, bit 0.
         assert_eq!(GATE_CTRL_ADDR, 0x43C0_3000);
         assert_eq!(GATE_CTRL_GATE_EN, 1 << GATE_CTRL.fields[0].lsb);
         assert_eq!(GATE_CTRL.reset, 0);
@@ -1235,10 +1306,39 @@ mod tests {
                     assert_eq!(used & m, 0, "{}.{} overlaps", r.name, f.name);
                     used |= m;
                 }
+                // The generated register file supports these combinations.
+                let hw_ok = match r.hw {
+                    Hw::Plain => true,
+                    Hw::Const => r.access == Access::Ro,
+                    Hw::Strobe | Hw::HwClear => r.access == Access::Rw,
+                    Hw::Errors => {
+                        r.access == Access::W1c
+                            && r.fields.iter().all(|f| {
+                                f.width == 1 && ["BAD_VALUE", "BAD_ADDR"].contains(&f.name)
+                            })
+                    }
+                };
+                assert!(hw_ok, "{}: {:?} with {:?}", r.name, r.hw, r.access);
+                assert!(
+                    r.access == Access::Rw || r.invalid == Invalid::AllValid,
+                    "{}: only RW registers have a write rule",
+                    r.name
+                );
                 assert!(!names.contains(&r.name), "duplicate {}", r.name);
                 names.push(r.name);
             }
         }
+    }
+
+    #[test]
+    fn exactly_one_error_register() {
+        let errs: Vec<&str> = BLOCKS
+            .iter()
+            .flat_map(|b| b.registers.iter())
+            .filter(|r| r.hw == Hw::Errors)
+            .map(|r| r.name)
+            .collect();
+        assert_eq!(errs, ["ERR"]);
     }
 
     #[test]

@@ -1,5 +1,5 @@
-// Generated from firmware/drive/src/regmap.rs by `cargo run -p rtl-sim --bin
-// regmap-gen`; do not edit (a test fails when this file is stale).
+// Generated from firmware/drive/src/regmap.rs by `cargo run -p regmap-gen`;
+// do not edit (a test fails when this file is stale).
 //! Typed access to the PL registers, one module per block.
 //!
 //! Per register a zero-sized type (`regs::pwm::DeadTime`, the table name in

@@ -9,4 +9,3 @@ pub mod gate_driver;
 pub mod mpdtc_core;
 pub mod mpdtc_vectors;
 pub mod pl_top;
-pub mod regmap_gen;

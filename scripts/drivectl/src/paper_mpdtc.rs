@@ -300,8 +300,8 @@ pub fn bench(a: BenchArgs) -> Result<()> {
 mod tests {
     use super::*;
 
-    /// Acceptance of issue 3: `paper mpdtc --json` carries the keys the issue
-    /// lists (units in the names), the rows in sweep order, and numbers where
+    /// `paper mpdtc --json` carries the documented keys (units in the
+    /// names), the rows in sweep order, and numbers where
     /// numbers are due; the Markdown has the four tables.
     #[test]
     fn json_has_the_issue_keys_in_order() {

@@ -13,7 +13,8 @@
 //!   infinite input is an error, never a value.
 //! - **Multiply** (`16 x 16 -> 32`, one DSP48 / Spartan-3 MULT18X18): exact
 //!   32-bit product, then shift right to the target format with round half up
-//!   (`(p + 2^(s-1)) >>> s`, arithmetic shift), then saturate to 16 bits.
+//!   ([`crate::fixedpoint::rshift_round`], the rule of every fixed-point
+//!   model here), then saturate to 16 bits.
 //! - **Add / subtract** (the 16-bit adder of Fig. 3): exact in 17 bits, then
 //!   saturate to 16 bits.
 //! - **Shift by `L = 2^lambda`**: left shifts are done in wider words where
@@ -90,22 +91,15 @@ pub fn sub(a: i16, b: i16) -> i16 {
     sat16(a as i64 - b as i64)
 }
 
-/// Round-half-up arithmetic right shift of a wide value (`s = 0`: none).
-#[inline]
-pub fn rshift_round(p: i64, s: u32) -> i64 {
-    if s == 0 {
-        p
-    } else {
-        (p + (1i64 << (s - 1))) >> s
-    }
-}
-
 /// `a (fa) * b (fb) -> (f_out)`: exact product, round half up, saturate.
 /// Requires `fa + fb >= f_out`.
 #[inline]
 pub fn mul(a: i16, fa: u32, b: i16, fb: u32, f_out: u32) -> i16 {
     debug_assert!(fa + fb >= f_out);
-    sat16(rshift_round(a as i64 * b as i64, fa + fb - f_out))
+    sat16(crate::fixedpoint::rshift_round(
+        a as i64 * b as i64,
+        fa + fb - f_out,
+    ))
 }
 
 /// Quantize a design-time constant (model coefficient): finite by

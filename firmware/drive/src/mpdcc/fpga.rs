@@ -73,9 +73,10 @@
 use super::anpc;
 use super::binsearch::{self, Lj, SearchRange};
 use super::controller::{CtrlState, Decision, MpdccController, StateError};
-use super::fixed::{self, konst, mul, rshift_round, sat16, sub, F_C, F_I, F_SMALL};
+use super::fixed::{self, konst, mul, sat16, sub, F_C, F_I, F_SMALL};
 use super::params::DriveParams;
 use super::scheduler::{self, Explorer, ExplorerResult};
+use crate::fixedpoint::rshift_round;
 
 /// Fractional bits of the wide accumulator (products of Q1.14 coefficients
 /// with Q1.14 flux; Q2.13 operands are shifted left by one).

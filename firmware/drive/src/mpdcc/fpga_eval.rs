@@ -953,8 +953,7 @@ fn bit_exact_checksum() {
     assert_eq!(h, GOLDEN, "bit-exact outputs changed: {h:#018x}");
 }
 
-/// See [`bit_exact_checksum`]. Last changed by the review of issue 4: the
-/// cycle count (hashed too) gained 5 scheduler cycles when the scheduler
-/// program was completed (`cycles::SCHEDULER_OPS`); the arithmetic did not
+/// See [`bit_exact_checksum`]. Last changed when the scheduler program was
+/// completed: the cycle count (hashed too) gained 5 scheduler cycles (`cycles::SCHEDULER_OPS`); the arithmetic did not
 /// change.
 const GOLDEN: u64 = 0x7657_a302_8c3e_2037;

@@ -1,9 +1,9 @@
 //! Paper 001: induction machine + five-level ANPC inverter, MPDCC.
 //!
-//! Part A (models, f64 reference, closed loop): `params`, `machine`, `anpc`,
+//! Models, `f64` reference and closed loop: `params`, `machine`, `anpc`,
 //! `controller` (the interface both implementations share), `reference`,
 //! `plant`, `closed_loop`, `stats`. See docs/mpdcc.md.
-//! Part B (16-bit FPGA model): `fixed`, `fpga`, `binsearch`, `scheduler`,
+//! The 16-bit FPGA model: `fixed`, `fpga`, `binsearch`, `scheduler`,
 //! `cycles`, `fpga_eval` (tests). See docs/mpdcc-fpga.md.
 pub mod anpc;
 pub mod binsearch;

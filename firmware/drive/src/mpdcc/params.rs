@@ -208,7 +208,7 @@ impl InverterParams {
 #[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "std", serde(default, deny_unknown_fields))]
 pub struct ControllerParams {
-    /// Sampling interval `T_s`, s. Issue 4 prescribes 25 us (the paper's text
+    /// Sampling interval `T_s`, s. The project runs 25 us (the paper's text
     /// uses 50 us; both work, see docs/mpdcc.md).
     pub ts_s: f64,
     /// Stator current bound half-width `delta_i`, pu: `|i* - i| <= delta_i` per phase.

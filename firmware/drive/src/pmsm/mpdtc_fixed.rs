@@ -39,6 +39,7 @@
 
 use super::mpdtc_ref::{CostNorm, MpdtcConfig, SWITCH_WEIGHT};
 use super::params::ParamError;
+use crate::fixedpoint::rshift_round;
 
 /// Width of CUR.
 pub const CUR_BITS: u32 = 25;
@@ -68,12 +69,6 @@ pub fn sat18(x: i64) -> i32 {
     x.clamp(S18_MIN, S18_MAX) as i32
 }
 
-/// Round half up and shift right by `sh` (arithmetic).
-#[inline]
-pub fn rnd_shr(x: i64, sh: u32) -> i64 {
-    (x + (1i64 << (sh - 1))) >> sh
-}
-
 /// MAC expression: `sat25(rnd16(sum(c_i * x_i) + (y << 16)))`, COEF x CUR.
 #[inline]
 pub fn mac(terms: &[(i32, i32)], y: i32) -> i32 {
@@ -81,7 +76,7 @@ pub fn mac(terms: &[(i32, i32)], y: i32) -> i32 {
     for &(c, x) in terms {
         acc += c as i64 * x as i64;
     }
-    sat25(rnd_shr(acc, FRAC))
+    sat25(rshift_round(acc, FRAC))
 }
 
 /// Saturating CUR add.
@@ -351,7 +346,7 @@ pub fn decide(st: &FixedState, inp: &FixedInputs, p: &FixedParams) -> FixedOutpu
         st.x
     };
     // T* -> A: TRQ (14 frac) x KINV (16 frac) -> 30 frac -> CUR (16).
-    let iq_orig = sat25(rnd_shr(inp.t_ref as i64 * p.kinv_t as i64, TRQ_FRAC));
+    let iq_orig = sat25(rshift_round(inp.t_ref as i64 * p.kinv_t as i64, TRQ_FRAC));
     let iq_ref = add(iq_orig, x);
 
     // Observer (14)-(16) per axis, parallel model.
@@ -379,11 +374,11 @@ pub fn decide(st: &FixedState, inp: &FixedInputs, p: &FixedParams) -> FixedOutpu
         let i2 = step(p, g, i1, i1, proj(&b2, s), eta);
         let err = sub(iq_ref, i2.1).saturating_abs().min(CUR_MAX as i32);
         let (dc, qc) = (
-            sat18(rnd_shr(i2.0 as i64, CSQ_SHIFT)),
-            sat18(rnd_shr(i2.1 as i64, CSQ_SHIFT)),
+            sat18(rshift_round(i2.0 as i64, CSQ_SHIFT)),
+            sat18(rshift_round(i2.1 as i64, CSQ_SHIFT)),
         );
         let sq = i2.0 as i64 * dc as i64 + i2.1 as i64 * qc as i64;
-        let mag = sat25(rnd_shr(sq, MAG_SHIFT)) as i64;
+        let mag = sat25(rshift_round(sq, MAG_SHIFT)) as i64;
         let n = (SWITCH_WEIGHT[st.s_applied as usize & 7][s as usize]).trailing_zeros() as usize;
         out.i2[s as usize] = i2;
         out.err[s as usize] = err;

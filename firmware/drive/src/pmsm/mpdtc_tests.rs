@@ -1,5 +1,5 @@
 //! Closed-loop and cross-implementation tests of the MPDTC (reference and
-//! fixed-point core) on A's plant and runner.
+//! fixed-point core) on the PMSM plant and runner (`super::sim`).
 
 use super::mpdtc_ctrl::{fixed_inputs, MpdtcFixed, MpdtcRef, MpdtcShadow};
 use super::mpdtc_fixed::{self as fx, FixedParams, FixedState};
@@ -15,9 +15,9 @@ fn cfg(p: MpdtcParams) -> MpdtcConfig {
 #[test]
 fn fixed_rounding_and_saturation_by_hand() {
     // Round half up: 1.5 LSB -> 2, -1.5 -> -1, 1.49 -> 1.
-    assert_eq!(fx::rnd_shr(3 << 15, 16), 2);
-    assert_eq!(fx::rnd_shr(-(3 << 15), 16), -1);
-    assert_eq!(fx::rnd_shr((3 << 15) - 1, 16), 1);
+    assert_eq!(crate::fixedpoint::rshift_round(3 << 15, 16), 2);
+    assert_eq!(crate::fixedpoint::rshift_round(-(3 << 15), 16), -1);
+    assert_eq!(crate::fixedpoint::rshift_round((3 << 15) - 1, 16), 1);
     // mac: 0.5 (COEF) * 3 A + 1 A = 2.5 A.
     assert_eq!(fx::mac(&[(1 << 15, 3 << 16)], 1 << 16), 5 << 15);
     // Saturation at the 25-bit edges.
@@ -180,7 +180,7 @@ fn toggle_ref(t: f64) -> f64 {
     }
 }
 
-/// Acceptance item 7: over the Fig. 10 run (40 ms, three toggles) the fixed
+/// Over the Fig. 10 run (40 ms, three toggles) the fixed
 /// core, shadowing the reference, picks the same state in >= 99 % of periods.
 #[test]
 fn fixed_agrees_with_reference_over_fig10_run() {
@@ -349,7 +349,7 @@ fn block_means<C: Controller>(ctrl: &mut C) -> Vec<f64> {
     blocks
 }
 
-/// Acceptance item 7, trajectory part: with the fixed core in the loop
+/// Trajectory: with the fixed core in the loop
 /// instead of the reference, the 1 ms means of the torque (the switching
 /// pattern itself is chaotic and diverges within a few periods) stay within
 /// the documented tolerance of 0.01 N m (2.5 % of the 0.4 N m command).

@@ -3,7 +3,7 @@
 //! Common setup: the paper's motor (`MotorParams::default()`), free rotor with
 //! its inertia and no load, starting at rest; the paper's measurement chain
 //! (256 kHz, mean of 4, one-period computation delay); ideal inverter.
-//! MPDTC at 64 kHz, FOC at 16 kHz (A's `Foc`, default tuning).
+//! MPDTC at 64 kHz, FOC at 16 kHz (`drive::pmsm::foc::Foc`, default tuning).
 
 use super::metrics;
 use super::runs::{self, Mech, Trace, Window};

@@ -1,4 +1,5 @@
-//! Closed-loop runs on A's plant/runner, reduced to 15.625 us windows.
+//! Closed-loop runs on the PMSM plant and runner (`drive::pmsm::sim`),
+//! reduced to 15.625 us windows.
 
 use anyhow::{anyhow, Result};
 use drive::pmsm::params::{DriveParams, MotorParams};

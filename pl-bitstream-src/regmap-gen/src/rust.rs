@@ -258,8 +258,8 @@ fn register(s: &mut String, b: &Block, r: &Register) {
 pub fn rust(blocks: &[&Block]) -> String {
     let mut s = String::new();
     s.push_str(
-        "// Generated from firmware/drive/src/regmap.rs by `cargo run -p rtl-sim --bin\n\
-         // regmap-gen`; do not edit (a test fails when this file is stale).\n\
+        "// Generated from firmware/drive/src/regmap.rs by `cargo run -p regmap-gen`;\n\
+         // do not edit (a test fails when this file is stale).\n\
          //! Typed access to the PL registers, one module per block.\n\
          //!\n\
          //! Per register a zero-sized type (`regs::pwm::DeadTime`, the table name in\n\

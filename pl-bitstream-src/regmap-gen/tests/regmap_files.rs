@@ -4,13 +4,13 @@ use std::path::PathBuf;
 #[test]
 fn generated_files_are_current() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let files = rtl_sim::regmap_gen::files(&drive::regmap::BLOCKS);
+    let files = regmap_gen::files(&drive::regmap::BLOCKS);
     assert!(files.len() >= 3);
     for (path, want) in files {
         let got = std::fs::read_to_string(root.join(path)).unwrap_or_default();
         assert!(
             got == want,
-            "{path} is stale: run `cargo run -p rtl-sim --bin regmap-gen` and commit it"
+            "{path} is stale: run `cargo run -p regmap-gen` and commit it"
         );
     }
 }

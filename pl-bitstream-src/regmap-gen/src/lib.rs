@@ -1,23 +1,26 @@
 //! Generates from the one table, `drive::regmap`, every file that repeats
-//! it: `pl-bitstream-src/rtl/regmap.vh`, `docs/register-map.md` and the typed
-//! accessors `firmware/drive/src/regs.rs` ([`rust`]). `cargo run -p rtl-sim
-//! --bin regmap-gen` writes them; the test `tests/regmap_files.rs` fails when
+//! it: the Verilog header `pl-bitstream-src/rtl/regmap.vh`, the register file
+//! `pl-bitstream-src/rtl/pl_regs.v` ([`rtl`]), `docs/register-map.md` and the
+//! typed accessors `firmware/drive/src/regs.rs` ([`rust`]). `cargo run -p
+//! regmap-gen` writes them; the test `tests/regmap_files.rs` fails when
 //! the committed files differ from what this produces.
 use std::fmt::Write;
 
+pub mod rtl;
 pub mod rust;
 
 /// Every generated file: (repository-relative path, contents) for the
 /// table `blocks`.
 pub fn files(blocks: &[&Block]) -> Vec<(&'static str, String)> {
     vec![
-        (VERILOG_PATH, verilog()),
-        (MARKDOWN_PATH, markdown()),
+        (VERILOG_PATH, verilog(blocks)),
+        (rtl::PL_REGS_PATH, rtl::pl_regs(blocks)),
+        (MARKDOWN_PATH, markdown(blocks)),
         (rust::RUST_PATH, rust::rust(blocks)),
     ]
 }
 
-use drive::regmap::{self, Access, Block, Invalid, Register, BLOCKS};
+use drive::regmap::{self, Access, Block, Invalid, Register};
 
 /// Repository-relative path of the Verilog header.
 pub const VERILOG_PATH: &str = "pl-bitstream-src/rtl/regmap.vh";
@@ -43,11 +46,11 @@ fn invalid(r: &Register) -> String {
 }
 
 /// The Verilog header: localparams only, included inside module bodies.
-pub fn verilog() -> String {
+pub fn verilog(blocks: &[&Block]) -> String {
     let mut s = String::new();
     s.push_str(
-        "// Generated from firmware/drive/src/regmap.rs by `cargo run -p rtl-sim --bin\n\
-         // regmap-gen`; do not edit (a test fails when this file is stale).\n\
+        "// Generated from firmware/drive/src/regmap.rs by `cargo run -p regmap-gen`;\n\
+         // do not edit (a test fails when this file is stale).\n\
          // Included inside module bodies. RM_<REG>_ADDR: byte address in the\n\
          // 15-bit AXI window (page << 12 | offset); _W: implemented bits;\n\
          // _RESET; _MIN/_MAX: clamp or reject bounds; _<FIELD>_LSB/_W: fields.\n",
@@ -72,32 +75,7 @@ pub fn verilog() -> String {
         "localparam [31:0] RM_MODE_MPDTC = 32'd{};",
         regmap::mode::MPDTC
     );
-    // Plain RW words of the MPDTC page (inputs and parameters): their
-    // implemented-bit masks by word index, for the generic storage in pl_regs.
-    s.push_str(
-        "\n// Mask of the plain RW registers (all values valid) of the MPDTC page\n\
-         // at offsets 0x010..0x084, by word index; 0 elsewhere.\n\
-         function automatic [31:0] rm_mpdtc_plain_mask(input [9:0] word);\n\
-         \x20   case (word)\n",
-    );
-    for r in regmap::MPDTC.registers {
-        // Words 4..33 (0x010..=0x084): the generic storage of pl_regs; the
-        // sequence registers above have their own flops.
-        if r.access == Access::Rw
-            && r.invalid == Invalid::AllValid
-            && (0x10..=0x84).contains(&r.offset)
-        {
-            let _ = writeln!(
-                s,
-                "        10'd{}: rm_mpdtc_plain_mask = 32'h{:08x};  // {}",
-                r.offset / 4,
-                r.mask(),
-                r.name
-            );
-        }
-    }
-    s.push_str("        default: rm_mpdtc_plain_mask = 32'h00000000;\n    endcase\nendfunction\n");
-    for b in BLOCKS {
+    for b in blocks {
         let _ = writeln!(s, "\n// Block {} {}: {}", b.index, b.name, b.doc);
         let _ = writeln!(s, "localparam [2:0] RM_BLK_{} = 3'd{};", b.name, b.index);
         for r in b.registers {
@@ -125,13 +103,92 @@ pub fn verilog() -> String {
     s
 }
 
+/// The part of the docs that explains the generated files and how to add
+/// a register.
+const HOW_TO: &str = r#"
+## What is generated from the table
+
+`cargo run -p regmap-gen` writes, from `firmware/drive/src/regmap.rs`:
+
+| file | contents |
+|---|---|
+| `pl-bitstream-src/rtl/pl_regs.v` | the whole AXI4-Lite register file behind `axil_slave`: storage, address decode, byte strobes, each register's write rule, W1C, SLVERR for RO and unmapped offsets, `ERR`, the read mux, one port per field |
+| `pl-bitstream-src/rtl/regmap.vh` | Verilog localparams (`RM_<REG>_ADDR`, `_W`, `_RESET`, bounds, field positions, `RM_MODE_*`) for hand-written RTL |
+| `firmware/drive/src/regs.rs` | typed accessors `drive::regs` over `drive::bus::RegisterBus` |
+| `docs/register-map.md` | this page |
+
+`cargo test -p regmap-gen` fails when a committed file differs from what the
+generator writes. The hand-written RTL holds only the cores and their wiring
+in `pl_top.v`.
+
+Ports of `pl_regs` (the table's `hw` column, `regmap::Hw`), named
+`<register>[_<field>]` in lower case, one per field (a register without
+fields is one port):
+
+| access, `hw` | ports |
+|---|---|
+| RW, `Plain` | output `_o` per field: the stored bits |
+| RW, `HwClear` | as `Plain`, and input `_hw_clr_i`: holds the register at 0, wins over a write (`GATE_CTRL` while a fault is latched) |
+| RW, `Strobe` | output `_we_o` only: one cycle per write (`HEARTBEAT`, `MPDTC_START`); the value is stored for read-back |
+| RO, `Plain` | input `_i` per field, read as is |
+| RO, `Const` | none: reads the reset value (`ID`, `VERSION`, `MPDTC_LATENCY`) |
+| W1C, `Plain` | input `_i` per field (the flags live in the core) and output `_clr_o` per field (the ones written, one cycle) |
+| W1C, `Errors` | none: the register file's own `ERR` |
+
+Typed access from Rust (`drive::regs`): one module per block, per register
+a zero-sized type named after it in camel case with `ADDR`, `DEF` (the
+table entry) and the accesses its type allows (RW `read`/`write`/`modify`,
+RO `read`, W1C `read`/`write`), and a value type `<Name>Value` with a getter
+and a `with_*` setter per field (`bool` for one bit, else `u32` masked to
+the field; a register without fields has the one field `value`):
+
+```rust
+use drive::regs::pwm::{DeadTime, DeadTimeValue, GateCtrl};
+DeadTime::write(&mut bus, DeadTimeValue::ZERO.with_value(100))?; // 1 us
+GateCtrl::modify(&mut bus, |v| v.with_gate_en(true))?;
+let on = GateCtrl::read(&mut bus)?.gate_en();
+```
+
+## Adding a register
+
+One table entry: write the `Register` constant next to its block's others in
+`firmware/drive/src/regmap.rs` and list it in the block's `registers`
+(increasing offset), for example a clamped 12-bit setting of the PWM block:
+
+```rust
+/// PWM/gates: example setting.
+pub const TRIM: Register = Register {
+    name: "TRIM",
+    offset: 0x024,
+    access: Access::Rw,
+    width: 12,
+    reset: 100,
+    format: "unsigned, PL clock cycles",
+    invalid: Invalid::Clamp { min: 10, max: 4000 },
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Example register.",
+};
+```
+
+Then `cargo run -p regmap-gen` regenerates the four files: `pl_regs` gets
+`trim_q`, its decode, the clamp, the read-mux entry and the port
+`output wire [11:0] trim_o`; `drive::regs::pwm::Trim` and `TrimValue`
+appear; this page gets the row. What stays by hand is the core that uses the
+value: connect `.trim_o(...)` in `pl_top.v` (Verilator warns about an
+unconnected port). The `pl_top` harness (`rtl-sim`) binds only the AXI port
+and the pins, so it needs nothing. Bump `VERSION` when the map changes. The
+test `tests/add_register.rs` of `regmap-gen` does exactly this on a copy of
+the table and checks the RTL (Verilator -Wall), the accessors and this page.
+"#;
+
 /// The documentation table.
-pub fn markdown() -> String {
+pub fn markdown(blocks: &[&Block]) -> String {
     let mut s = String::new();
     s.push_str("# PL register map\n\n");
     s.push_str(
-        "Generated from `firmware/drive/src/regmap.rs` by `cargo run -p rtl-sim --bin \
-         regmap-gen`; do not edit.\n\n",
+        "Generated from `firmware/drive/src/regmap.rs` by `cargo run -p regmap-gen`; do not \
+         edit.\n\n",
     );
     let _ = writeln!(
         s,
@@ -149,7 +206,8 @@ pub fn markdown() -> String {
          set `ERR.BAD_ADDR`. W1C: writing 1 clears a bit unless its condition is still \
          present.\n",
     );
-    for b in BLOCKS {
+    s.push_str(HOW_TO);
+    for b in blocks {
         let _ = writeln!(
             s,
             "\n## Block {} `{}` at `0x{:08X}`\n\n{}\n",

@@ -1,10 +1,10 @@
 //! Writes every file generated from `drive::regmap` (see
-//! `rtl_sim::regmap_gen::files`; run from anywhere in the repository).
+//! `regmap_gen::files`; run from anywhere in the repository).
 use std::path::PathBuf;
 
 fn main() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
-    for (path, text) in rtl_sim::regmap_gen::files(&drive::regmap::BLOCKS) {
+    for (path, text) in regmap_gen::files(&drive::regmap::BLOCKS) {
         let p = root.join(path);
         if let Err(e) = std::fs::write(&p, text) {
             eprintln!("regmap-gen: cannot write {}: {e}", p.display());

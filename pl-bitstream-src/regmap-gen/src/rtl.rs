@@ -1,0 +1,397 @@
+//! The PL register file `pl-bitstream-src/rtl/pl_regs.v`, generated from the
+//! table: storage, address decode, byte strobes, each register's
+//! invalid-value rule, W1C, read-only and unmapped accesses, the read mux and
+//! one port per field to the cores ([`drive::regmap::Hw`] says which).
+use std::fmt::Write;
+
+use drive::regmap::{Access, Block, Hw, Invalid, Register, AXI_ADDR_BITS};
+
+/// Repository-relative path of the generated register file.
+pub const PL_REGS_PATH: &str = "pl-bitstream-src/rtl/pl_regs.v";
+
+/// One port of a register towards its core.
+struct Port {
+    output: bool,
+    width: u8,
+    name: String,
+}
+
+/// A field as the RTL sees it: the register's fields, or the whole
+/// register when it has none. `suffix` is `""` or `_<field>`.
+struct Slice {
+    suffix: String,
+    lsb: u8,
+    width: u8,
+}
+
+fn slices(r: &Register) -> Vec<Slice> {
+    if r.fields.is_empty() {
+        vec![Slice {
+            suffix: String::new(),
+            lsb: 0,
+            width: r.width,
+        }]
+    } else {
+        r.fields
+            .iter()
+            .map(|f| Slice {
+                suffix: format!("_{}", f.name.to_ascii_lowercase()),
+                lsb: f.lsb,
+                width: f.width,
+            })
+            .collect()
+    }
+}
+
+fn lc(r: &Register) -> String {
+    r.name.to_ascii_lowercase()
+}
+
+/// Whether the register file stores the register.
+fn stored(r: &Register) -> bool {
+    r.access == Access::Rw || r.hw == Hw::Errors
+}
+
+/// The ports of `r` (see `Hw`).
+fn ports(r: &Register) -> Vec<Port> {
+    let n = lc(r);
+    let mut p = Vec::new();
+    let each = |p: &mut Vec<Port>, output: bool, tail: &str| {
+        for s in slices(r) {
+            p.push(Port {
+                output,
+                width: s.width,
+                name: format!("{n}{}{tail}", s.suffix),
+            });
+        }
+    };
+    match (r.access, r.hw) {
+        (Access::Rw, Hw::Strobe) => p.push(Port {
+            output: true,
+            width: 1,
+            name: format!("{n}_we_o"),
+        }),
+        (Access::Rw, hw) => {
+            each(&mut p, true, "_o");
+            if hw == Hw::HwClear {
+                p.push(Port {
+                    output: false,
+                    width: 1,
+                    name: format!("{n}_hw_clr_i"),
+                });
+            }
+        }
+        (Access::Ro, Hw::Const) | (Access::W1c, Hw::Errors) => {}
+        (Access::Ro, _) => each(&mut p, false, "_i"),
+        (Access::W1c, _) => {
+            each(&mut p, false, "_i");
+            each(&mut p, true, "_clr_o");
+        }
+    }
+    p
+}
+
+fn range(width: u8) -> String {
+    if width == 1 {
+        String::new()
+    } else {
+        format!("[{}:0]", width - 1)
+    }
+}
+
+/// `{pad, parts...}` of `width` bits from (lsb, width, expr) parts.
+fn concat(width: u8, mut parts: Vec<(u8, u8, String)>) -> String {
+    parts.sort_by_key(|p| std::cmp::Reverse(p.0));
+    let mut items = Vec::new();
+    let mut top = width;
+    for (lsb, w, e) in parts {
+        let end = lsb + w;
+        if end < top {
+            items.push(format!("{}'d0", top - end));
+        }
+        items.push(e);
+        top = lsb;
+    }
+    if top > 0 {
+        items.push(format!("{top}'d0"));
+    }
+    if items.len() == 1 {
+        items.pop().unwrap_or_default()
+    } else {
+        format!("{{{}}}", items.join(", "))
+    }
+}
+
+fn bits(v: &str, lsb: u8, width: u8) -> String {
+    if width == 1 {
+        format!("{v}[{lsb}]")
+    } else {
+        format!("{v}[{}:{lsb}]", lsb + width - 1)
+    }
+}
+
+/// The value read back: 32 bits.
+fn read_expr(r: &Register) -> String {
+    let n = lc(r);
+    if r.hw == Hw::Const {
+        return format!("32'h{:08x}", r.reset);
+    }
+    if stored(r) {
+        return concat(32, vec![(0, r.width, format!("{n}_q"))]);
+    }
+    concat(
+        32,
+        slices(r)
+            .into_iter()
+            .map(|s| (s.lsb, s.width, format!("{n}{}_i", s.suffix)))
+            .collect(),
+    )
+}
+
+/// The merged (byte strobes) and ruled (clamp) 32-bit word a write leaves.
+fn next_expr(r: &Register) -> String {
+    let n = lc(r);
+    if r.access == Access::W1c {
+        return "merge(32'd0, wr_data_i, wr_strb_i)".into();
+    }
+    let old = concat(32, vec![(0, r.width, format!("{n}_q"))]);
+    let m = format!("merge({old}, wr_data_i, wr_strb_i)");
+    match r.invalid {
+        Invalid::Clamp { min, max } => format!("clamp({m}, 32'h{min:08x}, 32'h{max:08x})"),
+        _ => m,
+    }
+}
+
+/// The AXI window address of `r`: a Verilog literal.
+fn addr(b: &Block, r: &Register) -> String {
+    format!(
+        "{AXI_ADDR_BITS}'h{:04x}",
+        (b.index as usize) << 12 | r.offset as usize
+    )
+}
+
+/// The generated `pl_regs.v` for `blocks`: self-contained (literals, the
+/// register names in the expressions and comments).
+pub fn pl_regs(blocks: &[&Block]) -> String {
+    let regs: Vec<(&Block, &Register)> = blocks
+        .iter()
+        .flat_map(|b| b.registers.iter().map(move |r| (*b, *r)))
+        .collect();
+    let aw = AXI_ADDR_BITS;
+    let mut s = String::new();
+    s.push_str(
+        "// Generated from firmware/drive/src/regmap.rs by `cargo run -p regmap-gen`;\n\
+         // do not edit (a test fails when this file is stale).\n\
+         //\n\
+         // pl_regs: the PL register file behind axil_slave. Register-bus side:\n\
+         // wr_i/rd_i are one-cycle strobes; wr_err_o/rd_err_o/rd_data_o are\n\
+         // combinational. Write rules (as the table's Register::apply_write): byte\n\
+         // strobes merge into the current value, then the 32-bit word is masked to\n\
+         // the width (all valid), clamped as a whole to the table's bounds, or\n\
+         // rejected (above the bound: the register keeps its value and\n\
+         // ERR.BAD_VALUE is set).\n\
+         // Unmapped offsets, and writes to RO registers, answer SLVERR and set\n\
+         // ERR.BAD_ADDR. W1C flags clear on a written 1.\n\
+         //\n\
+         // Ports towards the cores, one per field (a register without fields is\n\
+         // one port), named <register>[_<field>] in lower case: RW fields are\n\
+         // outputs _o of the stored bits; RO fields are inputs _i; W1C flags kept\n\
+         // in a core are inputs _i with a one-cycle output _clr_o of the written\n\
+         // ones; a strobe register gives only _we_o (one cycle per write); a\n\
+         // register the hardware can clear has an input _hw_clr_i that holds it at\n\
+         // 0 and wins over a write. RO constants and ERR have no port.\n\
+         `default_nettype none\n\nmodule pl_regs (\n",
+    );
+    let _ = writeln!(
+        s,
+        "    input  wire        clk_i,\n    input  wire        rst_i,\n    \
+         // register bus\n    input  wire        wr_i,\n    input  wire [{a}:0] wr_addr_i,\n    \
+         input  wire [31:0] wr_data_i,\n    input  wire [ 3:0] wr_strb_i,\n    \
+         output wire        wr_err_o,\n    input  wire        rd_i,\n    \
+         input  wire [{a}:0] rd_addr_i,\n    output reg  [31:0] rd_data_o,\n    \
+         output reg         rd_err_o{}",
+        if regs.iter().any(|(_, r)| !ports(r).is_empty()) {
+            ","
+        } else {
+            ""
+        },
+        a = aw - 1
+    );
+    let mut all: Vec<(String, Port)> = Vec::new();
+    for b in blocks {
+        for r in b.registers {
+            for p in ports(r) {
+                all.push((b.name.to_string(), p));
+            }
+        }
+    }
+    let mut last_block = String::new();
+    for (i, (blk, p)) in all.iter().enumerate() {
+        if *blk != last_block {
+            let _ = writeln!(s, "    // block {blk}");
+            last_block.clone_from(blk);
+        }
+        let dir = if p.output { "output" } else { "input " };
+        let r = range(p.width);
+        let sep = if i + 1 == all.len() { "" } else { "," };
+        let _ = writeln!(s, "    {dir} wire {r:>7} {}{sep}", p.name);
+    }
+    s.push_str(");\n\n");
+    s.push_str(
+        "    // Byte-strobe merge of a write over the current (zero-extended) value.\n\
+         \x20   function automatic [31:0] merge(input [31:0] old, input [31:0] data, input [3:0] strb);\n\
+         \x20       integer i;\n\
+         \x20       begin\n\
+         \x20           for (i = 0; i < 4; i = i + 1) begin\n\
+         \x20               merge[8*i+:8] = strb[i] ? data[8*i+:8] : old[8*i+:8];\n\
+         \x20           end\n\
+         \x20       end\n\
+         \x20   endfunction\n\n\
+         \x20   function automatic [31:0] clamp(input [31:0] v, input [31:0] lo, input [31:0] hi);\n\
+         \x20       begin\n\
+         \x20           if (v < lo) clamp = lo;\n\
+         \x20           else if (v > hi) clamp = hi;\n\
+         \x20           else clamp = v;\n\
+         \x20       end\n\
+         \x20   endfunction\n\n",
+    );
+
+    s.push_str("    // Storage.\n");
+    for (_, r) in regs.iter().filter(|(_, r)| stored(r)) {
+        let _ = writeln!(s, "    reg {:>7} {}_q;", range(r.width), lc(r));
+    }
+
+    s.push_str("\n    // Write decode, and the word each write leaves (merged, clamped).\n");
+    let writable: Vec<&(&Block, &Register)> = regs
+        .iter()
+        .filter(|(_, r)| r.access != Access::Ro)
+        .collect();
+    for (b, r) in &writable {
+        let n = lc(r);
+        let _ = writeln!(s, "    wire w_{n} = wr_i && wr_addr_i == {};", addr(b, r));
+        let _ = writeln!(s, "    wire [31:0] n_{n} = {};", next_expr(r));
+        if let (Access::Rw, Invalid::Reject { max }) = (r.access, r.invalid) {
+            let _ = writeln!(s, "    wire bad_{n} = n_{n} > 32'h{max:08x};");
+        }
+    }
+    let any_ok = if writable.is_empty() {
+        "1'b0".to_string()
+    } else {
+        writable
+            .iter()
+            .map(|(_, r)| format!("w_{}", lc(r)))
+            .collect::<Vec<_>>()
+            .chunks(5)
+            .map(|c| c.join(" | "))
+            .collect::<Vec<_>>()
+            .join("\n        | ")
+    };
+    let _ = writeln!(s, "    wire w_any_ok = {any_ok};");
+    let rejected: Vec<String> = regs
+        .iter()
+        .filter(|(_, r)| r.access == Access::Rw && matches!(r.invalid, Invalid::Reject { .. }))
+        .map(|(_, r)| format!("(w_{0} && bad_{0})", lc(r)))
+        .collect();
+    let _ = writeln!(
+        s,
+        "    // Access errors of this cycle (set ERR).\n    wire bad_value = {};\n    \
+         wire bad_addr = (wr_i && !w_any_ok) || (rd_i && rd_err_o);\n\n    \
+         assign wr_err_o = wr_i && !w_any_ok;",
+        if rejected.is_empty() {
+            "1'b0".to_string()
+        } else {
+            rejected.join(" || ")
+        }
+    );
+
+    s.push_str("\n    always @(posedge clk_i) begin\n        if (rst_i) begin\n");
+    for (_, r) in regs.iter().filter(|(_, r)| stored(r)) {
+        let _ = writeln!(s, "            {}_q <= {}'h{:x};", lc(r), r.width, r.reset);
+    }
+    s.push_str("        end else begin\n");
+    for (_, r) in regs.iter().filter(|(_, r)| stored(r)) {
+        let n = lc(r);
+        let w = r.width;
+        let store = format!("{n}_q <= n_{n}[{}:0];", w - 1);
+        match (r.hw, r.invalid) {
+            (Hw::Errors, _) => {
+                let field = |name: &str| r.fields.iter().find(|f| f.name == name);
+                let mut set = Vec::new();
+                for (name, e) in [("BAD_VALUE", "bad_value"), ("BAD_ADDR", "bad_addr")] {
+                    if let Some(f) = field(name) {
+                        set.push((f.lsb, f.width, e.to_string()));
+                    }
+                }
+                let _ = writeln!(
+                    s,
+                    "            // A flag set in this cycle wins over its clear.\n            \
+                     {n}_q <= ({n}_q & ~(w_{n} ? n_{n}[{}:0] : {w}'d0)) | {};",
+                    w - 1,
+                    concat(w, set)
+                );
+            }
+            (Hw::HwClear, _) => {
+                let _ = writeln!(
+                    s,
+                    "            if ({n}_hw_clr_i) {n}_q <= {w}'d0;\n            else if (w_{n}) {store}"
+                );
+            }
+            (_, Invalid::Reject { .. }) => {
+                let _ = writeln!(s, "            if (w_{n} && !bad_{n}) {store}");
+            }
+            _ => {
+                let _ = writeln!(s, "            if (w_{n}) {store}");
+            }
+        }
+    }
+    s.push_str("        end\n    end\n\n");
+
+    s.push_str(
+        "    // Read mux.\n    always @(*) begin\n        rd_data_o = 32'd0;\n        \
+         rd_err_o  = 1'b0;\n        case (rd_addr_i)\n",
+    );
+    for (b, r) in &regs {
+        let _ = writeln!(
+            s,
+            "            {}: rd_data_o = {};  // {}",
+            addr(b, r),
+            read_expr(r),
+            r.name
+        );
+    }
+    s.push_str("            default: rd_err_o = rd_i;\n        endcase\n    end\n\n");
+
+    s.push_str("    // Fields to the cores.\n");
+    for (_, r) in &regs {
+        let n = lc(r);
+        match (r.access, r.hw) {
+            (Access::Rw, Hw::Strobe) => {
+                let _ = writeln!(s, "    assign {n}_we_o = w_{n};");
+            }
+            (Access::Rw, _) => {
+                for sl in slices(r) {
+                    let v = if sl.width == r.width {
+                        format!("{n}_q")
+                    } else {
+                        bits(&format!("{n}_q"), sl.lsb, sl.width)
+                    };
+                    let _ = writeln!(s, "    assign {n}{}_o = {v};", sl.suffix);
+                }
+            }
+            (Access::W1c, Hw::Plain) => {
+                for sl in slices(r) {
+                    let _ = writeln!(
+                        s,
+                        "    assign {n}{}_clr_o = w_{n} ? {} : {}'d0;",
+                        sl.suffix,
+                        bits(&format!("n_{n}"), sl.lsb, sl.width),
+                        sl.width
+                    );
+                }
+            }
+            _ => {}
+        }
+    }
+    s.push_str("endmodule\n\n`default_nettype wire\n");
+    s
+}
