@@ -1,11 +1,14 @@
 //! Generates from the one table, `drive::regmap`, every file that repeats
 //! it: the Verilog header `pl-bitstream-src/rtl/regmap.vh`, the register file
 //! `pl-bitstream-src/rtl/pl_regs.v` ([`rtl`]), `docs/register-map.md` and the
-//! typed accessors `firmware/drive/src/regs.rs` ([`rust`]). `cargo run -p
+//! typed accessors `firmware/drive/src/regs.rs` ([`rust`]); and from the
+//! port list `drive::regmap::PL_TOP_PORTS` the `pl_top` Verilator harness
+//! ([`harness`]). `cargo run -p
 //! regmap-gen` writes them; the test `tests/regmap_files.rs` fails when
 //! the committed files differ from what this produces.
 use std::fmt::Write;
 
+pub mod harness;
 pub mod rtl;
 pub mod rust;
 
@@ -17,6 +20,14 @@ pub fn files(blocks: &[&Block]) -> Vec<(&'static str, String)> {
         (rtl::PL_REGS_PATH, rtl::pl_regs(blocks)),
         (MARKDOWN_PATH, markdown(blocks)),
         (rust::RUST_PATH, rust::rust(blocks)),
+        (
+            harness::SHIM_PATH,
+            harness::shim(drive::regmap::PL_TOP_PORTS),
+        ),
+        (
+            harness::RUST_PATH,
+            harness::rust(drive::regmap::PL_TOP_PORTS),
+        ),
     ]
 }
 
@@ -116,6 +127,7 @@ const HOW_TO: &str = r#"
 | `pl-bitstream-src/rtl/regmap.vh` | Verilog localparams (`RM_<REG>_ADDR`, `_W`, `_RESET`, bounds, field positions, `RM_MODE_*`) for hand-written RTL |
 | `firmware/drive/src/regs.rs` | typed accessors `drive::regs` over `drive::bus::RegisterBus` |
 | `docs/register-map.md` | this page |
+| `pl-bitstream-src/sim/csrc/pl_top_shim.cpp`, `pl-bitstream-src/sim/src/pl_top_ports.rs` | the `pl_top` Verilator harness (C++ shim, `PtIn`/`PtOut`), from the port list `regmap::PL_TOP_PORTS` (a test checks `pl_top.v`'s ports against it) |
 
 `cargo test -p regmap-gen` fails when a committed file differs from what the
 generator writes. The hand-written RTL holds only the cores and their wiring
@@ -171,13 +183,13 @@ pub const TRIM: Register = Register {
 };
 ```
 
-Then `cargo run -p regmap-gen` regenerates the four files: `pl_regs` gets
+Then `cargo run -p regmap-gen` regenerates the files: `pl_regs` gets
 `trim_q`, its decode, the clamp, the read-mux entry and the port
 `output wire [11:0] trim_o`; `drive::regs::pwm::Trim` and `TrimValue`
 appear; this page gets the row. What stays by hand is the core that uses the
 value: connect `.trim_o(...)` in `pl_top.v` (Verilator warns about an
-unconnected port). The `pl_top` harness (`rtl-sim`) binds only the AXI port
-and the pins, so it needs nothing. Bump `VERSION` when the map changes. The
+unconnected port). The `pl_top` harness (`rtl-sim`, generated from
+`PL_TOP_PORTS`) binds only the AXI port and the pins, so it needs nothing. Bump `VERSION` when the map changes. The
 test `tests/add_register.rs` of `regmap-gen` does exactly this on a copy of
 the table and checks the RTL (Verilator -Wall), the accessors and this page.
 "#;

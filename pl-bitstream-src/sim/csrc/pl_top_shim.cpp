@@ -1,3 +1,6 @@
+// Generated from firmware/drive/src/regmap.rs (PL_TOP_PORTS) by `cargo run -p
+// regmap-gen`; do not edit (a test fails when this file is stale).
+//
 // C ABI around the Verilated pl_top, for rtl-sim (Rust).
 // pt_step applies the inputs with the clock low, settles the combinational
 // logic, copies the outputs as the rising edge will sample them (so a Rust
@@ -50,22 +53,22 @@ struct PlTopSim {
 };
 
 static void apply(Vpl_top* t, const PtIn* in) {
-    t->s_axi_aresetn_i = in->aresetn & 1;
+    t->s_axi_aresetn_i = in->aresetn & 0x1;
     t->s_axi_awaddr_i = in->awaddr & 0x7fff;
-    t->s_axi_awvalid_i = in->awvalid & 1;
+    t->s_axi_awvalid_i = in->awvalid & 0x1;
     t->s_axi_wdata_i = in->wdata;
     t->s_axi_wstrb_i = in->wstrb & 0xf;
-    t->s_axi_wvalid_i = in->wvalid & 1;
-    t->s_axi_bready_i = in->bready & 1;
+    t->s_axi_wvalid_i = in->wvalid & 0x1;
+    t->s_axi_bready_i = in->bready & 0x1;
     t->s_axi_araddr_i = in->araddr & 0x7fff;
-    t->s_axi_arvalid_i = in->arvalid & 1;
-    t->s_axi_rready_i = in->rready & 1;
-    t->adc_drdy_i = in->adc_drdy & 1;
+    t->s_axi_arvalid_i = in->arvalid & 0x1;
+    t->s_axi_rready_i = in->rready & 0x1;
+    t->adc_drdy_i = in->adc_drdy & 0x1;
     t->adc_data_i = in->adc_data & 0xfffffffffULL;
-    t->enc_a_i = in->enc_a & 1;
-    t->enc_b_i = in->enc_b & 1;
-    t->enc_z_i = in->enc_z & 1;
-    t->fault_ext_ni = in->fault_ext_n & 1;
+    t->enc_a_i = in->enc_a & 0x1;
+    t->enc_b_i = in->enc_b & 0x1;
+    t->enc_z_i = in->enc_z & 0x1;
+    t->fault_ext_ni = in->fault_ext_n & 0x1;
 }
 
 static void read_out(const Vpl_top* t, PtOut* out) {
@@ -88,6 +91,20 @@ void* pt_new() {
     sim->top = new Vpl_top(&sim->ctx, "pl_top");
     sim->top->clk_i = 0;
     sim->top->s_axi_aresetn_i = 0;
+    sim->top->s_axi_awaddr_i = 0;
+    sim->top->s_axi_awvalid_i = 0;
+    sim->top->s_axi_wdata_i = 0;
+    sim->top->s_axi_wstrb_i = 0;
+    sim->top->s_axi_wvalid_i = 0;
+    sim->top->s_axi_bready_i = 0;
+    sim->top->s_axi_araddr_i = 0;
+    sim->top->s_axi_arvalid_i = 0;
+    sim->top->s_axi_rready_i = 0;
+    sim->top->adc_drdy_i = 0;
+    sim->top->adc_data_i = 0;
+    sim->top->enc_a_i = 0;
+    sim->top->enc_b_i = 0;
+    sim->top->enc_z_i = 0;
     sim->top->fault_ext_ni = 1;
     sim->top->eval();
     return sim;

@@ -1,5 +1,7 @@
 //! Safe wrapper of the Verilated `pl_top` (shim: `csrc/pl_top_shim.cpp`)
-//! and a cycle-level AXI4-Lite master to drive it.
+//! and a cycle-level AXI4-Lite master to drive it. The shim and the port
+//! structs [`PtIn`]/[`PtOut`] are generated from `drive::regmap::PL_TOP_PORTS`
+//! (`cargo run -p regmap-gen`).
 //!
 //! [`PlTopSim::step`] is one clock cycle: the inputs in [`PlTopSim::inp`]
 //! are applied, the outputs are sampled just before the rising edge (what the
@@ -9,73 +11,7 @@
 use core::ffi::c_void;
 use core::ptr::NonNull;
 
-/// Inputs of `pl_top` (C layout shared with the shim).
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default)]
-pub struct PtIn {
-    /// AXI reset, active low.
-    pub aresetn: u8,
-    /// AW channel.
-    pub awaddr: u16,
-    /// AW valid.
-    pub awvalid: u8,
-    /// W data.
-    pub wdata: u32,
-    /// W byte strobes.
-    pub wstrb: u8,
-    /// W valid.
-    pub wvalid: u8,
-    /// B ready.
-    pub bready: u8,
-    /// AR address.
-    pub araddr: u16,
-    /// AR valid.
-    pub arvalid: u8,
-    /// R ready.
-    pub rready: u8,
-    /// ADC data-ready strobe.
-    pub adc_drdy: u8,
-    /// ADC data `{ia, ib, ic}`, 12 bits each, ia in bits 35..24.
-    pub adc_data: u64,
-    /// Encoder A.
-    pub enc_a: u8,
-    /// Encoder B.
-    pub enc_b: u8,
-    /// Encoder index.
-    pub enc_z: u8,
-    /// External fault pin, active low.
-    pub fault_ext_n: u8,
-}
-
-/// Outputs of `pl_top`.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct PtOut {
-    /// AW ready.
-    pub awready: u8,
-    /// W ready.
-    pub wready: u8,
-    /// B response.
-    pub bresp: u8,
-    /// B valid.
-    pub bvalid: u8,
-    /// AR ready.
-    pub arready: u8,
-    /// R data.
-    pub rdata: u32,
-    /// R response.
-    pub rresp: u8,
-    /// R valid.
-    pub rvalid: u8,
-    /// Upper gates (bit 2 = leg a).
-    pub gate_hi: u8,
-    /// Lower gates.
-    pub gate_lo: u8,
-    /// ADC convert-start pulse.
-    pub adc_cnv: u8,
-    /// Averaged-sample strobe.
-    pub adc_avg_valid: u8,
-}
+pub use crate::pl_top_ports::{PtIn, PtOut};
 
 extern "C" {
     fn pt_new() -> *mut c_void;
@@ -114,10 +50,7 @@ impl PlTopSim {
         let ptr = NonNull::new(unsafe { pt_new() }).expect("pt_new returned null");
         let mut s = Self {
             ptr,
-            inp: PtIn {
-                fault_ext_n: 1,
-                ..PtIn::default()
-            },
+            inp: PtIn::IDLE,
             cycles: 0,
             adc_echo: None,
             adc_pending: None,
