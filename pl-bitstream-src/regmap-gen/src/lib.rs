@@ -232,8 +232,8 @@ pub fn markdown(blocks: &[&Block]) -> String {
             continue;
         }
         s.push_str(
-            "| offset | address | register | access | bits | reset | format | invalid values | description |\n\
-             |---|---|---|---|---|---|---|---|---|\n",
+            "| offset | address | register | access | bits | reset | format | invalid values | description | `pl_regs` ports |\n\
+             |---|---|---|---|---|---|---|---|---|---|\n",
         );
         for r in b.registers {
             let mut desc = r.doc.to_string();
@@ -247,7 +247,7 @@ pub fn markdown(blocks: &[&Block]) -> String {
             }
             let _ = writeln!(
                 s,
-                "| `0x{:03X}` | `0x{:08X}` | `{}` | {} | {} | `0x{:X}` ({}) | {} | {} | {} |",
+                "| `0x{:03X}` | `0x{:08X}` | `{}` | {} | {} | `0x{:X}` ({}) | {} | {} | {} | {} |",
                 r.offset,
                 b.addr(r),
                 r.name,
@@ -257,7 +257,8 @@ pub fn markdown(blocks: &[&Block]) -> String {
                 r.reset,
                 r.format.replace('|', "\\|"),
                 invalid(r),
-                desc.replace('|', "\\|")
+                desc.replace('|', "\\|"),
+                rtl::port_list(r)
             );
         }
     }

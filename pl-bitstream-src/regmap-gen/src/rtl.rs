@@ -91,6 +91,25 @@ fn ports(r: &Register) -> Vec<Port> {
     p
 }
 
+/// The ports of `r` for the docs: `` `name_o` [w] `` separated by `<br>`,
+/// or "none".
+pub fn port_list(r: &Register) -> String {
+    let p = ports(r);
+    if p.is_empty() {
+        return "none".into();
+    }
+    p.iter()
+        .map(|p| {
+            if p.width == 1 {
+                format!("`{}`", p.name)
+            } else {
+                format!("`{}` [{}]", p.name, p.width)
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("<br>")
+}
+
 fn range(width: u8) -> String {
     if width == 1 {
         String::new()
