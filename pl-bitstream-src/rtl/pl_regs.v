@@ -563,6 +563,143 @@ module pl_regs (
     assign fault_status_watchdog_clr_o = w_fault_status ? n_fault_status[2] : 1'd0;
     assign oc_limit_o = oc_limit_q;
     assign wdg_timeout_o = wdg_timeout_q;
+
+`ifdef FORMAL
+    reg f_past_valid = 1'b0;
+    always @(posedge clk_i) f_past_valid <= 1'b1;
+    always @(*) begin
+        if (!f_past_valid) assume (rst_i);
+    end
+    always @(posedge clk_i) begin
+        if (f_past_valid && !$past(rst_i)) begin
+            // CTRL: changed only by a write.
+            if ($past(!w_ctrl)) assert (ctrl_q == $past(ctrl_q));
+            // CTRL: a rejected value is never stored.
+            assert ({30'd0, ctrl_q} <= 32'h00000002);
+            // ERR.BAD_VALUE is set by its event.
+            if ($past(bad_value)) assert (err_q[0]);
+            // ERR.BAD_ADDR is set by its event.
+            if ($past(bad_addr)) assert (err_q[1]);
+            // Only a write clears ERR bits.
+            if ($past(!w_err)) assert ((err_q & $past(err_q)) == $past(err_q));
+            // HEARTBEAT: changed only by a write.
+            if ($past(!w_heartbeat)) assert (heartbeat_q == $past(heartbeat_q));
+            // SCRATCH: changed only by a write.
+            if ($past(!w_scratch)) assert (scratch_q == $past(scratch_q));
+            // MPDTC_CTRL: changed only by a write.
+            if ($past(!w_mpdtc_ctrl)) assert (mpdtc_ctrl_q == $past(mpdtc_ctrl_q));
+            // MPDTC_START: changed only by a write.
+            if ($past(!w_mpdtc_start)) assert (mpdtc_start_q == $past(mpdtc_start_q));
+            // MPDTC_IN_ID: changed only by a write.
+            if ($past(!w_mpdtc_in_id)) assert (mpdtc_in_id_q == $past(mpdtc_in_id_q));
+            // MPDTC_IN_IQ: changed only by a write.
+            if ($past(!w_mpdtc_in_iq)) assert (mpdtc_in_iq_q == $past(mpdtc_in_iq_q));
+            // MPDTC_IN_COS0: changed only by a write.
+            if ($past(!w_mpdtc_in_cos0)) assert (mpdtc_in_cos0_q == $past(mpdtc_in_cos0_q));
+            // MPDTC_IN_SIN0: changed only by a write.
+            if ($past(!w_mpdtc_in_sin0)) assert (mpdtc_in_sin0_q == $past(mpdtc_in_sin0_q));
+            // MPDTC_IN_COS1: changed only by a write.
+            if ($past(!w_mpdtc_in_cos1)) assert (mpdtc_in_cos1_q == $past(mpdtc_in_cos1_q));
+            // MPDTC_IN_SIN1: changed only by a write.
+            if ($past(!w_mpdtc_in_sin1)) assert (mpdtc_in_sin1_q == $past(mpdtc_in_sin1_q));
+            // MPDTC_IN_COS2: changed only by a write.
+            if ($past(!w_mpdtc_in_cos2)) assert (mpdtc_in_cos2_q == $past(mpdtc_in_cos2_q));
+            // MPDTC_IN_SIN2: changed only by a write.
+            if ($past(!w_mpdtc_in_sin2)) assert (mpdtc_in_sin2_q == $past(mpdtc_in_sin2_q));
+            // MPDTC_IN_W_TS: changed only by a write.
+            if ($past(!w_mpdtc_in_w_ts)) assert (mpdtc_in_w_ts_q == $past(mpdtc_in_w_ts_q));
+            // MPDTC_IN_T_REF: changed only by a write.
+            if ($past(!w_mpdtc_in_t_ref)) assert (mpdtc_in_t_ref_q == $past(mpdtc_in_t_ref_q));
+            // MPDTC_P_A: changed only by a write.
+            if ($past(!w_mpdtc_p_a)) assert (mpdtc_p_a_q == $past(mpdtc_p_a_q));
+            // MPDTC_P_LAMBDA: changed only by a write.
+            if ($past(!w_mpdtc_p_lambda)) assert (mpdtc_p_lambda_q == $past(mpdtc_p_lambda_q));
+            // MPDTC_P_U0: changed only by a write.
+            if ($past(!w_mpdtc_p_u0)) assert (mpdtc_p_u0_q == $past(mpdtc_p_u0_q));
+            // MPDTC_P_U0_HALF: changed only by a write.
+            if ($past(!w_mpdtc_p_u0_half)) assert (mpdtc_p_u0_half_q == $past(mpdtc_p_u0_half_q));
+            // MPDTC_P_U0_H: changed only by a write.
+            if ($past(!w_mpdtc_p_u0_h)) assert (mpdtc_p_u0_h_q == $past(mpdtc_p_u0_h_q));
+            // MPDTC_P_PSI_L: changed only by a write.
+            if ($past(!w_mpdtc_p_psi_l)) assert (mpdtc_p_psi_l_q == $past(mpdtc_p_psi_l_q));
+            // MPDTC_P_KINV_T: changed only by a write.
+            if ($past(!w_mpdtc_p_kinv_t)) assert (mpdtc_p_kinv_t_q == $past(mpdtc_p_kinv_t_q));
+            // MPDTC_P_TOL: changed only by a write.
+            if ($past(!w_mpdtc_p_tol)) assert (mpdtc_p_tol_q == $past(mpdtc_p_tol_q));
+            // MPDTC_P_K_INT: changed only by a write.
+            if ($past(!w_mpdtc_p_k_int)) assert (mpdtc_p_k_int_q == $past(mpdtc_p_k_int_q));
+            // MPDTC_P_INT_LIM: changed only by a write.
+            if ($past(!w_mpdtc_p_int_lim)) assert (mpdtc_p_int_lim_q == $past(mpdtc_p_int_lim_q));
+            // MPDTC_P_INT_COND: changed only by a write.
+            if ($past(!w_mpdtc_p_int_cond)) assert (mpdtc_p_int_cond_q == $past(mpdtc_p_int_cond_q));
+            // MPDTC_P_KP_O: changed only by a write.
+            if ($past(!w_mpdtc_p_kp_o)) assert (mpdtc_p_kp_o_q == $past(mpdtc_p_kp_o_q));
+            // MPDTC_P_KI_O: changed only by a write.
+            if ($past(!w_mpdtc_p_ki_o)) assert (mpdtc_p_ki_o_q == $past(mpdtc_p_ki_o_q));
+            // MPDTC_P_ETA_LIM: changed only by a write.
+            if ($past(!w_mpdtc_p_eta_lim)) assert (mpdtc_p_eta_lim_q == $past(mpdtc_p_eta_lim_q));
+            // MPDTC_P_W2_0: changed only by a write.
+            if ($past(!w_mpdtc_p_w2_0)) assert (mpdtc_p_w2_0_q == $past(mpdtc_p_w2_0_q));
+            // MPDTC_P_W2_1: changed only by a write.
+            if ($past(!w_mpdtc_p_w2_1)) assert (mpdtc_p_w2_1_q == $past(mpdtc_p_w2_1_q));
+            // MPDTC_P_W2_2: changed only by a write.
+            if ($past(!w_mpdtc_p_w2_2)) assert (mpdtc_p_w2_2_q == $past(mpdtc_p_w2_2_q));
+            // MPDTC_P_W2_3: changed only by a write.
+            if ($past(!w_mpdtc_p_w2_3)) assert (mpdtc_p_w2_3_q == $past(mpdtc_p_w2_3_q));
+            // MPDTC_ALIGN_VEC: changed only by a write.
+            if ($past(!w_mpdtc_align_vec)) assert (mpdtc_align_vec_q == $past(mpdtc_align_vec_q));
+            // MPDTC_ALIGN_PERIOD: changed only by a write.
+            if ($past(!w_mpdtc_align_period)) assert (mpdtc_align_period_q == $past(mpdtc_align_period_q));
+            // MPDTC_ALIGN_PERIOD: always inside its clamp range.
+            assert ({16'd0, mpdtc_align_period_q} >= 32'h00000002);
+            // MPDTC_ALIGN_ON: changed only by a write.
+            if ($past(!w_mpdtc_align_on)) assert (mpdtc_align_on_q == $past(mpdtc_align_on_q));
+            // MPDTC_ALIGN_ON: always inside its clamp range.
+            assert ({16'd0, mpdtc_align_on_q} <= 32'h00007fff);
+            // MPDTC_ALIGN_TIME: changed only by a write.
+            if ($past(!w_mpdtc_align_time)) assert (mpdtc_align_time_q == $past(mpdtc_align_time_q));
+            // MPDTC_ALIGN_TIME: always inside its clamp range.
+            assert (mpdtc_align_time_q >= 32'h00000001);
+            // GATE_CTRL: held at 0 by the hardware, else changed only by a write.
+            if ($past(gate_ctrl_hw_clr_i)) assert (gate_ctrl_q == 1'd0);
+            if ($past(!gate_ctrl_hw_clr_i && !w_gate_ctrl)) assert (gate_ctrl_q == $past(gate_ctrl_q));
+            // DEAD_TIME: changed only by a write.
+            if ($past(!w_dead_time)) assert (dead_time_q == $past(dead_time_q));
+            // PWM_PERIOD: changed only by a write.
+            if ($past(!w_pwm_period)) assert (pwm_period_q == $past(pwm_period_q));
+            // PWM_PERIOD: always inside its clamp range.
+            assert ({16'd0, pwm_period_q} >= 32'h00000002);
+            // DUTY_A: changed only by a write.
+            if ($past(!w_duty_a)) assert (duty_a_q == $past(duty_a_q));
+            // DUTY_B: changed only by a write.
+            if ($past(!w_duty_b)) assert (duty_b_q == $past(duty_b_q));
+            // DUTY_C: changed only by a write.
+            if ($past(!w_duty_c)) assert (duty_c_q == $past(duty_c_q));
+            // SW_STATE: changed only by a write.
+            if ($past(!w_sw_state)) assert (sw_state_q == $past(sw_state_q));
+            // ADC_CTRL: changed only by a write.
+            if ($past(!w_adc_ctrl)) assert (adc_ctrl_q == $past(adc_ctrl_q));
+            // ADC_PERIOD: changed only by a write.
+            if ($past(!w_adc_period)) assert (adc_period_q == $past(adc_period_q));
+            // ADC_PERIOD: always inside its clamp range.
+            assert ({16'd0, adc_period_q} >= 32'h00000010);
+            // ENC_CPR: changed only by a write.
+            if ($past(!w_enc_cpr)) assert (enc_cpr_q == $past(enc_cpr_q));
+            // ENC_CPR: always inside its clamp range.
+            assert ({16'd0, enc_cpr_q} >= 32'h00000004);
+            // ENC_WINDOW: changed only by a write.
+            if ($past(!w_enc_window)) assert (enc_window_q == $past(enc_window_q));
+            // ENC_WINDOW: always inside its clamp range.
+            assert ({8'd0, enc_window_q} >= 32'h00000064);
+            // OC_LIMIT: changed only by a write.
+            if ($past(!w_oc_limit)) assert (oc_limit_q == $past(oc_limit_q));
+            // WDG_TIMEOUT: changed only by a write.
+            if ($past(!w_wdg_timeout)) assert (wdg_timeout_q == $past(wdg_timeout_q));
+            // WDG_TIMEOUT: always inside its clamp range.
+            assert (wdg_timeout_q >= 32'h000003e8);
+        end
+    end
+`endif
 endmodule
 
 `default_nettype wire

@@ -411,6 +411,91 @@ pub fn pl_regs(blocks: &[&Block]) -> String {
             _ => {}
         }
     }
+    formal(&mut s, &regs);
     s.push_str("endmodule\n\n`default_nettype wire\n");
     s
+}
+
+/// The register file's own properties (yosys `sat -tempinduct`, see
+/// scripts/rtl-formal): every stored register changes only on its write (or
+/// its hardware clear), holds a value its write rule allows, and access
+/// errors set `ERR`.
+fn formal(s: &mut String, regs: &[(&Block, &Register)]) {
+    s.push_str(
+        "\n`ifdef FORMAL\n    reg f_past_valid = 1'b0;\n    \
+         always @(posedge clk_i) f_past_valid <= 1'b1;\n    always @(*) begin\n        \
+         if (!f_past_valid) assume (rst_i);\n    end\n    \
+         always @(posedge clk_i) begin\n        if (f_past_valid && !$past(rst_i)) begin\n",
+    );
+    for (_, r) in regs.iter().filter(|(_, r)| stored(r)) {
+        let n = lc(r);
+        match r.hw {
+            Hw::Errors => {
+                for (name, e) in [("BAD_VALUE", "bad_value"), ("BAD_ADDR", "bad_addr")] {
+                    if let Some(f) = r.fields.iter().find(|f| f.name == name) {
+                        let _ = writeln!(
+                            s,
+                            "            // ERR.{name} is set by its event.\n            \
+                             if ($past({e})) assert ({n}_q[{}]);",
+                            f.lsb
+                        );
+                    }
+                }
+                let _ = writeln!(
+                    s,
+                    "            // Only a write clears ERR bits.\n            \
+                     if ($past(!w_{n})) assert (({n}_q & $past({n}_q)) == $past({n}_q));"
+                );
+            }
+            Hw::HwClear => {
+                let _ = writeln!(
+                    s,
+                    "            // {0}: held at 0 by the hardware, else changed only by a write.\n            \
+                     if ($past({n}_hw_clr_i)) assert ({n}_q == {w}'d0);\n            \
+                     if ($past(!{n}_hw_clr_i && !w_{n})) assert ({n}_q == $past({n}_q));",
+                    r.name,
+                    w = r.width
+                );
+            }
+            _ => {
+                let _ = writeln!(
+                    s,
+                    "            // {}: changed only by a write.\n            \
+                     if ($past(!w_{n})) assert ({n}_q == $past({n}_q));",
+                    r.name
+                );
+            }
+        }
+        match r.invalid {
+            Invalid::Clamp { min, max } => {
+                let q = concat(32, vec![(0, r.width, format!("{n}_q"))]);
+                let mut conds = Vec::new();
+                if min > 0 {
+                    conds.push(format!("{q} >= 32'h{min:08x}"));
+                }
+                if u64::from(max) < (1u64 << r.width) - 1 {
+                    conds.push(format!("{q} <= 32'h{max:08x}"));
+                }
+                if !conds.is_empty() {
+                    let _ = writeln!(
+                        s,
+                        "            // {}: always inside its clamp range.\n            assert ({});",
+                        r.name,
+                        conds.join(" && ")
+                    );
+                }
+            }
+            Invalid::Reject { max } => {
+                let _ = writeln!(
+                    s,
+                    "            // {}: a rejected value is never stored.\n            \
+                     assert ({} <= 32'h{max:08x});",
+                    r.name,
+                    concat(32, vec![(0, r.width, format!("{n}_q"))])
+                );
+            }
+            Invalid::AllValid => {}
+        }
+    }
+    s.push_str("        end\n    end\n`endif\n");
 }

@@ -69,18 +69,26 @@ fn the_register_file_gets_storage_decode_rule_read_and_a_port() {
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("pl_regs.v");
     std::fs::write(&file, &v).unwrap();
-    let out = Command::new("verilator")
-        .args(["--lint-only", "-Wall", "--top-module", "pl_regs"])
-        .arg(root().join("pl-bitstream-src/lint.vlt"))
-        .arg(&file)
-        .output()
-        .expect("verilator not found (run scripts/setup)");
+    // Also with its formal properties, which now cover TRIM too.
+    assert!(v.contains("            if ($past(!w_trim)) assert (trim_q == $past(trim_q));"));
+    assert!(v.contains(
+        "            assert ({20'd0, trim_q} >= 32'h0000000a && {20'd0, trim_q} <= 32'h00000fa0);"
+    ));
+    for defs in [None, Some("-DFORMAL")] {
+        let out = Command::new("verilator")
+            .args(["--lint-only", "-Wall", "--top-module", "pl_regs"])
+            .args(defs)
+            .arg(root().join("pl-bitstream-src/lint.vlt"))
+            .arg(&file)
+            .output()
+            .expect("verilator not found (run scripts/setup)");
+        assert!(
+            out.status.success(),
+            "verilator -Wall {defs:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
     let _ = std::fs::remove_dir_all(&dir);
-    assert!(
-        out.status.success(),
-        "verilator -Wall: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
 }
 
 #[test]
