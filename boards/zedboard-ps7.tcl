@@ -3,6 +3,8 @@
 set board_name zedboard
 set board_part xc7z020clg484-1
 set fclk0_hz 100000000
+set pl_base 0x43C00000
+set pl_range 32K
 set ps7_config [list \
     CONFIG.PCW_CRYSTAL_PERIPHERAL_FREQMHZ {33.333333} \
     CONFIG.PCW_APU_PERIPHERAL_FREQMHZ {666.666667} \

@@ -112,6 +112,13 @@ pub fn ps7_tcl(b: &Board) -> String {
     let _ = writeln!(s, "set board_name {}", b.board.name);
     let _ = writeln!(s, "set board_part {}", b.board.part);
     let _ = writeln!(s, "set fclk0_hz {}", ps.fclk0_hz);
+    // The PL's AXI window: the register map's base and its 2^AXI_ADDR_BITS bytes.
+    let _ = writeln!(s, "set pl_base 0x{:08X}", drive::regmap::BASE_ADDR);
+    let _ = writeln!(
+        s,
+        "set pl_range {}K",
+        (1usize << drive::regmap::AXI_ADDR_BITS) / 1024
+    );
     let bit = |v: bool| if v { "1" } else { "0" };
     let mut cfg: Vec<(String, String)> = vec![
         ("PCW_CRYSTAL_PERIPHERAL_FREQMHZ".into(), mhz(ps.ps_clk_hz)),
@@ -266,6 +273,8 @@ mod tests {
             "CONFIG.PCW_UIPARAM_DDR_DQS_TO_CLK_DELAY_3 {-0.061}",
             "CONFIG.PCW_USE_M_AXI_GP0 {1}",
             "set board_part xc7z020clg484-1",
+            "set pl_base 0x43C00000",
+            "set pl_range 32K",
         ] {
             assert!(t.contains(line), "missing {line}");
         }

@@ -3,6 +3,7 @@
 //! table (generated, stale-checked), the consistency of the pins with the
 //! real top-level port list (`pl-bitstream-src/board/board_top.v`), the
 //! firmware's clock constants, and checks of a `BOOT.BIN`.
+pub mod bd;
 pub mod board;
 pub mod check;
 pub mod gen;

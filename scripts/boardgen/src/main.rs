@@ -2,6 +2,9 @@
 //!
 //!   boardgen gen                      write boards/<name>.xdc, -ps7.tcl, -pins.md
 //!   boardgen check                    pins vs board_top ports, generated files fresh
+//!   boardgen bd-check --facts FILE [--board NAME]
+//!                                     block design recorded by scripts/vivado/stub-run.tcl
+//!                                     vs the ps_bd stand-in, register map and board file
 //!   boardgen standin --fsbl F --bit B [--board NAME]
 //!                                     stand-in FSBL ELF and bitstream for bootgen tests
 //!   boardgen boot-check --image BOOT.BIN --fsbl F --firmware ELF
@@ -11,7 +14,7 @@ use boardgen::{board_names, check, generated, image, load_board, top_ports};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-const USAGE: &str = "usage: boardgen gen | check | standin --fsbl F --bit B [--board NAME] | \
+const USAGE: &str = "usage: boardgen gen | check | bd-check --facts FILE [--board NAME] | standin --fsbl F --bit B [--board NAME] | \
 boot-check --image BOOT.BIN --fsbl F --firmware ELF   [--root DIR]";
 
 fn main() -> ExitCode {
@@ -68,6 +71,7 @@ fn run(args: &[String]) -> Result<(), String> {
     let allowed: &[&str] = match cmd.as_str() {
         "gen" | "check" => &[],
         "standin" => &["--fsbl", "--bit", "--board"],
+        "bd-check" => &["--facts", "--board"],
         "boot-check" => &["--image", "--fsbl", "--firmware"],
         "-h" | "--help" | "help" => {
             println!("{USAGE}");
@@ -127,6 +131,26 @@ fn run(args: &[String]) -> Result<(), String> {
             } else {
                 Err(problems.join("\n"))
             }
+        }
+        "bd-check" => {
+            let b = load_board(&root, get(&opts, "--board").unwrap_or("zedboard"))?;
+            let facts = String::from_utf8_lossy(&read(need(&opts, "--facts")?)?).into_owned();
+            let stub_path = root.join(boardgen::bd::PS_BD_STUB);
+            let src = std::fs::read_to_string(&stub_path)
+                .map_err(|e| format!("{}: {e}", stub_path.display()))?;
+            let stub = boardgen::verilog::module_ports(&src, "ps_bd").map_err(|e| e.0)?;
+            let problems = boardgen::bd::problems(&facts, &stub, &b);
+            if !problems.is_empty() {
+                return Err(problems.join("\n"));
+            }
+            println!(
+                "boardgen: block design: {} ports as in {}, PL window 0x{:08X}, FCLK0 {} MHz",
+                stub.len(),
+                boardgen::bd::PS_BD_STUB,
+                drive::regmap::BASE_ADDR,
+                boardgen::gen::mhz(drive::regmap::PL_CLOCK_HZ)
+            );
+            Ok(())
         }
         "standin" => {
             let name = get(&opts, "--board").unwrap_or("zedboard");
