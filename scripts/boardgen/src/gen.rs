@@ -206,8 +206,6 @@ pub fn pins_md(b: &Board) -> String {
 pub fn firmware_consts(b: &Board) -> String {
     format!(
         "// Generated from boards/{name}.toml by firmware/build.rs.\n\
-         /// Board the firmware was built for (`DRIVE_BOARD`).\n\
-         pub const NAME: &str = \"{name}\";\n\
          /// UART reference clock set by the FSBL, Hz.\n\
          pub const UART_REF_CLK_HZ: u32 = {uart};\n\
          /// PERIPHCLK of the A9 private and global timers (CPU_6x4x / 2), Hz.\n\
