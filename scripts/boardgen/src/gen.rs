@@ -175,7 +175,7 @@ pub fn pins_md(b: &Board) -> String {
     let mut s = header(b, "<!--");
     s.truncate(s.trim_end().len());
     s.push_str(" -->\n\n");
-    let _ = writeln!(s, "# Pins of the {} ({})\n", b.board.title, b.board.part);
+    let _ = writeln!(s, "# Pins of the {}, {}\n", b.board.title, b.board.part);
     s.push_str("| signal (board_top port) | connector pin | package pin | IO standard | use |\n|---|---|---|---|---|\n");
     for p in &b.pins {
         let pull = if p.pullup { " (internal pull-up)" } else { "" };
