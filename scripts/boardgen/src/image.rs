@@ -242,10 +242,12 @@ pub fn read_boot_image(b: &[u8]) -> Result<Vec<Partition>, ImageError> {
     Ok(parts)
 }
 
-/// Checks the order and content of a drive boot image: the FSBL (to the
-/// PS, executing at its entry), the bitstream (to the PL, containing the
-/// sync word), then the firmware's load segments (to the PS, in order, byte
-/// for byte, the first executing at the firmware's entry).
+/// Checks the order and content of a drive boot image: the FSBL first (to
+/// the PS, executing at its entry, starting with its first load segment;
+/// further FSBL partitions to the PS may follow), then exactly one PL
+/// bitstream (containing the sync word), then the firmware's load segments
+/// (to the PS, in order, byte for byte, the first executing at the
+/// firmware's entry) and nothing else.
 pub fn check_boot_order(
     parts: &[Partition],
     fsbl: &[u8],
@@ -254,30 +256,51 @@ pub fn check_boot_order(
     let e = |m: String| Err(ImageError(m));
     let (fsbl_entry, fsbl_segs) = read_elf(fsbl)?;
     let (fw_entry, fw_segs) = read_elf(firmware)?;
-    let want = 1 + 1 + fw_segs.len();
-    if parts.len() != want {
+    let Some(first_fsbl) = fsbl_segs.first() else {
+        return e("the FSBL ELF has no load segment".into());
+    };
+    let Some(p) = parts.first() else {
+        return e("no partitions".into());
+    };
+    if p.dest != Dest::Ps || p.exec != fsbl_entry || !p.data.starts_with(&first_fsbl.data) {
+        return e(format!("partition 0 ({}) is not the FSBL", p.name));
+    }
+    let pl: Vec<usize> = (0..parts.len())
+        .filter(|&i| parts[i].dest == Dest::Pl)
+        .collect();
+    let [bit] = pl[..] else {
         return e(format!(
-            "{} partitions, expected {want} (FSBL, bitstream, {} firmware segments)",
-            parts.len(),
+            "{} PL partitions, expected one bitstream",
+            pl.len()
+        ));
+    };
+    if let Some(i) = (1..bit).find(|&i| parts[i].dest != Dest::Ps) {
+        return e(format!(
+            "partition {i} ({}) before the bitstream is not for the PS",
+            parts[i].name
+        ));
+    }
+    let sync_be = SYNC_WORD.to_be_bytes();
+    let sync_le = SYNC_WORD.to_le_bytes();
+    if !parts[bit]
+        .data
+        .windows(4)
+        .any(|w| w == sync_be || w == sync_le)
+    {
+        return e(format!(
+            "partition {bit} ({}) has no configuration sync word",
+            parts[bit].name
+        ));
+    }
+    let fw = &parts[bit + 1..];
+    if fw.len() != fw_segs.len() {
+        return e(format!(
+            "{} partitions after the bitstream, the firmware has {} load segments",
+            fw.len(),
             fw_segs.len()
         ));
     }
-    let p = &parts[0];
-    if p.dest != Dest::Ps
-        || p.exec != fsbl_entry
-        || fsbl_segs.first().map(|s| &s.data) != Some(&p.data)
-    {
-        return e(format!("partition 0 ({}) is not the FSBL", p.name));
-    }
-    let p = &parts[1];
-    let sync_be = SYNC_WORD.to_be_bytes();
-    let sync_le = SYNC_WORD.to_le_bytes();
-    let has_sync = p.data.windows(4).any(|w| w == sync_be || w == sync_le);
-    if p.dest != Dest::Pl || !has_sync {
-        return e(format!("partition 1 ({}) is not a PL bitstream", p.name));
-    }
-    for (k, seg) in fw_segs.iter().enumerate() {
-        let p = &parts[2 + k];
+    for (k, (p, seg)) in fw.iter().zip(&fw_segs).enumerate() {
         // Bootgen pads a partition to whole words.
         let same = p.data.len() >= seg.data.len()
             && p.data[..seg.data.len()] == seg.data[..]
@@ -285,19 +308,20 @@ pub fn check_boot_order(
         if p.dest != Dest::Ps || p.load != seg.paddr || !same {
             return e(format!(
                 "partition {} ({}) is not firmware segment {k} at {:#010x}",
-                2 + k,
+                bit + 1 + k,
                 p.name,
                 seg.paddr
             ));
         }
     }
-    if parts[2].exec != fw_entry {
-        return e(format!(
+    match fw.first() {
+        Some(p) if p.exec == fw_entry => Ok(()),
+        Some(p) => e(format!(
             "firmware partition executes at {:#010x}, ELF entry is {fw_entry:#010x}",
-            parts[2].exec
-        ));
+            p.exec
+        )),
+        None => e("no firmware partition".into()),
     }
-    Ok(())
 }
 
 #[cfg(test)]
@@ -340,6 +364,61 @@ mod tests {
     fn boot_image_reader_rejects_garbage() {
         assert!(read_boot_image(&[0u8; 0x100]).is_err());
         assert!(read_boot_image(&[0u8; 4]).is_err());
+    }
+
+    fn part(name: &str, dest: Dest, load: u32, exec: u32, data: &[u8]) -> Partition {
+        Partition {
+            name: name.into(),
+            dest,
+            load,
+            exec,
+            data: data.to_vec(),
+        }
+    }
+
+    #[test]
+    fn boot_order_is_fsbl_bitstream_firmware() {
+        let fsbl = standin_elf(0, 4);
+        let fw = standin_elf(0x0010_0000, 8);
+        let fsbl_data = read_elf(&fsbl).unwrap().1[0].data.clone();
+        let fw_data = read_elf(&fw).unwrap().1[0].data.clone();
+        let bit_data = [0xFF, 0xFF, 0xAA, 0x99, 0x55, 0x66, 0x20, 0x00];
+        let good = vec![
+            part("fsbl.elf", Dest::Ps, 0, 0, &fsbl_data),
+            part("board_top.bit", Dest::Pl, 0, 0, &bit_data),
+            part("firmware.elf", Dest::Ps, 0x0010_0000, 0x0010_0000, &fw_data),
+        ];
+        check_boot_order(&good, &fsbl, &fw).unwrap();
+
+        let swapped = vec![good[1].clone(), good[0].clone(), good[2].clone()];
+        assert!(check_boot_order(&swapped, &fsbl, &fw)
+            .unwrap_err()
+            .0
+            .contains("not the FSBL"));
+        let fw_first = vec![good[0].clone(), good[2].clone(), good[1].clone()];
+        assert!(check_boot_order(&fw_first, &fsbl, &fw).is_err());
+        let mut wrong_load = good.clone();
+        wrong_load[2].load = 0x0020_0000;
+        assert!(check_boot_order(&wrong_load, &fsbl, &fw)
+            .unwrap_err()
+            .0
+            .contains("segment 0"));
+        let mut wrong_exec = good.clone();
+        wrong_exec[2].exec = 0;
+        assert!(check_boot_order(&wrong_exec, &fsbl, &fw)
+            .unwrap_err()
+            .0
+            .contains("entry"));
+        let mut no_sync = good.clone();
+        no_sync[1].data = vec![0; 8];
+        assert!(check_boot_order(&no_sync, &fsbl, &fw)
+            .unwrap_err()
+            .0
+            .contains("sync"));
+        let mut changed = good.clone();
+        changed[2].data[0] ^= 1;
+        assert!(check_boot_order(&changed, &fsbl, &fw).is_err());
+        assert!(check_boot_order(&good[..2], &fsbl, &fw).is_err());
     }
 
     #[test]
