@@ -1,5 +1,7 @@
 //! Links the bare-metal image (memory.x from the repository root, cortex-a-rt's
-//! link.x, defmt.x) and records the git hash and build profile for `version`.
+//! link.x, defmt.x), records the git hash and build profile for `version`,
+//! and writes the board's clock constants (boards/<DRIVE_BOARD>.toml, default
+//! zedboard) to $OUT_DIR/board.rs for src/board.rs.
 use std::{env, fs, path::PathBuf, process::Command};
 
 fn main() {
@@ -31,6 +33,15 @@ fn main() {
             println!("cargo:rerun-if-changed={}", root.join(f).display());
         }
     }
+
+    // The board file is the one source of the PS clocks the firmware assumes.
+    let board = env::var("DRIVE_BOARD").unwrap_or_else(|_| "zedboard".into());
+    println!("cargo:rerun-if-env-changed=DRIVE_BOARD");
+    let board_file = root.join("boards").join(format!("{board}.toml"));
+    println!("cargo:rerun-if-changed={}", board_file.display());
+    let b =
+        boardgen::load_board(&root, &board).unwrap_or_else(|e| panic!("DRIVE_BOARD={board}: {e}"));
+    fs::write(out.join("board.rs"), boardgen::gen::firmware_consts(&b)).expect("board.rs");
 
     if env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("none") {
         fs::copy(root.join("memory.x"), out.join("memory.x")).expect("memory.x");

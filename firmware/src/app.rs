@@ -6,8 +6,8 @@ use drive::console::{self, Action, Context, LineEditor, Status, PROMPT};
 
 /// Console and log line settings.
 const BAUD: u32 = 115_200;
-/// UART reference clock set by the FSBL on the usual boards (IO PLL 1 GHz / 20).
-const UART_REF_CLK_HZ: u32 = 50_000_000;
+/// UART reference clock set by the FSBL, from the board file.
+const UART_REF_CLK_HZ: u32 = crate::board::UART_REF_CLK_HZ;
 /// Rate of the periodic timer interrupt, Hz.
 pub const TICK_HZ: u32 = 1000;
 

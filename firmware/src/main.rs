@@ -10,6 +10,8 @@
 #[cfg(target_os = "none")]
 mod app;
 #[cfg(target_os = "none")]
+mod board;
+#[cfg(target_os = "none")]
 mod log;
 #[cfg(target_os = "none")]
 mod panic;

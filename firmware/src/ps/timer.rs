@@ -9,9 +9,9 @@ fn reg(addr: usize) -> &'static RW<u32> {
     unsafe { &*(addr as *const RW<u32>) }
 }
 
-/// Clock of both timers (PERIPHCLK = CPU_6x4x / 2): 333.333 MHz with the
-/// usual 666.667 MHz CPU clock set by the FSBL.
-pub const PERIPHCLK_HZ: u32 = 333_333_333;
+/// Clock of both timers (PERIPHCLK = CPU_6x4x / 2), from the board file:
+/// 333.333 MHz with the ZedBoard's 666.667 MHz CPU clock.
+pub const PERIPHCLK_HZ: u32 = crate::board::PERIPHCLK_HZ;
 
 /// Starts the 64-bit global timer, prescaler 1.
 pub fn start_global() {
