@@ -5,6 +5,7 @@
 //! Modules, one job each:
 //! - [`bus`]: the `RegisterBus` trait every PL driver talks through.
 //! - [`console`]: the UART console line editor and command grammar.
+//! - [`pl`]: PL drivers (one per register block) over `RegisterBus`.
 //! - [`pmsm`]: paper 000 (PMSM + 2-level inverter, FOC baseline, MPDTC).
 //! - [`mpdcc`]: paper 001 (induction machine + 5L-ANPC, MPDCC).
 #![cfg_attr(not(test), no_std)]
@@ -17,6 +18,7 @@ pub mod bus;
 pub mod console;
 pub mod gates;
 pub mod mpdcc;
+pub mod pl;
 pub mod pmsm;
 pub mod regmap;
 pub mod validate;
