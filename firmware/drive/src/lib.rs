@@ -6,6 +6,7 @@
 //! - [`bus`]: the `RegisterBus` trait every PL driver talks through.
 //! - [`console`]: the UART console line editor and command grammar.
 //! - [`pl`]: PL drivers (one per register block) over `RegisterBus`.
+//! - [`servo`]: the drive on the PS: modes, gates, control step, `step`.
 //! - [`pmsm`]: paper 000 (PMSM + 2-level inverter, FOC baseline, MPDTC).
 //! - [`mpdcc`]: paper 001 (induction machine + 5L-ANPC, MPDCC).
 #![cfg_attr(not(test), no_std)]
@@ -21,5 +22,6 @@ pub mod mpdcc;
 pub mod pl;
 pub mod pmsm;
 pub mod regmap;
+pub mod servo;
 pub mod validate;
 pub mod zynq;
