@@ -10,6 +10,10 @@
 #[cfg(target_os = "none")]
 mod app;
 #[cfg(target_os = "none")]
+mod bench;
+#[cfg(target_os = "none")]
+mod control;
+#[cfg(target_os = "none")]
 mod log;
 #[cfg(target_os = "none")]
 mod panic;

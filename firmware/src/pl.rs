@@ -1,33 +1,62 @@
-//! The PL as the PS sees it: AXI GP0 register pages (see docs/register-map.md).
+//! The PL as the PS sees it: devcfg (is it configured?) and the AXI GP0
+//! register pages (docs/register-map.md) as a `RegisterBus`.
 //!
-//! Under QEMU the PL window reads 0 and drops writes, so the gates read as
-//! off (the safe state), which is also the reset state of the real PL.
+//! GP0 is touched only after `drive::pl::presence` found our bitstream:
+//! on a real Zynq an access to an unconfigured PL hangs the bus. The panic
+//! handler's gate write obeys the same rule ([`gates_safe`]).
+use core::sync::atomic::{AtomicBool, Ordering};
+use drive::bus::{BusError, RegisterBus};
+use drive::pl::presence::{self, Presence};
 use drive::regmap;
 use volatile_register::RW;
 
-fn gate_ctrl() -> &'static RW<u32> {
-    // SAFETY: GATE_CTRL is a 32-bit register of the PWM/gates page.
-    unsafe { &*(regmap::PWM.addr(&regmap::GATE_CTRL) as *const RW<u32>) }
+/// Set once presence detection found our bitstream behind GP0.
+static GP0_OK: AtomicBool = AtomicBool::new(false);
+
+fn reg(addr: usize) -> &'static RW<u32> {
+    // SAFETY: callers pass the address of a 32-bit device register.
+    unsafe { &*(addr as *const RW<u32>) }
 }
 
-/// Turns every gate off (clears `GATE_EN`). Safe to call from any context,
-/// including the panic handler: one store, no read-modify-write.
+/// devcfg `INT_STS` (a PS register: always safe to read).
+pub fn devcfg_int_sts() -> u32 {
+    reg(presence::DEVCFG_INT_STS).read()
+}
+
+/// Decides what is in the PL; GP0 is read only when devcfg says the PL is
+/// configured. Remembers whether GP0 may be used from now on.
+pub fn detect() -> Presence {
+    let p = presence::detect(devcfg_int_sts(), &mut Gp0);
+    GP0_OK.store(p.usable(), Ordering::Release);
+    p
+}
+
+/// GP0 as a register bus (volatile 32-bit accesses).
+pub struct Gp0;
+
+impl RegisterBus for Gp0 {
+    fn read(&mut self, addr: usize) -> Result<u32, BusError> {
+        if regmap::lookup(addr).is_none() {
+            return Err(BusError::SlaveError);
+        }
+        Ok(reg(addr).read())
+    }
+    fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
+        if regmap::lookup(addr).is_none() {
+            return Err(BusError::SlaveError);
+        }
+        // SAFETY: a register of the map; the drivers decide the values.
+        unsafe { reg(addr).write(value) };
+        Ok(())
+    }
+}
+
+/// Turns every gate of a configured PL off (clears `GATE_EN`): one store, no
+/// read-modify-write, safe from any context including the panic handler.
+/// Does nothing before presence detection or without our bitstream.
 pub fn gates_safe() {
-    // SAFETY: writing 0 disables all gates; no other bit has a side effect.
-    unsafe { gate_ctrl().write(0) };
-}
-
-/// Whether the gate-enable bit is set.
-pub fn gates_enabled() -> bool {
-    gate_ctrl().read() & regmap::GATE_CTRL_GATE_EN != 0
-}
-
-fn top_reg(reg: &regmap::Register) -> u32 {
-    // SAFETY: a 32-bit register of the top/ID page.
-    unsafe { (*(regmap::TOP.addr(reg) as *const RW<u32>)).read() }
-}
-
-/// The PL's `ID` and `VERSION` registers (both read 0 without a bitstream).
-pub fn id_and_version() -> (u32, u32) {
-    (top_reg(&regmap::ID), top_reg(&regmap::VERSION))
+    if GP0_OK.load(Ordering::Acquire) {
+        // SAFETY: writing 0 disables all gates; no other bit has a side effect.
+        unsafe { reg(regmap::GATE_CTRL_ADDR).write(0) };
+    }
 }
