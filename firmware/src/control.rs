@@ -15,8 +15,8 @@
 //!   A boundary that finds the previous one still pending is an overrun.
 //!   `debug stall` makes it return early (no step, no heartbeat), so the
 //!   PL's watchdog trips while the simulated PL keeps running.
-use crate::ps::{gic, timer};
 use crate::pl;
+use crate::ps::{gic, timer};
 use core::cell::RefCell;
 use drive::bus::{BusError, RegisterBus};
 use drive::console::{Bench, DriveError, DriveOps, DriveStatus, PlKind};

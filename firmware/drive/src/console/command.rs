@@ -234,7 +234,10 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
             [] => Ok(Command::Torque(None)),
             [x] => number(x)
                 .map(|x| Command::Torque(Some(x)))
-                .ok_or(ParseError::BadArgs("torque", "expected a finite number [Nm]")),
+                .ok_or(ParseError::BadArgs(
+                    "torque",
+                    "expected a finite number [Nm]",
+                )),
             _ => Err(ParseError::BadArgs("torque", "takes at most one argument")),
         },
         "step" => {
@@ -243,10 +246,8 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
                 [nm, w] => (*nm, Some(*w)),
                 _ => return Err(ParseError::BadArgs("step", "expected <Nm> [<window_ms>]")),
             };
-            let nm = number(nm).ok_or(ParseError::BadArgs(
-                "step",
-                "expected a finite torque [Nm]",
-            ))?;
+            let nm =
+                number(nm).ok_or(ParseError::BadArgs("step", "expected a finite torque [Nm]"))?;
             let w = match w {
                 None => STEP_WINDOW_DEFAULT_S,
                 Some(w) => match number(w) {
@@ -264,7 +265,10 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
         "fault" => match args.as_slice() {
             [] => Ok(Command::Fault),
             ["clear"] => Ok(Command::FaultClear),
-            _ => Err(ParseError::BadArgs("fault", "expected `fault` or `fault clear`")),
+            _ => Err(ParseError::BadArgs(
+                "fault",
+                "expected `fault` or `fault clear`",
+            )),
         },
         _ => Err(ParseError::Unknown(name)),
     }
@@ -747,8 +751,14 @@ mod tests {
             assert_one_final_line(&r);
         }
         assert_eq!(reply_on(&mut d, "mode"), "mode: foc\r\nOK\r\n");
-        assert_eq!(reply_on(&mut d, "torque"), "torque_ref: 0.2500 Nm\r\nOK\r\n");
-        assert_eq!(reply_on(&mut d, "torque -1"), "torque_ref: -1.0000 Nm\r\nOK\r\n");
+        assert_eq!(
+            reply_on(&mut d, "torque"),
+            "torque_ref: 0.2500 Nm\r\nOK\r\n"
+        );
+        assert_eq!(
+            reply_on(&mut d, "torque -1"),
+            "torque_ref: -1.0000 Nm\r\nOK\r\n"
+        );
     }
 
     #[test]
@@ -759,7 +769,14 @@ mod tests {
             reply_on(&mut d, "step 0.4"),
             "ERR gates-off step: gates are off (`enable` first)\r\n"
         );
-        for bad in ["step", "step x", "step 0.4 0", "step 0.4 21", "step 0.4 -1", "step 2"] {
+        for bad in [
+            "step",
+            "step x",
+            "step 0.4 0",
+            "step 0.4 21",
+            "step 0.4 -1",
+            "step 2",
+        ] {
             assert!(reply_on(&mut d, bad).starts_with("ERR bad-args "), "{bad}");
         }
         assert!(reply_on(&mut d, "enable").ends_with("OK\r\n"));
@@ -772,14 +789,16 @@ mod tests {
         assert!(r.contains("overshoot: 0.0 %\r\n"), "{r}");
         assert!(r.contains("switching: ") && r.contains(" kHz\r\n"), "{r}");
         assert!(r.ends_with("final: 0.0000 Nm\r\nOK\r\n"), "{r}");
-        assert_eq!(reply_on(&mut d, "torque"), "torque_ref: 0.4000 Nm\r\nOK\r\n");
+        assert_eq!(
+            reply_on(&mut d, "torque"),
+            "torque_ref: 0.4000 Nm\r\nOK\r\n"
+        );
     }
 
     #[test]
     fn faults_are_listed_cleared_and_block_enable() {
         let mut d = TestDrive::new();
-        d.pl
-            .set(crate::regmap::FAULT_STATUS_ADDR, Faults::WATCHDOG | 1);
+        d.pl.set(crate::regmap::FAULT_STATUS_ADDR, Faults::WATCHDOG | 1);
         assert_eq!(
             reply_on(&mut d, "fault"),
             "fault: OVERCURRENT WATCHDOG\r\nOK\r\n"
@@ -801,9 +820,18 @@ mod tests {
     #[test]
     fn debug_stall_and_bench_arguments() {
         let mut d = TestDrive::new();
-        assert_eq!(reply_on(&mut d, "debug stall 300"), "stalled: 300 ms\r\nOK\r\n");
+        assert_eq!(
+            reply_on(&mut d, "debug stall 300"),
+            "stalled: 300 ms\r\nOK\r\n"
+        );
         assert_eq!(d.stalled_ms, 300);
-        for bad in ["debug stall", "debug stall 0", "debug stall -5", "debug stall 10001", "debug stall 1.5"] {
+        for bad in [
+            "debug stall",
+            "debug stall 0",
+            "debug stall -5",
+            "debug stall 10001",
+            "debug stall 1.5",
+        ] {
             assert!(reply_on(&mut d, bad).starts_with("ERR bad-args "), "{bad}");
         }
         assert_eq!(d.stalled_ms, 300);

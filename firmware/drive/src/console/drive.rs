@@ -110,7 +110,11 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
             format_args!("{cmd}: mode is off (set `mode foc` or `mode mpdtc` first)"),
         ),
         DriveError::Servo(ServoError::FaultLatched(f)) => {
-            write!(out, "ERR {} {cmd}: fault latched: ", ErrorCode::FaultLatched.as_str())?;
+            write!(
+                out,
+                "ERR {} {cmd}: fault latched: ",
+                ErrorCode::FaultLatched.as_str()
+            )?;
             f.write_names(out)?;
             out.write_str(" (`fault clear` first)\r\n")
         }
@@ -186,6 +190,10 @@ pub fn write_step<W: Write>(out: &mut W, r: &StepResult) -> fmt::Result {
         )?,
     }
     write!(out, "overshoot: {:.1} %\r\n", r.overshoot_percent)?;
-    write!(out, "switching: {:.1} kHz\r\n", r.switching_per_leg_per_s * 1e-3)?;
+    write!(
+        out,
+        "switching: {:.1} kHz\r\n",
+        r.switching_per_leg_per_s * 1e-3
+    )?;
     write!(out, "final: {:.4} Nm\r\n", r.final_nm)
 }

@@ -29,8 +29,7 @@ impl EncReading {
     /// Electrical speed, rad/s.
     pub fn omega_e_rad_s(&self, pole_pairs: u32) -> f64 {
         let window_s = f64::from(self.window.max(1)) / f64::from(regmap::PL_CLOCK_HZ);
-        f64::from(self.speed) / f64::from(self.cpr.max(1)) * TAU * f64::from(pole_pairs)
-            / window_s
+        f64::from(self.speed) / f64::from(self.cpr.max(1)) * TAU * f64::from(pole_pairs) / window_s
     }
 }
 
@@ -60,7 +59,10 @@ mod tests {
         pl.set(ENC.addr(&regmap::ENC_POS), 1024);
         pl.set(ENC.addr(&regmap::ENC_SPEED), 0xFFF6); // -10 counts
         let r = Encoder(&mut pl).read().unwrap();
-        assert_eq!((r.pos, r.cpr, r.speed, r.window), (1024, 4096, -10, 100_000));
+        assert_eq!(
+            (r.pos, r.cpr, r.speed, r.window),
+            (1024, 4096, -10, 100_000)
+        );
         // A quarter turn with 7 pole pairs = 1.75 electrical turns.
         assert!((r.theta_e_rad(7, 0) - 0.75 * TAU).abs() < 1e-12);
         // Relative to a zero at 3072: half a turn = 3.5 electrical turns.

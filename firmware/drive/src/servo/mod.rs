@@ -386,7 +386,10 @@ impl Servo {
             omega_e_rad_s: m.omega_e_rad_s,
         };
         if running {
-            if let Some(r) = self.rec.on_period(self.measured.torque_nm, self.transitions) {
+            if let Some(r) = self
+                .rec
+                .on_period(self.measured.torque_nm, self.transitions)
+            {
                 self.torque_ref_nm = r;
             }
         }
@@ -414,11 +417,7 @@ impl Servo {
         Ok(())
     }
 
-    fn mpdtc_step<B: RegisterBus>(
-        &mut self,
-        bus: &mut B,
-        m: &Measurement,
-    ) -> Result<(), BusError> {
+    fn mpdtc_step<B: RegisterBus>(&mut self, bus: &mut B, m: &Measurement) -> Result<(), BusError> {
         let mut core = Mpdtc(&mut *bus);
         let seq = core.seq_status()?;
         // The decision of the last period was applied at this boundary.
@@ -433,7 +432,12 @@ impl Servo {
             return Ok(());
         }
         let ts = self.mpdtc.params.control_period_s;
-        let inp = inputs_from_measurement(m, self.torque_ref_nm, self.mpdtc.params.meas_age_periods, ts);
+        let inp = inputs_from_measurement(
+            m,
+            self.torque_ref_nm,
+            self.mpdtc.params.meas_age_periods,
+            ts,
+        );
         core.write_inputs(&fixed_inputs(&inp, ts))?;
         core.start(self.beat)
     }

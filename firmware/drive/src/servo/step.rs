@@ -169,7 +169,10 @@ mod tests {
         assert!((m.settling_s.unwrap() - 120e-6).abs() < 1e-9, "{m:?}");
         assert_eq!(m.overshoot_percent, 0.0);
         // 2 transitions per leg per 10 us period = 200 k/s (99 periods / 1 ms).
-        assert!((m.switching_per_leg_per_s - 198.0 / 1e-3).abs() < 1e-6, "{m:?}");
+        assert!(
+            (m.switching_per_leg_per_s - 198.0 / 1e-3).abs() < 1e-6,
+            "{m:?}"
+        );
         assert!((m.final_nm - 1.0).abs() < 1e-3);
         assert!((m.window_s - 1e-3).abs() < 1e-12);
     }

@@ -101,7 +101,10 @@ fn foc_step_feeds_the_watchdog_and_writes_duties() {
         .map(|r| pl.get(PWM.addr(r)))
         .collect();
     assert!(d.iter().any(|x| x.abs_diff(1564) > 100), "{d:?}");
-    assert!(pl.writes.iter().any(|(a, _)| *a == PWM.addr(&regmap::DUTY_A)));
+    assert!(pl
+        .writes
+        .iter()
+        .any(|(a, _)| *a == PWM.addr(&regmap::DUTY_A)));
 }
 
 #[test]
@@ -147,10 +150,7 @@ fn mpdtc_step_writes_inputs_and_starts_only_in_sample_after_alignment() {
 fn step_needs_the_gates_on_and_records_one_sample_per_period() {
     let (mut s, mut pl) = setup();
     s.set_mode(&mut pl, Mode::Foc).unwrap();
-    assert_eq!(
-        s.begin_step(&mut pl, 0.4, 2e-3),
-        Err(ServoError::GatesOff)
-    );
+    assert_eq!(s.begin_step(&mut pl, 0.4, 2e-3), Err(ServoError::GatesOff));
     s.enable(&mut pl).unwrap();
     assert!(matches!(
         s.begin_step(&mut pl, 2.0, 2e-3),
@@ -185,8 +185,5 @@ fn a_fault_turns_the_drive_off() {
     pl.set(GATE_CTRL_ADDR, 0);
     s.control_step(&mut pl).unwrap();
     assert!(!s.gates_on(&mut pl).unwrap());
-    assert_eq!(
-        s.begin_step(&mut pl, 0.4, 2e-3),
-        Err(ServoError::GatesOff)
-    );
+    assert_eq!(s.begin_step(&mut pl, 0.4, 2e-3), Err(ServoError::GatesOff));
 }
