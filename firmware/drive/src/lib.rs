@@ -19,5 +19,6 @@ pub mod gates;
 pub mod mpdcc;
 pub mod pmsm;
 pub mod regmap;
+pub mod simpl;
 pub mod validate;
 pub mod zynq;
