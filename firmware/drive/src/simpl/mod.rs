@@ -6,11 +6,18 @@ pub mod adc;
 pub mod core;
 pub mod enc;
 pub mod fault;
+pub mod inverter;
 pub mod pl;
 pub mod pwm;
 pub mod regs;
 pub mod seq;
+pub mod simdrive;
+
+pub use simdrive::{Advance, SimConfig, SimDrive, Truth};
 
 /// "No event ahead" for the closed-form spans (any span is capped by the
 /// cycles asked for).
 pub(crate) const NEVER: u64 = u64::MAX;
+
+#[cfg(test)]
+mod tests;

@@ -234,6 +234,11 @@ impl SimPl {
         self.gates.outputs()
     }
 
+    /// `CTRL.MODE`.
+    pub fn mode(&self) -> u32 {
+        self.r(S_CTRL)
+    }
+
     fn r(&self, s: usize) -> u32 {
         self.regs.get(s)
     }
@@ -437,7 +442,6 @@ impl SimPl {
         if c.fault_any {
             self.regs.v[S_GATE_CTRL] = 0;
         }
-        let _ = c.gate_en;
         self.cycles += 1;
         ev
     }
@@ -496,8 +500,8 @@ impl SimPl {
     }
 
     /// Runs up to `max` cycles without bus accesses; returns after the first
-    /// cycle whose events hit `stop` (with the cycles run and its events),
-    /// or after `max` cycles (with the events of the stepped cycles merged).
+    /// cycle whose events hit `stop`, or after `max` cycles: the cycles run
+    /// and the events of the stepped cycles (merged).
     pub fn run(&mut self, max: u64, stop: &Events) -> (u64, Events) {
         let mut done = 0;
         let mut all = Events::default();
@@ -511,10 +515,10 @@ impl SimPl {
             }
             let ev = self.step(Strobe::None);
             done += 1;
-            if ev.hits(stop) {
-                return (done, ev);
-            }
             all.merge(&ev);
+            if ev.hits(stop) {
+                break;
+            }
         }
         (done, all)
     }
