@@ -23,5 +23,6 @@ pub mod pl;
 pub mod pmsm;
 pub mod regmap;
 pub mod servo;
+pub mod simpl;
 pub mod validate;
 pub mod zynq;
