@@ -14,35 +14,46 @@
 //!   `Servo::control_step`: heartbeat, measurement, FOC or MPDTC inputs.
 //!   A boundary that finds the previous one still pending is an overrun.
 //!   `debug stall` makes it return early (no step, no heartbeat), so the
-//!   PL's watchdog trips while the simulated PL keeps running.
+//!   PL's watchdog trips while the simulated PL keeps running. The stall
+//!   is measured in PL time (the simulated PL's under QEMU: the drive's
+//!   own clock, independent of how fast the host runs the guest); while it
+//!   lasts the console waits, so the PL tick may use the whole CPU.
 use crate::pl;
 use crate::ps::{gic, timer};
 use core::cell::RefCell;
 use drive::bus::{BusError, RegisterBus};
 use drive::console::{Bench, DriveError, DriveOps, DriveStatus, PlKind};
+use drive::pl::adc::AdcScale;
 use drive::pl::fault::Faults;
 use drive::pl::presence::Presence;
 use drive::pl::top::Mode;
 use drive::servo::{Servo, ServoConfig, ServoError, StepResult};
+use drive::simpl::{SimConfig, SimDrive};
 
 /// Software-generated interrupt of the control step.
 pub const SGI_CONTROL: u32 = 1;
 
 /// What answers the drivers' register accesses.
+// The state lives in one static (no heap): the size difference is the point.
+#[allow(clippy::large_enum_variant)]
 enum Backend {
     /// Our bitstream behind GP0.
     Gp0(pl::Gp0),
+    /// No bitstream: the simulated PL and motor (`drive::simpl`).
+    Sim(SimDrive),
 }
 
 impl RegisterBus for Backend {
     fn read(&mut self, addr: usize) -> Result<u32, BusError> {
         match self {
             Backend::Gp0(b) => b.read(addr),
+            Backend::Sim(b) => b.read(addr),
         }
     }
     fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
         match self {
             Backend::Gp0(b) => b.write(addr, value),
+            Backend::Sim(b) => b.write(addr, value),
         }
     }
 }
@@ -53,10 +64,13 @@ struct State {
     pl: PlKind,
     /// The control interrupt was raised and has not run yet.
     control_pending: bool,
-    /// Uptime until which the control step is skipped (`debug stall`), us.
-    stall_until_us: u64,
+    /// PL time until which the control step is skipped (`debug stall`),
+    /// PL clock cycles (simulated PL) or uptime us (bitstream).
+    stall_until: u64,
     /// Global-timer count at the start of the current PL tick.
     tick_start: u64,
+    /// Uptime when the simulated PL started, us.
+    sim_start_us: u64,
 }
 
 /// The drive state, touched only with IRQs masked (one core).
@@ -81,14 +95,23 @@ pub struct Boot {
 pub fn init() -> Boot {
     let sts = pl::devcfg_int_sts();
     let presence = pl::detect();
-    let cfg = ServoConfig::default();
-    let servo = Servo::new(&cfg).expect("default servo configuration");
+    let mut cfg = ServoConfig::default();
     let (pl_kind, bus) = match presence {
         Presence::Ours { version } => (PlKind::Bitstream(version), Some(Backend::Gp0(pl::Gp0))),
+        // No bitstream: the simulated PL (the paper's motor, held at
+        // standstill), read through the same drivers.
+        Presence::Unconfigured => {
+            let sim = SimDrive::new(&SimConfig::default()).expect("paper motor parameters");
+            cfg.motor = sim.config().motor;
+            cfg.adc = AdcScale {
+                amps_per_count: sim.config().adc_amps_per_count,
+            };
+            (PlKind::Simulated, Some(Backend::Sim(sim)))
+        }
         _ => (PlKind::Absent, None),
     };
     if let Some(mut bus) = bus {
-        let mut servo = servo;
+        let mut servo = Servo::new(&cfg).expect("servo configuration");
         if servo.init(&mut bus).is_ok() {
             cortex_ar::interrupt::free(|| {
                 *STATE.0.borrow_mut() = Some(State {
@@ -96,8 +119,9 @@ pub fn init() -> Boot {
                     bus,
                     pl: pl_kind,
                     control_pending: false,
-                    stall_until_us: 0,
+                    stall_until: 0,
                     tick_start: 0,
+                    sim_start_us: timer::uptime_us(),
                 });
             });
             gic::enable(gic::IRQ_GLOBAL_TIMER);
@@ -112,8 +136,8 @@ pub fn init() -> Boot {
 }
 
 /// PL clock cycles of one control period of the active mode.
-fn period_cycles(s: &State) -> u64 {
-    (f64::from(drive::regmap::PL_CLOCK_HZ) / s.servo.control_rate_hz()) as u64
+fn period_cycles(servo: &Servo) -> u64 {
+    (f64::from(drive::regmap::PL_CLOCK_HZ) / servo.control_rate_hz()) as u64
 }
 
 /// Global-timer counts of `cycles` PL clock cycles at real-time speed.
@@ -127,9 +151,22 @@ pub fn on_pl_tick() {
     let now = timer::global_count();
     let raise = with(|s| {
         s.tick_start = now;
-        if s.control_pending {
-            s.servo.note_overruns(1);
+        let boundaries = match &mut s.bus {
+            // Up to the next control-period boundary (at most two periods).
+            Backend::Sim(sim) => {
+                sim.advance_to_boundary(2 * period_cycles(&s.servo))
+                    .control_periods
+            }
+            // The bitstream's PL runs on its own: the tick is the control rate.
+            Backend::Gp0(_) => 1,
+        };
+        if boundaries == 0 {
+            return false;
         }
+        // Boundaries the control step did not see: the previous one still
+        // pending, or more than one crossed in this tick.
+        let missed = u64::from(s.control_pending) + u64::from(boundaries - 1);
+        s.servo.note_overruns(missed);
         s.control_pending = true;
         true
     })
@@ -143,19 +180,43 @@ pub fn on_pl_tick() {
 
 /// The control interrupt.
 pub fn on_control() {
-    let now_us = timer::uptime_us();
     with(|s| {
         s.control_pending = false;
-        if now_us >= s.stall_until_us {
+        let stalled = s.stalled();
+        if !stalled {
             // A bus error leaves the gates to the PL's own fault logic.
             let _ = s.servo.control_step(&mut s.bus);
         }
         let end = timer::global_count();
         let busy = end.saturating_sub(s.tick_start);
-        let nominal = guest_counts(period_cycles(s));
-        // At most about half of the CPU for the PL and the control step.
-        timer::set_compare(s.tick_start + nominal.max(2 * busy));
+        let nominal = guest_counts(period_cycles(&s.servo));
+        // At most about half of the CPU for the PL and the control step,
+        // all of it during a stall (the console waits for its end).
+        let share = if stalled { busy } else { 2 * busy };
+        timer::set_compare(s.tick_start + nominal.max(share));
     });
+}
+
+impl State {
+    /// PL time now: cycles of the simulated PL, or uptime in us.
+    fn pl_now(&self) -> u64 {
+        match &self.bus {
+            Backend::Sim(sim) => sim.pl_cycles(),
+            Backend::Gp0(_) => timer::uptime_us(),
+        }
+    }
+    /// PL time after `ms` milliseconds from now.
+    fn pl_after_ms(&self, ms: u32) -> u64 {
+        let per_ms = match &self.bus {
+            Backend::Sim(_) => u64::from(drive::regmap::PL_CLOCK_HZ / 1000),
+            Backend::Gp0(_) => 1000,
+        };
+        self.pl_now() + u64::from(ms) * per_ms
+    }
+    /// Inside a `debug stall`.
+    fn stalled(&self) -> bool {
+        self.pl_now() < self.stall_until
+    }
 }
 
 /// The console's handle on the drive.
@@ -220,12 +281,11 @@ impl DriveOps for FwDrive {
         run(|s| s.servo.clear_faults(&mut s.bus))
     }
     fn stall(&mut self, ms: u32) -> Result<(), DriveError> {
-        let until = timer::uptime_us() + u64::from(ms) * 1000;
         run(|s| {
-            s.stall_until_us = until;
+            s.stall_until = s.pl_after_ms(ms);
             Ok(())
         })?;
-        while timer::uptime_us() < until {
+        while with(|s| s.stalled()).unwrap_or(false) {
             wait();
         }
         Ok(())
@@ -241,7 +301,13 @@ impl DriveOps for FwDrive {
             periods: s.servo.periods(),
             overruns: s.servo.overruns(),
             pl: s.pl,
-            sim_time_scale: None,
+            sim_time_scale: match &s.bus {
+                Backend::Sim(sim) => {
+                    let guest_s = (timer::uptime_us() - s.sim_start_us) as f64 * 1e-6;
+                    Some(sim.sim_time_scale(guest_s))
+                }
+                Backend::Gp0(_) => None,
+            },
         })
         .unwrap_or(DriveStatus {
             mode: Mode::Off,

@@ -72,8 +72,9 @@ pub const COMMANDS: &[Spec] = &[
         name: "debug",
         args: "panic|stall <ms>|bench",
         help: "diagnostics: `panic` forces a firmware panic (gates off, message, halt); \
-               `stall <ms>` stops the control loop and heartbeat; `bench` counts guest \
-               instructions of the control steps",
+               `stall <ms>` stops the control loop and heartbeat for <ms> of PL time (the \
+               simulated PL's under QEMU); `bench` counts guest instructions of the control \
+               code",
     },
 ];
 

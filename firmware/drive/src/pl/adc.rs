@@ -49,6 +49,13 @@ impl<B: RegisterBus> Adc<B> {
     pub fn set_period(&mut self, cycles: u32) -> Result<(), BusError> {
         wr(&mut self.0, &ADC, &regmap::ADC_PERIOD, cycles)
     }
+    /// Restarts the sample timer (`ADC_CTRL.ENABLE` 0 then 1): called right
+    /// after a PWM period start, the conversions take a fixed phase to the
+    /// PWM (the PL has no ADC trigger from the PWM counter).
+    pub fn restart(&mut self) -> Result<(), BusError> {
+        wr(&mut self.0, &ADC, &regmap::ADC_CTRL, 0)?;
+        wr(&mut self.0, &ADC, &regmap::ADC_CTRL, 1)
+    }
     /// Cycles between conversion starts, as stored.
     pub fn period(&mut self) -> Result<u32, BusError> {
         rd(&mut self.0, &ADC, &regmap::ADC_PERIOD)

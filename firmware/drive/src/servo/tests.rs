@@ -187,3 +187,27 @@ fn a_fault_turns_the_drive_off() {
     assert!(!s.gates_on(&mut pl).unwrap());
     assert_eq!(s.begin_step(&mut pl, 0.4, 2e-3), Err(ServoError::GatesOff));
 }
+
+#[test]
+fn foc_measurement_lag_by_hand() {
+    // Restart 4 cycles after the start: conversions at 4 + 391 j; the last
+    // before 6256 is j = 15 (5869), 387 cycles old; mean 1.5 x 391 older.
+    let lag = foc_measurement_lag_s(&ServoConfig::default());
+    assert!((lag - (387.0 + 586.5) * 1e-8).abs() < 1e-15, "{lag}");
+}
+
+#[test]
+fn turning_the_gates_off_returns_the_reference_to_zero() {
+    let (mut s, mut pl) = setup();
+    s.set_mode(&mut pl, Mode::Foc).unwrap();
+    // Set while off: kept for the run.
+    s.set_torque_ref(0.3).unwrap();
+    s.enable(&mut pl).unwrap();
+    assert_eq!(s.torque_ref_nm(), 0.3);
+    s.disable(&mut pl).unwrap();
+    assert_eq!(s.torque_ref_nm(), 0.0);
+    s.enable(&mut pl).unwrap();
+    s.set_torque_ref(0.2).unwrap();
+    s.set_mode(&mut pl, Mode::Mpdtc).unwrap();
+    assert_eq!(s.torque_ref_nm(), 0.0);
+}
