@@ -153,6 +153,84 @@ pub fn restart_adc_timer<B: RegisterBus>(bus: &mut B) -> Result<(), BusError> {
     wr(bus, &ADC, &rm::ADC_CTRL, 1)
 }
 
+/// Timing of the PL for the two loops, PL clock cycles.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PlTiming {
+    /// ADC_PERIOD: 391 = 255.75 kHz (the paper's 256 kHz within 0.1 %); the
+    /// MPDTC control period is 4 of them (63.94 kHz).
+    pub adc_period: u32,
+    /// PWM_PERIOD (half period): 3128 = 15.985 kHz, exactly 16 ADC periods,
+    /// so the ADC keeps its phase to the PWM (the paper's FOC: 16 kHz).
+    pub pwm_period: u32,
+    /// DEAD_TIME: 10 = 100 ns.
+    pub dead_time: u32,
+}
+
+impl Default for PlTiming {
+    fn default() -> Self {
+        Self {
+            adc_period: 391,
+            pwm_period: 3128,
+            dead_time: 10,
+        }
+    }
+}
+
+impl PlTiming {
+    /// MPDTC control period (4 ADC periods), s.
+    pub fn mpdtc_period_s(&self) -> f64 {
+        4.0 * f64::from(self.adc_period) / f64::from(rm::PL_CLOCK_HZ)
+    }
+
+    /// FOC control (= PWM) period, s.
+    pub fn foc_period_s(&self) -> f64 {
+        2.0 * f64::from(self.pwm_period) / f64::from(rm::PL_CLOCK_HZ)
+    }
+
+    /// Age, at a PWM period start, of the mean of the 4 ADC samples averaged
+    /// last, s, after [`restart_adc_timer`] at a period start: conversions
+    /// at start + 4 + j ADC_PERIOD (2 register writes, then the timer's
+    /// pulse), the newest of the period's last 4 is
+    /// `2 PWM_PERIOD - 4 - (n - 1) ADC_PERIOD` cycles old at the next start
+    /// (n = samples per PWM period), their mean 1.5 ADC periods older. The
+    /// FOC propagates its measurement over this lag.
+    pub fn foc_measurement_lag_s(&self) -> f64 {
+        let per = 2 * self.pwm_period;
+        let n = (per / self.adc_period.max(1)).max(1);
+        let newest = per.saturating_sub(4 + (n - 1) * self.adc_period);
+        (f64::from(newest) + 1.5 * f64::from(self.adc_period)) / f64::from(rm::PL_CLOCK_HZ)
+    }
+}
+
+/// Prepares mode MPDTC with the control sequence (gates still off): core
+/// parameters, ADC period, dead time, alignment time (cycles), core state
+/// released, MANUAL off, CTRL.MODE = MPDTC. `GATE_CTRL` = 1 then starts
+/// the sequence (alignment, then one decision per ADC average).
+pub fn setup_mpdtc<B: RegisterBus>(
+    bus: &mut B,
+    p: &FixedParams,
+    t: &PlTiming,
+    align_time_cycles: u32,
+) -> Result<(), BusError> {
+    mpdtc_load_params(bus, p)?;
+    wr(bus, &ADC, &rm::ADC_PERIOD, t.adc_period)?;
+    wr(bus, &PWM, &rm::DEAD_TIME, t.dead_time)?;
+    wr(bus, &MPDTC, &rm::MPDTC_ALIGN_TIME, align_time_cycles)?;
+    wr(bus, &MPDTC, &rm::MPDTC_CTRL, 0)?;
+    wr(bus, &rm::TOP, &rm::CTRL, rm::mode::MPDTC)
+}
+
+/// Prepares mode FOC-PWM (gates still off): ADC and PWM periods, 50 %
+/// duties, dead time, CTRL.MODE = FOC-PWM. Call [`restart_adc_timer`] right
+/// after a PWM period start before the first FOC step.
+pub fn setup_foc<B: RegisterBus>(bus: &mut B, t: &PlTiming) -> Result<(), BusError> {
+    wr(bus, &ADC, &rm::ADC_PERIOD, t.adc_period)?;
+    wr(bus, &PWM, &rm::PWM_PERIOD, t.pwm_period)?;
+    write_duties(bus, [0.5; 3], t.pwm_period)?;
+    wr(bus, &PWM, &rm::DEAD_TIME, t.dead_time)?;
+    wr(bus, &rm::TOP, &rm::CTRL, rm::mode::FOC_PWM)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -164,5 +242,15 @@ mod tests {
         assert_eq!(duty_counts(-0.1, 3128), 0);
         assert_eq!(duty_counts(f64::NAN, 3128), 0);
         assert_eq!(duty_counts(0.25, 2), 1);
+    }
+
+    #[test]
+    fn default_timing_by_hand() {
+        let t = PlTiming::default();
+        assert!((t.mpdtc_period_s() - 15.64e-6).abs() < 1e-12);
+        assert!((t.foc_period_s() - 62.56e-6).abs() < 1e-12);
+        // 16 samples per PWM period; newest 6256 - 4 - 15 x 391 = 387
+        // cycles old, mean 586.5 cycles older: 973.5 cycles.
+        assert!((t.foc_measurement_lag_s() - 9.735e-6).abs() < 1e-12);
     }
 }

@@ -198,6 +198,10 @@ pub struct SimPl {
     cycles: u64,
     /// Pin levels applied from the next cycle on.
     pub pins: Pins,
+    /// Cycles simulated one by one (events and bus accesses).
+    pub stepped: u64,
+    /// Quiet spans jumped over in closed form.
+    pub skips: u64,
 }
 
 impl SimPl {
@@ -221,6 +225,8 @@ impl SimPl {
             core_done: 0,
             cycles: 0,
             pins: Pins::default(),
+            stepped: 0,
+            skips: 0,
         }
     }
 
@@ -443,6 +449,7 @@ impl SimPl {
             self.regs.v[S_GATE_CTRL] = 0;
         }
         self.cycles += 1;
+        self.stepped += 1;
         ev
     }
 
@@ -497,6 +504,7 @@ impl SimPl {
         self.seq.skip(k);
         self.core.skip(k);
         self.cycles += k;
+        self.skips += 1;
     }
 
     /// Runs up to `max` cycles without bus accesses; returns after the first

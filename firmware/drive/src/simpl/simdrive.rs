@@ -135,6 +135,18 @@ pub struct Truth {
     pub transitions: [u64; 3],
 }
 
+/// What the simulation has cost so far (for estimating its run time on a
+/// slower machine, e.g. the firmware under QEMU).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Work {
+    /// PL cycles simulated one by one (events and register accesses).
+    pub stepped_cycles: u64,
+    /// Quiet spans jumped over in closed form.
+    pub skips: u64,
+    /// Plant segments (closed-form ZOH evaluations).
+    pub plant_segments: u64,
+}
+
 /// Simulated `pl_top` + inverter + PMSM + ADC/encoder chain.
 #[derive(Debug, Clone)]
 pub struct SimDrive {
@@ -149,6 +161,7 @@ pub struct SimDrive {
     enc_count: i64,
     transitions: [u64; 3],
     carried: Advance,
+    segments: u64,
 }
 
 impl SimDrive {
@@ -166,6 +179,7 @@ impl SimDrive {
             enc_count: 0,
             transitions: [0; 3],
             carried: Advance::default(),
+            segments: 0,
         };
         s.update_encoder_pins();
         Ok(s)
@@ -195,6 +209,15 @@ impl SimDrive {
             guest_s / t
         } else {
             0.0
+        }
+    }
+
+    /// Work done so far.
+    pub fn work(&self) -> Work {
+        Work {
+            stepped_cycles: self.pl.stepped,
+            skips: self.pl.skips,
+            plant_segments: self.segments,
         }
     }
 
@@ -338,6 +361,7 @@ impl SimDrive {
             }
             self.theta_m_rad += st.omega_e_rad_s * h / self.cfg.motor.pole_pairs as f64;
             self.lag -= seg;
+            self.segments += 1;
         }
         self.update_encoder_pins();
     }
