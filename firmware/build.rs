@@ -28,10 +28,21 @@ fn main() {
         env::var("PROFILE").unwrap()
     );
     // Re-run when HEAD moves (a commit, a checkout) or the index changes.
-    for f in [".git/HEAD", ".git/index"] {
-        if root.join(f).exists() {
-            println!("cargo:rerun-if-changed={}", root.join(f).display());
-        }
+    // In a worktree `.git` is a file: ask git where HEAD, the index and the
+    // branch's ref live.
+    let git_dir = git(&["rev-parse", "--absolute-git-dir"]).map(PathBuf::from);
+    let common =
+        git(&["rev-parse", "--path-format=absolute", "--git-common-dir"]).map(PathBuf::from);
+    let head_ref = git(&["rev-parse", "--symbolic-full-name", "HEAD"]);
+    let mut watch: Vec<PathBuf> = Vec::new();
+    if let Some(d) = &git_dir {
+        watch.extend([d.join("HEAD"), d.join("index")]);
+    }
+    if let (Some(c), Some(r)) = (&common, &head_ref) {
+        watch.extend([c.join(r), c.join("packed-refs")]);
+    }
+    for f in watch.iter().filter(|f| f.exists()) {
+        println!("cargo:rerun-if-changed={}", f.display());
     }
 
     // The board file is the one source of the PS clocks the firmware assumes.

@@ -1,8 +1,8 @@
 //! Boot sequence, interrupt dispatch and the console loop.
 use crate::ps::{gic, timer, uart::Uart};
-use crate::{log, pl, rx::Ring};
+use crate::{control, log, pl, rx::Ring};
 use core::sync::atomic::{AtomicBool, AtomicU32, Ordering};
-use drive::console::{self, Action, Context, LineEditor, Status, PROMPT};
+use drive::console::{self, Action, Context, LineEditor, PlKind, Status, PROMPT};
 
 /// Console and log line settings.
 const BAUD: u32 = 115_200;
@@ -44,6 +44,7 @@ fn main() -> ! {
     gic::init();
     gic::enable(gic::IRQ_PRIVATE_TIMER);
     gic::enable(gic::IRQ_UART1);
+    let boot = control::init();
     let load = drive::zynq::private_timer_load(timer::PERIPHCLK_HZ, TICK_HZ).expect("tick rate");
     timer::start_private(load);
     // SAFETY: handlers and their data are ready; not inside a critical section.
@@ -55,21 +56,29 @@ fn main() -> ! {
         env!("FW_GIT_HASH")
     );
     let mut con = CONSOLE;
-    banner(&mut con);
+    banner(&mut con, &boot);
     run_console(&mut con)
 }
 
-fn banner(con: &mut Uart) {
+fn banner(con: &mut Uart, boot: &control::Boot) {
     use core::fmt::Write;
     let _ = write!(
         con,
-        "\r\npredictive servo drive, firmware {} (git {}, {})\r\n\
-         console on UART1 at {} 8N1; defmt log on UART0; type `help`\r\n{}",
+        "\r\npredictive servo drive, firmware {} (git {}, {})\r\n",
         env!("CARGO_PKG_VERSION"),
         env!("FW_GIT_HASH"),
         env!("FW_PROFILE"),
-        BAUD,
-        PROMPT
+    );
+    let _ = match boot.pl {
+        PlKind::Simulated => write!(con, "pl: simulated"),
+        PlKind::Bitstream(v) => write!(con, "pl: bitstream v{}.{}", v >> 16, v & 0xFFFF),
+        PlKind::Absent => write!(con, "pl: absent"),
+    };
+    let _ = write!(
+        con,
+        " (devcfg INT_STS 0x{:08x})\r\n\
+         console on UART1 at {} 8N1; defmt log on UART0; type `help`\r\n{}",
+        boot.devcfg_int_sts, BAUD, PROMPT
     );
 }
 
@@ -90,7 +99,7 @@ fn run_console(con: &mut Uart) -> ! {
                     Ok(cmd) => {
                         defmt::info!("console: {=str}", line);
                         let ctx = context(lines, errors);
-                        match console::execute(cmd, &ctx, con) {
+                        match console::execute(cmd, &ctx, &mut control::FwDrive, con) {
                             Ok(Action::Panic) => panic!("`debug panic` requested on the console"),
                             _ => true,
                         }
@@ -116,7 +125,6 @@ fn run_console(con: &mut Uart) -> ! {
 }
 
 fn context(lines: u32, errors: u32) -> Context {
-    let (pl_id, pl_version) = pl::id_and_version();
     Context {
         version: env!("CARGO_PKG_VERSION"),
         git_hash: env!("FW_GIT_HASH"),
@@ -128,9 +136,6 @@ fn context(lines: u32, errors: u32) -> Context {
             lines,
             errors,
             rx_overruns: RX.overruns.load(Ordering::Relaxed),
-            gates_enabled: pl::gates_enabled(),
-            pl_id,
-            pl_version,
         },
     }
 }
@@ -167,6 +172,8 @@ fn irq_handler() {
                 timer::ack_private();
                 TICKS.fetch_add(1, Ordering::Relaxed);
             }
+            gic::IRQ_GLOBAL_TIMER => control::on_pl_tick(),
+            control::SGI_CONTROL => control::on_control(),
             gic::IRQ_UART1 => {
                 let isr = CONSOLE.take_isr();
                 if isr & crate::ps::uart::ISR_ROVR != 0 {

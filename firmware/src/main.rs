@@ -12,6 +12,10 @@ mod app;
 #[cfg(target_os = "none")]
 mod board;
 #[cfg(target_os = "none")]
+mod bench;
+#[cfg(target_os = "none")]
+mod control;
+#[cfg(target_os = "none")]
 mod log;
 #[cfg(target_os = "none")]
 mod panic;

@@ -1,43 +1,62 @@
-//! The PL as the PS sees it: AXI GP0 register pages (see docs/register-map.md),
-//! reached through the typed accessors of `drive::regs` over [`Mmio`].
+//! The PL as the PS sees it: devcfg (is it configured?) and the AXI GP0
+//! register pages (docs/register-map.md) as a `RegisterBus`.
 //!
-//! Under QEMU the PL window reads 0 and drops writes, so the gates read as
-//! off (the safe state), which is also the reset state of the real PL.
+//! GP0 is touched only after `drive::pl::presence` found our bitstream:
+//! on a real Zynq an access to an unconfigured PL hangs the bus. The panic
+//! handler's gate write obeys the same rule ([`gates_safe`]).
+use core::sync::atomic::{AtomicBool, Ordering};
 use drive::bus::{BusError, RegisterBus};
-use drive::regs::{pwm, top};
+use drive::pl::presence::{self, Presence};
+use drive::regmap;
+use volatile_register::RW;
 
-/// The PL window on GP0: one volatile 32-bit load or store per access.
-pub struct Mmio;
+/// Set once presence detection found our bitstream behind GP0.
+static GP0_OK: AtomicBool = AtomicBool::new(false);
 
-impl RegisterBus for Mmio {
+fn reg(addr: usize) -> &'static RW<u32> {
+    // SAFETY: callers pass the address of a 32-bit device register.
+    unsafe { &*(addr as *const RW<u32>) }
+}
+
+/// devcfg `INT_STS` (a PS register: always safe to read).
+pub fn devcfg_int_sts() -> u32 {
+    reg(presence::DEVCFG_INT_STS).read()
+}
+
+/// Decides what is in the PL; GP0 is read only when devcfg says the PL is
+/// configured. Remembers whether GP0 may be used from now on.
+pub fn detect() -> Presence {
+    let p = presence::detect(devcfg_int_sts(), &mut Gp0);
+    GP0_OK.store(p.usable(), Ordering::Release);
+    p
+}
+
+/// GP0 as a register bus (volatile 32-bit accesses).
+pub struct Gp0;
+
+impl RegisterBus for Gp0 {
     fn read(&mut self, addr: usize) -> Result<u32, BusError> {
-        // SAFETY: every caller passes an address generated from the register
-        // map: a word-aligned 32-bit register inside the PL window.
-        Ok(unsafe { core::ptr::read_volatile(addr as *const u32) })
+        if regmap::lookup(addr).is_none() {
+            return Err(BusError::SlaveError);
+        }
+        Ok(reg(addr).read())
     }
     fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
-        // SAFETY: as for `read`.
-        unsafe { core::ptr::write_volatile(addr as *mut u32, value) };
+        if regmap::lookup(addr).is_none() {
+            return Err(BusError::SlaveError);
+        }
+        // SAFETY: a register of the map; the drivers decide the values.
+        unsafe { reg(addr).write(value) };
         Ok(())
     }
 }
 
-/// Turns every gate off (clears `GATE_EN`). Safe to call from any context,
-/// including the panic handler: one store, no read-modify-write.
+/// Turns every gate of a configured PL off (clears `GATE_EN`): one store, no
+/// read-modify-write, safe from any context including the panic handler.
+/// Does nothing before presence detection or without our bitstream.
 pub fn gates_safe() {
-    // Writing 0 disables all gates; no other bit has a side effect. `Mmio`
-    // cannot fail.
-    let _ = pwm::GateCtrl::write(&mut Mmio, pwm::GateCtrlValue::ZERO);
-}
-
-/// Whether the gate-enable bit is set.
-pub fn gates_enabled() -> bool {
-    pwm::GateCtrl::read(&mut Mmio).is_ok_and(|v| v.gate_en())
-}
-
-/// The PL's `ID` and `VERSION` registers (both read 0 without a bitstream).
-pub fn id_and_version() -> (u32, u32) {
-    let id = top::Id::read(&mut Mmio).map_or(0, |v| v.bits());
-    let version = top::Version::read(&mut Mmio).map_or(0, |v| v.bits());
-    (id, version)
+    if GP0_OK.load(Ordering::Acquire) {
+        // SAFETY: writing 0 disables all gates; no other bit has a side effect.
+        unsafe { reg(regmap::GATE_CTRL_ADDR).write(0) };
+    }
 }

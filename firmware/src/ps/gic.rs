@@ -9,6 +9,7 @@ const ICDDCR: usize = 0x000;
 const ICDISER: usize = 0x100;
 const ICDIPR: usize = 0x400;
 const ICDIPTR: usize = 0x800;
+const ICDSGIR: usize = 0xF00;
 // CPU interface offsets.
 const ICCICR: usize = 0x00;
 const ICCPMR: usize = 0x04;
@@ -17,6 +18,8 @@ const ICCEOIR: usize = 0x10;
 
 /// Interrupt IDs (UG585 table 7-3).
 pub const IRQ_PRIVATE_TIMER: u32 = 29;
+/// Global timer comparator.
+pub const IRQ_GLOBAL_TIMER: u32 = 27;
 pub const IRQ_UART1: u32 = 82;
 /// What ICCIAR returns when nothing is pending.
 pub const SPURIOUS: u32 = 1023;
@@ -63,4 +66,10 @@ pub fn acknowledge() -> u32 {
 pub fn end(iar: u32) {
     // SAFETY: writing back the acknowledged value.
     unsafe { reg(CPU + ICCEOIR).write(iar) };
+}
+
+/// Raises software-generated interrupt `id` (0..=15) on this CPU.
+pub fn send_sgi_self(id: u32) {
+    // SAFETY: TargetListFilter = 0b10 (the requesting CPU only), SGI id.
+    unsafe { reg(DIST + ICDSGIR).write(0b10 << 24 | (id & 0xF)) };
 }

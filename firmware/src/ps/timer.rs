@@ -35,6 +35,32 @@ pub fn uptime_us() -> u64 {
     global_count() / u64::from(PERIPHCLK_HZ / 1_000_000)
 }
 
+/// Raises the global timer's interrupt (IRQ 27) once the count reaches
+/// `count` (at once if it already has): comparator mode, no auto-increment.
+pub fn set_compare(count: u64) {
+    // SAFETY: documented sequence: comparator off, value, stale event
+    // cleared, then timer enable | comparator enable | IRQ enable.
+    unsafe {
+        reg(GLOBAL + 0x08).write(1);
+        reg(GLOBAL + 0x10).write(count as u32);
+        reg(GLOBAL + 0x14).write((count >> 32) as u32);
+        reg(GLOBAL + 0x0C).write(1);
+        reg(GLOBAL + 0x08).write(0b111);
+    }
+}
+
+/// Stops the comparator and clears its event flag. The comparator must be
+/// off first: while the count is past the comparator the event flag sets
+/// again at once (QEMU re-evaluates on the clear), and the interrupt would
+/// fire back to back.
+pub fn ack_compare() {
+    // SAFETY: comparator off (timer stays enabled), then write-one-to-clear.
+    unsafe {
+        reg(GLOBAL + 0x08).write(1);
+        reg(GLOBAL + 0x0C).write(1);
+    }
+}
+
 /// Starts the private timer: auto-reload, interrupt every `load + 1` cycles.
 pub fn start_private(load: u32) {
     // SAFETY: documented values: load, then enable | auto-reload | IRQ enable.

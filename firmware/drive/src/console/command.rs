@@ -3,7 +3,9 @@
 //! The table [`COMMANDS`] is the single source of `help` and of the parser's
 //! list of names, so a command cannot exist without its help line.
 
+use super::drive::{self, DriveOps};
 use super::{write_err, ErrorCode};
+use crate::pl::top::Mode;
 use core::fmt::{self, Write};
 
 /// One console command: its name, its arguments (with units) and what it does.
@@ -31,18 +33,53 @@ pub const COMMANDS: &[Spec] = &[
     Spec {
         name: "status",
         args: "",
-        help:
-            "uptime [s], timer ticks [count] and rate [Hz], console counters, gates, PL bitstream",
+        help: "uptime [s], ticks, console counters, then the drive: mode, gates, fault, torque \
+               [Nm], i_d/i_q [A], speed [rad/s], control rate [Hz], periods, overruns, PL",
+    },
+    Spec {
+        name: "mode",
+        args: "[off|foc|mpdtc]",
+        help: "print or set the control mode; any change turns the gates off",
+    },
+    Spec {
+        name: "enable",
+        args: "",
+        help: "gates on (refused in mode off or with a fault latched)",
+    },
+    Spec {
+        name: "disable",
+        args: "",
+        help: "gates off",
+    },
+    Spec {
+        name: "torque",
+        args: "[<Nm>]",
+        help: "print or set the torque reference [Nm] (|x| <= the limit, 1.0 Nm)",
+    },
+    Spec {
+        name: "step",
+        args: "<Nm> [<window_ms>]",
+        help: "torque step from the reference to <Nm>, torque sampled at the control rate for \
+               the window [ms] (default 2, at most 20); prints settling [ms], overshoot [%], \
+               switching [kHz], final [Nm]",
+    },
+    Spec {
+        name: "fault",
+        args: "[clear]",
+        help: "list the latched faults, or clear them (the gates stay off until `enable`)",
     },
     Spec {
         name: "debug",
-        args: "panic",
-        help: "diagnostics: `debug panic` forces a firmware panic (gates off, message, halt)",
+        args: "panic|stall <ms>|bench",
+        help: "diagnostics: `panic` forces a firmware panic (gates off, message, halt); \
+               `stall <ms>` stops the control loop and heartbeat for <ms> of PL time (the \
+               simulated PL's under QEMU); `bench` counts guest instructions of the control \
+               code",
     },
 ];
 
 /// A parsed command line.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Command<'a> {
     /// `help [command]`.
     Help(Option<&'a str>),
@@ -52,6 +89,37 @@ pub enum Command<'a> {
     Status,
     /// `debug panic`.
     DebugPanic,
+    /// `mode [m]`.
+    Mode(Option<Mode>),
+    /// `enable`.
+    Enable,
+    /// `disable`.
+    Disable,
+    /// `torque [Nm]` (the number is checked against the limit by the drive).
+    Torque(Option<f64>),
+    /// `step <Nm> [<window_ms>]`, window in seconds.
+    Step(f64, f64),
+    /// `fault`.
+    Fault,
+    /// `fault clear`.
+    FaultClear,
+    /// `debug stall <ms>`.
+    DebugStall(u32),
+    /// `debug bench`.
+    DebugBench,
+}
+
+/// Default `step` window, s.
+pub const STEP_WINDOW_DEFAULT_S: f64 = 2e-3;
+/// Longest `step` window, s (the recorder holds 1280 samples: 20 ms at 64 kHz).
+pub const STEP_WINDOW_MAX_S: f64 = 20e-3;
+/// Longest `debug stall`, ms.
+pub const STALL_MAX_MS: u32 = 10_000;
+
+/// A number argument: decimal, finite (NaN and infinities are refused here,
+/// the limit is the drive's).
+fn number(s: &str) -> Option<f64> {
+    s.parse::<f64>().ok().filter(|x| x.is_finite())
 }
 
 /// Why a line is not a valid command.
@@ -87,12 +155,6 @@ pub struct Status {
     pub errors: u32,
     /// Received bytes lost because the receive buffer was full.
     pub rx_overruns: u32,
-    /// Whether the PL gate-enable bit is set (false = safe state).
-    pub gates_enabled: bool,
-    /// PL `ID` register (`regmap::ID_VALUE` when our bitstream is loaded).
-    pub pl_id: u32,
-    /// PL `VERSION` register (register-map version, major.minor).
-    pub pl_version: u32,
 }
 
 /// What the commands need to know about the firmware.
@@ -147,7 +209,67 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
         "status" => no_args(Command::Status, "status"),
         "debug" => match args.as_slice() {
             ["panic"] => Ok(Command::DebugPanic),
-            _ => Err(ParseError::BadArgs("debug", "expected `debug panic`")),
+            ["bench"] => Ok(Command::DebugBench),
+            ["stall", ms] => match ms.parse::<u32>() {
+                Ok(ms) if (1..=STALL_MAX_MS).contains(&ms) => Ok(Command::DebugStall(ms)),
+                _ => Err(ParseError::BadArgs(
+                    "debug",
+                    "stall takes a whole number of ms in 1..=10000",
+                )),
+            },
+            _ => Err(ParseError::BadArgs(
+                "debug",
+                "expected `debug panic`, `debug stall <ms>` or `debug bench`",
+            )),
+        },
+        "mode" => match args.as_slice() {
+            [] => Ok(Command::Mode(None)),
+            [m] => Mode::from_name(m)
+                .map(|m| Command::Mode(Some(m)))
+                .ok_or(ParseError::BadArgs("mode", "expected off, foc or mpdtc")),
+            _ => Err(ParseError::BadArgs("mode", "takes at most one argument")),
+        },
+        "enable" => no_args(Command::Enable, "enable"),
+        "disable" => no_args(Command::Disable, "disable"),
+        "torque" => match args.as_slice() {
+            [] => Ok(Command::Torque(None)),
+            [x] => number(x)
+                .map(|x| Command::Torque(Some(x)))
+                .ok_or(ParseError::BadArgs(
+                    "torque",
+                    "expected a finite number [Nm]",
+                )),
+            _ => Err(ParseError::BadArgs("torque", "takes at most one argument")),
+        },
+        "step" => {
+            let (nm, w) = match args.as_slice() {
+                [nm] => (*nm, None),
+                [nm, w] => (*nm, Some(*w)),
+                _ => return Err(ParseError::BadArgs("step", "expected <Nm> [<window_ms>]")),
+            };
+            let nm =
+                number(nm).ok_or(ParseError::BadArgs("step", "expected a finite torque [Nm]"))?;
+            let w = match w {
+                None => STEP_WINDOW_DEFAULT_S,
+                Some(w) => match number(w) {
+                    Some(ms) if ms > 0.0 && ms * 1e-3 <= STEP_WINDOW_MAX_S => ms * 1e-3,
+                    _ => {
+                        return Err(ParseError::BadArgs(
+                            "step",
+                            "window must be a number of ms in (0, 20]",
+                        ))
+                    }
+                },
+            };
+            Ok(Command::Step(nm, w))
+        }
+        "fault" => match args.as_slice() {
+            [] => Ok(Command::Fault),
+            ["clear"] => Ok(Command::FaultClear),
+            _ => Err(ParseError::BadArgs(
+                "fault",
+                "expected `fault` or `fault clear`",
+            )),
         },
         _ => Err(ParseError::Unknown(name)),
     }
@@ -194,31 +316,24 @@ fn write_spec<W: Write>(out: &mut W, s: &Spec) -> fmt::Result {
     write!(out, " {}\r\n", s.help)
 }
 
-/// The `pl:` status line: whether our bitstream is there and speaks the
-/// register map this firmware was built against.
-fn write_pl<W: Write>(out: &mut W, id: u32, version: u32) -> fmt::Result {
-    let v = |x: u32| (x >> 16, x & 0xffff);
-    let (want_major, want_minor) = v(crate::regmap::VERSION.reset);
-    if id != crate::regmap::ID_VALUE {
-        return write!(out, "pl: no bitstream (ID reads 0x{id:08x})\r\n");
-    }
-    let (major, minor) = v(version);
-    write!(out, "pl: bitstream present, register map v{major}.{minor}")?;
-    if major != want_major {
-        write!(
-            out,
-            " INCOMPATIBLE (firmware expects v{want_major}.{want_minor})"
-        )?;
-    }
-    out.write_str("\r\n")
-}
-
 /// Writes the reply of `cmd`, ending with `OK` or `ERR`.
 pub fn execute<W: Write>(
     cmd: Command<'_>,
     ctx: &Context,
+    drv: &mut dyn DriveOps,
     out: &mut W,
 ) -> Result<Action, fmt::Error> {
+    macro_rules! try_drive {
+        ($name:expr, $e:expr) => {
+            match $e {
+                Ok(v) => v,
+                Err(e) => {
+                    drive::write_error(out, $name, e)?;
+                    return Ok(Action::None);
+                }
+            }
+        };
+    }
     match cmd {
         Command::Help(None) => {
             out.write_str("commands (arguments in [], units in brackets):\r\n")?;
@@ -260,15 +375,53 @@ pub fn execute<W: Write>(
                 "console: {} lines, {} errors, {} rx overruns\r\n",
                 s.lines, s.errors, s.rx_overruns
             )?;
-            let gates = if s.gates_enabled {
-                "enabled"
-            } else {
-                "off (safe state)"
-            };
-            write!(out, "gates: {gates}\r\n")?;
-            write_pl(out, s.pl_id, s.pl_version)?;
+            drive::write_status(out, &drv.status())?;
         }
         Command::DebugPanic => return Ok(Action::Panic),
+        Command::Mode(None) => write!(out, "mode: {}\r\n", drv.mode().name())?,
+        Command::Mode(Some(m)) => {
+            try_drive!("mode", drv.set_mode(m));
+            write!(out, "mode: {}\r\ngates: off (safe state)\r\n", m.name())?;
+        }
+        Command::Enable => {
+            try_drive!("enable", drv.enable());
+            out.write_str("gates: on\r\n")?;
+        }
+        Command::Disable => {
+            try_drive!("disable", drv.disable());
+            out.write_str("gates: off (safe state)\r\n")?;
+        }
+        Command::Torque(None) => write!(out, "torque_ref: {:.4} Nm\r\n", drv.torque_ref())?,
+        Command::Torque(Some(x)) => {
+            try_drive!("torque", drv.set_torque_ref(x));
+            write!(out, "torque_ref: {:.4} Nm\r\n", drv.torque_ref())?;
+        }
+        Command::Step(nm, w) => {
+            let r = try_drive!("step", drv.step(nm, w));
+            drive::write_step(out, &r)?;
+        }
+        Command::Fault => {
+            let f = try_drive!("fault", drv.faults());
+            out.write_str("fault: ")?;
+            f.write_names(out)?;
+            out.write_str("\r\n")?;
+        }
+        Command::FaultClear => {
+            let f = try_drive!("fault", drv.clear_faults());
+            out.write_str("fault: ")?;
+            f.write_names(out)?;
+            out.write_str("\r\ngates: off (safe state)\r\n")?;
+        }
+        Command::DebugStall(ms) => {
+            try_drive!("debug", drv.stall(ms));
+            write!(out, "stalled: {ms} ms\r\n")?;
+        }
+        Command::DebugBench => {
+            let b = try_drive!("debug", drv.bench());
+            write!(out, "foc_step: {} instructions\r\n", b.foc_step)?;
+            write!(out, "mpdtc_period: {} instructions\r\n", b.mpdtc_period)?;
+            write!(out, "runs: {}\r\n", b.runs)?;
+        }
     }
     out.write_str("OK\r\n")?;
     Ok(Action::None)
@@ -291,19 +444,20 @@ mod tests {
                 lines: 5,
                 errors: 2,
                 rx_overruns: 0,
-                gates_enabled: false,
-                pl_id: 0,
-                pl_version: 0,
             },
         }
     }
 
     /// Parses and executes `line` the way the firmware does.
     fn reply(line: &str) -> String {
+        reply_on(&mut TestDrive::new(), line)
+    }
+
+    fn reply_on(d: &mut TestDrive, line: &str) -> String {
         let mut out = String::new();
         match parse(line) {
             Ok(c) => {
-                execute(c, &ctx(), &mut out).unwrap();
+                execute(c, &ctx(), d, &mut out).unwrap();
             }
             Err(e) => write_parse_error(&mut out, e).unwrap(),
         }
@@ -359,28 +513,6 @@ mod tests {
     }
 
     #[test]
-    fn status_tells_whether_the_bitstream_is_loaded_and_compatible() {
-        let line = |id, version| {
-            let mut out = String::new();
-            write_pl(&mut out, id, version).unwrap();
-            out
-        };
-        let ours = crate::regmap::VERSION.reset;
-        assert_eq!(line(0, 0), "pl: no bitstream (ID reads 0x00000000)\r\n");
-        assert_eq!(
-            line(crate::regmap::ID_VALUE, ours),
-            std::format!(
-                "pl: bitstream present, register map v{}.{}\r\n",
-                ours >> 16,
-                ours & 0xffff
-            )
-        );
-        // A minor bump is compatible, a major one is flagged.
-        assert!(!line(crate::regmap::ID_VALUE, ours + 1).contains("INCOMPATIBLE"));
-        assert!(line(crate::regmap::ID_VALUE, ours + 0x1_0000).contains("INCOMPATIBLE"));
-    }
-
-    #[test]
     fn unknown_command() {
         assert_eq!(
             reply("frobnicate 3"),
@@ -411,7 +543,7 @@ mod tests {
         );
         assert_eq!(
             reply("debug"),
-            "ERR bad-args debug: expected `debug panic`\r\n"
+            "ERR bad-args debug: expected `debug panic`, `debug stall <ms>` or `debug bench`\r\n"
         );
         assert_eq!(
             reply("help a b"),
@@ -426,7 +558,13 @@ mod tests {
     #[test]
     fn debug_panic_asks_for_a_panic_and_prints_no_final_line() {
         let mut out = String::new();
-        let a = execute(parse("debug panic").unwrap(), &ctx(), &mut out).unwrap();
+        let a = execute(
+            parse("debug panic").unwrap(),
+            &ctx(),
+            &mut TestDrive::new(),
+            &mut out,
+        )
+        .unwrap();
         assert_eq!(a, Action::Panic);
         assert!(out.is_empty());
     }
@@ -439,7 +577,268 @@ mod tests {
             } else {
                 std::format!("{} {}", s.name, s.args)
             };
-            assert!(parse(&line).is_ok(), "{line}");
+            if !line.contains(['<', '|']) {
+                assert!(parse(&line).is_ok(), "{line}");
+            }
+            // Every alternative of the synopsis, placeholders filled in.
+            let args = s
+                .args
+                .replace("<Nm>", "0.1")
+                .replace("<window_ms>", "2")
+                .replace("<ms>", "5")
+                .replace(['[', ']'], "");
+            for alt in args.split('|') {
+                let line = std::format!("{} {}", s.name, alt);
+                assert!(parse(&line).is_ok(), "{line}");
+            }
         }
+    }
+
+    use crate::console::drive::{Bench, DriveError, DriveOps, DriveStatus, PlKind};
+    use crate::pl::fake::FakePl;
+    use crate::pl::fault::Faults;
+    use crate::servo::{Servo, ServoConfig, StepResult};
+
+    /// The console's view of a drive: the real `Servo` on the fake PL,
+    /// control periods run by hand.
+    struct TestDrive {
+        servo: Servo,
+        pl: FakePl,
+        stalled_ms: u32,
+    }
+
+    impl TestDrive {
+        fn new() -> Self {
+            let mut servo = Servo::new(&ServoConfig::default()).unwrap();
+            let mut pl = FakePl::new();
+            servo.init(&mut pl).unwrap();
+            Self {
+                servo,
+                pl,
+                stalled_ms: 0,
+            }
+        }
+    }
+
+    impl DriveOps for TestDrive {
+        fn mode(&mut self) -> Mode {
+            self.servo.mode()
+        }
+        fn set_mode(&mut self, m: Mode) -> Result<(), DriveError> {
+            Ok(self.servo.set_mode(&mut self.pl, m)?)
+        }
+        fn enable(&mut self) -> Result<(), DriveError> {
+            Ok(self.servo.enable(&mut self.pl)?)
+        }
+        fn disable(&mut self) -> Result<(), DriveError> {
+            Ok(self.servo.disable(&mut self.pl)?)
+        }
+        fn torque_ref(&mut self) -> f64 {
+            self.servo.torque_ref_nm()
+        }
+        fn set_torque_ref(&mut self, nm: f64) -> Result<(), DriveError> {
+            Ok(self.servo.set_torque_ref(nm)?)
+        }
+        fn step(&mut self, nm: f64, window_s: f64) -> Result<StepResult, DriveError> {
+            self.servo.begin_step(&mut self.pl, nm, window_s)?;
+            for _ in 0..2000 {
+                self.servo.control_step(&mut self.pl).unwrap();
+                if let Some(r) = self.servo.step_result() {
+                    return Ok(r);
+                }
+            }
+            Err(DriveError::Timeout)
+        }
+        fn faults(&mut self) -> Result<Faults, DriveError> {
+            Ok(self.servo.faults(&mut self.pl).unwrap())
+        }
+        fn clear_faults(&mut self) -> Result<Faults, DriveError> {
+            Ok(self.servo.clear_faults(&mut self.pl)?)
+        }
+        fn stall(&mut self, ms: u32) -> Result<(), DriveError> {
+            self.stalled_ms += ms;
+            Ok(())
+        }
+        fn status(&mut self) -> DriveStatus {
+            DriveStatus {
+                mode: self.servo.mode(),
+                gates_on: self.servo.gates_on(&mut self.pl).unwrap(),
+                faults: self.servo.faults(&mut self.pl).unwrap(),
+                measured: self.servo.measured(),
+                torque_ref_nm: self.servo.torque_ref_nm(),
+                control_rate_hz: self.servo.control_rate_hz(),
+                periods: self.servo.periods(),
+                overruns: self.servo.overruns(),
+                pl: PlKind::Simulated,
+                sim_time_scale: Some(4.0),
+            }
+        }
+        fn bench(&mut self) -> Result<Bench, DriveError> {
+            Err(DriveError::Unsupported)
+        }
+    }
+
+    #[test]
+    fn status_lists_the_drive_with_units() {
+        let r = reply("status");
+        for line in [
+            "uptime: 12.000042 s",
+            "ticks: 12000 (rate 1000 Hz)",
+            "mode: off",
+            "gates: off (safe state)",
+            "fault: none",
+            "torque: 0.0000 Nm",
+            "torque_ref: 0.0000 Nm",
+            "i_d: 0.000 A",
+            "i_q: 0.000 A",
+            "speed: 0.0 rad/s",
+            "control_rate: 63939 Hz",
+            "periods: 0",
+            "overruns: 0",
+            "pl: simulated",
+            "sim_time_scale: 4.00",
+        ] {
+            assert!(r.contains(&std::format!("{line}\r\n")), "{line}: {r}");
+        }
+        assert_one_final_line(&r);
+    }
+
+    #[test]
+    fn mode_enable_disable() {
+        let mut d = TestDrive::new();
+        assert_eq!(reply_on(&mut d, "mode"), "mode: off\r\nOK\r\n");
+        assert_eq!(
+            reply_on(&mut d, "enable"),
+            "ERR mode-off enable: mode is off (set `mode foc` or `mode mpdtc` first)\r\n"
+        );
+        assert!(reply_on(&mut d, "mode foc").ends_with("OK\r\n"));
+        assert_eq!(reply_on(&mut d, "enable"), "gates: on\r\nOK\r\n");
+        assert!(reply_on(&mut d, "status").contains("gates: on\r\n"));
+        // A mode change turns the gates off.
+        assert_eq!(
+            reply_on(&mut d, "mode mpdtc"),
+            "mode: mpdtc\r\ngates: off (safe state)\r\nOK\r\n"
+        );
+        assert!(reply_on(&mut d, "status").contains("gates: off (safe state)\r\n"));
+        assert_eq!(
+            reply_on(&mut d, "disable"),
+            "gates: off (safe state)\r\nOK\r\n"
+        );
+    }
+
+    #[test]
+    fn bad_mode_and_torque_arguments_change_nothing() {
+        let mut d = TestDrive::new();
+        assert!(reply_on(&mut d, "mode foc").ends_with("OK\r\n"));
+        assert!(reply_on(&mut d, "torque 0.25").ends_with("OK\r\n"));
+        for bad in [
+            "mode FOC",
+            "mode 1",
+            "mode foc mpdtc",
+            "torque nan",
+            "torque NaN",
+            "torque inf",
+            "torque -inf",
+            "torque infinity",
+            "torque 1.5",
+            "torque -1.0001",
+            "torque 1e3",
+            "torque abc",
+            "torque 0.1Nm",
+            "torque 0.1 0.2",
+        ] {
+            let r = reply_on(&mut d, bad);
+            assert!(r.starts_with("ERR bad-args "), "{bad}: {r}");
+            assert_one_final_line(&r);
+        }
+        assert_eq!(reply_on(&mut d, "mode"), "mode: foc\r\nOK\r\n");
+        assert_eq!(
+            reply_on(&mut d, "torque"),
+            "torque_ref: 0.2500 Nm\r\nOK\r\n"
+        );
+        assert_eq!(
+            reply_on(&mut d, "torque -1"),
+            "torque_ref: -1.0000 Nm\r\nOK\r\n"
+        );
+    }
+
+    #[test]
+    fn step_needs_gates_and_prints_the_metrics() {
+        let mut d = TestDrive::new();
+        assert!(reply_on(&mut d, "mode foc").ends_with("OK\r\n"));
+        assert_eq!(
+            reply_on(&mut d, "step 0.4"),
+            "ERR gates-off step: gates are off (`enable` first)\r\n"
+        );
+        for bad in [
+            "step",
+            "step x",
+            "step 0.4 0",
+            "step 0.4 21",
+            "step 0.4 -1",
+            "step 2",
+        ] {
+            assert!(reply_on(&mut d, bad).starts_with("ERR bad-args "), "{bad}");
+        }
+        assert!(reply_on(&mut d, "enable").ends_with("OK\r\n"));
+        let r = reply_on(&mut d, "step 0.4 1");
+        // The fake PL has no motor: the torque stays 0, never settles.
+        assert!(
+            r.starts_with("settling_time: none (not settled within 1.00 ms)\r\n"),
+            "{r}"
+        );
+        assert!(r.contains("overshoot: 0.0 %\r\n"), "{r}");
+        assert!(r.contains("switching: ") && r.contains(" kHz\r\n"), "{r}");
+        assert!(r.ends_with("final: 0.0000 Nm\r\nOK\r\n"), "{r}");
+        assert_eq!(
+            reply_on(&mut d, "torque"),
+            "torque_ref: 0.4000 Nm\r\nOK\r\n"
+        );
+    }
+
+    #[test]
+    fn faults_are_listed_cleared_and_block_enable() {
+        let mut d = TestDrive::new();
+        d.pl.set(crate::regmap::FAULT_STATUS_ADDR, Faults::WATCHDOG | 1);
+        assert_eq!(
+            reply_on(&mut d, "fault"),
+            "fault: OVERCURRENT WATCHDOG\r\nOK\r\n"
+        );
+        assert!(reply_on(&mut d, "mode mpdtc").ends_with("OK\r\n"));
+        assert_eq!(
+            reply_on(&mut d, "enable"),
+            "ERR fault-latched enable: fault latched: OVERCURRENT WATCHDOG (`fault clear` first)\r\n"
+        );
+        assert!(reply_on(&mut d, "status").contains("fault: OVERCURRENT WATCHDOG\r\n"));
+        assert_eq!(
+            reply_on(&mut d, "fault clear"),
+            "fault: none\r\ngates: off (safe state)\r\nOK\r\n"
+        );
+        assert_eq!(reply_on(&mut d, "fault x").lines().count(), 1);
+        assert_eq!(reply_on(&mut d, "enable"), "gates: on\r\nOK\r\n");
+    }
+
+    #[test]
+    fn debug_stall_and_bench_arguments() {
+        let mut d = TestDrive::new();
+        assert_eq!(
+            reply_on(&mut d, "debug stall 300"),
+            "stalled: 300 ms\r\nOK\r\n"
+        );
+        assert_eq!(d.stalled_ms, 300);
+        for bad in [
+            "debug stall",
+            "debug stall 0",
+            "debug stall -5",
+            "debug stall 10001",
+            "debug stall 1.5",
+        ] {
+            assert!(reply_on(&mut d, bad).starts_with("ERR bad-args "), "{bad}");
+        }
+        assert_eq!(d.stalled_ms, 300);
+        assert_eq!(
+            reply_on(&mut d, "debug bench"),
+            "ERR unsupported debug: not available here\r\n"
+        );
     }
 }

@@ -11,11 +11,14 @@
 //! The target only moves bytes; everything here runs on the host in tests.
 
 mod command;
+pub mod drive;
 mod editor;
 
 pub use command::{
-    execute, parse, write_parse_error, Action, Command, Context, ParseError, Spec, Status, COMMANDS,
+    execute, parse, write_parse_error, Action, Command, Context, ParseError, Spec, Status,
+    COMMANDS, STALL_MAX_MS, STEP_WINDOW_DEFAULT_S, STEP_WINDOW_MAX_S,
 };
+pub use drive::{Bench, DriveError, DriveOps, DriveStatus, PlKind};
 pub use editor::{LineEditor, LineError, LINE_MAX};
 
 /// Printed when the console is ready for a line.
@@ -34,6 +37,20 @@ pub enum ErrorCode {
     BadEncoding,
     /// The line holds a control character.
     BadChar,
+    /// `enable` in mode off.
+    ModeOff,
+    /// `enable` while a fault is latched.
+    FaultLatched,
+    /// `step` with the gates off.
+    GatesOff,
+    /// No usable PL behind the drivers.
+    PlAbsent,
+    /// A PL register access failed.
+    BusError,
+    /// The control loop did not complete a request in time.
+    Timeout,
+    /// Not available in this build or setup.
+    Unsupported,
 }
 
 impl ErrorCode {
@@ -45,6 +62,13 @@ impl ErrorCode {
             ErrorCode::LineTooLong => "line-too-long",
             ErrorCode::BadEncoding => "bad-encoding",
             ErrorCode::BadChar => "bad-char",
+            ErrorCode::ModeOff => "mode-off",
+            ErrorCode::FaultLatched => "fault-latched",
+            ErrorCode::GatesOff => "gates-off",
+            ErrorCode::PlAbsent => "pl-absent",
+            ErrorCode::BusError => "bus-error",
+            ErrorCode::Timeout => "timeout",
+            ErrorCode::Unsupported => "unsupported",
         }
     }
 }

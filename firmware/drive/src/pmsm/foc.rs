@@ -61,9 +61,9 @@
 //!   (voltage-limited: 8.2 A needs at least 190 us at 27.7 V).
 //! - Carrier 16 kHz: 32 k gate transitions per leg per second.
 
-use super::frames::{clarke, inv_park, leg_voltage_alpha_beta, park};
+use super::frames::{clarke, inv_park_sc, leg_voltage_alpha_beta, park_sc, sc_add};
 use super::params::{check_nonneg, check_pos, MotorParams, ParamError};
-use super::plant::{zoh_alpha_beta, Actuation};
+use super::plant::{zoh_alpha_beta_with, Actuation, ZohTrig};
 use super::sim::{Controller, Measurement};
 use super::svpwm;
 
@@ -195,6 +195,18 @@ pub struct Foc {
     eps_dq: (f64, f64),
     /// Number of periods in which the voltage limit was active.
     pub saturated_periods: u64,
+    /// `expm1(-R h / L)` of the two fixed horizons (lag, period).
+    em1_lag: f64,
+    em1_period: f64,
+}
+
+/// `(sin, cos)` of `x` and the [`ZohTrig`] factors of a horizon `h` at speed
+/// `w` from one `sincos(w h / 2)` (double-angle formulas), so a FOC step
+/// needs three `sincos` calls instead of ten (cost: docs/ARCHITECTURE.md).
+fn half_angle(w: f64, h: f64) -> ((f64, f64), (f64, f64)) {
+    let (sh, ch) = libm::sincos(0.5 * w * h);
+    // (sin, cos) of w h, and of w h / 2.
+    ((2.0 * sh * ch, 1.0 - 2.0 * sh * sh), (sh, ch))
 }
 
 impl Foc {
@@ -218,6 +230,8 @@ impl Foc {
             pred_dq: None,
             eps_dq: (0.0, 0.0),
             saturated_periods: 0,
+            em1_lag: libm::expm1(-motor.r_s_ohm / motor.l_d_h * p.measurement_lag_s),
+            em1_period: libm::expm1(-motor.r_s_ohm / motor.l_d_h * p.period_s),
         })
     }
 
@@ -267,22 +281,48 @@ impl Controller for Foc {
         } else {
             self.u_prev_ab
         };
-        let i_ab = zoh_alpha_beta(mo, clarke(m.i_abc_a), u_win, m.theta_e_rad, w, lag);
+        // Angles of this step from three sincos calls: theta (the
+        // measurement's), w lag and w t; the rest by angle addition.
+        let sc_meas = libm::sincos(m.theta_e_rad);
+        let (sc_wlag, sh_lag) = half_angle(w, lag);
+        let (sc_wt, sh_t) = half_angle(w, t);
+        let trig = |sc0, sc_wh: (f64, f64), sc_half: (f64, f64)| {
+            (w != 0.0).then_some(ZohTrig {
+                sc0,
+                sin_half_wh: sc_half.0,
+                sin_wh: sc_wh.0,
+            })
+        };
+        let i_ab = zoh_alpha_beta_with(
+            mo,
+            clarke(m.i_abc_a),
+            u_win,
+            w,
+            self.em1_lag,
+            trig(sc_meas, sc_wlag, sh_lag),
+        );
         // Angle at t_k.
-        let th = m.theta_e_rad + w * lag;
+        let sc_th = sc_add(sc_meas, sc_wlag);
         let g = self.p.prediction_error_gain;
         if let Some((pd, pq)) = self.pred_dq {
-            let (md, mq) = park(i_ab.0, i_ab.1, th);
+            let (md, mq) = park_sc(i_ab.0, i_ab.1, sc_th);
             self.eps_dq.0 += g * (md - pd - self.eps_dq.0);
             self.eps_dq.1 += g * (mq - pq - self.eps_dq.1);
         }
         let (id, iq) = if self.p.delay_compensation {
-            let i_ab1 = zoh_alpha_beta(mo, i_ab, self.u_now_ab, th, w, t);
-            let (pd, pq) = park(i_ab1.0, i_ab1.1, th + w * t);
+            let i_ab1 = zoh_alpha_beta_with(
+                mo,
+                i_ab,
+                self.u_now_ab,
+                w,
+                self.em1_period,
+                trig(sc_th, sc_wt, sh_t),
+            );
+            let (pd, pq) = park_sc(i_ab1.0, i_ab1.1, sc_add(sc_th, sc_wt));
             self.pred_dq = Some((pd, pq));
             (pd + self.eps_dq.0, pq + self.eps_dq.1)
         } else {
-            park(i_ab.0, i_ab.1, th)
+            park_sc(i_ab.0, i_ab.1, sc_th)
         };
         let t_ref = if torque_ref_nm.is_finite() {
             torque_ref_nm
@@ -309,16 +349,17 @@ impl Controller for Foc {
             uq = uq.clamp(-uq_max, uq_max);
             sat = ud != ud0 || uq != uq0;
         }
-        // Applied during [t_{k+1}, t_{k+2}): rotate with the mid-interval angle.
-        let th_mid = th + 1.5 * w * t;
-        let (ua, ub) = inv_park(ud, uq, th_mid);
+        // Applied during [t_{k+1}, t_{k+2}): rotate with the mid-interval
+        // angle th + 1.5 w t.
+        let sc_mid = sc_add(sc_add(sc_th, sc_wt), sh_t);
+        let (ua, ub) = inv_park_sc(ud, uq, sc_mid);
         let (d, sat_hex) = svpwm::duties(ua, ub, mo.u_dc_v);
         if sat || sat_hex {
             self.saturated_periods += 1;
         }
         self.u_next_ab = leg_voltage_alpha_beta(d, mo.u_dc_v);
         // Anti-windup lag fed with the PI output that is really applied.
-        let (ud_app, uq_app) = park(self.u_next_ab.0, self.u_next_ab.1, th_mid);
+        let (ud_app, uq_app) = park_sc(self.u_next_ab.0, self.u_next_ab.1, sc_mid);
         self.x_d = self.gd.a * self.x_d + (1.0 - self.gd.a) * (ud_app - ff_d);
         self.x_q = self.gq.a * self.x_q + (1.0 - self.gq.a) * (uq_app - ff_q);
         self.d_max_next = d[0].max(d[1]).max(d[2]);
@@ -334,6 +375,36 @@ mod tests {
     use crate::pmsm::plant::{MechanicalMode, Plant};
     use crate::pmsm::sim::{run, TracePoint};
     use std::vec::Vec;
+
+    /// The step's shortcuts (one sincos per horizon, angle addition) give
+    /// the plant's `zoh_alpha_beta` and `sincos` to rounding.
+    #[test]
+    fn angle_shortcuts_match_the_direct_formulas() {
+        use crate::pmsm::plant::zoh_alpha_beta;
+        let mo = MotorParams::default();
+        for k in 0..200 {
+            let th = 0.0314 * k as f64;
+            let w = -3000.0 + 30.0 * k as f64;
+            let h = 62.56e-6;
+            let ((s, c), (sh, _)) = half_angle(w, h);
+            assert!((s - libm::sin(w * h)).abs() < 1e-14 && (c - libm::cos(w * h)).abs() < 1e-14);
+            let em1 = libm::expm1(-mo.r_s_ohm / mo.l_d_h * h);
+            let trig = ZohTrig {
+                sc0: libm::sincos(th),
+                sin_half_wh: sh,
+                sin_wh: s,
+            };
+            let a = zoh_alpha_beta(&mo, (3.0, -2.0), (10.0, 5.0), th, w, h);
+            let b = zoh_alpha_beta_with(&mo, (3.0, -2.0), (10.0, 5.0), w, em1, Some(trig));
+            assert!(
+                (a.0 - b.0).abs() < 1e-12 && (a.1 - b.1).abs() < 1e-12,
+                "{k}"
+            );
+            let (s2, c2) = sc_add(libm::sincos(th), (s, c));
+            assert!((s2 - libm::sin(th + w * h)).abs() < 1e-13, "{k}");
+            assert!((c2 - libm::cos(th + w * h)).abs() < 1e-13, "{k}");
+        }
+    }
 
     const T_STEP: f64 = 0.1e-3;
 

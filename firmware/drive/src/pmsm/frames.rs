@@ -35,14 +35,28 @@ pub fn inv_clarke(alpha: f64, beta: f64) -> [f64; 3] {
 
 /// Park transform `(alpha, beta) -> (d, q)` at electrical angle `theta_e_rad`.
 pub fn park(alpha: f64, beta: f64, theta_e_rad: f64) -> (f64, f64) {
-    let (s, c) = libm::sincos(theta_e_rad);
+    park_sc(alpha, beta, libm::sincos(theta_e_rad))
+}
+
+/// [`park`] with `(sin, cos)` of the angle given.
+pub fn park_sc(alpha: f64, beta: f64, (s, c): (f64, f64)) -> (f64, f64) {
     (c * alpha + s * beta, -s * alpha + c * beta)
 }
 
 /// Inverse Park transform `(d, q) -> (alpha, beta)` at electrical angle `theta_e_rad`.
 pub fn inv_park(d: f64, q: f64, theta_e_rad: f64) -> (f64, f64) {
-    let (s, c) = libm::sincos(theta_e_rad);
+    inv_park_sc(d, q, libm::sincos(theta_e_rad))
+}
+
+/// [`inv_park`] with `(sin, cos)` of the angle given.
+pub fn inv_park_sc(d: f64, q: f64, (s, c): (f64, f64)) -> (f64, f64) {
     (c * d - s * q, s * d + c * q)
+}
+
+/// `(sin, cos)` of `a + b` from `(sin, cos)` of `a` and of `b` (angle
+/// addition: no transcendental call).
+pub fn sc_add((sa, ca): (f64, f64), (sb, cb): (f64, f64)) -> (f64, f64) {
+    (sa * cb + ca * sb, ca * cb - sa * sb)
 }
 
 /// Leg states of switch state `s` (index `4 Sa + 2 Sb + Sc`): `[Sa, Sb, Sc]`.

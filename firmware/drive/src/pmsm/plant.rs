@@ -404,20 +404,59 @@ pub fn zoh_alpha_beta(
     omega_e_rad_s: f64,
     h_s: f64,
 ) -> (f64, f64) {
+    let w = omega_e_rad_s;
+    let em1 = libm::expm1(-motor.r_s_ohm / motor.l_d_h * h_s); // E - 1, accurate for small h
+    let trig = if w != 0.0 {
+        let (sh, _) = libm::sincos(0.5 * w * h_s);
+        let (swh, _) = libm::sincos(w * h_s);
+        Some(ZohTrig {
+            sc0: libm::sincos(theta_e_rad),
+            sin_half_wh: sh,
+            sin_wh: swh,
+        })
+    } else {
+        None
+    };
+    zoh_alpha_beta_with(motor, i_ab, u_ab, w, em1, trig)
+}
+
+/// The angle-dependent factors of [`zoh_alpha_beta`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ZohTrig {
+    /// `(sin, cos)` of the angle at the start.
+    pub sc0: (f64, f64),
+    /// `sin(w h / 2)`.
+    pub sin_half_wh: f64,
+    /// `sin(w h)`.
+    pub sin_wh: f64,
+}
+
+/// [`zoh_alpha_beta`] with `em1 = expm1(-R h / L)` and the trigonometric
+/// factors given (`None` when `omega_e_rad_s` is 0), for callers that reuse
+/// them (the FOC computes them once per step).
+pub fn zoh_alpha_beta_with(
+    motor: &MotorParams,
+    i_ab: (f64, f64),
+    u_ab: (f64, f64),
+    omega_e_rad_s: f64,
+    em1: f64,
+    trig: Option<ZohTrig>,
+) -> (f64, f64) {
     let (r, l, psi) = (motor.r_s_ohm, motor.l_d_h, motor.psi_pm_wb);
     let w = omega_e_rad_s;
     let a = r / l;
-    let em1 = libm::expm1(-a * h_s); // E - 1, accurate for small h
     let e = 1.0 + em1;
     // Homogeneous + input parts.
     let mut ia = e * i_ab.0 - em1 / r * u_ab.0;
     let mut ib = e * i_ab.1 - em1 / r * u_ab.1;
     // Back-EMF part: -(psi/L) * c * n / (a + j w), c = j w e^{j th0},
     // n = e^{j w h} - E = (cos wh - 1) - (E - 1) + j sin wh.
-    if w != 0.0 {
-        let (s0, c0) = libm::sincos(theta_e_rad);
-        let (sh, _) = libm::sincos(0.5 * w * h_s);
-        let (swh, _) = libm::sincos(w * h_s);
+    if let Some(ZohTrig {
+        sc0: (s0, c0),
+        sin_half_wh: sh,
+        sin_wh: swh,
+    }) = trig
+    {
         let (nr, ni) = (-2.0 * sh * sh - em1, swh);
         let (cr, ci) = (-w * s0, w * c0);
         let (pr, pi) = (cr * nr - ci * ni, cr * ni + ci * nr);

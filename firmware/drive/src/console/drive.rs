@@ -1,0 +1,199 @@
+//! The drive commands' side of the console: what the firmware provides
+//! ([`DriveOps`]) and how replies and errors are written.
+use super::{write_err, ErrorCode};
+use crate::pl::fault::Faults;
+use crate::pl::top::Mode;
+use crate::servo::{Measured, ServoError, StepResult};
+use core::fmt::{self, Write};
+
+/// What is behind the drivers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PlKind {
+    /// No bitstream: the simulated PL and motor.
+    Simulated,
+    /// Our bitstream; `VERSION` (major << 16 | minor).
+    Bitstream(u32),
+    /// A PL the firmware must not drive (foreign or incompatible design).
+    Absent,
+}
+
+/// Live drive values for `status`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DriveStatus {
+    /// Active mode.
+    pub mode: Mode,
+    /// `GATE_EN` read back.
+    pub gates_on: bool,
+    /// Latched faults.
+    pub faults: Faults,
+    /// Last control step's measurement.
+    pub measured: Measured,
+    /// Torque reference, N m.
+    pub torque_ref_nm: f64,
+    /// Control periods per second, Hz.
+    pub control_rate_hz: f64,
+    /// Control periods run.
+    pub periods: u64,
+    /// Control periods missed.
+    pub overruns: u64,
+    /// What drives the registers.
+    pub pl: PlKind,
+    /// Guest time / simulated time (simulated PL only).
+    pub sim_time_scale: Option<f64>,
+}
+
+/// Guest instructions of the control code, measured by `debug bench`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Bench {
+    /// One FOC step (`drive::pmsm::foc`), instructions.
+    pub foc_step: u32,
+    /// One MPDTC-mode control period on the PS (measurement, inputs, START), instructions.
+    pub mpdtc_period: u32,
+    /// Repetitions each figure is the minimum of.
+    pub runs: u32,
+}
+
+/// Why a drive command failed (nothing changed).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum DriveError {
+    /// Refused by the drive.
+    Servo(ServoError),
+    /// No usable PL.
+    Absent,
+    /// A step did not complete in time.
+    Timeout,
+    /// Not available in this build or setup.
+    Unsupported,
+}
+
+impl From<ServoError> for DriveError {
+    fn from(e: ServoError) -> Self {
+        DriveError::Servo(e)
+    }
+}
+
+/// The drive as the console sees it; the firmware implements it over the
+/// `Servo` it shares with the control interrupt.
+pub trait DriveOps {
+    /// Active mode.
+    fn mode(&mut self) -> Mode;
+    /// Sets the mode (gates off first).
+    fn set_mode(&mut self, m: Mode) -> Result<(), DriveError>;
+    /// Gates on.
+    fn enable(&mut self) -> Result<(), DriveError>;
+    /// Gates off.
+    fn disable(&mut self) -> Result<(), DriveError>;
+    /// Torque reference, N m.
+    fn torque_ref(&mut self) -> f64;
+    /// Sets the torque reference, N m (checked against the limit).
+    fn set_torque_ref(&mut self, nm: f64) -> Result<(), DriveError>;
+    /// Runs a step to `nm` and records it for `window_s`; blocks until done.
+    fn step(&mut self, nm: f64, window_s: f64) -> Result<StepResult, DriveError>;
+    /// Latched faults.
+    fn faults(&mut self) -> Result<Faults, DriveError>;
+    /// Clears the faults; returns what is still latched.
+    fn clear_faults(&mut self) -> Result<Faults, DriveError>;
+    /// Stops the control loop and heartbeat for `ms` milliseconds.
+    fn stall(&mut self, ms: u32) -> Result<(), DriveError>;
+    /// Live values.
+    fn status(&mut self) -> DriveStatus;
+    /// Counts the control code's guest instructions.
+    fn bench(&mut self) -> Result<Bench, DriveError>;
+}
+
+/// Writes the final `ERR` line of a failed drive command.
+pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Result {
+    match e {
+        DriveError::Servo(ServoError::ModeOff) => write_err(
+            out,
+            ErrorCode::ModeOff,
+            format_args!("{cmd}: mode is off (set `mode foc` or `mode mpdtc` first)"),
+        ),
+        DriveError::Servo(ServoError::FaultLatched(f)) => {
+            write!(
+                out,
+                "ERR {} {cmd}: fault latched: ",
+                ErrorCode::FaultLatched.as_str()
+            )?;
+            f.write_names(out)?;
+            out.write_str(" (`fault clear` first)\r\n")
+        }
+        DriveError::Servo(ServoError::GatesOff) => write_err(
+            out,
+            ErrorCode::GatesOff,
+            format_args!("{cmd}: gates are off (`enable` first)"),
+        ),
+        DriveError::Servo(ServoError::TorqueOutOfRange(x)) => write_err(
+            out,
+            ErrorCode::BadArgs,
+            format_args!("{cmd}: {x} Nm is beyond the torque limit"),
+        ),
+        DriveError::Servo(ServoError::Bus(b)) => write_err(
+            out,
+            ErrorCode::BusError,
+            format_args!("{cmd}: PL register access failed ({b:?})"),
+        ),
+        DriveError::Absent => write_err(
+            out,
+            ErrorCode::PlAbsent,
+            format_args!("{cmd}: no usable PL (see `status`)"),
+        ),
+        DriveError::Timeout => write_err(
+            out,
+            ErrorCode::Timeout,
+            format_args!("{cmd}: the control loop did not complete it in time"),
+        ),
+        DriveError::Unsupported => write_err(
+            out,
+            ErrorCode::Unsupported,
+            format_args!("{cmd}: not available here"),
+        ),
+    }
+}
+
+/// The drive's `status` lines.
+pub fn write_status<W: Write>(out: &mut W, s: &DriveStatus) -> fmt::Result {
+    write!(out, "mode: {}\r\n", s.mode.name())?;
+    let gates = if s.gates_on { "on" } else { "off (safe state)" };
+    write!(out, "gates: {gates}\r\n")?;
+    out.write_str("fault: ")?;
+    s.faults.write_names(out)?;
+    out.write_str("\r\n")?;
+    let m = &s.measured;
+    write!(out, "torque: {:.4} Nm\r\n", m.torque_nm)?;
+    write!(out, "torque_ref: {:.4} Nm\r\n", s.torque_ref_nm)?;
+    write!(out, "i_d: {:.3} A\r\n", m.i_d_a)?;
+    write!(out, "i_q: {:.3} A\r\n", m.i_q_a)?;
+    write!(out, "speed: {:.1} rad/s\r\n", m.omega_e_rad_s)?;
+    write!(out, "control_rate: {:.0} Hz\r\n", s.control_rate_hz)?;
+    write!(out, "periods: {}\r\n", s.periods)?;
+    write!(out, "overruns: {}\r\n", s.overruns)?;
+    match s.pl {
+        PlKind::Simulated => out.write_str("pl: simulated\r\n")?,
+        PlKind::Bitstream(v) => write!(out, "pl: bitstream v{}.{}\r\n", v >> 16, v & 0xFFFF)?,
+        PlKind::Absent => out.write_str("pl: absent\r\n")?,
+    }
+    if let Some(k) = s.sim_time_scale {
+        write!(out, "sim_time_scale: {k:.2}\r\n")?;
+    }
+    Ok(())
+}
+
+/// The `step` reply lines.
+pub fn write_step<W: Write>(out: &mut W, r: &StepResult) -> fmt::Result {
+    match r.settling_s {
+        Some(t) => write!(out, "settling_time: {:.4} ms\r\n", t * 1e3)?,
+        None => write!(
+            out,
+            "settling_time: none (not settled within {:.2} ms)\r\n",
+            r.window_s * 1e3
+        )?,
+    }
+    write!(out, "overshoot: {:.1} %\r\n", r.overshoot_percent)?;
+    write!(
+        out,
+        "switching: {:.1} kHz\r\n",
+        r.switching_per_leg_per_s * 1e-3
+    )?;
+    write!(out, "final: {:.4} Nm\r\n", r.final_nm)
+}

@@ -1,0 +1,74 @@
+//! Encoder block: position and speed, and their electrical equivalents.
+use super::{rd, sext};
+use crate::bus::{BusError, RegisterBus};
+use crate::regmap::{self, ENC};
+use core::f64::consts::TAU;
+
+/// Encoder readings.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct EncReading {
+    /// `ENC_POS`, counts in `0..cpr`.
+    pub pos: u32,
+    /// `ENC_CPR`, counts per mechanical revolution.
+    pub cpr: u32,
+    /// `ENC_SPEED`, counts per window.
+    pub speed: i32,
+    /// `ENC_WINDOW`, PL clock cycles.
+    pub window: u32,
+}
+
+impl EncReading {
+    /// Electrical angle, rad in `[0, 2 pi)`, for `pole_pairs` and the
+    /// position `zero` (counts) where the rotor d axis is on phase a.
+    pub fn theta_e_rad(&self, pole_pairs: u32, zero: u32) -> f64 {
+        let cpr = self.cpr.max(1);
+        let rel = (self.pos + cpr - zero % cpr) % cpr;
+        let turns = f64::from(rel) / f64::from(cpr) * f64::from(pole_pairs);
+        (turns - libm::floor(turns)) * TAU
+    }
+    /// Electrical speed, rad/s.
+    pub fn omega_e_rad_s(&self, pole_pairs: u32) -> f64 {
+        let window_s = f64::from(self.window.max(1)) / f64::from(regmap::PL_CLOCK_HZ);
+        f64::from(self.speed) / f64::from(self.cpr.max(1)) * TAU * f64::from(pole_pairs) / window_s
+    }
+}
+
+/// The encoder block.
+pub struct Encoder<B>(pub B);
+
+impl<B: RegisterBus> Encoder<B> {
+    /// Position, resolution, speed and window in one go.
+    pub fn read(&mut self) -> Result<EncReading, BusError> {
+        Ok(EncReading {
+            pos: rd(&mut self.0, &ENC, &regmap::ENC_POS)?,
+            cpr: rd(&mut self.0, &ENC, &regmap::ENC_CPR)?,
+            speed: sext(rd(&mut self.0, &ENC, &regmap::ENC_SPEED)?, 16),
+            window: rd(&mut self.0, &ENC, &regmap::ENC_WINDOW)?,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pl::fake::FakePl;
+
+    #[test]
+    fn electrical_angle_and_speed() {
+        let mut pl = FakePl::new();
+        pl.set(ENC.addr(&regmap::ENC_POS), 1024);
+        pl.set(ENC.addr(&regmap::ENC_SPEED), 0xFFF6); // -10 counts
+        let r = Encoder(&mut pl).read().unwrap();
+        assert_eq!(
+            (r.pos, r.cpr, r.speed, r.window),
+            (1024, 4096, -10, 100_000)
+        );
+        // A quarter turn with 7 pole pairs = 1.75 electrical turns.
+        assert!((r.theta_e_rad(7, 0) - 0.75 * TAU).abs() < 1e-12);
+        // Relative to a zero at 3072: half a turn = 3.5 electrical turns.
+        assert!((r.theta_e_rad(7, 3072) - 0.5 * TAU).abs() < 1e-12);
+        // -10 counts per ms = -10/4096 rev per ms.
+        let w = -10.0 / 4096.0 * TAU * 7.0 / 1e-3;
+        assert!((r.omega_e_rad_s(7) - w).abs() < 1e-9);
+    }
+}

@@ -1,0 +1,90 @@
+//! Fault block: latched faults, over-current limit, watchdog timeout.
+use super::{rd, wr};
+use crate::bus::{BusError, RegisterBus};
+use crate::regmap::{self, FAULT};
+
+/// Latched fault bits (`FAULT_STATUS`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Faults(pub u32);
+
+impl Faults {
+    /// Bit names, by bit position (the register map's field names).
+    pub const NAMES: [&'static str; 3] = ["OVERCURRENT", "EXTERNAL", "WATCHDOG"];
+    /// The watchdog bit.
+    pub const WATCHDOG: u32 = 1 << 2;
+    /// No fault latched.
+    pub fn none(self) -> bool {
+        self.0 & 7 == 0
+    }
+    /// Names of the set bits, in bit order.
+    pub fn names(self) -> impl Iterator<Item = &'static str> {
+        Self::NAMES
+            .into_iter()
+            .enumerate()
+            .filter(move |(i, _)| self.0 >> i & 1 != 0)
+            .map(|(_, n)| n)
+    }
+    /// Writes `none` or the names separated by spaces.
+    pub fn write_names<W: core::fmt::Write>(self, out: &mut W) -> core::fmt::Result {
+        if self.none() {
+            return out.write_str("none");
+        }
+        for (i, n) in self.names().enumerate() {
+            if i > 0 {
+                out.write_char(' ')?;
+            }
+            out.write_str(n)?;
+        }
+        Ok(())
+    }
+}
+
+/// The fault block.
+pub struct Fault<B>(pub B);
+
+impl<B: RegisterBus> Fault<B> {
+    /// Latched faults.
+    pub fn latched(&mut self) -> Result<Faults, BusError> {
+        Ok(Faults(rd(&mut self.0, &FAULT, &regmap::FAULT_STATUS)?))
+    }
+    /// Clears every latched fault whose condition is gone (write 1 to clear);
+    /// returns what is still latched. The gates stay off until `GATE_EN`
+    /// is written 1 again.
+    pub fn clear(&mut self) -> Result<Faults, BusError> {
+        wr(&mut self.0, &FAULT, &regmap::FAULT_STATUS, 7)?;
+        self.latched()
+    }
+    /// Watchdog timeout, PL clock cycles (the PL clamps to >= 1000).
+    pub fn set_watchdog_timeout(&mut self, cycles: u32) -> Result<(), BusError> {
+        wr(&mut self.0, &FAULT, &regmap::WDG_TIMEOUT, cycles)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pl::fake::FakePl;
+    use std::string::String;
+
+    #[test]
+    fn names_of_latched_faults() {
+        let s = |f: Faults| {
+            let mut o = String::new();
+            f.write_names(&mut o).unwrap();
+            o
+        };
+        assert_eq!(s(Faults(0)), "none");
+        assert_eq!(s(Faults(4)), "WATCHDOG");
+        assert_eq!(s(Faults(5)), "OVERCURRENT WATCHDOG");
+    }
+
+    #[test]
+    fn clear_is_write_one_to_clear() {
+        let mut pl = FakePl::new();
+        pl.set(regmap::FAULT_STATUS_ADDR, Faults::WATCHDOG);
+        assert_eq!(Fault(&mut pl).latched().unwrap(), Faults(4));
+        assert!(Fault(&mut pl).clear().unwrap().none());
+        Fault(&mut pl).set_watchdog_timeout(5).unwrap();
+        assert_eq!(pl.get(FAULT.addr(&regmap::WDG_TIMEOUT)), 1000);
+    }
+}

@@ -1,0 +1,149 @@
+//! PWM/gates block: gate enable, dead time, centre-aligned PWM period and
+//! duties, the manual switching state and the gate outputs.
+//!
+//! Each leg's duty register is an `embedded_hal::pwm::SetDutyCycle` channel
+//! ([`Leg`]) whose full scale is `PWM_PERIOD` (duty = DUTY / PWM_PERIOD).
+use super::{rd, wr};
+use crate::bus::{BusError, RegisterBus};
+use crate::regmap::{self, Register, PWM};
+
+/// The duty registers of legs a, b, c.
+const DUTY: [&Register; 3] = [&regmap::DUTY_A, &regmap::DUTY_B, &regmap::DUTY_C];
+
+/// The PWM/gates block.
+pub struct Pwm<B>(pub B);
+
+impl<B: RegisterBus> Pwm<B> {
+    /// Gates on (`true`: they follow the selected source) or off.
+    pub fn set_gates(&mut self, on: bool) -> Result<(), BusError> {
+        wr(&mut self.0, &PWM, &regmap::GATE_CTRL, u32::from(on))
+    }
+    /// `GATE_CTRL.GATE_EN` as read back (held at 0 while a fault is latched).
+    pub fn gates_enabled(&mut self) -> Result<bool, BusError> {
+        Ok(rd(&mut self.0, &PWM, &regmap::GATE_CTRL)? & regmap::GATE_CTRL_GATE_EN != 0)
+    }
+    /// Half period of the up-down counter, PL clock cycles (the PL clamps
+    /// to 2..=65535); f_pwm = 100 MHz / (2 half_period).
+    pub fn set_half_period(&mut self, cycles: u32) -> Result<(), BusError> {
+        wr(&mut self.0, &PWM, &regmap::PWM_PERIOD, cycles)
+    }
+    /// Half period as stored, PL clock cycles.
+    pub fn half_period(&mut self) -> Result<u32, BusError> {
+        rd(&mut self.0, &PWM, &regmap::PWM_PERIOD)
+    }
+    /// Dead time, PL clock cycles (the PL clamps to 1023).
+    pub fn set_dead_time(&mut self, cycles: u32) -> Result<(), BusError> {
+        wr(&mut self.0, &PWM, &regmap::DEAD_TIME, cycles)
+    }
+    /// The duty channel of leg `i` (0 = a, 1 = b, 2 = c); reads the period
+    /// once for the channel's full scale.
+    pub fn leg(&mut self, i: usize) -> Result<Leg<'_, B>, BusError> {
+        let period = self.half_period()?.min(u32::from(u16::MAX)) as u16;
+        Ok(Leg {
+            bus: &mut self.0,
+            reg: DUTY[i.min(2)],
+            period,
+        })
+    }
+    /// Writes the three duties (fractions of the period, clamped to
+    /// `[0, 1]`, NaN as 0.5 = zero average voltage), rounded to cycles.
+    pub fn set_duties(&mut self, d: [f64; 3], half_period: u32) -> Result<(), BusError> {
+        for (reg, x) in DUTY.iter().zip(d) {
+            wr(&mut self.0, &PWM, reg, duty_cycles(x, half_period))?;
+        }
+        Ok(())
+    }
+    /// `GATE_STATUS`: (upper gates, lower gates, requested state), bit 2 = leg a.
+    pub fn gate_status(&mut self) -> Result<(u8, u8, u8), BusError> {
+        let s = rd(&mut self.0, &PWM, &regmap::GATE_STATUS)?;
+        Ok(((s & 7) as u8, (s >> 3 & 7) as u8, (s >> 6 & 7) as u8))
+    }
+}
+
+/// Compare value for duty fraction `d` of a half period of `half_period`
+/// cycles: `round(d half_period)`, `d` clamped to `[0, 1]`, NaN as 0.5.
+pub fn duty_cycles(d: f64, half_period: u32) -> u32 {
+    let d = if d.is_nan() { 0.5 } else { d.clamp(0.0, 1.0) };
+    libm::round(d * f64::from(half_period)) as u32
+}
+
+/// One leg's duty register as an `embedded-hal` PWM channel.
+pub struct Leg<'a, B> {
+    bus: &'a mut B,
+    reg: &'static Register,
+    period: u16,
+}
+
+/// A bus error seen through `embedded-hal`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PwmError(pub BusError);
+
+impl embedded_hal::pwm::Error for PwmError {
+    fn kind(&self) -> embedded_hal::pwm::ErrorKind {
+        embedded_hal::pwm::ErrorKind::Other
+    }
+}
+
+impl<B> embedded_hal::pwm::ErrorType for Leg<'_, B> {
+    type Error = PwmError;
+}
+
+impl<B: RegisterBus> embedded_hal::pwm::SetDutyCycle for Leg<'_, B> {
+    fn max_duty_cycle(&self) -> u16 {
+        self.period
+    }
+    fn set_duty_cycle(&mut self, duty: u16) -> Result<(), PwmError> {
+        wr(self.bus, &PWM, self.reg, u32::from(duty.min(self.period))).map_err(PwmError)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pl::fake::FakePl;
+    use embedded_hal::pwm::SetDutyCycle;
+
+    #[test]
+    fn duty_rounding_and_clamping() {
+        assert_eq!(duty_cycles(0.5, 3128), 1564);
+        assert_eq!(duty_cycles(0.25, 3), 1); // 0.75 rounds to 1
+        assert_eq!(duty_cycles(-0.1, 3128), 0);
+        assert_eq!(duty_cycles(1.7, 3128), 3128);
+        assert_eq!(duty_cycles(f64::NAN, 100), 50);
+    }
+
+    #[test]
+    fn embedded_hal_channel_scales_to_the_period() {
+        let mut pl = FakePl::new();
+        let mut pwm = Pwm(&mut pl);
+        pwm.set_half_period(3128).unwrap();
+        let mut b = pwm.leg(1).unwrap();
+        assert_eq!(b.max_duty_cycle(), 3128);
+        b.set_duty_cycle_percent(25).unwrap();
+        b.set_duty_cycle_fully_on().unwrap();
+        let mut c = pwm.leg(2).unwrap();
+        c.set_duty_cycle_fraction(1, 4).unwrap();
+        assert_eq!(pl.get(PWM.addr(&regmap::DUTY_B)), 3128);
+        assert_eq!(pl.get(PWM.addr(&regmap::DUTY_C)), 782);
+        // A 25 % write happened before the 100 % one.
+        assert!(pl.writes.contains(&(PWM.addr(&regmap::DUTY_B), 782)));
+        // Leg a untouched: its reset value.
+        assert_eq!(pl.get(PWM.addr(&regmap::DUTY_A)), regmap::DUTY_A.reset);
+    }
+
+    #[test]
+    fn gates_and_duties() {
+        let mut pl = FakePl::new();
+        let mut pwm = Pwm(&mut pl);
+        assert!(!pwm.gates_enabled().unwrap());
+        pwm.set_gates(true).unwrap();
+        assert!(pwm.gates_enabled().unwrap());
+        pwm.set_duties([0.0, 0.5, 1.0], 1000).unwrap();
+        pwm.set_gates(false).unwrap();
+        assert_eq!(pl.get(regmap::GATE_CTRL_ADDR), 0);
+        let duties: std::vec::Vec<u32> = DUTY.iter().map(|r| pl.get(PWM.addr(r))).collect();
+        assert_eq!(duties, [0, 500, 1000]);
+        pl.set(PWM.addr(&regmap::GATE_STATUS), 0b101_010_101);
+        assert_eq!(Pwm(&mut pl).gate_status().unwrap(), (0b101, 0b010, 0b101));
+    }
+}

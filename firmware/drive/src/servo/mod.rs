@@ -1,0 +1,489 @@
+//! The drive on the PS: modes, gates, torque reference, the control step
+//! run at every control-period boundary (FOC on the PS, or the inputs of
+//! the PL's MPDTC core), the watchdog heartbeat and the `step` recorder.
+//!
+//! Everything goes through the PL drivers ([`crate::pl`]) over a
+//! [`RegisterBus`], so the same code drives a bitstream, the simulated PL
+//! and, in the host tests below, a fake one. The firmware calls
+//! [`Servo::control_step`] from its control interrupt and the other methods
+//! from the console (both under a critical section).
+//!
+//! Timing (PL clock 100 MHz):
+//! - ADC every `ADC_PERIOD` = 391 cycles (255.75 kHz), averaged by 4: a
+//!   result every 1564 cycles. MPDTC control period = one averaged result
+//!   (63.94 kHz, the paper's 64 kHz within 0.1 %).
+//! - FOC: PWM half period 3128 cycles, so one PWM period (6256 cycles,
+//!   15.985 kHz, the paper's 16 kHz within 0.1 %) is exactly 4 averaged
+//!   ADC results.
+use crate::bus::{BusError, RegisterBus};
+use crate::pl::adc::{Adc, AdcScale};
+use crate::pl::enc::Encoder;
+use crate::pl::fault::{Fault, Faults};
+use crate::pl::mpdtc::Mpdtc;
+use crate::pl::pwm::{duty_cycles, Pwm};
+use crate::pl::top::{Mode, Top};
+use crate::pmsm::foc::{Foc, FocParams};
+use crate::pmsm::frames::{clarke, park};
+use crate::pmsm::mpdtc_ctrl::{fixed_inputs, inputs_from_measurement};
+use crate::pmsm::mpdtc_fixed::FixedParams;
+use crate::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+use crate::pmsm::params::MotorParams;
+use crate::pmsm::sim::{Actuation, Controller, Measurement};
+use crate::regmap::{self, seq_state};
+use crate::validate::ParamError;
+
+mod step;
+pub use step::{StepRecorder, StepResult, STEP_SAMPLES_MAX};
+
+/// Configuration of the drive (defaults: the paper's setup).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ServoConfig {
+    /// Motor model of the controllers and of the torque estimate.
+    pub motor: MotorParams,
+    /// Current sensing gain.
+    pub adc: AdcScale,
+    /// Encoder position of the rotor d axis on phase a, counts (FOC; the
+    /// MPDTC uses the position latched by its alignment).
+    pub enc_zero: u32,
+    /// Largest accepted torque reference magnitude, N m.
+    pub torque_limit_nm: f64,
+    /// `ADC_PERIOD`, PL clock cycles.
+    pub adc_period_cycles: u32,
+    /// `PWM_PERIOD` (half period) in FOC mode, PL clock cycles.
+    pub foc_half_period_cycles: u32,
+    /// `DEAD_TIME`, PL clock cycles.
+    pub dead_time_cycles: u32,
+    /// `WDG_TIMEOUT`, PL clock cycles.
+    pub watchdog_cycles: u32,
+    /// `MPDTC_ALIGN_TIME`, PL clock cycles.
+    pub align_cycles: u32,
+}
+
+impl Default for ServoConfig {
+    fn default() -> Self {
+        Self {
+            motor: MotorParams::default(),
+            // 12-bit signed ADC over +-20.48 A: 10 mA per count.
+            adc: AdcScale {
+                amps_per_count: 0.01,
+            },
+            enc_zero: 0,
+            torque_limit_nm: 1.0,
+            adc_period_cycles: 391,
+            foc_half_period_cycles: 3128,
+            dead_time_cycles: 50,
+            // 2 ms: 32 FOC or 128 MPDTC periods without a heartbeat.
+            watchdog_cycles: 200_000,
+            // 2 ms of rotor alignment before the MPDTC's first decision.
+            align_cycles: 200_000,
+        }
+    }
+}
+
+/// Why a drive command was refused (nothing changed).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ServoError {
+    /// `enable` in mode off.
+    ModeOff,
+    /// `enable` while a fault is latched.
+    FaultLatched(Faults),
+    /// `step` with the gates off.
+    GatesOff,
+    /// Torque reference not finite or beyond the limit (N m).
+    TorqueOutOfRange(f64),
+    /// The PL answered with an error.
+    Bus(BusError),
+}
+
+impl From<BusError> for ServoError {
+    fn from(e: BusError) -> Self {
+        ServoError::Bus(e)
+    }
+}
+
+/// What the drive measured at the last control step.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Measured {
+    /// d-axis current, A.
+    pub i_d_a: f64,
+    /// q-axis current, A.
+    pub i_q_a: f64,
+    /// Torque from the measured currents, N m.
+    pub torque_nm: f64,
+    /// Electrical speed, rad/s.
+    pub omega_e_rad_s: f64,
+}
+
+/// The drive's state on the PS.
+pub struct Servo {
+    cfg: ServoConfig,
+    mode: Mode,
+    gates: bool,
+    torque_ref_nm: f64,
+    foc_params: FocParams,
+    foc: Foc,
+    mpdtc: MpdtcConfig,
+    mpdtc_regs: FixedParams,
+    /// MPDTC: the encoder zero latched by the alignment of this run.
+    align_zero: Option<u32>,
+    /// MPDTC: the decision applied at the last boundary (for transitions).
+    last_state: u8,
+    /// FOC: the ADC timer was restarted at a PWM period start of this run.
+    adc_synced: bool,
+    periods: u64,
+    overruns: u64,
+    beat: u32,
+    measured: Measured,
+    /// Gate transitions per leg (cumulative, from the commanded switching).
+    transitions: [u64; 3],
+    rec: StepRecorder,
+}
+
+impl Servo {
+    /// A drive in mode off with the gates off; nothing touches the PL
+    /// until [`Servo::init`].
+    pub fn new(cfg: &ServoConfig) -> Result<Self, ParamError> {
+        if !(cfg.torque_limit_nm.is_finite() && cfg.torque_limit_nm > 0.0) {
+            return Err(ParamError {
+                field: "torque_limit_nm",
+                reason: "must be finite and > 0",
+            });
+        }
+        let foc_params = FocParams {
+            period_s: period_s(2 * cfg.foc_half_period_cycles),
+            measurement_lag_s: foc_measurement_lag_s(cfg),
+            ..FocParams::default()
+        };
+        let mp = MpdtcParams {
+            control_period_s: period_s(4 * cfg.adc_period_cycles),
+            ..MpdtcParams::default()
+        };
+        let mpdtc = MpdtcConfig::new(cfg.motor, mp)?;
+        Ok(Self {
+            cfg: *cfg,
+            mode: Mode::Off,
+            gates: false,
+            torque_ref_nm: 0.0,
+            foc: Foc::new(&cfg.motor, &foc_params)?,
+            foc_params,
+            mpdtc_regs: FixedParams::from_config(&mpdtc)?,
+            mpdtc,
+            align_zero: None,
+            last_state: 0,
+            adc_synced: false,
+            periods: 0,
+            overruns: 0,
+            beat: 0,
+            measured: Measured::default(),
+            transitions: [0; 3],
+            rec: StepRecorder::new(),
+        })
+    }
+
+    /// Puts the PL in the drive's start state: gates off, mode off, timing,
+    /// watchdog, MPDTC parameters (core state held cleared).
+    pub fn init<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
+        Pwm(&mut *bus).set_gates(false)?;
+        Top(&mut *bus).set_mode(Mode::Off)?;
+        Adc(&mut *bus).set_period(self.cfg.adc_period_cycles)?;
+        let mut pwm = Pwm(&mut *bus);
+        pwm.set_dead_time(self.cfg.dead_time_cycles)?;
+        pwm.set_half_period(self.cfg.foc_half_period_cycles)?;
+        pwm.set_duties([0.5; 3], self.cfg.foc_half_period_cycles)?;
+        Fault(&mut *bus).set_watchdog_timeout(self.cfg.watchdog_cycles)?;
+        let mut m = Mpdtc(&mut *bus);
+        m.set_ctrl(false, true)?;
+        m.load_params(&self.mpdtc_regs)?;
+        m.set_align_time(self.cfg.align_cycles)?;
+        Top(&mut *bus).heartbeat(0)
+    }
+
+    /// The configuration.
+    pub fn config(&self) -> &ServoConfig {
+        &self.cfg
+    }
+    /// The active mode.
+    pub fn mode(&self) -> Mode {
+        self.mode
+    }
+    /// The torque reference, N m.
+    pub fn torque_ref_nm(&self) -> f64 {
+        self.torque_ref_nm
+    }
+    /// Control periods run.
+    pub fn periods(&self) -> u64 {
+        self.periods
+    }
+    /// Control periods missed (the control step did not run in time).
+    pub fn overruns(&self) -> u64 {
+        self.overruns
+    }
+    /// What the last control step measured.
+    pub fn measured(&self) -> Measured {
+        self.measured
+    }
+    /// Control periods per second of the active mode (FOC: the PWM period;
+    /// MPDTC and off: one averaged ADC result), Hz.
+    pub fn control_rate_hz(&self) -> f64 {
+        1.0 / self.control_period_s()
+    }
+    fn control_period_s(&self) -> f64 {
+        match self.mode {
+            Mode::Foc => self.foc_params.period_s,
+            _ => self.mpdtc.params.control_period_s,
+        }
+    }
+
+    /// Switches the mode; the gates go off first (any mode change).
+    pub fn set_mode<B: RegisterBus>(&mut self, bus: &mut B, m: Mode) -> Result<(), ServoError> {
+        self.gates_off(bus)?;
+        Top(&mut *bus).set_mode(m)?;
+        self.mode = m;
+        Ok(())
+    }
+
+    /// Gates on: refused in mode off and while a fault is latched.
+    pub fn enable<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), ServoError> {
+        if self.mode == Mode::Off {
+            return Err(ServoError::ModeOff);
+        }
+        let f = Fault(&mut *bus).latched()?;
+        if !f.none() {
+            return Err(ServoError::FaultLatched(f));
+        }
+        // Fresh controller state for this run.
+        self.foc = Foc::new(&self.cfg.motor, &self.foc_params).map_err(|_| ServoError::ModeOff)?;
+        self.align_zero = None;
+        self.last_state = 0;
+        self.adc_synced = false;
+        let half = self.cfg.foc_half_period_cycles;
+        Pwm(&mut *bus).set_duties([0.5; 3], half)?;
+        if self.mode == Mode::Mpdtc {
+            // The sequence aligns the rotor, then takes the decisions.
+            Mpdtc(&mut *bus).set_ctrl(false, false)?;
+        }
+        Pwm(&mut *bus).set_gates(true)?;
+        self.gates = true;
+        Ok(())
+    }
+
+    /// Gates off (always allowed).
+    pub fn disable<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), ServoError> {
+        self.gates_off(bus)
+    }
+
+    /// Gates off; the torque reference returns to 0 N m, so that every run
+    /// starts from rest (a `step` after `enable` is a step from 0).
+    fn gates_off<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), ServoError> {
+        if self.gates {
+            self.torque_ref_nm = 0.0;
+        }
+        self.gates = false;
+        self.rec.cancel();
+        Pwm(&mut *bus).set_gates(false)?;
+        Mpdtc(&mut *bus).set_ctrl(false, true)?;
+        Ok(())
+    }
+
+    /// Whether the gates are on (`GATE_EN` read back: a fault clears it).
+    pub fn gates_on<B: RegisterBus>(&mut self, bus: &mut B) -> Result<bool, BusError> {
+        Pwm(bus).gates_enabled()
+    }
+
+    /// Checks a torque reference: finite and within the limit.
+    pub fn check_torque(&self, nm: f64) -> Result<f64, ServoError> {
+        if nm.is_finite() && libm::fabs(nm) <= self.cfg.torque_limit_nm {
+            Ok(nm)
+        } else {
+            Err(ServoError::TorqueOutOfRange(nm))
+        }
+    }
+
+    /// Sets the torque reference, N m.
+    pub fn set_torque_ref(&mut self, nm: f64) -> Result<(), ServoError> {
+        self.torque_ref_nm = self.check_torque(nm)?;
+        Ok(())
+    }
+
+    /// Latched faults.
+    pub fn faults<B: RegisterBus>(&mut self, bus: &mut B) -> Result<Faults, BusError> {
+        Fault(bus).latched()
+    }
+
+    /// Clears the latched faults whose condition is gone; the gates stay
+    /// off until `enable`. Returns what is still latched.
+    pub fn clear_faults<B: RegisterBus>(&mut self, bus: &mut B) -> Result<Faults, ServoError> {
+        self.gates_off(bus)?;
+        Ok(Fault(&mut *bus).clear()?)
+    }
+
+    /// Arms a step to `nm` recorded over `window_s` (at most
+    /// [`STEP_SAMPLES_MAX`] control periods); it starts at the first control
+    /// step where the controller is running (after the MPDTC alignment).
+    pub fn begin_step<B: RegisterBus>(
+        &mut self,
+        bus: &mut B,
+        nm: f64,
+        window_s: f64,
+    ) -> Result<(), ServoError> {
+        let nm = self.check_torque(nm)?;
+        if !(self.gates && self.gates_on(bus)?) {
+            return Err(ServoError::GatesOff);
+        }
+        let n = libm::ceil(window_s / self.control_period_s()) as usize;
+        self.rec.start_from(self.torque_ref_nm);
+        self.rec.arm(nm, n.clamp(1, STEP_SAMPLES_MAX));
+        Ok(())
+    }
+
+    /// The step's metrics once its window is full.
+    pub fn step_result(&self) -> Option<StepResult> {
+        self.rec.result(self.control_period_s())
+    }
+
+    /// Whether an armed step is still waiting or recording.
+    pub fn step_pending(&self) -> bool {
+        self.rec.pending()
+    }
+
+    /// Notes `n` control periods that passed without a control step.
+    pub fn note_overruns(&mut self, n: u64) {
+        self.overruns += n;
+    }
+
+    /// One control period: heartbeat, measurement, then the active
+    /// controller. Called at every control-period boundary.
+    pub fn control_step<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
+        if self.mode == Mode::Foc && self.gates && !self.adc_synced {
+            // First thing after a PWM period start: restart the ADC timer so
+            // that its samples take the fixed phase the FOC's measurement
+            // lag assumes (the PL has no ADC trigger from the PWM counter).
+            Adc(&mut *bus).restart()?;
+            self.adc_synced = true;
+        }
+        self.beat = self.beat.wrapping_add(1);
+        Top(&mut *bus).heartbeat(self.beat)?;
+        self.periods += 1;
+        let i_abc = Adc(&mut *bus).currents_a(&self.cfg.adc)?;
+        let enc = Encoder(&mut *bus).read()?;
+        let pp = self.cfg.motor.pole_pairs;
+        let gates = self.gates && Pwm(&mut *bus).gates_enabled()?;
+        if self.gates && !gates {
+            // A fault turned the gates off: the drive follows.
+            self.gates_off(bus).map_err(|e| match e {
+                ServoError::Bus(b) => b,
+                _ => BusError::SlaveError,
+            })?;
+        }
+        let mut running = gates;
+        let zero = match self.mode {
+            Mode::Mpdtc => {
+                if self.align_zero.is_none() && gates {
+                    let mut m = Mpdtc(&mut *bus);
+                    if m.seq_status()?.aligned {
+                        self.align_zero = Some(m.align_pos()?);
+                    }
+                }
+                running &= self.align_zero.is_some();
+                self.align_zero.unwrap_or(self.cfg.enc_zero)
+            }
+            _ => self.cfg.enc_zero,
+        };
+        let m = Measurement {
+            i_abc_a: i_abc,
+            theta_e_rad: enc.theta_e_rad(pp, zero),
+            omega_e_rad_s: enc.omega_e_rad_s(pp),
+        };
+        let (al, be) = clarke(i_abc);
+        let (i_d, i_q) = park(al, be, m.theta_e_rad);
+        self.measured = Measured {
+            i_d_a: i_d,
+            i_q_a: i_q,
+            torque_nm: self.cfg.motor.torque_nm(i_d, i_q),
+            omega_e_rad_s: m.omega_e_rad_s,
+        };
+        if running {
+            if let Some(r) = self
+                .rec
+                .on_period(self.measured.torque_nm, self.transitions)
+            {
+                self.torque_ref_nm = r;
+            }
+        }
+        match (self.mode, running) {
+            (Mode::Foc, true) => self.foc_step(bus, &m)?,
+            (Mode::Mpdtc, true) => self.mpdtc_step(bus, &m)?,
+            _ => {}
+        }
+        Ok(())
+    }
+
+    fn foc_step<B: RegisterBus>(&mut self, bus: &mut B, m: &Measurement) -> Result<(), BusError> {
+        let half = self.cfg.foc_half_period_cycles;
+        if let Actuation::DutyAbc(d) = self.foc.step(m, self.torque_ref_nm) {
+            Pwm(&mut *bus).set_duties(d, half)?;
+            // Centre-aligned PWM: a leg strictly between 0 and 100 % makes
+            // two transitions per period.
+            for (t, x) in self.transitions.iter_mut().zip(d) {
+                let c = duty_cycles(x, half);
+                if c > 0 && c < half {
+                    *t += 2;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn mpdtc_step<B: RegisterBus>(&mut self, bus: &mut B, m: &Measurement) -> Result<(), BusError> {
+        let mut core = Mpdtc(&mut *bus);
+        let seq = core.seq_status()?;
+        // The decision of the last period was applied at this boundary.
+        let s = core.last_decision()?;
+        if s != self.last_state {
+            for (leg, t) in self.transitions.iter_mut().enumerate() {
+                *t += u64::from((s ^ self.last_state) >> (2 - leg) & 1);
+            }
+            self.last_state = s;
+        }
+        if seq.state != seq_state::SAMPLE {
+            return Ok(());
+        }
+        let ts = self.mpdtc.params.control_period_s;
+        let inp = inputs_from_measurement(
+            m,
+            self.torque_ref_nm,
+            self.mpdtc.params.meas_age_periods,
+            ts,
+        );
+        core.write_inputs(&fixed_inputs(&inp, ts))?;
+        core.start(self.beat)
+    }
+}
+
+/// Age of the FOC's averaged measurement at the PWM period start, s, with
+/// the ADC timer restarted [`ADC_RESTART_CYCLES`] (`r`) after a period
+/// start `B`: conversions at `B + r + j P_adc`; the newest before the next
+/// start `B + P_pwm` is `P_pwm - r - j_max P_adc` old, and the mean of the
+/// last 4 is 1.5 ADC periods older. Paper timing: 387 + 586.5 cycles = 9.7 us.
+fn foc_measurement_lag_s(cfg: &ServoConfig) -> f64 {
+    let pwm = 2 * cfg.foc_half_period_cycles;
+    let adc = cfg.adc_period_cycles.max(1);
+    let j_max = pwm.saturating_sub(ADC_RESTART_CYCLES + 1) / adc;
+    let newest = pwm.saturating_sub(ADC_RESTART_CYCLES + j_max * adc);
+    (f64::from(newest) + 1.5 * f64::from(adc)) / f64::from(regmap::PL_CLOCK_HZ)
+}
+
+/// PL cycles from the PWM period start to the ADC timer restart: the
+/// boundary is reported one cycle after it, and the two `ADC_CTRL` writes
+/// take one cycle each.
+pub const ADC_RESTART_CYCLES: u32 = 4;
+
+/// Seconds of `cycles` PL clock cycles.
+fn period_s(cycles: u32) -> f64 {
+    f64::from(cycles) / f64::from(regmap::PL_CLOCK_HZ)
+}
+
+#[cfg(test)]
+mod sim_tests;
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,94 @@
+//! The servo in closed loop on the simulated PL and motor (`drive::simpl`),
+//! the way the firmware runs it under QEMU: one control step at each
+//! control-period boundary the PL reports. The settling figures are the
+//! host simulation's (README, paper 000) plus 10 %.
+use super::*;
+use crate::simpl::{SimConfig, SimDrive};
+
+fn setup(mode: Mode) -> (Servo, SimDrive) {
+    let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+    let cfg = ServoConfig {
+        motor: sim.config().motor,
+        adc: AdcScale {
+            amps_per_count: sim.config().adc_amps_per_count,
+        },
+        ..ServoConfig::default()
+    };
+    let mut s = Servo::new(&cfg).unwrap();
+    s.init(&mut sim).unwrap();
+    s.set_mode(&mut sim, mode).unwrap();
+    s.enable(&mut sim).unwrap();
+    (s, sim)
+}
+
+/// Runs control periods until `done` or `max` periods; returns the periods run.
+fn run(s: &mut Servo, sim: &mut SimDrive, max: u32, mut done: impl FnMut(&Servo) -> bool) -> u32 {
+    for k in 0..max {
+        let a = sim.advance_to_boundary(20_000);
+        assert!(a.control_periods >= 1, "no boundary in 200 us");
+        s.control_step(sim).unwrap();
+        if done(s) {
+            return k + 1;
+        }
+    }
+    max
+}
+
+fn step(mode: Mode) -> (StepResult, f64, Servo, SimDrive) {
+    let (mut s, mut sim) = setup(mode);
+    // Let the drive run 3 ms (the MPDTC aligns the rotor for 2 ms first).
+    let n = (3e-3 * s.control_rate_hz()) as u32;
+    run(&mut s, &mut sim, n, |_| false);
+    s.begin_step(&mut sim, 0.4, 2e-3).unwrap();
+    run(&mut s, &mut sim, 10_000, |s| !s.step_pending());
+    let r = s.step_result().expect("step completed");
+    let truth = sim.truth().torque_nm;
+    std::println!("{mode:?} step on the simulated PL: {r:?}, plant torque {truth:.4} N m");
+    (r, truth, s, sim)
+}
+
+#[test]
+fn foc_step_on_the_simulated_pl() {
+    let (r, truth, s, _) = step(Mode::Foc);
+    let t = r.settling_s.expect("settled");
+    assert!(t <= 0.27e-3, "{r:?}");
+    assert!(
+        (r.final_nm - 0.4).abs() < 0.05 && (truth - 0.4).abs() < 0.05,
+        "{r:?} {truth}"
+    );
+    // A 16 kHz carrier: 32 k transitions per leg per second at most.
+    assert!(r.switching_per_leg_per_s <= 32.1e3, "{r:?}");
+    assert_eq!(s.overruns(), 0);
+}
+
+#[test]
+fn mpdtc_step_on_the_simulated_pl() {
+    let (r, truth, s, _) = step(Mode::Mpdtc);
+    let t = r.settling_s.expect("settled");
+    assert!(t <= 0.19e-3, "{r:?}");
+    assert!(
+        (r.final_nm - 0.4).abs() < 0.05 && (truth - 0.4).abs() < 0.05,
+        "{r:?} {truth}"
+    );
+    assert!(r.switching_per_leg_per_s > 0.0, "{r:?}");
+    assert_eq!(s.overruns(), 0);
+}
+
+#[test]
+fn the_watchdog_trips_when_the_control_step_stops() {
+    let (mut s, mut sim) = setup(Mode::Foc);
+    run(&mut s, &mut sim, 50, |_| false);
+    assert!(s.faults(&mut sim).unwrap().none());
+    // 3 ms of PL time without a control step (watchdog: 2 ms).
+    sim.advance(300_000);
+    assert_eq!(s.faults(&mut sim).unwrap(), Faults(Faults::WATCHDOG));
+    s.control_step(&mut sim).unwrap();
+    assert!(!s.gates_on(&mut sim).unwrap());
+    assert!(matches!(
+        s.enable(&mut sim),
+        Err(ServoError::FaultLatched(_))
+    ));
+    assert!(s.clear_faults(&mut sim).unwrap().none());
+    s.enable(&mut sim).unwrap();
+    assert!(s.gates_on(&mut sim).unwrap());
+}

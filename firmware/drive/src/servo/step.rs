@@ -1,0 +1,199 @@
+//! The `step` command's recorder: the measured torque sampled once per
+//! control period from the step on, and its metrics by the one definition
+//! in [`crate::pmsm::metrics`] (10 % settling band).
+use crate::pmsm::metrics::{
+    overshoot_percent, settling_band, settling_time_s, transitions_per_leg_per_s,
+};
+
+/// Most samples one step records (20 ms at 64 kHz).
+pub const STEP_SAMPLES_MAX: usize = 1280;
+
+/// Metrics of one recorded step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StepResult {
+    /// Reference before the step, N m.
+    pub from_nm: f64,
+    /// Reference after the step, N m.
+    pub to_nm: f64,
+    /// Settling time (10 % band), s; `None` if not settled in the window.
+    pub settling_s: Option<f64>,
+    /// Overshoot, percent of the step size.
+    pub overshoot_percent: f64,
+    /// Gate transitions per leg per second over the window.
+    pub switching_per_leg_per_s: f64,
+    /// Mean measured torque over the last quarter of the window, N m.
+    pub final_nm: f64,
+    /// Window, s.
+    pub window_s: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum State {
+    Idle,
+    /// Waiting for the first running control step.
+    Armed,
+    Recording,
+    Done,
+}
+
+/// Samples of one step.
+pub struct StepRecorder {
+    state: State,
+    from_nm: f64,
+    to_nm: f64,
+    n: usize,
+    len: usize,
+    torque: [f32; STEP_SAMPLES_MAX],
+    transitions_start: [u64; 3],
+    transitions_end: [u64; 3],
+}
+
+impl Default for StepRecorder {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl StepRecorder {
+    /// Nothing armed.
+    pub const fn new() -> Self {
+        Self {
+            state: State::Idle,
+            from_nm: 0.0,
+            to_nm: 0.0,
+            n: 0,
+            len: 0,
+            torque: [0.0; STEP_SAMPLES_MAX],
+            transitions_start: [0; 3],
+            transitions_end: [0; 3],
+        }
+    }
+    /// Arms a step to `to_nm` over `n` control periods.
+    pub fn arm(&mut self, to_nm: f64, n: usize) {
+        self.state = State::Armed;
+        self.to_nm = to_nm;
+        self.n = n.clamp(1, STEP_SAMPLES_MAX);
+        self.len = 0;
+    }
+    /// Drops an armed or running step.
+    pub fn cancel(&mut self) {
+        if matches!(self.state, State::Armed | State::Recording) {
+            self.state = State::Idle;
+        }
+    }
+    /// Armed or recording.
+    pub fn pending(&self) -> bool {
+        matches!(self.state, State::Armed | State::Recording)
+    }
+    /// One control period with the controller running: `torque_nm` is the
+    /// torque measured at this boundary (before the controller acts on the
+    /// new reference), `transitions` the cumulative gate transitions per leg.
+    /// Returns the new reference when the step starts at this boundary.
+    pub fn on_period(&mut self, torque_nm: f64, transitions: [u64; 3]) -> Option<f64> {
+        let mut started = None;
+        if self.state == State::Armed {
+            self.state = State::Recording;
+            self.transitions_start = transitions;
+            started = Some(self.to_nm);
+        }
+        if self.state == State::Recording {
+            self.torque[self.len] = torque_nm as f32;
+            self.len += 1;
+            if self.len >= self.n {
+                self.state = State::Done;
+                self.transitions_end = transitions;
+            }
+        }
+        started
+    }
+    /// Sets the step's start value (the reference before it), N m.
+    pub fn start_from(&mut self, from_nm: f64) {
+        self.from_nm = from_nm;
+    }
+    /// The metrics, once the window is full; `period_s` is the spacing of
+    /// the samples.
+    pub fn result(&self, period_s: f64) -> Option<StepResult> {
+        if self.state != State::Done {
+            return None;
+        }
+        let samples = || {
+            self.torque[..self.len]
+                .iter()
+                .enumerate()
+                .map(move |(k, y)| (k as f64 * period_s, f64::from(*y)))
+        };
+        let t_end = (self.len - 1) as f64 * period_s;
+        let (y0, y1) = (self.from_nm, self.to_nm);
+        let tail = &self.torque[self.len - self.len.div_ceil(4)..self.len];
+        let final_nm = tail.iter().map(|y| f64::from(*y)).sum::<f64>() / tail.len() as f64;
+        let window_s = self.len as f64 * period_s;
+        Some(StepResult {
+            from_nm: y0,
+            to_nm: y1,
+            settling_s: settling_time_s(samples(), 0.0, t_end, y1, settling_band(y0, y1)),
+            overshoot_percent: overshoot_percent(samples(), 0.0, t_end, y0, y1),
+            switching_per_leg_per_s: transitions_per_leg_per_s(
+                self.transitions_start,
+                self.transitions_end,
+                window_s,
+            ),
+            final_nm,
+            window_s,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A first-order response sampled every 10 us, by hand: it enters the
+    /// 10 % band of a 0 -> 1 step when 1 - e^{-t/tau} >= 0.9, t = tau ln 10.
+    #[test]
+    fn metrics_of_a_first_order_step() {
+        let mut r = StepRecorder::new();
+        r.start_from(0.0);
+        r.arm(1.0, 100);
+        let tau = 50e-6;
+        let mut started = None;
+        for k in 0..100u64 {
+            let t = k as f64 * 10e-6;
+            let y = 1.0 - libm::exp(-t / tau);
+            let s = r.on_period(y, [2 * k, 2 * k, 2 * k]);
+            started = started.or(s);
+            assert_eq!(r.pending(), k < 99);
+        }
+        assert_eq!(started, Some(1.0));
+        let m = r.result(10e-6).unwrap();
+        // tau ln 10 = 115.1 us -> first sample at or after it: 120 us.
+        assert!((m.settling_s.unwrap() - 120e-6).abs() < 1e-9, "{m:?}");
+        assert_eq!(m.overshoot_percent, 0.0);
+        // 2 transitions per leg per 10 us period = 200 k/s (99 periods / 1 ms).
+        assert!(
+            (m.switching_per_leg_per_s - 198.0 / 1e-3).abs() < 1e-6,
+            "{m:?}"
+        );
+        assert!((m.final_nm - 1.0).abs() < 1e-3);
+        assert!((m.window_s - 1e-3).abs() < 1e-12);
+    }
+
+    #[test]
+    fn overshoot_and_no_settling() {
+        let mut r = StepRecorder::new();
+        r.start_from(0.4);
+        r.arm(-0.4, 4);
+        for y in [0.4, -0.5, -0.4, 0.0] {
+            r.on_period(y, [0; 3]);
+        }
+        let m = r.result(1e-4).unwrap();
+        assert!((m.overshoot_percent - 12.5).abs() < 1e-4, "{m:?}");
+        assert_eq!(m.settling_s, None, "the last sample is out of the band");
+        // Cancel drops a pending step; nothing without arming.
+        let mut r = StepRecorder::new();
+        assert_eq!(r.on_period(1.0, [0; 3]), None);
+        assert!(r.result(1e-4).is_none());
+        r.arm(1.0, 3);
+        r.cancel();
+        assert!(!r.pending());
+    }
+}

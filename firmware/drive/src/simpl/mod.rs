@@ -1,0 +1,23 @@
+//! The simulated PL: a register-accurate model of `pl_top`
+//! (`pl-bitstream-src/rtl/`) behind [`crate::bus::RegisterBus`], coupled to
+//! the PMSM plant. See `docs/ARCHITECTURE.md` (simulated PL).
+
+pub mod adc;
+pub mod core;
+pub mod enc;
+pub mod fault;
+pub mod inverter;
+pub mod pl;
+pub mod pwm;
+pub mod regs;
+pub mod seq;
+pub mod simdrive;
+
+pub use simdrive::{Advance, SimConfig, SimDrive, Truth, Work};
+
+/// "No event ahead" for the closed-form spans (any span is capped by the
+/// cycles asked for).
+pub(crate) const NEVER: u64 = u64::MAX;
+
+#[cfg(test)]
+mod tests;

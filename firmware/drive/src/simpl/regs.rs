@@ -1,0 +1,143 @@
+//! `pl_regs`: the stored registers of the map and the write rules, taken
+//! from the [`regmap`] table (`Register::apply_write`: mask, clamp, reject,
+//! W1C) rather than restated; read-only registers are views of the blocks
+//! (assembled in `pl.rs`).
+
+use crate::regmap::{self, Access, Block, RegError, Register};
+
+/// Number of software-writable (RW and W1C) registers in the map.
+const fn count_stored() -> usize {
+    let mut n = 0;
+    let mut b = 0;
+    while b < regmap::BLOCKS.len() {
+        let regs = regmap::BLOCKS[b].registers;
+        let mut r = 0;
+        while r < regs.len() {
+            if !matches!(regs[r].access, Access::Ro) {
+                n += 1;
+            }
+            r += 1;
+        }
+        b += 1;
+    }
+    n
+}
+
+/// Stored registers.
+pub const STORED: usize = count_stored();
+
+/// Storage slot of a writable register at absolute address `addr`
+/// (`None`: unmapped or read-only).
+pub const fn slot(addr: usize) -> Option<usize> {
+    let mut n = 0;
+    let mut b = 0;
+    while b < regmap::BLOCKS.len() {
+        let blk = regmap::BLOCKS[b];
+        let mut r = 0;
+        while r < blk.registers.len() {
+            let reg = blk.registers[r];
+            if !matches!(reg.access, Access::Ro) {
+                if blk.addr(reg) == addr {
+                    return Some(n);
+                }
+                n += 1;
+            }
+            r += 1;
+        }
+        b += 1;
+    }
+    None
+}
+
+/// Slot of a register that must be stored (compile-time check).
+pub const fn slot_of(block: &Block, reg: &Register) -> usize {
+    match slot(block.addr(reg)) {
+        Some(s) => s,
+        None => panic!("not a stored register"),
+    }
+}
+
+/// What a bus write did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WriteResult {
+    /// Stored (possibly clamped or masked); `slot` changed to `value`.
+    Stored {
+        /// Storage slot.
+        slot: usize,
+        /// New value.
+        value: u32,
+    },
+    /// W1C register: its value after clearing the written ones.
+    Cleared {
+        /// Storage slot.
+        slot: usize,
+        /// Value after the clear (before this cycle's new set bits).
+        value: u32,
+    },
+    /// Rejected value: nothing stored, `ERR.BAD_VALUE`.
+    Rejected,
+    /// Unmapped or read-only: `SLVERR`, `ERR.BAD_ADDR`.
+    SlaveError,
+}
+
+/// The stored registers, in map order, at their reset values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Regs {
+    /// Values by slot.
+    pub v: [u32; STORED],
+}
+
+impl Default for Regs {
+    fn default() -> Self {
+        let mut v = [0; STORED];
+        let mut n = 0;
+        for blk in regmap::BLOCKS {
+            for reg in blk.registers {
+                if reg.access != Access::Ro {
+                    v[n] = reg.reset;
+                    n += 1;
+                }
+            }
+        }
+        Self { v }
+    }
+}
+
+impl Regs {
+    /// Value of a stored register.
+    pub fn get(&self, slot: usize) -> u32 {
+        self.v[slot]
+    }
+
+    /// Decodes a write of `value` (all byte strobes) to `addr` by the
+    /// table's rules, without changing anything. `w1c_now` gives the
+    /// present value of a W1C register kept outside (FAULT_STATUS).
+    pub fn decode_write(
+        &self,
+        addr: usize,
+        value: u32,
+        w1c_now: impl Fn(usize) -> u32,
+    ) -> WriteResult {
+        let Some((_, reg)) = regmap::lookup(addr) else {
+            return WriteResult::SlaveError;
+        };
+        let Some(slot) = slot(addr) else {
+            return WriteResult::SlaveError;
+        };
+        match reg.access {
+            Access::Ro => WriteResult::SlaveError,
+            Access::W1c => {
+                let old = w1c_now(slot);
+                match reg.apply_write(old, value) {
+                    Ok(v) => WriteResult::Cleared { slot, value: v },
+                    Err(_) => WriteResult::SlaveError,
+                }
+            }
+            Access::Rw => match reg.apply_write(self.v[slot], value) {
+                Ok(v) => WriteResult::Stored { slot, value: v },
+                Err(RegError::Rejected) => WriteResult::Rejected,
+                Err(RegError::ReadOnly) => WriteResult::SlaveError,
+            },
+        }
+    }
+}

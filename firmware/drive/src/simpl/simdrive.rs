@@ -1,0 +1,401 @@
+//! [`SimDrive`]: the simulated `pl_top` ([`SimPl`]) coupled to the inverter
+//! ([`super::inverter`]), the PMSM plant ([`Plant`], exact ZOH between
+//! events) and the measurement chain (ADC counts of the phase currents at
+//! each convert pulse, encoder A/B/Z levels from the rotor angle).
+//!
+//! Time: PL clock cycles (10 ns). The plant is advanced lazily, only when
+//! its voltage changes (a gate edge), when the ADC samples it (convert
+//! pulse), when the encoder moves by one count, and at the end of each
+//! [`SimDrive::advance`]; between those instants its voltage is constant,
+//! so the closed form is exact. A register access occupies one PL cycle (see
+//! [`super::pl`]).
+
+use super::adc::adc_word;
+use super::inverter::potentials;
+use super::pl::{Events, SimPl};
+use crate::bus::{BusError, RegisterBus};
+use crate::pmsm::frames::leg_voltage_alpha_beta;
+use crate::pmsm::params::{check_finite, check_pos, MotorParams, ParamError};
+use crate::pmsm::plant::{MechanicalMode, Plant};
+use crate::regmap::{self, mode};
+use core::f64::consts::PI;
+
+/// Seconds per PL clock cycle.
+pub const CYCLE_S: f64 = 1.0 / regmap::PL_CLOCK_HZ as f64;
+
+/// Longest plant segment in cycles (4 us): in [`MechanicalMode::Inertia`]
+/// the plant holds the speed constant within a segment.
+const MAX_SEGMENT: u64 = 400;
+/// Longest segment while a leg conducts through a diode with all gates off
+/// (1 us): the diode choice is re-judged after it.
+const DIODE_SEGMENT: u64 = 100;
+
+/// The simulated motor, inverter and sensors.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SimConfig {
+    /// Motor (default: the paper's Maxon EC 60 flat at 48 V).
+    pub motor: MotorParams,
+    /// Mechanics (default: constant speed, a dynamometer holds the rotor).
+    pub mechanics: MechanicalMode,
+    /// Electrical speed at the start (the constant speed in
+    /// [`MechanicalMode::ConstantSpeed`]), rad/s. Default 0.
+    pub omega_e_rad_s: f64,
+    /// Current per ADC count, A (the board's shunt and amplifier): default
+    /// 16 A full scale, 7.8125 mA per count (12-bit signed).
+    pub adc_amps_per_count: f64,
+    /// Conversion time of the ADC: its result (`drdy`) follows the convert
+    /// pulse by this many cycles plus one. Default 50 (0.5 us). Must stay
+    /// below ADC_PERIOD - 1 for every result to arrive.
+    pub adc_conversion_cycles: u32,
+    /// Encoder quadrature counts per mechanical revolution (4 per line);
+    /// the index pulse is high during count 0. Default 4096 (ENC_CPR reset).
+    pub encoder_cpr: u32,
+}
+
+impl Default for SimConfig {
+    fn default() -> Self {
+        Self {
+            motor: MotorParams::default(),
+            mechanics: MechanicalMode::ConstantSpeed,
+            omega_e_rad_s: 0.0,
+            adc_amps_per_count: 16.0 / 2048.0,
+            adc_conversion_cycles: 50,
+            encoder_cpr: 4096,
+        }
+    }
+}
+
+impl SimConfig {
+    /// Checks every field (the motor and mechanics as [`Plant::new`] does).
+    pub fn validate(&self) -> Result<(), ParamError> {
+        Plant::new(&self.motor, 0.0, self.mechanics, self.omega_e_rad_s)?;
+        check_pos("adc_amps_per_count", self.adc_amps_per_count)?;
+        if self.adc_conversion_cycles > 60_000 {
+            return Err(ParamError {
+                field: "adc_conversion_cycles",
+                reason: "must be at most 60000 (below the longest ADC_PERIOD)",
+            });
+        }
+        if !(4..=65_535).contains(&self.encoder_cpr) {
+            return Err(ParamError {
+                field: "encoder_cpr",
+                reason: "must be in 4..=65535 (ENC_CPR range)",
+            });
+        }
+        Ok(())
+    }
+
+    /// ADC counts of a phase current (round to nearest, saturated to the
+    /// 12-bit range; NaN reads 0).
+    pub fn adc_counts(&self, i_a: f64) -> i32 {
+        let c = libm::round(i_a / self.adc_amps_per_count);
+        if c.is_nan() {
+            0
+        } else {
+            c.clamp(-2048.0, 2047.0) as i32
+        }
+    }
+}
+
+/// What one [`SimDrive::advance`] did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Advance {
+    /// PL cycles simulated (by this call).
+    pub cycles: u64,
+    /// Control-period boundaries crossed since the last `advance` (also
+    /// those crossed during register accesses in between): PWM period starts
+    /// in mode FOC-PWM, ADC average strobes otherwise (the MPDTC sequence's
+    /// SAMPLE point).
+    pub control_periods: u32,
+    /// ADC average strobes crossed.
+    pub adc_averages: u32,
+    /// PWM period starts crossed.
+    pub pwm_periods: u32,
+}
+
+/// Plant truth for diagnostics (the plant as of the end of the last
+/// `advance`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Truth {
+    /// Electromagnetic torque, N m.
+    pub torque_nm: f64,
+    /// d-axis current, A.
+    pub i_d_a: f64,
+    /// q-axis current, A.
+    pub i_q_a: f64,
+    /// Phase currents a, b, c, A.
+    pub i_abc_a: [f64; 3],
+    /// Electrical speed, rad/s.
+    pub omega_e_rad_s: f64,
+    /// Electrical angle, rad, `[0, 2 pi)`.
+    pub theta_e_rad: f64,
+    /// Mechanical angle since the start (not wrapped), rad.
+    pub theta_m_rad: f64,
+    /// Gate transitions per leg (a, b, c) since the start.
+    pub transitions: [u64; 3],
+}
+
+/// What the simulation has cost so far (for estimating its run time on a
+/// slower machine, e.g. the firmware under QEMU).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Work {
+    /// PL cycles simulated one by one (events and register accesses).
+    pub stepped_cycles: u64,
+    /// Quiet spans jumped over in closed form.
+    pub skips: u64,
+    /// Plant segments (closed-form ZOH evaluations).
+    pub plant_segments: u64,
+}
+
+/// Simulated `pl_top` + inverter + PMSM + ADC/encoder chain.
+#[derive(Debug, Clone)]
+pub struct SimDrive {
+    pl: SimPl,
+    plant: Plant,
+    cfg: SimConfig,
+    /// Cycles since the plant was last advanced.
+    lag: u64,
+    /// Gate outputs the plant sees since its last advance.
+    gates: (u8, u8),
+    theta_m_rad: f64,
+    enc_count: i64,
+    transitions: [u64; 3],
+    carried: Advance,
+    segments: u64,
+}
+
+impl SimDrive {
+    /// The drive right after the PL's reset, motor at rest current, angle 0.
+    pub fn new(cfg: &SimConfig) -> Result<Self, ParamError> {
+        cfg.validate()?;
+        let plant = Plant::new(&cfg.motor, 0.0, cfg.mechanics, cfg.omega_e_rad_s)?;
+        let mut s = Self {
+            pl: SimPl::new(cfg.adc_conversion_cycles),
+            plant,
+            cfg: *cfg,
+            lag: 0,
+            gates: (0, 0),
+            theta_m_rad: 0.0,
+            enc_count: 0,
+            transitions: [0; 3],
+            carried: Advance::default(),
+            segments: 0,
+        };
+        s.update_encoder_pins();
+        Ok(s)
+    }
+
+    /// The configuration.
+    pub fn config(&self) -> &SimConfig {
+        &self.cfg
+    }
+
+    /// PL cycles simulated since reset.
+    pub fn pl_cycles(&self) -> u64 {
+        self.pl.cycles()
+    }
+
+    /// Simulated time since reset, s.
+    pub fn time_s(&self) -> f64 {
+        self.pl.cycles() as f64 * CYCLE_S
+    }
+
+    /// `sim_time_scale` = guest (wall) time / simulated time, for a guest
+    /// that has run `guest_s` seconds while this drive simulated
+    /// [`Self::time_s`]; 0 before any simulated time.
+    pub fn sim_time_scale(&self, guest_s: f64) -> f64 {
+        let t = self.time_s();
+        if t > 0.0 && guest_s.is_finite() {
+            guest_s / t
+        } else {
+            0.0
+        }
+    }
+
+    /// Work done so far.
+    pub fn work(&self) -> Work {
+        Work {
+            stepped_cycles: self.pl.stepped,
+            skips: self.pl.skips,
+            plant_segments: self.segments,
+        }
+    }
+
+    /// Gate outputs now (bit 2 = leg a).
+    pub fn gates(&self) -> crate::gates::GateOutputs {
+        self.pl.gates()
+    }
+
+    /// Changes the load torque (Inertia mechanics only), N m.
+    pub fn set_load_torque_nm(&mut self, load_nm: f64) -> Result<(), ParamError> {
+        check_finite("load_torque_nm", load_nm)?;
+        self.plant.set_load_torque_nm(load_nm)
+    }
+
+    /// Plant truth (as of the end of the last [`Self::advance`]).
+    pub fn truth(&self) -> Truth {
+        let st = self.plant.state();
+        let (i_d_a, i_q_a) = self.plant.i_dq_a();
+        Truth {
+            torque_nm: self.plant.torque_nm(),
+            i_d_a,
+            i_q_a,
+            i_abc_a: self.plant.i_abc_a(),
+            omega_e_rad_s: st.omega_e_rad_s,
+            theta_e_rad: st.theta_e_rad,
+            theta_m_rad: self.theta_m_rad,
+            transitions: self.transitions,
+        }
+    }
+
+    /// Advances `cycles` PL cycles, event by event.
+    pub fn advance(&mut self, cycles: u64) -> Advance {
+        self.run(cycles, false)
+    }
+
+    /// Advances until just after the next control-period boundary (see
+    /// [`Advance::control_periods`]), at most `max_cycles`.
+    pub fn advance_to_boundary(&mut self, max_cycles: u64) -> Advance {
+        self.run(max_cycles, true)
+    }
+
+    fn run(&mut self, max: u64, to_boundary: bool) -> Advance {
+        let mut adv = core::mem::take(&mut self.carried);
+        let mut left = max;
+        while left > 0 {
+            let enc = self.cycles_to_next_count();
+            let (k, ev) = self.pl.run(left.min(enc), &Events::ALL);
+            left -= k;
+            adv.cycles += k;
+            self.lag += k;
+            let boundary = self.on_events(&ev, &mut adv);
+            if self.lag >= MAX_SEGMENT || k == enc {
+                // Inertia: bounded segments; encoder: the next count is due.
+                self.flush();
+            }
+            if to_boundary && boundary {
+                break;
+            }
+        }
+        self.flush();
+        adv
+    }
+
+    /// Reacts to the events of a stepped cycle; `true` at a control boundary.
+    fn on_events(&mut self, ev: &Events, adv: &mut Advance) -> bool {
+        if ev.gates {
+            self.flush();
+            let g = self.pl.gates();
+            // A switch turning on is one transition of its leg.
+            let on = (g.hi & !self.gates.0) | (g.lo & !self.gates.1);
+            for (x, n) in self.transitions.iter_mut().enumerate() {
+                *n += u64::from(on >> (2 - x) & 1);
+            }
+            self.gates = (g.hi, g.lo);
+        }
+        if ev.adc_convert {
+            self.flush();
+            let i = self.plant.i_abc_a();
+            self.pl.pins.adc_word = adc_word(i.map(|x| self.cfg.adc_counts(x)));
+        }
+        let foc = self.pl.mode() == mode::FOC_PWM;
+        let mut boundary = false;
+        if ev.adc_average {
+            adv.adc_averages += 1;
+            if !foc {
+                adv.control_periods += 1;
+                boundary = true;
+            }
+        }
+        if ev.pwm_period {
+            adv.pwm_periods += 1;
+            if foc {
+                adv.control_periods += 1;
+                boundary = true;
+            }
+        }
+        boundary
+    }
+
+    /// Cycles until the encoder moves by one count at the present speed.
+    fn cycles_to_next_count(&self) -> u64 {
+        let p = self.cfg.motor.pole_pairs as f64;
+        let w_m = self.plant.state().omega_e_rad_s / p;
+        if w_m == 0.0 || !w_m.is_finite() {
+            return u64::MAX;
+        }
+        let per_count = 2.0 * PI / self.cfg.encoder_cpr as f64;
+        let edge = if w_m > 0.0 {
+            (self.enc_count + 1) as f64 * per_count
+        } else {
+            self.enc_count as f64 * per_count
+        };
+        let dt = (edge - self.theta_m_rad) / w_m;
+        let c = libm::ceil(dt / CYCLE_S) as u64;
+        c.saturating_sub(self.lag).max(1)
+    }
+
+    /// Advances the plant over the lagging cycles with the gate levels it
+    /// has seen since its last advance, then moves the encoder pins.
+    fn flush(&mut self) {
+        let (hi, lo) = self.gates;
+        while self.lag > 0 {
+            let i = self.plant.i_abc_a();
+            let pot = potentials(hi, lo, i);
+            let diode = hi == 0 && lo == 0 && pot.is_some();
+            let seg = self
+                .lag
+                .min(if diode { DIODE_SEGMENT } else { MAX_SEGMENT });
+            let h = seg as f64 * CYCLE_S;
+            let st = *self.plant.state();
+            match pot {
+                Some(p) => {
+                    let (ua, ub) = leg_voltage_alpha_beta(p, self.cfg.motor.u_dc_v);
+                    self.plant.advance_voltage(ua, ub, h);
+                }
+                None => {
+                    // Open circuit: no current, the rotor turns on.
+                    let th = st.theta_e_rad + st.omega_e_rad_s * h;
+                    let _ = self.plant.set_state(0.0, 0.0, th, st.omega_e_rad_s);
+                }
+            }
+            self.theta_m_rad += st.omega_e_rad_s * h / self.cfg.motor.pole_pairs as f64;
+            self.lag -= seg;
+            self.segments += 1;
+        }
+        self.update_encoder_pins();
+    }
+
+    fn update_encoder_pins(&mut self) {
+        let cpr = self.cfg.encoder_cpr as i64;
+        let count = libm::floor(self.theta_m_rad / (2.0 * PI) * cpr as f64) as i64;
+        self.enc_count = count;
+        let (a, b) = [(false, false), (true, false), (true, true), (false, true)]
+            [count.rem_euclid(4) as usize];
+        self.pl.pins.enc_a = a;
+        self.pl.pins.enc_b = b;
+        self.pl.pins.enc_z = count.rem_euclid(cpr) == 0;
+    }
+
+    fn bus_events(&mut self, ev: &Events) {
+        self.lag += 1;
+        let mut adv = self.carried;
+        adv.cycles += 1;
+        self.on_events(ev, &mut adv);
+        self.carried = adv;
+    }
+}
+
+impl RegisterBus for SimDrive {
+    fn read(&mut self, addr: usize) -> Result<u32, BusError> {
+        let (r, ev) = self.pl.read(addr);
+        self.bus_events(&ev);
+        r
+    }
+
+    fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
+        let (r, ev) = self.pl.write(addr, value);
+        self.bus_events(&ev);
+        r
+    }
+}

@@ -1,0 +1,94 @@
+//! `debug bench`: guest instructions of the control code.
+//!
+//! Counted on the A9 global timer: under QEMU with `-icount shift=0` every
+//! guest instruction advances virtual time by exactly 1 ns and QEMU's A9
+//! timers tick every 10 ns of virtual time, so one count = 10 guest
+//! instructions. Each figure is the mean over [`RUNS`] calls (IRQs masked),
+//! less the cost of an empty call, so the resolution is 10 / RUNS
+//! instructions. (QEMU 7.2's Cortex-A9 has no PMU cycle counter: PMCCNTR
+//! reads 0.) Without `-icount` the numbers are host-speed noise;
+//! `scripts/bench` runs it with `-icount shift=0`.
+use crate::ps::timer;
+use drive::bus::{BusError, RegisterBus};
+use drive::console::Bench;
+use drive::pl::top::Mode;
+use drive::pmsm::foc::{Foc, FocParams};
+use drive::pmsm::params::MotorParams;
+use drive::pmsm::sim::{Controller, Measurement};
+use drive::regmap::{self, seq_state};
+use drive::servo::{Servo, ServoConfig};
+
+/// Calls per figure.
+const RUNS: u32 = 64;
+/// Guest instructions per global-timer count under `-icount shift=0`.
+const INSNS_PER_COUNT: u64 = 10;
+
+fn total(f: &mut impl FnMut()) -> u64 {
+    let t0 = timer::global_count();
+    for _ in 0..RUNS {
+        f();
+    }
+    timer::global_count() - t0
+}
+
+/// Mean instructions of `f` over [`RUNS`] calls, IRQs masked.
+fn count(mut f: impl FnMut()) -> u32 {
+    cortex_ar::interrupt::free(|| {
+        let empty = total(&mut || core::hint::black_box(()));
+        let full = total(&mut f);
+        (full.saturating_sub(empty) * INSNS_PER_COUNT / u64::from(RUNS)) as u32
+    })
+}
+
+/// A PL that answers every read like a running drive (gates on, the MPDTC
+/// sequence in SAMPLE, aligned) and drops writes: the control code's own
+/// cost, without the simulated PL's.
+struct Quiet;
+
+impl RegisterBus for Quiet {
+    fn read(&mut self, addr: usize) -> Result<u32, BusError> {
+        Ok(match addr {
+            a if a == regmap::GATE_CTRL_ADDR => 1,
+            a if a == regmap::MPDTC.addr(&regmap::MPDTC_SEQ_STATUS) => seq_state::SAMPLE | 8 | 16,
+            a if a == regmap::ADC.addr(&regmap::ADC_IA) => 200,
+            a if a == regmap::ADC.addr(&regmap::ADC_IB) => 0xFF9C, // -100
+            a if a == regmap::ADC.addr(&regmap::ADC_IC) => 0xFF9C,
+            a if a == regmap::ENC.addr(&regmap::ENC_CPR) => 4096,
+            a if a == regmap::ENC.addr(&regmap::ENC_POS) => 1234,
+            a if a == regmap::ENC.addr(&regmap::ENC_WINDOW) => 100_000,
+            _ => 0,
+        })
+    }
+    fn write(&mut self, _: usize, _: u32) -> Result<(), BusError> {
+        Ok(())
+    }
+}
+
+/// Runs the measurements.
+pub fn run() -> Bench {
+    let motor = MotorParams::default();
+    let mut foc = Foc::new(&motor, &FocParams::default()).expect("paper FOC parameters");
+    let mut k = 0u32;
+    let foc_step = count(|| {
+        k += 1;
+        let m = Measurement {
+            i_abc_a: [2.0, -1.0, -1.0],
+            theta_e_rad: 0.001 * k as f64,
+            omega_e_rad_s: 100.0,
+        };
+        core::hint::black_box(foc.step(core::hint::black_box(&m), 0.4));
+    });
+    let mut servo = Servo::new(&ServoConfig::default()).expect("default servo configuration");
+    let mut bus = Quiet;
+    let _ = servo.set_mode(&mut bus, Mode::Mpdtc);
+    let _ = servo.enable(&mut bus);
+    let _ = servo.set_torque_ref(0.4);
+    let mpdtc_period = count(|| {
+        let _ = servo.control_step(&mut bus);
+    });
+    Bench {
+        foc_step,
+        mpdtc_period,
+        runs: RUNS,
+    }
+}

@@ -1,0 +1,328 @@
+//! The drive in the firmware: the `Servo` shared between the control
+//! interrupt and the console, the PL it talks to, and the interrupts that
+//! pace it.
+//!
+//! Interrupts (one core, handlers do not nest):
+//! - the *PL tick* (global-timer comparator, IRQ 27) advances the simulated
+//!   PL by one control period of PL time and raises the control interrupt
+//!   when the PL reports a control-period boundary; with a bitstream it
+//!   raises it at the control rate. It is rescheduled so that the PL model
+//!   and the control step take at most about half of the CPU (the rest is
+//!   the console's): under QEMU the simulated PL may run slower than real
+//!   time, `status` reports the ratio as `sim_time_scale`.
+//! - the *control interrupt* (software-generated interrupt 1) runs
+//!   `Servo::control_step`: heartbeat, measurement, FOC or MPDTC inputs.
+//!   A boundary that finds the previous one still pending is an overrun.
+//!   `debug stall` makes it return early (no step, no heartbeat), so the
+//!   PL's watchdog trips while the simulated PL keeps running. The stall
+//!   is measured in PL time (the simulated PL's under QEMU: the drive's
+//!   own clock, independent of how fast the host runs the guest); while it
+//!   lasts the console waits, so the PL tick may use the whole CPU.
+use crate::pl;
+use crate::ps::{gic, timer};
+use core::cell::RefCell;
+use drive::bus::{BusError, RegisterBus};
+use drive::console::{Bench, DriveError, DriveOps, DriveStatus, PlKind};
+use drive::pl::adc::AdcScale;
+use drive::pl::fault::Faults;
+use drive::pl::presence::Presence;
+use drive::pl::top::Mode;
+use drive::servo::{Servo, ServoConfig, ServoError, StepResult};
+use drive::simpl::{SimConfig, SimDrive};
+
+/// Software-generated interrupt of the control step.
+pub const SGI_CONTROL: u32 = 1;
+
+/// What answers the drivers' register accesses.
+// The state lives in one static (no heap): the size difference is the point.
+#[allow(clippy::large_enum_variant)]
+enum Backend {
+    /// Our bitstream behind GP0.
+    Gp0(pl::Gp0),
+    /// No bitstream: the simulated PL and motor (`drive::simpl`).
+    Sim(SimDrive),
+}
+
+impl RegisterBus for Backend {
+    fn read(&mut self, addr: usize) -> Result<u32, BusError> {
+        match self {
+            Backend::Gp0(b) => b.read(addr),
+            Backend::Sim(b) => b.read(addr),
+        }
+    }
+    fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
+        match self {
+            Backend::Gp0(b) => b.write(addr, value),
+            Backend::Sim(b) => b.write(addr, value),
+        }
+    }
+}
+
+struct State {
+    servo: Servo,
+    bus: Backend,
+    pl: PlKind,
+    /// The control interrupt was raised and has not run yet.
+    control_pending: bool,
+    /// PL time until which the control step is skipped (`debug stall`),
+    /// PL clock cycles (simulated PL) or uptime us (bitstream).
+    stall_until: u64,
+    /// Global-timer count at the start of the current PL tick.
+    tick_start: u64,
+    /// Uptime when the simulated PL started, us.
+    sim_start_us: u64,
+}
+
+/// The drive state, touched only with IRQs masked (one core).
+struct Shared(RefCell<Option<State>>);
+// SAFETY: single core; every access is inside `cortex_ar::interrupt::free`.
+unsafe impl Sync for Shared {}
+static STATE: Shared = Shared(RefCell::new(None));
+
+fn with<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
+    cortex_ar::interrupt::free(|| STATE.0.try_borrow_mut().ok()?.as_mut().map(f))
+}
+
+/// What the PL check found, for the banner: `pl: ...` and devcfg's word.
+pub struct Boot {
+    /// `PlKind` chosen.
+    pub pl: PlKind,
+    /// devcfg `INT_STS` as read.
+    pub devcfg_int_sts: u32,
+}
+
+/// Presence check, then the drive on what was found. Call once, IRQs off.
+pub fn init() -> Boot {
+    let sts = pl::devcfg_int_sts();
+    let presence = pl::detect();
+    let mut cfg = ServoConfig::default();
+    let (pl_kind, bus) = match presence {
+        Presence::Ours { version } => (PlKind::Bitstream(version), Some(Backend::Gp0(pl::Gp0))),
+        // No bitstream: the simulated PL (the paper's motor, held at
+        // standstill), read through the same drivers.
+        Presence::Unconfigured => {
+            let sim = SimDrive::new(&SimConfig::default()).expect("paper motor parameters");
+            cfg.motor = sim.config().motor;
+            cfg.adc = AdcScale {
+                amps_per_count: sim.config().adc_amps_per_count,
+            };
+            (PlKind::Simulated, Some(Backend::Sim(sim)))
+        }
+        _ => (PlKind::Absent, None),
+    };
+    if let Some(mut bus) = bus {
+        let mut servo = Servo::new(&cfg).expect("servo configuration");
+        if servo.init(&mut bus).is_ok() {
+            cortex_ar::interrupt::free(|| {
+                *STATE.0.borrow_mut() = Some(State {
+                    servo,
+                    bus,
+                    pl: pl_kind,
+                    control_pending: false,
+                    stall_until: 0,
+                    tick_start: 0,
+                    sim_start_us: timer::uptime_us(),
+                });
+            });
+            gic::enable(gic::IRQ_GLOBAL_TIMER);
+            gic::enable(SGI_CONTROL);
+            timer::set_compare(timer::global_count() + 1000);
+        }
+    }
+    Boot {
+        pl: pl_kind,
+        devcfg_int_sts: sts,
+    }
+}
+
+/// PL clock cycles of one control period of the active mode.
+fn period_cycles(servo: &Servo) -> u64 {
+    (f64::from(drive::regmap::PL_CLOCK_HZ) / servo.control_rate_hz()) as u64
+}
+
+/// Global-timer counts of `cycles` PL clock cycles at real-time speed.
+fn guest_counts(cycles: u64) -> u64 {
+    cycles * u64::from(timer::PERIPHCLK_HZ / 1_000_000) / 100
+}
+
+/// The PL tick (global-timer comparator interrupt).
+pub fn on_pl_tick() {
+    timer::ack_compare();
+    let now = timer::global_count();
+    let raise = with(|s| {
+        s.tick_start = now;
+        let boundaries = match &mut s.bus {
+            // Up to the next control-period boundary (at most two periods).
+            Backend::Sim(sim) => {
+                sim.advance_to_boundary(2 * period_cycles(&s.servo))
+                    .control_periods
+            }
+            // The bitstream's PL runs on its own: the tick is the control rate.
+            Backend::Gp0(_) => 1,
+        };
+        if boundaries == 0 {
+            return false;
+        }
+        // Boundaries the control step did not see: the previous one still
+        // pending, or more than one crossed in this tick.
+        let missed = u64::from(s.control_pending) + u64::from(boundaries - 1);
+        s.servo.note_overruns(missed);
+        s.control_pending = true;
+        true
+    })
+    .unwrap_or(false);
+    if raise {
+        gic::send_sgi_self(SGI_CONTROL);
+    } else {
+        timer::set_compare(now + guest_counts(1564));
+    }
+}
+
+/// The control interrupt.
+pub fn on_control() {
+    with(|s| {
+        s.control_pending = false;
+        let stalled = s.stalled();
+        if !stalled {
+            // A bus error leaves the gates to the PL's own fault logic.
+            let _ = s.servo.control_step(&mut s.bus);
+        }
+        let end = timer::global_count();
+        let busy = end.saturating_sub(s.tick_start);
+        let nominal = guest_counts(period_cycles(&s.servo));
+        // At most about half of the CPU for the PL and the control step,
+        // all of it during a stall (the console waits for its end).
+        let share = if stalled { busy } else { 2 * busy };
+        timer::set_compare(s.tick_start + nominal.max(share));
+    });
+}
+
+impl State {
+    /// PL time now: cycles of the simulated PL, or uptime in us.
+    fn pl_now(&self) -> u64 {
+        match &self.bus {
+            Backend::Sim(sim) => sim.pl_cycles(),
+            Backend::Gp0(_) => timer::uptime_us(),
+        }
+    }
+    /// PL time after `ms` milliseconds from now.
+    fn pl_after_ms(&self, ms: u32) -> u64 {
+        let per_ms = match &self.bus {
+            Backend::Sim(_) => u64::from(drive::regmap::PL_CLOCK_HZ / 1000),
+            Backend::Gp0(_) => 1000,
+        };
+        self.pl_now() + u64::from(ms) * per_ms
+    }
+    /// Inside a `debug stall`.
+    fn stalled(&self) -> bool {
+        self.pl_now() < self.stall_until
+    }
+}
+
+/// The console's handle on the drive.
+pub struct FwDrive;
+
+fn run<T>(f: impl FnOnce(&mut State) -> Result<T, ServoError>) -> Result<T, DriveError> {
+    match with(f) {
+        Some(r) => Ok(r?),
+        None => Err(DriveError::Absent),
+    }
+}
+
+/// Sleeps until an interrupt.
+fn wait() {
+    // SAFETY: WFI has no memory effects.
+    unsafe { core::arch::asm!("wfi", options(nomem, nostack)) };
+}
+
+impl DriveOps for FwDrive {
+    fn mode(&mut self) -> Mode {
+        with(|s| s.servo.mode()).unwrap_or(Mode::Off)
+    }
+    fn set_mode(&mut self, m: Mode) -> Result<(), DriveError> {
+        run(|s| s.servo.set_mode(&mut s.bus, m))
+    }
+    fn enable(&mut self) -> Result<(), DriveError> {
+        run(|s| s.servo.enable(&mut s.bus))
+    }
+    fn disable(&mut self) -> Result<(), DriveError> {
+        run(|s| s.servo.disable(&mut s.bus))
+    }
+    fn torque_ref(&mut self) -> f64 {
+        with(|s| s.servo.torque_ref_nm()).unwrap_or(0.0)
+    }
+    fn set_torque_ref(&mut self, nm: f64) -> Result<(), DriveError> {
+        run(|s| s.servo.set_torque_ref(nm))
+    }
+    fn step(&mut self, nm: f64, window_s: f64) -> Result<StepResult, DriveError> {
+        run(|s| s.servo.begin_step(&mut s.bus, nm, window_s))?;
+        // Generous: alignment plus the window, at any sim_time_scale seen.
+        let deadline = timer::uptime_us() + 60_000_000;
+        loop {
+            let (result, pending) = with(|s| (s.servo.step_result(), s.servo.step_pending()))
+                .ok_or(DriveError::Absent)?;
+            if let Some(r) = result {
+                return Ok(r);
+            }
+            if !pending {
+                // The gates went off (fault) while recording.
+                return Err(DriveError::Servo(ServoError::GatesOff));
+            }
+            if timer::uptime_us() > deadline {
+                return Err(DriveError::Timeout);
+            }
+            wait();
+        }
+    }
+    fn faults(&mut self) -> Result<Faults, DriveError> {
+        run(|s| Ok(s.servo.faults(&mut s.bus)?))
+    }
+    fn clear_faults(&mut self) -> Result<Faults, DriveError> {
+        run(|s| s.servo.clear_faults(&mut s.bus))
+    }
+    fn stall(&mut self, ms: u32) -> Result<(), DriveError> {
+        run(|s| {
+            s.stall_until = s.pl_after_ms(ms);
+            Ok(())
+        })?;
+        while with(|s| s.stalled()).unwrap_or(false) {
+            wait();
+        }
+        Ok(())
+    }
+    fn status(&mut self) -> DriveStatus {
+        with(|s| DriveStatus {
+            mode: s.servo.mode(),
+            gates_on: s.servo.gates_on(&mut s.bus).unwrap_or(false),
+            faults: s.servo.faults(&mut s.bus).unwrap_or_default(),
+            measured: s.servo.measured(),
+            torque_ref_nm: s.servo.torque_ref_nm(),
+            control_rate_hz: s.servo.control_rate_hz(),
+            periods: s.servo.periods(),
+            overruns: s.servo.overruns(),
+            pl: s.pl,
+            sim_time_scale: match &s.bus {
+                Backend::Sim(sim) => {
+                    let guest_s = (timer::uptime_us() - s.sim_start_us) as f64 * 1e-6;
+                    Some(sim.sim_time_scale(guest_s))
+                }
+                Backend::Gp0(_) => None,
+            },
+        })
+        .unwrap_or(DriveStatus {
+            mode: Mode::Off,
+            gates_on: false,
+            faults: Faults::default(),
+            measured: Default::default(),
+            torque_ref_nm: 0.0,
+            control_rate_hz: 0.0,
+            periods: 0,
+            overruns: 0,
+            pl: PlKind::Absent,
+            sim_time_scale: None,
+        })
+    }
+    fn bench(&mut self) -> Result<Bench, DriveError> {
+        Ok(crate::bench::run())
+    }
+}
