@@ -484,3 +484,12 @@ fn stalled_control_lets_the_watchdog_trip() {
     sim.advance(100_000);
     assert_eq!(sim.truth().i_abc_a, [0.0; 3], "current decayed");
 }
+
+/// The whole simulated drive stays small (it lives in the firmware's RAM
+/// under QEMU).
+#[test]
+fn state_is_small() {
+    let n = core::mem::size_of::<SimDrive>();
+    std::println!("size_of::<SimDrive>() = {n} bytes");
+    assert!(n <= 2048, "{n} bytes");
+}
