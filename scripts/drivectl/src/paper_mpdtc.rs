@@ -300,90 +300,61 @@ pub fn bench(a: BenchArgs) -> Result<()> {
 }
 
 /// The simulated PL and motor (`drive::simpl::SimDrive`) in closed loop
-/// with the PS side of `drive::pmsm::pl_loop`, as the firmware runs it (the
-/// Fig. 10 toggling reference): control periods per second of host time,
-/// and the simulation's work per period (PL cycles stepped, quiet spans
-/// skipped, plant segments, register accesses) to estimate its cost on a
-/// slower machine.
+/// with the firmware's drive code (`drive::servo::Servo`: one control step
+/// per control-period boundary, the Fig. 10 toggling reference): control
+/// periods per second of host time, and the simulation's work per period
+/// (PL cycles stepped, quiet spans skipped, plant segments) to estimate its
+/// cost on a slower machine.
 fn simdrive_loop(mpdtc: bool, sim_s: f64) -> Result<serde_json::Value> {
     use drive::bus::RegisterBus;
-    use drive::pmsm::foc::{Foc, FocParams};
-    use drive::pmsm::mpdtc_fixed::FixedParams;
-    use drive::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-    use drive::pmsm::params::MotorParams;
-    use drive::pmsm::pl_loop::{self, PlScaling, PlTiming};
-    use drive::pmsm::sim::{Actuation, Controller};
+    use drive::pl::adc::AdcScale;
+    use drive::pl::top::Mode;
     use drive::regmap as rm;
+    use drive::servo::{Servo, ServoConfig};
     use drive::simpl::{SimConfig, SimDrive};
     use std::time::Instant;
     let e = |e: drive::pmsm::params::ParamError| anyhow::anyhow!("{e}");
+    let s = |e: drive::servo::ServoError| anyhow::anyhow!("drive: {e:?}");
     let b = |e: drive::bus::BusError| anyhow::anyhow!("register access failed: {e:?}");
-    let cfg = SimConfig::default();
-    let mut sim = SimDrive::new(&cfg).map_err(e)?;
-    let t = PlTiming::default();
-    let sc = PlScaling {
-        adc_amps_per_count: cfg.adc_amps_per_count,
-        encoder_cpr: cfg.encoder_cpr,
-        pole_pairs: cfg.motor.pole_pairs,
-    };
-    let mc = MpdtcConfig::new(
-        MotorParams::default(),
-        MpdtcParams {
-            control_period_s: t.mpdtc_period_s(),
-            ..MpdtcParams::default()
+    let mut sim = SimDrive::new(&SimConfig::default()).map_err(e)?;
+    let cfg = ServoConfig {
+        motor: sim.config().motor,
+        adc: AdcScale {
+            amps_per_count: sim.config().adc_amps_per_count,
         },
-    )
-    .map_err(e)?;
-    let mut foc = Foc::new(
-        &cfg.motor,
-        &FocParams {
-            period_s: t.foc_period_s(),
-            measurement_lag_s: t.foc_measurement_lag_s(),
-            ..FocParams::default()
-        },
-    )
-    .map_err(e)?;
-    let hb = rm::HEARTBEAT_ADDR;
-    if mpdtc {
-        let p = FixedParams::from_config(&mc).map_err(e)?;
-        pl_loop::setup_mpdtc(&mut sim, &p, &t, 10_000).map_err(b)?;
-    } else {
-        pl_loop::setup_foc(&mut sim, &t).map_err(b)?;
-        sim.advance_to_boundary(100_000);
-        sim.advance_to_boundary(100_000);
-        pl_loop::restart_adc_timer(&mut sim).map_err(b)?;
-    }
-    sim.write(hb, 0).map_err(b)?;
-    sim.write(rm::GATE_CTRL_ADDR, 1).map_err(b)?;
-    sim.advance(20_000);
-    let period_s = if mpdtc {
-        t.mpdtc_period_s()
-    } else {
-        t.foc_period_s()
+        ..ServoConfig::default()
     };
-    let align = sim.read(rm::MPDTC.addr(&rm::MPDTC_ALIGN_POS)).map_err(b)?;
-    let n = (sim_s / period_s).round() as u64;
-    let (w0, c0, t0) = (sim.work(), sim.pl_cycles(), sim.time_s());
-    let clock = Instant::now();
-    let mut periods = 0u64;
-    while periods < n {
+    let mut servo = Servo::new(&cfg).map_err(e)?;
+    servo.init(&mut sim).map_err(b)?;
+    servo
+        .set_mode(&mut sim, if mpdtc { Mode::Mpdtc } else { Mode::Foc })
+        .map_err(s)?;
+    servo.enable(&mut sim).map_err(s)?;
+    // Past the MPDTC's rotor alignment (and the FOC's ADC phase lock).
+    let settle = (3e-3 * servo.control_rate_hz()) as u32;
+    for _ in 0..settle {
         if sim.advance_to_boundary(100_000).control_periods == 0 {
             anyhow::bail!("no control-period boundary");
         }
-        let r = experiments::toggle_ref(sim.time_s() - t0);
-        let m = pl_loop::read_measurement(&mut sim, &sc, align).map_err(b)?;
-        if mpdtc {
-            pl_loop::mpdtc_period(&mut sim, &m, r, &mc).map_err(b)?;
-        } else if let Actuation::DutyAbc(d) = foc.step(&m, r) {
-            pl_loop::write_duties(&mut sim, d, t.pwm_period).map_err(b)?;
+        servo.control_step(&mut sim).map_err(b)?;
+    }
+    let n = (sim_s * servo.control_rate_hz()).round() as u64;
+    let (w0, c0, t0) = (sim.work(), sim.pl_cycles(), sim.time_s());
+    let clock = Instant::now();
+    for _ in 0..n {
+        if sim.advance_to_boundary(100_000).control_periods == 0 {
+            anyhow::bail!("no control-period boundary");
         }
-        sim.write(hb, 1).map_err(b)?;
-        periods += 1;
+        servo
+            .set_torque_ref(experiments::toggle_ref(sim.time_s() - t0))
+            .map_err(s)?;
+        servo.control_step(&mut sim).map_err(b)?;
     }
     let host_s = clock.elapsed().as_secs_f64();
     let w = sim.work();
     let fault = sim.read(rm::FAULT_STATUS_ADDR).map_err(b)?;
     anyhow::ensure!(fault == 0, "the loop tripped a fault ({fault:#x})");
+    anyhow::ensure!(servo.overruns() == 0, "the loop overran");
     let per = |x: u64, y: u64| (x - y) as f64 / n as f64;
     Ok(json!({
         "control_periods_per_s": n as f64 / host_s,

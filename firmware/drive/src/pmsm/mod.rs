@@ -11,8 +11,6 @@
 //!   in its module doc); [`observer`]: eqs. (14)-(16) and their stability
 //!   test; [`mpdtc_fixed`]: the bit-accurate model of the PL core;
 //!   [`mpdtc_ctrl`]: both as [`sim::Controller`]s.
-//! - [`pl_loop`]: the PS side of both loops when the PL switches (register
-//!   readings -> controller -> register writes).
 pub mod foc;
 pub mod frames;
 pub mod measure;
@@ -24,7 +22,6 @@ pub mod mpdtc_ref;
 mod mpdtc_tests;
 pub mod observer;
 pub mod params;
-pub mod pl_loop;
 pub mod plant;
 pub mod sim;
 pub mod svpwm;

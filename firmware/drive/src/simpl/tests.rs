@@ -1,17 +1,13 @@
-//! Hand-computed cases of the simulated PL and the closed loops through
-//! `SimDrive`'s registers.
+//! Hand-computed cases of the simulated PL and of the simulated motor
+//! behind it.
 
 use super::pl::{Events, SimPl};
 use super::{SimConfig, SimDrive};
 use crate::bus::{BusError, RegisterBus};
-use crate::pmsm::foc::{Foc, FocParams};
-use crate::pmsm::metrics::{overshoot_percent, settling_band, settling_time_s};
-use crate::pmsm::mpdtc_fixed::FixedParams;
-use crate::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use crate::pmsm::params::MotorParams;
-use crate::pmsm::pl_loop::{self, PlScaling, PlTiming};
-use crate::pmsm::sim::{Actuation, Controller};
-use crate::regmap::{self as rm, mode, seq_state, Block, Register};
+use crate::pl::enc::Encoder;
+use crate::pl::pwm::Pwm;
+use crate::pl::top::{Mode, Top};
+use crate::regmap::{self as rm, mode, Block, Register};
 use std::vec::Vec;
 
 fn a(b: &Block, r: &Register) -> usize {
@@ -211,206 +207,11 @@ fn event_driven_equals_cycle_by_cycle() {
     }
 }
 
-// ------------------------------------------------------------ closed loops
-
-fn scaling(cfg: &SimConfig) -> PlScaling {
-    PlScaling {
-        adc_amps_per_count: cfg.adc_amps_per_count,
-        encoder_cpr: cfg.encoder_cpr,
-        pole_pairs: cfg.motor.pole_pairs,
-    }
-}
+// ------------------------------------------------- the simulated motor
+// (the closed loops through the drive's own code are in `servo::sim_tests`)
 
 fn wr<B: RegisterBus>(bus: &mut B, b: &Block, r: &Register, v: u32) {
     assert_eq!(bus.write(b.addr(r), v), Ok(()), "{}", r.name);
-}
-
-/// Torque sampling period of the closed loops, cycles (the ADC period).
-const ADC_PERIOD: u32 = 391;
-
-/// Torque trace of a 0 -> 0.4 N m step at `t_step` (s after the loop
-/// starts): plant torque every ADC period, averaged over windows of 4
-/// (as `drivectl paper mpdtc` evaluates it), time-stamped at the window end.
-struct StepRun {
-    windows: Vec<(f64, f64)>,
-    t_step: f64,
-    y0: f64,
-    transitions: ([u64; 3], [u64; 3]),
-    duration: f64,
-}
-
-impl StepRun {
-    fn settling_s(&self) -> Option<f64> {
-        settling_time_s(
-            self.windows.iter().copied(),
-            self.t_step,
-            self.t_step + 2e-3,
-            0.4,
-            settling_band(self.y0, 0.4),
-        )
-    }
-    fn overshoot(&self) -> f64 {
-        overshoot_percent(
-            self.windows.iter().copied(),
-            self.t_step,
-            self.t_step + 2e-3,
-            0.0,
-            0.4,
-        )
-    }
-    fn final_nm(&self) -> f64 {
-        let tail = &self.windows[self.windows.len() - 32..];
-        tail.iter().map(|w| w.1).sum::<f64>() / tail.len() as f64
-    }
-    fn fsw_hz(&self) -> f64 {
-        crate::pmsm::metrics::transitions_per_leg_per_s(
-            self.transitions.0,
-            self.transitions.1,
-            self.duration,
-        )
-    }
-}
-
-/// Runs `periods` control periods: `control(sim, k)` at each boundary;
-/// the torque sampled every ADC period.
-fn run_loop(
-    sim: &mut SimDrive,
-    periods: u32,
-    t_step: f64,
-    y0: f64,
-    mut control: impl FnMut(&mut SimDrive, f64),
-) -> StepRun {
-    let t0 = sim.time_s();
-    let tr0 = sim.truth().transitions;
-    let mut samples = Vec::new();
-    let mut done = 0;
-    let mut next_sample = sim.pl_cycles() + u64::from(ADC_PERIOD);
-    while done < periods {
-        let max = next_sample.saturating_sub(sim.pl_cycles()).max(1);
-        let adv = sim.advance_to_boundary(max);
-        if sim.pl_cycles() >= next_sample {
-            samples.push((sim.time_s() - t0, sim.truth().torque_nm));
-            next_sample += u64::from(ADC_PERIOD);
-        }
-        if adv.control_periods > 0 {
-            let t = sim.time_s() - t0;
-            let r = if t >= t_step { 0.4 } else { y0 };
-            control(sim, r);
-            done += 1;
-        }
-    }
-    let windows = samples
-        .chunks_exact(4)
-        .map(|c| (c[3].0, c.iter().map(|x| x.1).sum::<f64>() / 4.0))
-        .collect();
-    StepRun {
-        windows,
-        t_step,
-        y0,
-        transitions: (tr0, sim.truth().transitions),
-        duration: sim.time_s() - t0,
-    }
-}
-
-fn mpdtc_step(y0: f64) -> StepRun {
-    let cfg = SimConfig::default();
-    let mut sim = SimDrive::new(&cfg).unwrap();
-    let t = PlTiming::default();
-    let mc = MpdtcConfig::new(
-        MotorParams::default(),
-        MpdtcParams {
-            control_period_s: t.mpdtc_period_s(),
-            ..MpdtcParams::default()
-        },
-    )
-    .unwrap();
-    let p = FixedParams::from_config(&mc).unwrap();
-    pl_loop::setup_mpdtc(&mut sim, &p, &t, 10_000).unwrap();
-    wr(&mut sim, &rm::TOP, &rm::HEARTBEAT, 0);
-    wr(&mut sim, &rm::PWM, &rm::GATE_CTRL, 1);
-    // Alignment (INITIAL), then the first SAMPLE.
-    sim.advance(20_000);
-    let st = sim.read(rm::MPDTC.addr(&rm::MPDTC_SEQ_STATUS)).unwrap();
-    assert_eq!(st & 7, seq_state::SAMPLE, "sequence in SAMPLE");
-    let sc = scaling(&cfg);
-    let align = sim.read(rm::MPDTC.addr(&rm::MPDTC_ALIGN_POS)).unwrap();
-    let overruns0 = st >> 8 & 0xFF;
-    // This period's sample is in: its decision now (then one per boundary).
-    let m = pl_loop::read_measurement(&mut sim, &sc, align).unwrap();
-    pl_loop::mpdtc_period(&mut sim, &m, y0, &mc).unwrap();
-    let run = run_loop(&mut sim, 640, 2e-3, y0, |sim, r| {
-        let m = pl_loop::read_measurement(sim, &sc, align).unwrap();
-        pl_loop::mpdtc_period(sim, &m, r, &mc).unwrap();
-        wr(sim, &rm::TOP, &rm::HEARTBEAT, 1);
-    });
-    let st = sim.read(rm::MPDTC.addr(&rm::MPDTC_SEQ_STATUS)).unwrap();
-    assert_eq!(st >> 8 & 0xFF, overruns0, "no overrun in the loop");
-    assert!(st >> 16 >= 640, "periods {}", st >> 16);
-    assert_eq!(sim.read(rm::FAULT.addr(&rm::FAULT_STATUS)), Ok(0));
-    run
-}
-
-fn foc_step(y0: f64) -> StepRun {
-    let cfg = SimConfig::default();
-    let mut sim = SimDrive::new(&cfg).unwrap();
-    let t = PlTiming::default();
-    let fp = FocParams {
-        period_s: t.foc_period_s(),
-        measurement_lag_s: t.foc_measurement_lag_s(),
-        ..FocParams::default()
-    };
-    let mut foc = Foc::new(&cfg.motor, &fp).unwrap();
-    pl_loop::setup_foc(&mut sim, &t).unwrap();
-    wr(&mut sim, &rm::TOP, &rm::HEARTBEAT, 0);
-    // Two period starts (the new PWM_PERIOD loads at the first), then the
-    // ADC's phase.
-    sim.advance_to_boundary(100_000);
-    sim.advance_to_boundary(100_000);
-    pl_loop::restart_adc_timer(&mut sim).unwrap();
-    wr(&mut sim, &rm::PWM, &rm::GATE_CTRL, 1);
-    let sc = scaling(&cfg);
-    let run = run_loop(&mut sim, 160, 2e-3, y0, |sim, r| {
-        let m = pl_loop::read_measurement(sim, &sc, 0).unwrap();
-        match foc.step(&m, r) {
-            Actuation::DutyAbc(d) => pl_loop::write_duties(sim, d, t.pwm_period).unwrap(),
-            Actuation::SwitchState(_) => unreachable!(),
-        }
-        wr(sim, &rm::TOP, &rm::HEARTBEAT, 1);
-    });
-    assert_eq!(sim.read(rm::FAULT.addr(&rm::FAULT_STATUS)), Ok(0));
-    run
-}
-
-fn report(name: &str, r: &StepRun) -> f64 {
-    let ts = r.settling_s().expect("settles");
-    std::println!(
-        "{name} via SimDrive, {} -> 0.4 N m: settling {:.3} ms, overshoot {:.1} %, final {:.4} N m, {:.1} k transitions/leg/s",
-        r.y0,
-        ts * 1e3,
-        r.overshoot(),
-        r.final_nm(),
-        r.fsw_hz() / 1e3
-    );
-    assert!((r.final_nm() - 0.4).abs() < 0.05, "final {}", r.final_nm());
-    ts
-}
-
-/// MPDTC through the simulated PL: the PS feeds the core its inputs each
-/// period (`pl_loop`), the PL's sequence decides and applies. The 0.4 N m
-/// step, from rest and as the reversal from -0.4 N m (the paper's Fig. 10,
-/// host experiment 0.172 ms), settles within the paper's 0.19 ms.
-#[test]
-fn mpdtc_step_through_simulated_pl_settles() {
-    assert!(report("MPDTC", &mpdtc_step(0.0)) <= 0.19e-3);
-    assert!(report("MPDTC", &mpdtc_step(-0.4)) <= 0.19e-3);
-}
-
-/// FOC on the PS through the simulated PL's PWM: within the paper's
-/// 0.27 ms (host experiment, reversal: 0.245 ms).
-#[test]
-fn foc_step_through_simulated_pl_settles() {
-    assert!(report("FOC", &foc_step(0.0)) <= 0.27e-3);
-    assert!(report("FOC", &foc_step(-0.4)) <= 0.27e-3);
 }
 
 /// At a constant 300 rad/s electrical (7 pole pairs: 42.86 rad/s
@@ -431,21 +232,17 @@ fn encoder_follows_the_rotor() {
         (f64::from(speed) - counts_per_ms).abs() <= 1.0,
         "{speed} vs {counts_per_ms}"
     );
-    let m = pl_loop::read_measurement(&mut sim, &scaling(&cfg), 0).unwrap();
+    let e = Encoder(&mut sim).read().unwrap();
+    let (theta_e, omega_e) = (e.theta_e_rad(7, 0), e.omega_e_rad_s(7));
     let tr = sim.truth();
     // One count is 2 pi 7 / 4096 = 0.0107 rad electrical.
-    let d = crate::pmsm::measure::wrap_pi(m.theta_e_rad - tr.theta_e_rad);
+    let d = crate::pmsm::measure::wrap_pi(theta_e - tr.theta_e_rad);
     assert!(
         d.abs() < 0.011 && d <= 1e-9,
-        "angle {} vs {}",
-        m.theta_e_rad,
+        "angle {theta_e} vs {}",
         tr.theta_e_rad
     );
-    assert!(
-        (m.omega_e_rad_s - 300.0).abs() < 300.0 / counts_per_ms,
-        "{}",
-        m.omega_e_rad_s
-    );
+    assert!((omega_e - 300.0).abs() < 300.0 / counts_per_ms, "{omega_e}");
     // Index pulses: one per mechanical turn (4.286 turns in 0.1 s... of
     // simulated time, plus the one at count 0 right after reset).
     let idx = sim.read(rm::ENC.addr(&rm::ENC_INDEX)).unwrap();
@@ -462,10 +259,13 @@ fn encoder_follows_the_rotor() {
 fn stalled_control_lets_the_watchdog_trip() {
     let cfg = SimConfig::default();
     let mut sim = SimDrive::new(&cfg).unwrap();
-    let t = PlTiming::default();
-    pl_loop::setup_foc(&mut sim, &t).unwrap();
+    // FOC-PWM at 15.985 kHz (half period 3128 cycles), 100 ns dead time.
+    let mut pwm = Pwm(&mut sim);
+    pwm.set_half_period(3128).unwrap();
+    pwm.set_dead_time(10).unwrap();
+    pwm.set_duties([0.6, 0.45, 0.45], 3128).unwrap();
+    Top(&mut sim).set_mode(Mode::Foc).unwrap();
     wr(&mut sim, &rm::FAULT, &rm::WDG_TIMEOUT, 100_000); // 1 ms
-    pl_loop::write_duties(&mut sim, [0.6, 0.45, 0.45], t.pwm_period).unwrap();
     wr(&mut sim, &rm::TOP, &rm::HEARTBEAT, 0);
     wr(&mut sim, &rm::PWM, &rm::GATE_CTRL, 1);
     for _ in 0..10 {
