@@ -10,9 +10,9 @@
 #[cfg(target_os = "none")]
 mod app;
 #[cfg(target_os = "none")]
-mod board;
-#[cfg(target_os = "none")]
 mod bench;
+#[cfg(target_os = "none")]
+mod board;
 #[cfg(target_os = "none")]
 mod control;
 #[cfg(target_os = "none")]

@@ -877,6 +877,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
+        }
     }
 
     impl Default for MpdtcInIdValue {
@@ -948,6 +958,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
         }
     }
 
@@ -1021,6 +1041,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcInCos0Value {
@@ -1092,6 +1122,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -1165,6 +1205,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcInCos1Value {
@@ -1236,6 +1286,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -1309,6 +1369,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcInCos2Value {
@@ -1380,6 +1450,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -1453,6 +1533,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcInWTsValue {
@@ -1524,6 +1614,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -1597,6 +1697,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcPAValue {
@@ -1668,6 +1778,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -1741,6 +1861,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
+        }
     }
 
     impl Default for MpdtcPU0Value {
@@ -1812,6 +1942,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
         }
     }
 
@@ -1885,6 +2025,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
+        }
     }
 
     impl Default for MpdtcPU0HValue {
@@ -1957,6 +2107,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
+        }
     }
 
     impl Default for MpdtcPPsiLValue {
@@ -2028,6 +2188,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
         }
     }
 
@@ -2172,6 +2342,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -2389,6 +2569,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcPKpOValue {
@@ -2460,6 +2650,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -2605,6 +2805,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcPW20Value {
@@ -2676,6 +2886,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -2749,6 +2969,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcPW22Value {
@@ -2821,6 +3051,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcPW23Value {
@@ -2875,6 +3115,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
         }
     }
 
@@ -4182,6 +4432,16 @@ pub mod adc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0xFFFF) | (v & 0xFFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
     }
 
     impl Default for AdcIaValue {
@@ -4237,6 +4497,16 @@ pub mod adc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0xFFFF) | (v & 0xFFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
     }
 
     impl Default for AdcIbValue {
@@ -4291,6 +4561,16 @@ pub mod adc {
         /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
         }
     }
 
@@ -4536,6 +4816,16 @@ pub mod enc {
         /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
         }
     }
 

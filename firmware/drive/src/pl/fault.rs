@@ -1,7 +1,6 @@
 //! Fault block: latched faults, over-current limit, watchdog timeout.
-use super::{rd, wr};
 use crate::bus::{BusError, RegisterBus};
-use crate::regmap::{self, FAULT};
+use crate::regs::fault::{FaultStatus, FaultStatusValue, WdgTimeout, WdgTimeoutValue};
 
 /// Latched fault bits (`FAULT_STATUS`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -45,18 +44,24 @@ pub struct Fault<B>(pub B);
 impl<B: RegisterBus> Fault<B> {
     /// Latched faults.
     pub fn latched(&mut self) -> Result<Faults, BusError> {
-        Ok(Faults(rd(&mut self.0, &FAULT, &regmap::FAULT_STATUS)?))
+        Ok(Faults(FaultStatus::read(&mut self.0)?.bits()))
     }
     /// Clears every latched fault whose condition is gone (write 1 to clear);
     /// returns what is still latched. The gates stay off until `GATE_EN`
     /// is written 1 again.
     pub fn clear(&mut self) -> Result<Faults, BusError> {
-        wr(&mut self.0, &FAULT, &regmap::FAULT_STATUS, 7)?;
+        FaultStatus::write(
+            &mut self.0,
+            FaultStatusValue::ZERO
+                .with_overcurrent(true)
+                .with_external(true)
+                .with_watchdog(true),
+        )?;
         self.latched()
     }
     /// Watchdog timeout, PL clock cycles (the PL clamps to >= 1000).
     pub fn set_watchdog_timeout(&mut self, cycles: u32) -> Result<(), BusError> {
-        wr(&mut self.0, &FAULT, &regmap::WDG_TIMEOUT, cycles)
+        WdgTimeout::write(&mut self.0, WdgTimeoutValue::ZERO.with_value(cycles))
     }
 }
 
@@ -64,6 +69,7 @@ impl<B: RegisterBus> Fault<B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
+    use crate::regmap::{self, FAULT};
     use std::string::String;
 
     #[test]
