@@ -168,7 +168,7 @@ fn next_byte() -> Option<u8> {
 fn irq_handler() {
     loop {
         let iar = gic::acknowledge();
-        let id = iar & 0x3ff;
+        let id = gic::interrupt_id(iar);
         match id {
             gic::SPURIOUS => break,
             gic::IRQ_PRIVATE_TIMER => {

@@ -8,7 +8,9 @@
 //! `read`/`write` (no `modify`: writing back what was read would clear every
 //! set flag). Its value type (`DeadTimeValue`) has a getter and a `with_*`
 //! setter per field (`bool` for one bit, else `u32` masked to the field's
-//! width); a register without fields has one field, `value`. What the
+//! width); a register without fields has one field, `value`, and when its
+//! format is two's complement also `value_i32`/`with_value_i32` (sign-
+//! extended read, write masked to the register's width). What the
 //! hardware does with an out-of-range word (mask, clamp, reject) is in each
 //! register's doc. Every access is one whole-word `RegisterBus` access:
 //!

@@ -298,7 +298,9 @@ pub fn rust(blocks: &[&Block]) -> String {
          //! `read`/`write` (no `modify`: writing back what was read would clear every\n\
          //! set flag). Its value type (`DeadTimeValue`) has a getter and a `with_*`\n\
          //! setter per field (`bool` for one bit, else `u32` masked to the field's\n\
-         //! width); a register without fields has one field, `value`. What the\n\
+         //! width); a register without fields has one field, `value`, and when its\n\
+         //! format is two's complement also `value_i32`/`with_value_i32` (sign-\n\
+         //! extended read, write masked to the register's width). What the\n\
          //! hardware does with an out-of-range word (mask, clamp, reject) is in each\n\
          //! register's doc. Every access is one whole-word `RegisterBus` access:\n\
          //!\n\

@@ -10,18 +10,23 @@ impl Faults {
     /// Bit names, by bit position (the register map's field names).
     pub const NAMES: [&'static str; 3] = ["OVERCURRENT", "EXTERNAL", "WATCHDOG"];
     /// The watchdog bit.
-    pub const WATCHDOG: u32 = 1 << 2;
+    pub const WATCHDOG: u32 = FaultStatusValue::ZERO.with_watchdog(true).bits();
+    /// The latched flags, by field, in bit order (as [`Self::NAMES`]).
+    fn flags(self) -> [bool; 3] {
+        let v = FaultStatusValue::from_bits(self.0);
+        [v.overcurrent(), v.external(), v.watchdog()]
+    }
     /// No fault latched.
     pub fn none(self) -> bool {
-        self.0 & 7 == 0
+        !self.flags().contains(&true)
     }
     /// Names of the set bits, in bit order.
     pub fn names(self) -> impl Iterator<Item = &'static str> {
         Self::NAMES
             .into_iter()
-            .enumerate()
-            .filter(move |(i, _)| self.0 >> i & 1 != 0)
-            .map(|(_, n)| n)
+            .zip(self.flags())
+            .filter(|(_, set)| *set)
+            .map(|(n, _)| n)
     }
     /// Writes `none` or the names separated by spaces.
     pub fn write_names<W: core::fmt::Write>(self, out: &mut W) -> core::fmt::Result {

@@ -15,7 +15,7 @@
 //! it selects the simulated PL instead.
 use crate::bus::RegisterBus;
 use crate::regmap;
-use crate::regs::top::{Id, Version};
+use crate::regs::top::{Id, Version, VersionValue};
 
 /// Absolute address of devcfg `INT_STS` (PS side, always readable).
 pub const DEVCFG_INT_STS: usize = 0xF800_7000 + 0x0C;
@@ -53,7 +53,7 @@ impl Presence {
 
 /// Major version of the register map this firmware speaks.
 pub const fn major(version: u32) -> u32 {
-    version >> 16
+    VersionValue::from_bits(version).major()
 }
 
 /// Decides from devcfg's `INT_STS` (read by the caller from
