@@ -71,7 +71,10 @@ fn banner(con: &mut Uart, boot: &control::Boot) {
     );
     let _ = match boot.pl {
         PlKind::Simulated => write!(con, "pl: simulated"),
-        PlKind::Bitstream(v) => write!(con, "pl: bitstream v{}.{}", v >> 16, v & 0xFFFF),
+        PlKind::Bitstream(v) => {
+            let v = drive::regs::top::VersionValue::from_bits(v);
+            write!(con, "pl: bitstream v{}.{}", v.major(), v.minor())
+        }
         PlKind::Absent => write!(con, "pl: absent"),
     };
     let _ = write!(
@@ -165,7 +168,7 @@ fn next_byte() -> Option<u8> {
 fn irq_handler() {
     loop {
         let iar = gic::acknowledge();
-        let id = iar & 0x3ff;
+        let id = gic::interrupt_id(iar);
         match id {
             gic::SPURIOUS => break,
             gic::IRQ_PRIVATE_TIMER => {

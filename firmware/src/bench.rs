@@ -15,7 +15,11 @@ use drive::pl::top::Mode;
 use drive::pmsm::foc::{Foc, FocParams};
 use drive::pmsm::params::MotorParams;
 use drive::pmsm::sim::{Controller, Measurement};
-use drive::regmap::{self, seq_state};
+use drive::regmap::seq_state;
+use drive::regs::adc::{AdcIa, AdcIaValue, AdcIb, AdcIbValue, AdcIc, AdcIcValue};
+use drive::regs::enc::{EncCpr, EncCprValue, EncPos, EncPosValue, EncWindow, EncWindowValue};
+use drive::regs::mpdtc::{MpdtcSeqStatus, MpdtcSeqStatusValue};
+use drive::regs::pwm::{GateCtrl, GateCtrlValue};
 use drive::servo::{Servo, ServoConfig};
 
 /// Calls per figure.
@@ -48,14 +52,18 @@ struct Quiet;
 impl RegisterBus for Quiet {
     fn read(&mut self, addr: usize) -> Result<u32, BusError> {
         Ok(match addr {
-            a if a == regmap::GATE_CTRL_ADDR => 1,
-            a if a == regmap::MPDTC.addr(&regmap::MPDTC_SEQ_STATUS) => seq_state::SAMPLE | 8 | 16,
-            a if a == regmap::ADC.addr(&regmap::ADC_IA) => 200,
-            a if a == regmap::ADC.addr(&regmap::ADC_IB) => 0xFF9C, // -100
-            a if a == regmap::ADC.addr(&regmap::ADC_IC) => 0xFF9C,
-            a if a == regmap::ENC.addr(&regmap::ENC_CPR) => 4096,
-            a if a == regmap::ENC.addr(&regmap::ENC_POS) => 1234,
-            a if a == regmap::ENC.addr(&regmap::ENC_WINDOW) => 100_000,
+            GateCtrl::ADDR => GateCtrlValue::ZERO.with_gate_en(true).bits(),
+            MpdtcSeqStatus::ADDR => MpdtcSeqStatusValue::ZERO
+                .with_state(seq_state::SAMPLE)
+                .with_sampled(true)
+                .with_aligned(true)
+                .bits(),
+            AdcIa::ADDR => AdcIaValue::ZERO.with_value_i32(200).bits(),
+            AdcIb::ADDR => AdcIbValue::ZERO.with_value_i32(-100).bits(),
+            AdcIc::ADDR => AdcIcValue::ZERO.with_value_i32(-100).bits(),
+            EncCpr::ADDR => EncCprValue::ZERO.with_value(4096).bits(),
+            EncPos::ADDR => EncPosValue::ZERO.with_value(1234).bits(),
+            EncWindow::ADDR => EncWindowValue::ZERO.with_value(100_000).bits(),
             _ => 0,
         })
     }

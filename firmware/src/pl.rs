@@ -8,6 +8,7 @@ use core::sync::atomic::{AtomicBool, Ordering};
 use drive::bus::{BusError, RegisterBus};
 use drive::pl::presence::{self, Presence};
 use drive::regmap;
+use drive::regs::pwm::{GateCtrl, GateCtrlValue};
 use volatile_register::RW;
 
 /// Set once presence detection found our bitstream behind GP0.
@@ -56,7 +57,7 @@ impl RegisterBus for Gp0 {
 /// Does nothing before presence detection or without our bitstream.
 pub fn gates_safe() {
     if GP0_OK.load(Ordering::Acquire) {
-        // SAFETY: writing 0 disables all gates; no other bit has a side effect.
-        unsafe { reg(regmap::GATE_CTRL_ADDR).write(0) };
+        // Only GATE_EN is writable in GATE_CTRL: all gates off.
+        let _ = GateCtrl::write(&mut Gp0, GateCtrlValue::ZERO.with_gate_en(false));
     }
 }

@@ -44,6 +44,11 @@ fn step_in_mode(s: &mut Session, mode: &str, limit_ms: f64) {
     assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
     assert!((num(&st, "torque") - 0.4).abs() < 0.05, "{st:?}");
     assert!((num(&st, "torque_ref") - 0.4).abs() < 1e-9, "{st:?}");
+    // A second `step 0.4` is a step of zero: refused, nothing changes.
+    assert_err(&cmd(s, "step 0.4"), "bad-args");
+    let st = cmd(s, "status");
+    assert!((num(&st, "torque_ref") - 0.4).abs() < 1e-9, "{st:?}");
+    assert_eq!(field(&st, "gates"), Some("on"), "{st:?}");
     assert_ok(&cmd(s, "disable"));
     let st = cmd(s, "status");
     assert_eq!(field(&st, "gates"), Some("off"), "{st:?}");
@@ -156,4 +161,23 @@ fn a_stalled_control_loop_trips_the_watchdog() {
     assert_ok(&cmd(&mut s, "enable"));
     let st = cmd(&mut s, "status");
     assert_eq!(field(&st, "gates"), Some("on"), "{st:?}");
+}
+
+/// `mode mpdtc`, `enable`, `step 0.4`, then at once `mode foc`, `enable`,
+/// `step 0.4`: the MPDTC run's current still decays when the FOC step is
+/// armed; the step waits for it and is scored from rest (a settling time
+/// above 0, within the FOC figure).
+#[test]
+fn a_foc_step_right_after_an_mpdtc_run_is_scored_from_rest() {
+    let mut s = boot();
+    assert_ok(&cmd(&mut s, "mode mpdtc"));
+    assert_ok(&cmd(&mut s, "enable"));
+    assert_ok(&cmd(&mut s, "step 0.4"));
+    assert_ok(&cmd(&mut s, "mode foc"));
+    assert_ok(&cmd(&mut s, "enable"));
+    let r = cmd(&mut s, "step 0.4");
+    assert_ok(&r);
+    let settling = num(&r, "settling_time");
+    assert!(settling > 0.0 && settling <= 0.27, "{r:?}");
+    assert!((num(&r, "final") - 0.4).abs() < 0.05, "{r:?}");
 }

@@ -8,7 +8,9 @@
 //! `read`/`write` (no `modify`: writing back what was read would clear every
 //! set flag). Its value type (`DeadTimeValue`) has a getter and a `with_*`
 //! setter per field (`bool` for one bit, else `u32` masked to the field's
-//! width); a register without fields has one field, `value`. What the
+//! width); a register without fields has one field, `value`, and when its
+//! format is two's complement also `value_i32`/`with_value_i32` (sign-
+//! extended read, write masked to the register's width). What the
 //! hardware does with an out-of-range word (mask, clamp, reject) is in each
 //! register's doc. Every access is one whole-word `RegisterBus` access:
 //!
@@ -877,6 +879,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
+        }
     }
 
     impl Default for MpdtcInIdValue {
@@ -948,6 +960,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
         }
     }
 
@@ -1021,6 +1043,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcInCos0Value {
@@ -1092,6 +1124,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -1165,6 +1207,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcInCos1Value {
@@ -1236,6 +1288,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -1309,6 +1371,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcInCos2Value {
@@ -1380,6 +1452,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -1453,6 +1535,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcInWTsValue {
@@ -1524,6 +1616,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -1597,6 +1699,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcPAValue {
@@ -1668,6 +1780,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -1741,6 +1863,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
+        }
     }
 
     impl Default for MpdtcPU0Value {
@@ -1812,6 +1944,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
         }
     }
 
@@ -1885,6 +2027,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
+        }
     }
 
     impl Default for MpdtcPU0HValue {
@@ -1957,6 +2109,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
+        }
     }
 
     impl Default for MpdtcPPsiLValue {
@@ -2028,6 +2190,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
         }
     }
 
@@ -2172,6 +2344,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -2389,6 +2571,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcPKpOValue {
@@ -2460,6 +2652,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -2605,6 +2807,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcPW20Value {
@@ -2676,6 +2888,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
         }
     }
 
@@ -2749,6 +2971,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcPW22Value {
@@ -2821,6 +3053,16 @@ pub mod mpdtc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
     }
 
     impl Default for MpdtcPW23Value {
@@ -2875,6 +3117,16 @@ pub mod mpdtc {
         /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
         }
     }
 
@@ -4182,6 +4434,16 @@ pub mod adc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0xFFFF) | (v & 0xFFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
     }
 
     impl Default for AdcIaValue {
@@ -4237,6 +4499,16 @@ pub mod adc {
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0xFFFF) | (v & 0xFFFF))
         }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
     }
 
     impl Default for AdcIbValue {
@@ -4291,6 +4563,16 @@ pub mod adc {
         /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
         }
     }
 
@@ -4536,6 +4818,16 @@ pub mod enc {
         /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
             Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
         }
     }
 

@@ -109,3 +109,29 @@ fn bus_errors_pass_through_and_modify_stops_at_a_failed_read() {
     assert_eq!(top::Ctrl::modify(&mut bus, |v| v), Err(BusError::Absent));
     assert_eq!(bus.0, 0, "no write after a failed read");
 }
+
+#[test]
+fn signed_registers_sign_extend_and_mask() {
+    use crate::regs::{adc, enc};
+    // ADC_IA: 16 bits, two's complement; -100 = 0xFF9C.
+    assert_eq!(adc::AdcIaValue::from_bits(0xFF9C).value_i32(), -100);
+    assert_eq!(adc::AdcIaValue::from_bits(0x7FFF).value_i32(), 32767);
+    assert_eq!(adc::AdcIaValue::ZERO.with_value_i32(-1).bits(), 0xFFFF);
+    assert_eq!(enc::EncSpeedValue::from_bits(0x8000).value_i32(), -32768);
+    // MPDTC_IN_ID: 25 bits (sQ8.16); -1 LSB is all 25 bits set.
+    let id = mpdtc::MpdtcInIdValue::ZERO.with_value_i32(-1);
+    assert_eq!(id.bits(), 0x1FF_FFFF);
+    assert_eq!(id.value_i32(), -1);
+    // Out of range: the low 25 bits only, as the hardware stores it.
+    assert_eq!(
+        mpdtc::MpdtcInIdValue::ZERO
+            .with_value_i32(1 << 24)
+            .value_i32(),
+        -(1 << 24)
+    );
+    // MPDTC_IN_SIN1 (18 bits, sQ1.16): -1.0 = 0x3_0000.
+    assert_eq!(
+        mpdtc::MpdtcInSin1Value::ZERO.with_value_i32(-65536).bits(),
+        0x3_0000
+    );
+}

@@ -62,6 +62,12 @@ pub fn acknowledge() -> u32 {
     reg(CPU + ICCIAR).read()
 }
 
+/// The interrupt ID of an acknowledged `iar` (ICCIAR bits 9:0; bits 12:10
+/// name the requesting CPU of an SGI).
+pub const fn interrupt_id(iar: u32) -> u32 {
+    iar & 0x3ff
+}
+
 /// Signals the end of the interrupt acknowledged as `iar`.
 pub fn end(iar: u32) {
     // SAFETY: writing back the acknowledged value.

@@ -88,6 +88,17 @@ fn fields(r: &Register) -> Vec<F> {
     }
 }
 
+/// A register without fields whose format is two's complement (it starts
+/// with "signed", says "two's complement" or names an `sQm.n` format) also
+/// gets `value_i32`/`with_value_i32`.
+fn signed(r: &Register) -> bool {
+    r.fields.is_empty()
+        && r.width < 32
+        && (r.format.starts_with("signed")
+            || r.format.contains("two's complement")
+            || r.format.split_whitespace().any(|w| w.starts_with("sQ")))
+}
+
 fn mask(width: u8) -> u32 {
     if width >= 32 {
         u32::MAX
@@ -247,6 +258,25 @@ fn register(s: &mut String, b: &Block, r: &Register) {
             n = f.name,
         );
     }
+    if signed(r) {
+        let m = mask(r.width);
+        let sh = 32 - u32::from(r.width);
+        let get = if sh == 0 {
+            "self.0 as i32".to_string()
+        } else {
+            format!("((self.0 << {sh}) as i32) >> {sh}")
+        };
+        let _ = writeln!(
+            s,
+            "\n        /// `VALUE` as a two's-complement number: bit {top} sign-extended.\n        \
+             pub const fn value_i32(self) -> i32 {{\n            {get}\n        }}\n\n        \
+             /// Sets `VALUE` to `v` in two's complement, its low {w} bits (higher bits are dropped).\n        \
+             pub const fn with_value_i32(self, v: i32) -> Self {{\n            \
+             Self((self.0 & !0x{m:X}) | (v as u32 & 0x{m:X}))\n        }}",
+            top = r.width - 1,
+            w = r.width,
+        );
+    }
     let _ = writeln!(s, "    }}");
     let _ = writeln!(
         s,
@@ -268,7 +298,9 @@ pub fn rust(blocks: &[&Block]) -> String {
          //! `read`/`write` (no `modify`: writing back what was read would clear every\n\
          //! set flag). Its value type (`DeadTimeValue`) has a getter and a `with_*`\n\
          //! setter per field (`bool` for one bit, else `u32` masked to the field's\n\
-         //! width); a register without fields has one field, `value`. What the\n\
+         //! width); a register without fields has one field, `value`, and when its\n\
+         //! format is two's complement also `value_i32`/`with_value_i32` (sign-\n\
+         //! extended read, write masked to the register's width). What the\n\
          //! hardware does with an out-of-range word (mask, clamp, reject) is in each\n\
          //! register's doc. Every access is one whole-word `RegisterBus` access:\n\
          //!\n\

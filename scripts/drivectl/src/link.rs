@@ -208,17 +208,30 @@ impl Session {
         Ok(s)
     }
 
-    /// Sends an empty line and waits for the prompt it produces, dropping
-    /// whatever came before.
-    /// Tries three times: a board may still be booting (bytes sent before
-    /// its receiver is on are lost).
+    /// Synchronises on a fresh prompt, dropping whatever came before.
+    ///
+    /// Sends a marker the firmware echoes (`sync<nonce>`) and Ctrl-U, which
+    /// discards the typed line and prints `^C` and a prompt: a no-op for the
+    /// firmware. Waiting for that exact echo, not for any prompt, matters:
+    /// a board or a loaded QEMU may still be booting when the marker goes
+    /// out, and then its boot prompt (and the answer to a byte sent during
+    /// boot) would pass for the answer and leave a stale prompt that the
+    /// next command would take for its reply.
+    /// Tries three times: bytes sent before the receiver is on are lost.
     pub fn sync(&mut self, timeout: Duration) -> Result<()> {
         let attempt = timeout / 3;
         let mut last = None;
-        for _ in 0..3 {
+        for k in 0..3u32 {
             self.drain_quiet(Duration::from_millis(200), attempt)?;
-            self.send(b"\r")?;
-            match self.read_until(PROMPT.as_bytes(), attempt) {
+            let nonce = std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map_or(0, |d| d.subsec_nanos())
+                ^ std::process::id()
+                ^ k;
+            let marker = format!("sync{nonce:08x}");
+            self.send(format!("{marker}\x15").as_bytes())?;
+            let answer = format!("{marker}^C\r\n{PROMPT}");
+            match self.read_until(answer.as_bytes(), attempt) {
                 Ok(_) => return Ok(()),
                 Err(e) => last = Some(e),
             }
@@ -304,6 +317,69 @@ impl Drop for Session {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::os::unix::net::UnixStream;
+
+    /// A console that boots when its first bytes arrive (they came while it
+    /// was booting): banner and boot prompt first, then those bytes as
+    /// typed. Echo, `version`, empty lines and Ctrl-U as the firmware does.
+    fn fake_console(mut link: UnixStream) {
+        let mut out = link.try_clone().unwrap();
+        let mut line = Vec::new();
+        let mut booted = false;
+        let mut buf = [0u8; 256];
+        while let Ok(n) = link.read(&mut buf) {
+            if n == 0 {
+                return;
+            }
+            let mut o: Vec<u8> = Vec::new();
+            if !booted {
+                o.extend_from_slice(b"\r\nfirmware banner, type `help`\r\ndrive> ");
+                booted = true;
+            }
+            for &b in &buf[..n] {
+                match b {
+                    b'\r' => {
+                        o.extend_from_slice(b"\r\n");
+                        match &line[..] {
+                            b"" => {}
+                            b"version" => o.extend_from_slice(b"firmware 0.1.0\r\nOK\r\n"),
+                            _ => o.extend_from_slice(b"ERR unknown-command x\r\n"),
+                        }
+                        o.extend_from_slice(PROMPT.as_bytes());
+                        line.clear();
+                    }
+                    0x15 => {
+                        o.extend_from_slice(b"^C\r\n");
+                        o.extend_from_slice(PROMPT.as_bytes());
+                        line.clear();
+                    }
+                    _ => {
+                        o.push(b);
+                        line.push(b);
+                    }
+                }
+            }
+            if out.write_all(&o).is_err() {
+                return;
+            }
+        }
+    }
+
+    /// The sync bytes reach the console while it boots: the boot prompt is
+    /// not the answer, and the next command gets its own reply.
+    #[test]
+    fn sync_while_booting_leaves_no_stale_prompt() {
+        let (host, console) = UnixStream::pair().unwrap();
+        std::thread::spawn(move || fake_console(console));
+        let tx = Box::new(host.try_clone().unwrap());
+        let mut s = Session::new(None, tx, Box::new(host));
+        s.sync(Duration::from_secs(6)).unwrap();
+        let r = s.command("version", Duration::from_secs(2)).unwrap();
+        assert!(r.is_ok(), "{r:?}");
+        assert_eq!(r.lines, ["firmware 0.1.0"], "{r:?}");
+        let r = s.command("nope", Duration::from_secs(2)).unwrap();
+        assert!(!r.is_ok(), "{r:?}");
+    }
 
     #[test]
     fn reply_ok_with_lines() {

@@ -794,6 +794,24 @@ mod tests {
             reply_on(&mut d, "torque"),
             "torque_ref: 0.4000 Nm\r\nOK\r\n"
         );
+        // A step of zero (or below the resolution) has no settling time.
+        for same in ["step 0.4", "step 0.42"] {
+            let r = reply_on(&mut d, same);
+            assert!(
+                r.starts_with(
+                    "ERR bad-args step: the reference is already 0.4000 Nm; a step to 0.4"
+                ),
+                "{r}"
+            );
+            assert!(
+                r.ends_with("is smaller than 0.0500 Nm and has no settling time\r\n"),
+                "{r}"
+            );
+        }
+        assert_eq!(
+            reply_on(&mut d, "torque"),
+            "torque_ref: 0.4000 Nm\r\nOK\r\n"
+        );
     }
 
     #[test]

@@ -128,6 +128,18 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
             ErrorCode::BadArgs,
             format_args!("{cmd}: {x} Nm is beyond the torque limit"),
         ),
+        DriveError::Servo(ServoError::StepTooSmall {
+            from_nm,
+            to_nm,
+            min_nm,
+        }) => write_err(
+            out,
+            ErrorCode::BadArgs,
+            format_args!(
+                "{cmd}: the reference is already {from_nm:.4} Nm; a step to {to_nm:.4} Nm \
+                 is smaller than {min_nm:.4} Nm and has no settling time"
+            ),
+        ),
         DriveError::Servo(ServoError::Bus(b)) => write_err(
             out,
             ErrorCode::BusError,

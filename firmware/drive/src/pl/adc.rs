@@ -3,9 +3,10 @@
 //! `ADC_IA..IC` hold signed 12-bit counts (sign-extended to 16 bits), the
 //! floor of the mean of 4 samples. The current per count is a fact of the
 //! board's current sensing, not of the register map: [`AdcScale`].
-use super::{rd, sext, wr};
 use crate::bus::{BusError, RegisterBus};
-use crate::regmap::{self, ADC};
+use crate::regs::adc::{
+    AdcCount, AdcCtrl, AdcCtrlValue, AdcIa, AdcIb, AdcIc, AdcPeriod, AdcPeriodValue,
+};
 
 /// Current sensing gain: amperes per ADC count.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -27,14 +28,11 @@ pub struct Adc<B>(pub B);
 impl<B: RegisterBus> Adc<B> {
     /// Latest averaged phase currents a, b, c, counts.
     pub fn currents_counts(&mut self) -> Result<[i32; 3], BusError> {
-        let mut c = [0; 3];
-        for (x, r) in c
-            .iter_mut()
-            .zip([&regmap::ADC_IA, &regmap::ADC_IB, &regmap::ADC_IC])
-        {
-            *x = sext(rd(&mut self.0, &ADC, r)?, 16);
-        }
-        Ok(c)
+        Ok([
+            AdcIa::read(&mut self.0)?.value_i32(),
+            AdcIb::read(&mut self.0)?.value_i32(),
+            AdcIc::read(&mut self.0)?.value_i32(),
+        ])
     }
     /// Latest averaged phase currents a, b, c, A.
     pub fn currents_a(&mut self, scale: &AdcScale) -> Result<[f64; 3], BusError> {
@@ -43,22 +41,22 @@ impl<B: RegisterBus> Adc<B> {
     }
     /// Averaged results since reset (wraps).
     pub fn count(&mut self) -> Result<u32, BusError> {
-        rd(&mut self.0, &ADC, &regmap::ADC_COUNT)
+        Ok(AdcCount::read(&mut self.0)?.value())
     }
     /// Cycles between conversion starts (the PL clamps to 16..=65535).
     pub fn set_period(&mut self, cycles: u32) -> Result<(), BusError> {
-        wr(&mut self.0, &ADC, &regmap::ADC_PERIOD, cycles)
+        AdcPeriod::write(&mut self.0, AdcPeriodValue::ZERO.with_value(cycles))
     }
     /// Restarts the sample timer (`ADC_CTRL.ENABLE` 0 then 1): called right
     /// after a PWM period start, the conversions take a fixed phase to the
     /// PWM (the PL has no ADC trigger from the PWM counter).
     pub fn restart(&mut self) -> Result<(), BusError> {
-        wr(&mut self.0, &ADC, &regmap::ADC_CTRL, 0)?;
-        wr(&mut self.0, &ADC, &regmap::ADC_CTRL, 1)
+        AdcCtrl::write(&mut self.0, AdcCtrlValue::ZERO.with_enable(false))?;
+        AdcCtrl::write(&mut self.0, AdcCtrlValue::ZERO.with_enable(true))
     }
     /// Cycles between conversion starts, as stored.
     pub fn period(&mut self) -> Result<u32, BusError> {
-        rd(&mut self.0, &ADC, &regmap::ADC_PERIOD)
+        Ok(AdcPeriod::read(&mut self.0)?.value())
     }
 }
 
@@ -66,6 +64,7 @@ impl<B: RegisterBus> Adc<B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
+    use crate::regmap::{self, ADC};
 
     #[test]
     fn currents_are_sign_extended_and_scaled() {

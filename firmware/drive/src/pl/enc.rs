@@ -1,7 +1,7 @@
 //! Encoder block: position and speed, and their electrical equivalents.
-use super::{rd, sext};
 use crate::bus::{BusError, RegisterBus};
-use crate::regmap::{self, ENC};
+use crate::regmap;
+use crate::regs::enc::{EncCpr, EncPos, EncSpeed, EncWindow};
 use core::f64::consts::TAU;
 
 /// Encoder readings.
@@ -40,10 +40,10 @@ impl<B: RegisterBus> Encoder<B> {
     /// Position, resolution, speed and window in one go.
     pub fn read(&mut self) -> Result<EncReading, BusError> {
         Ok(EncReading {
-            pos: rd(&mut self.0, &ENC, &regmap::ENC_POS)?,
-            cpr: rd(&mut self.0, &ENC, &regmap::ENC_CPR)?,
-            speed: sext(rd(&mut self.0, &ENC, &regmap::ENC_SPEED)?, 16),
-            window: rd(&mut self.0, &ENC, &regmap::ENC_WINDOW)?,
+            pos: EncPos::read(&mut self.0)?.value(),
+            cpr: EncCpr::read(&mut self.0)?.value(),
+            speed: EncSpeed::read(&mut self.0)?.value_i32(),
+            window: EncWindow::read(&mut self.0)?.value(),
         })
     }
 }
@@ -52,6 +52,7 @@ impl<B: RegisterBus> Encoder<B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
+    use crate::regmap::{self, ENC};
 
     #[test]
     fn electrical_angle_and_speed() {

@@ -1,7 +1,6 @@
 //! Fault block: latched faults, over-current limit, watchdog timeout.
-use super::{rd, wr};
 use crate::bus::{BusError, RegisterBus};
-use crate::regmap::{self, FAULT};
+use crate::regs::fault::{FaultStatus, FaultStatusValue, WdgTimeout, WdgTimeoutValue};
 
 /// Latched fault bits (`FAULT_STATUS`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -11,18 +10,23 @@ impl Faults {
     /// Bit names, by bit position (the register map's field names).
     pub const NAMES: [&'static str; 3] = ["OVERCURRENT", "EXTERNAL", "WATCHDOG"];
     /// The watchdog bit.
-    pub const WATCHDOG: u32 = 1 << 2;
+    pub const WATCHDOG: u32 = FaultStatusValue::ZERO.with_watchdog(true).bits();
+    /// The latched flags, by field, in bit order (as [`Self::NAMES`]).
+    fn flags(self) -> [bool; 3] {
+        let v = FaultStatusValue::from_bits(self.0);
+        [v.overcurrent(), v.external(), v.watchdog()]
+    }
     /// No fault latched.
     pub fn none(self) -> bool {
-        self.0 & 7 == 0
+        !self.flags().contains(&true)
     }
     /// Names of the set bits, in bit order.
     pub fn names(self) -> impl Iterator<Item = &'static str> {
         Self::NAMES
             .into_iter()
-            .enumerate()
-            .filter(move |(i, _)| self.0 >> i & 1 != 0)
-            .map(|(_, n)| n)
+            .zip(self.flags())
+            .filter(|(_, set)| *set)
+            .map(|(n, _)| n)
     }
     /// Writes `none` or the names separated by spaces.
     pub fn write_names<W: core::fmt::Write>(self, out: &mut W) -> core::fmt::Result {
@@ -45,18 +49,24 @@ pub struct Fault<B>(pub B);
 impl<B: RegisterBus> Fault<B> {
     /// Latched faults.
     pub fn latched(&mut self) -> Result<Faults, BusError> {
-        Ok(Faults(rd(&mut self.0, &FAULT, &regmap::FAULT_STATUS)?))
+        Ok(Faults(FaultStatus::read(&mut self.0)?.bits()))
     }
     /// Clears every latched fault whose condition is gone (write 1 to clear);
     /// returns what is still latched. The gates stay off until `GATE_EN`
     /// is written 1 again.
     pub fn clear(&mut self) -> Result<Faults, BusError> {
-        wr(&mut self.0, &FAULT, &regmap::FAULT_STATUS, 7)?;
+        FaultStatus::write(
+            &mut self.0,
+            FaultStatusValue::ZERO
+                .with_overcurrent(true)
+                .with_external(true)
+                .with_watchdog(true),
+        )?;
         self.latched()
     }
     /// Watchdog timeout, PL clock cycles (the PL clamps to >= 1000).
     pub fn set_watchdog_timeout(&mut self, cycles: u32) -> Result<(), BusError> {
-        wr(&mut self.0, &FAULT, &regmap::WDG_TIMEOUT, cycles)
+        WdgTimeout::write(&mut self.0, WdgTimeoutValue::ZERO.with_value(cycles))
     }
 }
 
@@ -64,6 +74,7 @@ impl<B: RegisterBus> Fault<B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
+    use crate::regmap::{self, FAULT};
     use std::string::String;
 
     #[test]

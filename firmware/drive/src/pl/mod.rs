@@ -14,9 +14,9 @@
 //! - [`mpdtc`]: parameters, per-period inputs and status of the MPDTC core
 //!   and its control sequence.
 //!
-//! Register addresses come from `crate::regmap` inside these modules only.
-use crate::bus::{BusError, RegisterBus};
-use crate::regmap::{Block, Register};
+//! Every access goes through the typed accessors of `crate::regs` (generated
+//! from the register table) by named field; no driver spells an address,
+//! shift or mask.
 
 pub mod adc;
 pub mod enc;
@@ -28,24 +28,3 @@ pub mod top;
 
 #[cfg(test)]
 pub(crate) mod fake;
-
-/// Reads `reg` of `block`.
-fn rd<B: RegisterBus>(bus: &mut B, block: &Block, reg: &Register) -> Result<u32, BusError> {
-    bus.read(block.addr(reg))
-}
-
-/// Writes `value` to `reg` of `block`.
-fn wr<B: RegisterBus>(
-    bus: &mut B,
-    block: &Block,
-    reg: &Register,
-    value: u32,
-) -> Result<(), BusError> {
-    bus.write(block.addr(reg), value)
-}
-
-/// Sign-extends the low `bits` bits of `v`.
-fn sext(v: u32, bits: u32) -> i32 {
-    let sh = 32 - bits;
-    ((v << sh) as i32) >> sh
-}

@@ -4,10 +4,17 @@
 //!
 //! Signed values are written as two's complement masked to the register
 //! width, as the register map says (formats in docs/mpdtc-fixed.md).
-use super::{rd, wr};
 use crate::bus::{BusError, RegisterBus};
 use crate::pmsm::mpdtc_fixed::{FixedInputs, FixedParams};
-use crate::regmap::{self, Register, MPDTC};
+use crate::regs::mpdtc::*;
+
+/// Writes signed `v` to each listed register, two's complement masked to
+/// the register's width (its `with_value_i32`).
+macro_rules! write_signed {
+    ($bus:expr, $(($reg:ident, $val:ident, $v:expr)),+ $(,)?) => {
+        $( $reg::write($bus, $val::ZERO.with_value_i32($v))?; )+
+    };
+}
 
 /// `MPDTC_SEQ_STATUS` decoded.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -27,12 +34,13 @@ pub struct SeqStatus {
 impl SeqStatus {
     /// Decodes the register value.
     pub fn from_reg(v: u32) -> Self {
+        let s = MpdtcSeqStatusValue::from_bits(v);
         Self {
-            state: v & 7,
-            sampled: v & 8 != 0,
-            aligned: v & 16 != 0,
-            overruns: v >> 8 & 0xFF,
-            periods: v >> 16,
+            state: s.state(),
+            sampled: s.sampled(),
+            aligned: s.aligned(),
+            overruns: s.overruns(),
+            periods: s.periods(),
         }
     }
 }
@@ -41,84 +49,81 @@ impl SeqStatus {
 pub struct Mpdtc<B>(pub B);
 
 impl<B: RegisterBus> Mpdtc<B> {
-    fn w(&mut self, r: &Register, v: i32) -> Result<(), BusError> {
-        wr(&mut self.0, &MPDTC, r, v as u32 & r.mask())
-    }
     /// Writes every `MPDTC_P_*` register.
     pub fn load_params(&mut self, p: &FixedParams) -> Result<(), BusError> {
-        use regmap::*;
-        for (r, v) in [
-            (&MPDTC_P_A, p.a),
-            (&MPDTC_P_LAMBDA, p.lambda),
-            (&MPDTC_P_U0, p.u0),
-            (&MPDTC_P_U0_HALF, p.u0_half),
-            (&MPDTC_P_U0_H, p.u0_h),
-            (&MPDTC_P_PSI_L, p.psi_l),
-            (&MPDTC_P_KINV_T, p.kinv_t),
-            (&MPDTC_P_TOL, p.tol),
-            (&MPDTC_P_K_INT, p.k_int),
-            (&MPDTC_P_INT_LIM, p.int_lim),
-            (&MPDTC_P_INT_COND, i32::from(p.int_conditional)),
-            (&MPDTC_P_KP_O, p.kp_o),
-            (&MPDTC_P_KI_O, p.ki_o),
-            (&MPDTC_P_ETA_LIM, p.eta_lim),
-            (&MPDTC_P_W2_0, p.w2[0]),
-            (&MPDTC_P_W2_1, p.w2[1]),
-            (&MPDTC_P_W2_2, p.w2[2]),
-            (&MPDTC_P_W2_3, p.w2[3]),
-        ] {
-            self.w(r, v)?;
-        }
-        Ok(())
+        let bus = &mut self.0;
+        write_signed!(
+            bus,
+            (MpdtcPA, MpdtcPAValue, p.a),
+            (MpdtcPLambda, MpdtcPLambdaValue, p.lambda),
+            (MpdtcPU0, MpdtcPU0Value, p.u0),
+            (MpdtcPU0Half, MpdtcPU0HalfValue, p.u0_half),
+            (MpdtcPU0H, MpdtcPU0HValue, p.u0_h),
+            (MpdtcPPsiL, MpdtcPPsiLValue, p.psi_l),
+            (MpdtcPKinvT, MpdtcPKinvTValue, p.kinv_t),
+            (MpdtcPKInt, MpdtcPKIntValue, p.k_int),
+            (MpdtcPKpO, MpdtcPKpOValue, p.kp_o),
+            (MpdtcPKiO, MpdtcPKiOValue, p.ki_o),
+            (MpdtcPW20, MpdtcPW20Value, p.w2[0]),
+            (MpdtcPW21, MpdtcPW21Value, p.w2[1]),
+            (MpdtcPW22, MpdtcPW22Value, p.w2[2]),
+            (MpdtcPW23, MpdtcPW23Value, p.w2[3]),
+        );
+        // Non-negative formats: the low bits of the word, as the signed ones.
+        MpdtcPTol::write(bus, MpdtcPTolValue::ZERO.with_value(p.tol as u32))?;
+        MpdtcPIntLim::write(bus, MpdtcPIntLimValue::ZERO.with_value(p.int_lim as u32))?;
+        MpdtcPEtaLim::write(bus, MpdtcPEtaLimValue::ZERO.with_value(p.eta_lim as u32))?;
+        MpdtcPIntCond::write(bus, MpdtcPIntCondValue::ZERO.with_value(p.int_conditional))
     }
     /// Writes the period's `MPDTC_IN_*` registers.
     pub fn write_inputs(&mut self, f: &FixedInputs) -> Result<(), BusError> {
-        use regmap::*;
-        for (r, v) in [
-            (&MPDTC_IN_ID, f.i_dq.0),
-            (&MPDTC_IN_IQ, f.i_dq.1),
-            (&MPDTC_IN_COS0, f.trig[0].0),
-            (&MPDTC_IN_SIN0, f.trig[0].1),
-            (&MPDTC_IN_COS1, f.trig[1].0),
-            (&MPDTC_IN_SIN1, f.trig[1].1),
-            (&MPDTC_IN_COS2, f.trig[2].0),
-            (&MPDTC_IN_SIN2, f.trig[2].1),
-            (&MPDTC_IN_W_TS, f.w_ts),
-            (&MPDTC_IN_T_REF, f.t_ref),
-        ] {
-            self.w(r, v)?;
-        }
+        let bus = &mut self.0;
+        write_signed!(
+            bus,
+            (MpdtcInId, MpdtcInIdValue, f.i_dq.0),
+            (MpdtcInIq, MpdtcInIqValue, f.i_dq.1),
+            (MpdtcInCos0, MpdtcInCos0Value, f.trig[0].0),
+            (MpdtcInSin0, MpdtcInSin0Value, f.trig[0].1),
+            (MpdtcInCos1, MpdtcInCos1Value, f.trig[1].0),
+            (MpdtcInSin1, MpdtcInSin1Value, f.trig[1].1),
+            (MpdtcInCos2, MpdtcInCos2Value, f.trig[2].0),
+            (MpdtcInSin2, MpdtcInSin2Value, f.trig[2].1),
+            (MpdtcInWTs, MpdtcInWTsValue, f.w_ts),
+            (MpdtcInTRef, MpdtcInTRefValue, f.t_ref),
+        );
         Ok(())
     }
     /// `MPDTC_START`: in SAMPLE, "this period's inputs are written".
     pub fn start(&mut self, tag: u32) -> Result<(), BusError> {
-        wr(&mut self.0, &MPDTC, &regmap::MPDTC_START, tag)
+        MpdtcStart::write(&mut self.0, MpdtcStartValue::ZERO.with_value(tag))
     }
     /// `MPDTC_CTRL`: `manual` (gates follow `SW_STATE`) and `state_clr`
     /// (core state held at zero).
     pub fn set_ctrl(&mut self, manual: bool, state_clr: bool) -> Result<(), BusError> {
-        let v = u32::from(manual) | u32::from(state_clr) << 1;
-        wr(&mut self.0, &MPDTC, &regmap::MPDTC_CTRL, v)
+        MpdtcCtrl::write(
+            &mut self.0,
+            MpdtcCtrlValue::ZERO
+                .with_manual(manual)
+                .with_state_clr(state_clr),
+        )
     }
     /// Duration of the rotor alignment, PL clock cycles.
     pub fn set_align_time(&mut self, cycles: u32) -> Result<(), BusError> {
-        wr(&mut self.0, &MPDTC, &regmap::MPDTC_ALIGN_TIME, cycles)
+        MpdtcAlignTime::write(&mut self.0, MpdtcAlignTimeValue::ZERO.with_value(cycles))
     }
     /// Encoder position latched at the end of the alignment.
     pub fn align_pos(&mut self) -> Result<u32, BusError> {
-        rd(&mut self.0, &MPDTC, &regmap::MPDTC_ALIGN_POS)
+        Ok(MpdtcAlignPos::read(&mut self.0)?.value())
     }
     /// The control sequence's status.
     pub fn seq_status(&mut self) -> Result<SeqStatus, BusError> {
-        Ok(SeqStatus::from_reg(rd(
-            &mut self.0,
-            &MPDTC,
-            &regmap::MPDTC_SEQ_STATUS,
-        )?))
+        Ok(SeqStatus::from_reg(
+            MpdtcSeqStatus::read(&mut self.0)?.bits(),
+        ))
     }
     /// `S[k+1]` of the last decision (bits SaSbSc).
     pub fn last_decision(&mut self) -> Result<u8, BusError> {
-        Ok((rd(&mut self.0, &MPDTC, &regmap::MPDTC_STATUS)? >> 1 & 7) as u8)
+        Ok(MpdtcStatus::read(&mut self.0)?.s_next() as u8)
     }
 }
 
@@ -126,6 +131,7 @@ impl<B: RegisterBus> Mpdtc<B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
+    use crate::regmap::{self, Register, MPDTC};
 
     #[test]
     fn negative_values_are_masked_two_complement() {

@@ -13,9 +13,9 @@
 //! load one) `INT_STS` reads `0x0000_0000` after reset (measured: `status`
 //! prints it), so `PCFG_DONE` is clear and the firmware never touches GP0:
 //! it selects the simulated PL instead.
-use super::rd;
 use crate::bus::RegisterBus;
 use crate::regmap;
+use crate::regs::top::{Id, Version, VersionValue};
 
 /// Absolute address of devcfg `INT_STS` (PS side, always readable).
 pub const DEVCFG_INT_STS: usize = 0xF800_7000 + 0x0C;
@@ -53,7 +53,7 @@ impl Presence {
 
 /// Major version of the register map this firmware speaks.
 pub const fn major(version: u32) -> u32 {
-    version >> 16
+    VersionValue::from_bits(version).major()
 }
 
 /// Decides from devcfg's `INT_STS` (read by the caller from
@@ -63,11 +63,11 @@ pub fn detect<B: RegisterBus>(devcfg_int_sts: u32, bus: &mut B) -> Presence {
     if devcfg_int_sts & PCFG_DONE == 0 {
         return Presence::Unconfigured;
     }
-    let id = rd(bus, &regmap::TOP, &regmap::ID).unwrap_or(0);
+    let id = Id::read(bus).map_or(0, |v| v.value());
     if id != regmap::ID_VALUE {
         return Presence::Foreign { id };
     }
-    let version = rd(bus, &regmap::TOP, &regmap::VERSION).unwrap_or(0);
+    let version = Version::read(bus).map_or(0, |v| v.bits());
     if major(version) != major(regmap::VERSION.reset) {
         Presence::Incompatible { version }
     } else {

@@ -3,12 +3,21 @@
 //!
 //! Each leg's duty register is an `embedded_hal::pwm::SetDutyCycle` channel
 //! ([`Leg`]) whose full scale is `PWM_PERIOD` (duty = DUTY / PWM_PERIOD).
-use super::{rd, wr};
 use crate::bus::{BusError, RegisterBus};
-use crate::regmap::{self, Register, PWM};
+use crate::regs::pwm::{
+    DeadTime, DeadTimeValue, DutyA, DutyAValue, DutyB, DutyBValue, DutyC, DutyCValue, GateCtrl,
+    GateCtrlValue, GateStatus, PwmPeriod, PwmPeriodValue,
+};
 
-/// The duty registers of legs a, b, c.
-const DUTY: [&Register; 3] = [&regmap::DUTY_A, &regmap::DUTY_B, &regmap::DUTY_C];
+/// Writes `cycles` to the duty register of leg `i` (0 = a, 1 = b, 2 = c;
+/// above 2 as c).
+fn write_duty<B: RegisterBus + ?Sized>(bus: &mut B, i: usize, cycles: u32) -> Result<(), BusError> {
+    match i {
+        0 => DutyA::write(bus, DutyAValue::ZERO.with_value(cycles)),
+        1 => DutyB::write(bus, DutyBValue::ZERO.with_value(cycles)),
+        _ => DutyC::write(bus, DutyCValue::ZERO.with_value(cycles)),
+    }
+}
 
 /// The PWM/gates block.
 pub struct Pwm<B>(pub B);
@@ -16,24 +25,24 @@ pub struct Pwm<B>(pub B);
 impl<B: RegisterBus> Pwm<B> {
     /// Gates on (`true`: they follow the selected source) or off.
     pub fn set_gates(&mut self, on: bool) -> Result<(), BusError> {
-        wr(&mut self.0, &PWM, &regmap::GATE_CTRL, u32::from(on))
+        GateCtrl::write(&mut self.0, GateCtrlValue::ZERO.with_gate_en(on))
     }
     /// `GATE_CTRL.GATE_EN` as read back (held at 0 while a fault is latched).
     pub fn gates_enabled(&mut self) -> Result<bool, BusError> {
-        Ok(rd(&mut self.0, &PWM, &regmap::GATE_CTRL)? & regmap::GATE_CTRL_GATE_EN != 0)
+        Ok(GateCtrl::read(&mut self.0)?.gate_en())
     }
     /// Half period of the up-down counter, PL clock cycles (the PL clamps
     /// to 2..=65535); f_pwm = 100 MHz / (2 half_period).
     pub fn set_half_period(&mut self, cycles: u32) -> Result<(), BusError> {
-        wr(&mut self.0, &PWM, &regmap::PWM_PERIOD, cycles)
+        PwmPeriod::write(&mut self.0, PwmPeriodValue::ZERO.with_value(cycles))
     }
     /// Half period as stored, PL clock cycles.
     pub fn half_period(&mut self) -> Result<u32, BusError> {
-        rd(&mut self.0, &PWM, &regmap::PWM_PERIOD)
+        Ok(PwmPeriod::read(&mut self.0)?.value())
     }
     /// Dead time, PL clock cycles (the PL clamps to 1023).
     pub fn set_dead_time(&mut self, cycles: u32) -> Result<(), BusError> {
-        wr(&mut self.0, &PWM, &regmap::DEAD_TIME, cycles)
+        DeadTime::write(&mut self.0, DeadTimeValue::ZERO.with_value(cycles))
     }
     /// The duty channel of leg `i` (0 = a, 1 = b, 2 = c); reads the period
     /// once for the channel's full scale.
@@ -41,22 +50,22 @@ impl<B: RegisterBus> Pwm<B> {
         let period = self.half_period()?.min(u32::from(u16::MAX)) as u16;
         Ok(Leg {
             bus: &mut self.0,
-            reg: DUTY[i.min(2)],
+            leg: i.min(2),
             period,
         })
     }
     /// Writes the three duties (fractions of the period, clamped to
     /// `[0, 1]`, NaN as 0.5 = zero average voltage), rounded to cycles.
     pub fn set_duties(&mut self, d: [f64; 3], half_period: u32) -> Result<(), BusError> {
-        for (reg, x) in DUTY.iter().zip(d) {
-            wr(&mut self.0, &PWM, reg, duty_cycles(x, half_period))?;
+        for (i, x) in d.into_iter().enumerate() {
+            write_duty(&mut self.0, i, duty_cycles(x, half_period))?;
         }
         Ok(())
     }
     /// `GATE_STATUS`: (upper gates, lower gates, requested state), bit 2 = leg a.
     pub fn gate_status(&mut self) -> Result<(u8, u8, u8), BusError> {
-        let s = rd(&mut self.0, &PWM, &regmap::GATE_STATUS)?;
-        Ok(((s & 7) as u8, (s >> 3 & 7) as u8, (s >> 6 & 7) as u8))
+        let s = GateStatus::read(&mut self.0)?;
+        Ok((s.hi() as u8, s.lo() as u8, s.state() as u8))
     }
 }
 
@@ -70,7 +79,7 @@ pub fn duty_cycles(d: f64, half_period: u32) -> u32 {
 /// One leg's duty register as an `embedded-hal` PWM channel.
 pub struct Leg<'a, B> {
     bus: &'a mut B,
-    reg: &'static Register,
+    leg: usize,
     period: u16,
 }
 
@@ -93,7 +102,7 @@ impl<B: RegisterBus> embedded_hal::pwm::SetDutyCycle for Leg<'_, B> {
         self.period
     }
     fn set_duty_cycle(&mut self, duty: u16) -> Result<(), PwmError> {
-        wr(self.bus, &PWM, self.reg, u32::from(duty.min(self.period))).map_err(PwmError)
+        write_duty(self.bus, self.leg, u32::from(duty.min(self.period))).map_err(PwmError)
     }
 }
 
@@ -101,7 +110,11 @@ impl<B: RegisterBus> embedded_hal::pwm::SetDutyCycle for Leg<'_, B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
+    use crate::regmap::{self, Register, PWM};
     use embedded_hal::pwm::SetDutyCycle;
+
+    /// The duty registers of legs a, b, c.
+    const DUTY: [&Register; 3] = [&regmap::DUTY_A, &regmap::DUTY_B, &regmap::DUTY_C];
 
     #[test]
     fn duty_rounding_and_clamping() {

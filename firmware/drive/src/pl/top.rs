@@ -1,7 +1,7 @@
 //! Top/ID block: mode, status summary, access errors, watchdog heartbeat.
-use super::{rd, wr};
 use crate::bus::{BusError, RegisterBus};
-use crate::regmap::{self, mode, TOP};
+use crate::regmap::mode;
+use crate::regs::top::{Ctrl, CtrlValue, Err, Heartbeat, HeartbeatValue, Status};
 
 /// Source of the switching state (`CTRL.MODE`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -56,24 +56,24 @@ pub struct Top<B>(pub B);
 impl<B: RegisterBus> Top<B> {
     /// Selects the switching-state source.
     pub fn set_mode(&mut self, m: Mode) -> Result<(), BusError> {
-        wr(&mut self.0, &TOP, &regmap::CTRL, m.reg())
+        Ctrl::write(&mut self.0, CtrlValue::ZERO.with_mode(m.reg()))
     }
     /// `STATUS`.
     pub fn status(&mut self) -> Result<TopStatus, BusError> {
-        let s = rd(&mut self.0, &TOP, &regmap::STATUS)?;
+        let s = Status::read(&mut self.0)?;
         Ok(TopStatus {
-            mode: s & 3,
-            gates_active: s & 4 != 0,
-            fault: s & 8 != 0,
+            mode: s.mode(),
+            gates_active: s.gates_active(),
+            fault: s.fault(),
         })
     }
     /// Restarts the PL watchdog (any value; a counter helps debugging).
     pub fn heartbeat(&mut self, beat: u32) -> Result<(), BusError> {
-        wr(&mut self.0, &TOP, &regmap::HEARTBEAT, beat)
+        Heartbeat::write(&mut self.0, HeartbeatValue::ZERO.with_value(beat))
     }
     /// Sticky access-error flags (`ERR`: bit 0 BAD_VALUE, bit 1 BAD_ADDR).
     pub fn errors(&mut self) -> Result<u32, BusError> {
-        rd(&mut self.0, &TOP, &regmap::ERR)
+        Ok(Err::read(&mut self.0)?.bits())
     }
 }
 
@@ -81,6 +81,7 @@ impl<B: RegisterBus> Top<B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
+    use crate::regmap::{self, TOP};
 
     #[test]
     fn mode_names_and_register_values() {

@@ -57,6 +57,11 @@ pub struct ServoConfig {
     pub watchdog_cycles: u32,
     /// `MPDTC_ALIGN_TIME`, PL clock cycles.
     pub align_cycles: u32,
+    /// Smallest `step` size, N m: its 10 % settling band must stand clear
+    /// of the torque estimate's resolution (one ADC count, 10 mA, is about
+    /// 1 mN m of q-axis torque) and ripple; a step of zero has no settling
+    /// time at all.
+    pub step_min_nm: f64,
 }
 
 impl Default for ServoConfig {
@@ -76,6 +81,8 @@ impl Default for ServoConfig {
             watchdog_cycles: 200_000,
             // 2 ms of rotor alignment before the MPDTC's first decision.
             align_cycles: 200_000,
+            // Band 5 mN m: about 5 ADC counts of i_q.
+            step_min_nm: 0.05,
         }
     }
 }
@@ -91,6 +98,16 @@ pub enum ServoError {
     GatesOff,
     /// Torque reference not finite or beyond the limit (N m).
     TorqueOutOfRange(f64),
+    /// `step` smaller than [`ServoConfig::step_min_nm`] from the present
+    /// reference (both N m).
+    StepTooSmall {
+        /// The present reference, N m.
+        from_nm: f64,
+        /// The requested one, N m.
+        to_nm: f64,
+        /// [`ServoConfig::step_min_nm`], N m.
+        min_nm: f64,
+    },
     /// The PL answered with an error.
     Bus(BusError),
 }
@@ -327,11 +344,20 @@ impl Servo {
         window_s: f64,
     ) -> Result<(), ServoError> {
         let nm = self.check_torque(nm)?;
+        let from_nm = self.torque_ref_nm;
+        // Both finite (checked above and when set).
+        if libm::fabs(nm - from_nm) < self.cfg.step_min_nm {
+            return Err(ServoError::StepTooSmall {
+                from_nm,
+                to_nm: nm,
+                min_nm: self.cfg.step_min_nm,
+            });
+        }
         if !(self.gates && self.gates_on(bus)?) {
             return Err(ServoError::GatesOff);
         }
         let n = libm::ceil(window_s / self.control_period_s()) as usize;
-        self.rec.start_from(self.torque_ref_nm);
+        self.rec.start_from(from_nm);
         self.rec.arm(nm, n.clamp(1, STEP_SAMPLES_MAX));
         Ok(())
     }

@@ -117,3 +117,48 @@ fn the_watchdog_trips_when_the_control_step_stops() {
     s.enable(&mut sim).unwrap();
     assert!(s.gates_on(&mut sim).unwrap());
 }
+
+#[test]
+fn a_step_of_zero_size_is_refused_and_changes_nothing() {
+    let (r, _, mut s, mut sim) = step(Mode::Foc);
+    for nm in [0.4, 0.43, 0.36] {
+        assert_eq!(
+            s.begin_step(&mut sim, nm, 2e-3),
+            Err(ServoError::StepTooSmall {
+                from_nm: 0.4,
+                to_nm: nm,
+                min_nm: 0.05
+            })
+        );
+        assert!(!s.step_pending());
+        assert_eq!(s.torque_ref_nm(), 0.4);
+        assert_eq!(s.step_result(), Some(r), "the last result stays");
+    }
+    // One resolution further is a step again.
+    s.begin_step(&mut sim, 0.35, 2e-3).unwrap();
+    assert!(s.step_pending());
+}
+
+/// After a 0.4 N m MPDTC run, `mode foc`, `enable` and `step 0.4` at once
+/// (as fast as a piped console does it): the MPDTC's current still flows
+/// (0.37 N m one FOC period later). The step must be scored from rest: its
+/// first sample near 0, a settling time > 0 within the FOC figure.
+#[test]
+fn a_step_right_after_a_mode_change_starts_from_rest() {
+    let (_, _, mut s, mut sim) = step(Mode::Mpdtc);
+    s.set_mode(&mut sim, Mode::Foc).unwrap();
+    // One FOC period with the gates off: the current is still there.
+    run(&mut s, &mut sim, 1, |_| false);
+    let residual = s.measured().torque_nm;
+    assert!(residual > 0.2, "{residual}");
+    s.enable(&mut sim).unwrap();
+    s.begin_step(&mut sim, 0.4, 2e-3).unwrap();
+    run(&mut s, &mut sim, 10_000, |s| !s.step_pending());
+    let r = s.step_result().expect("step completed");
+    let band = crate::pmsm::metrics::settling_band(0.0, 0.4);
+    let first = f64::from(s.rec.samples()[0]);
+    assert!(first.abs() <= band, "first sample {first} N m: {r:?}");
+    assert!(s.rec.waited_periods() > 0, "{r:?}");
+    let t = r.settling_s.expect("settled");
+    assert!(t > 0.0 && t <= 0.27e-3, "{r:?}");
+}
