@@ -23,7 +23,6 @@ use crate::ps::{gic, timer};
 use core::cell::RefCell;
 use drive::bus::{BusError, RegisterBus};
 use drive::console::{Bench, DriveError, DriveOps, DriveStatus, PlKind};
-use drive::pl::adc::AdcScale;
 use drive::pl::fault::Faults;
 use drive::pl::presence::Presence;
 use drive::pl::top::Mode;
@@ -102,10 +101,7 @@ pub fn init() -> Boot {
         // standstill), read through the same drivers.
         Presence::Unconfigured => {
             let sim = SimDrive::new(&SimConfig::default()).expect("paper motor parameters");
-            cfg.motor = sim.config().motor;
-            cfg.adc = AdcScale {
-                amps_per_count: sim.config().adc_amps_per_count,
-            };
+            cfg = ServoConfig::for_simulated(sim.config());
             (PlKind::Simulated, Some(Backend::Sim(sim)))
         }
         _ => (PlKind::Absent, None),

@@ -307,7 +307,6 @@ pub fn bench(a: BenchArgs) -> Result<()> {
 /// cost on a slower machine.
 fn simdrive_loop(mpdtc: bool, sim_s: f64) -> Result<serde_json::Value> {
     use drive::bus::RegisterBus;
-    use drive::pl::adc::AdcScale;
     use drive::pl::top::Mode;
     use drive::regmap as rm;
     use drive::servo::{Servo, ServoConfig};
@@ -317,14 +316,7 @@ fn simdrive_loop(mpdtc: bool, sim_s: f64) -> Result<serde_json::Value> {
     let s = |e: drive::servo::ServoError| anyhow::anyhow!("drive: {e:?}");
     let b = |e: drive::bus::BusError| anyhow::anyhow!("register access failed: {e:?}");
     let mut sim = SimDrive::new(&SimConfig::default()).map_err(e)?;
-    let cfg = ServoConfig {
-        motor: sim.config().motor,
-        adc: AdcScale {
-            amps_per_count: sim.config().adc_amps_per_count,
-        },
-        ..ServoConfig::default()
-    };
-    let mut servo = Servo::new(&cfg).map_err(e)?;
+    let mut servo = Servo::new(&ServoConfig::for_simulated(sim.config())).map_err(e)?;
     servo.init(&mut sim).map_err(b)?;
     servo
         .set_mode(&mut sim, if mpdtc { Mode::Mpdtc } else { Mode::Foc })

@@ -87,6 +87,20 @@ impl Default for ServoConfig {
     }
 }
 
+impl ServoConfig {
+    /// The defaults with the motor and the current-sensing gain of the
+    /// simulated PL `sim` (what the firmware runs under QEMU).
+    pub fn for_simulated(sim: &crate::simpl::SimConfig) -> Self {
+        Self {
+            motor: sim.motor,
+            adc: AdcScale {
+                amps_per_count: sim.adc_amps_per_count,
+            },
+            ..Self::default()
+        }
+    }
+}
+
 /// Why a drive command was refused (nothing changed).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ServoError {

@@ -7,14 +7,7 @@ use crate::simpl::{SimConfig, SimDrive};
 
 fn setup(mode: Mode) -> (Servo, SimDrive) {
     let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
-    let cfg = ServoConfig {
-        motor: sim.config().motor,
-        adc: AdcScale {
-            amps_per_count: sim.config().adc_amps_per_count,
-        },
-        ..ServoConfig::default()
-    };
-    let mut s = Servo::new(&cfg).unwrap();
+    let mut s = Servo::new(&ServoConfig::for_simulated(sim.config())).unwrap();
     s.init(&mut sim).unwrap();
     s.set_mode(&mut sim, mode).unwrap();
     s.enable(&mut sim).unwrap();
