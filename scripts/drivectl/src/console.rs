@@ -24,12 +24,18 @@ pub struct Target {
     /// Run QEMU with -icount shift=0 (repeatable guest time).
     #[arg(long)]
     pub icount: bool,
+    /// What the QEMU firmware's PL is: `sim` (the fast simulated PL) or
+    /// `rtl` (the Verilated pl_top through the co-simulation bridge
+    /// `pl-cosim`; implies -icount).
+    #[arg(long, default_value = "sim", value_parser = ["sim", "rtl"])]
+    pub pl: String,
 }
 
 impl Target {
     fn qemu(&self) -> Qemu {
         let mut q = Qemu::new(self.elf.clone().unwrap_or_else(default_elf));
         q.icount = self.icount;
+        q.pl_rtl = self.pl == "rtl";
         q
     }
 }
@@ -103,10 +109,27 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
     );
     let result = if std::io::stdin().is_terminal() {
         eprintln!("drivectl: console on this terminal; Ctrl-A X quits QEMU\r");
+        // The bridge lives as long as QEMU does.
+        let bridge = if q.pl_rtl {
+            let b = drivectl::cosim::Bridge::start()?;
+            q.cosim_dir = Some(b.dir().to_path_buf());
+            eprintln!(
+                "drivectl: PL = the Verilated pl_top (pl-cosim in {})\r",
+                b.dir().display()
+            );
+            Some(b)
+        } else {
+            None
+        };
         let status = q
             .interactive()?
             .status()
             .context("cannot start qemu-system-arm")?;
+        if let Some(b) = bridge {
+            if let Ok(stats) = b.finish() {
+                eprintln!("drivectl: pl-cosim: {}", stats.trim());
+            }
+        }
         if status.success() {
             Ok(())
         } else {
