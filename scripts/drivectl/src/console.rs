@@ -1,7 +1,7 @@
 //! `drivectl console`, `drivectl send`, `drivectl log`.
 use anyhow::{bail, Context as _, Result};
 use drivectl::defmt_log::LogTable;
-use drivectl::link::{default_elf, Final, Qemu, Session};
+use drivectl::link::{default_elf, Final, Qemu, Session, PROMPT};
 use std::io::{IsTerminal, Read, Write};
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -147,7 +147,9 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
 }
 
 /// Standard input is a pipe: hold it until the firmware is ready, relay
-/// both ways, quit one second after the input ends.
+/// both ways, quit one second after the input ends and the firmware is back
+/// at its prompt (a slow command, e.g. a `step` on the co-simulated RTL,
+/// may print nothing for longer; at most 30 s of silence).
 fn piped_console(q: &Qemu) -> Result<()> {
     let mut s = Session::spawn_qemu(q, Duration::from_secs(20))?;
     let mut out = std::io::stdout();
@@ -163,6 +165,7 @@ fn piped_console(q: &Qemu) -> Result<()> {
         }
     });
     let mut eof_at: Option<Instant> = None;
+    let mut tail: Vec<u8> = Vec::new();
     loop {
         match rx.try_recv() {
             Ok(chunk) => s.send(&chunk)?,
@@ -174,12 +177,19 @@ fn piped_console(q: &Qemu) -> Result<()> {
         let got = s.drain_quiet(Duration::from_millis(20), Duration::from_millis(100))?;
         out.write_all(&got)?;
         out.flush()?;
+        tail.extend_from_slice(&got);
+        let keep = tail.len().saturating_sub(PROMPT.len());
+        tail.drain(..keep);
         if !got.is_empty() {
             if let Some(t) = &mut eof_at {
                 *t = Instant::now();
             }
         }
-        if eof_at.is_some_and(|t| t.elapsed() > Duration::from_secs(1)) {
+        let at_prompt = tail == PROMPT.as_bytes();
+        if eof_at.is_some_and(|t| {
+            let e = t.elapsed();
+            (at_prompt && e > Duration::from_secs(1)) || e > Duration::from_secs(30)
+        }) {
             return Ok(());
         }
     }
