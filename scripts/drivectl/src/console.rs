@@ -190,6 +190,9 @@ fn piped_console(q: &Qemu) -> Result<()> {
             let e = t.elapsed();
             (at_prompt && e > Duration::from_secs(1)) || e > Duration::from_secs(30)
         }) {
+            if let Some(Ok(stats)) = s.finish_bridge() {
+                eprintln!("drivectl: pl-cosim: {}", stats.trim());
+            }
             return Ok(());
         }
     }
