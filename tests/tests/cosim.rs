@@ -7,7 +7,7 @@
 //! recovery. That the MPDTC takes the same decisions on both PLs is checked
 //! on the host (`pl-bitstream-src/sim/tests/cosim.rs`), where the decisions
 //! are visible.
-use drivectl::link::{Final, Reply, Session};
+use drivectl::link::{parse_reply, Final, Reply, Session, PROMPT};
 use std::time::Duration;
 use system_tests::{boot, boot_rtl, cmd, field};
 
@@ -21,15 +21,26 @@ fn num(r: &Reply, key: &str) -> f64 {
         .unwrap_or_else(|| panic!("no number for {key}: {r:?}"))
 }
 
-/// `mode mpdtc`, `enable`, `step 0.4` sent at once: the step is armed
-/// during the 2 ms rotor alignment and starts at its end, so both PLs
-/// start it from the same state.
+/// `mode mpdtc`, `enable`, `step 0.4` sent in one write: the step is
+/// armed during the 2 ms rotor alignment (however slow the host) and
+/// starts at its end, so both PLs start it from the same state.
 fn mpdtc_step(s: &mut Session) -> Reply {
-    assert_ok(&cmd(s, "mode mpdtc"));
-    assert_ok(&cmd(s, "enable"));
-    let r = cmd(s, "step 0.4");
-    assert_ok(&r);
-    r
+    s.send(b"mode mpdtc\renable\rstep 0.4\r").unwrap();
+    let mut replies = (0..3).map(|_| {
+        let text = s
+            .read_until(PROMPT.as_bytes(), Duration::from_secs(60))
+            .unwrap_or_else(|e| panic!("{e:#}: {}", String::from_utf8_lossy(&s.transcript)));
+        parse_reply(&String::from_utf8_lossy(&text)).unwrap()
+    });
+    let (mode, enable, step) = (
+        replies.next().unwrap(),
+        replies.next().unwrap(),
+        replies.next().unwrap(),
+    );
+    assert_eq!(mode.lines[0], "mode: mpdtc", "{mode:?}");
+    assert_eq!(enable.lines, ["gates: on"], "{enable:?}");
+    assert_ok(&step);
+    step
 }
 
 #[test]
