@@ -10,6 +10,9 @@
 //!   and the control step take at most about half of the CPU (the rest is
 //!   the console's): under QEMU the simulated PL may run slower than real
 //!   time, `status` reports the ratio as `sim_time_scale`.
+//!   With the co-simulated RTL (`cosim`) the PL runs in guest time on the
+//!   host: the tick syncs it to now and is set just after the next
+//!   control-period boundary the host reported.
 //! - the *control interrupt* (software-generated interrupt 1) runs
 //!   `Servo::control_step`: heartbeat, measurement, FOC or MPDTC inputs.
 //!   A boundary that finds the previous one still pending is an overrun.
