@@ -15,6 +15,13 @@ fn assert_ok(r: &Reply) {
     assert!(r.is_ok(), "{r:?}");
 }
 
+fn assert_err(r: &Reply, want_code: &str) {
+    match &r.fin {
+        Final::Err { code, .. } => assert_eq!(code, want_code, "{r:?}"),
+        Final::Ok => panic!("expected ERR {want_code}, got {r:?}"),
+    }
+}
+
 fn num(r: &Reply, key: &str) -> f64 {
     field(r, key)
         .and_then(|v| v.parse().ok())
@@ -82,7 +89,14 @@ fn mpdtc_step_on_the_rtl_settles_within_5_percent_of_the_simulated_pl() {
 #[test]
 fn foc_torque_and_watchdog_on_the_rtl() {
     let mut s = boot_rtl();
+    // Refusals read the RTL's state and change nothing.
+    assert_err(&cmd(&mut s, "enable"), "mode-off");
     assert_ok(&cmd(&mut s, "mode foc"));
+    assert_err(&cmd(&mut s, "step 0.4"), "gates-off");
+    assert_err(&cmd(&mut s, "torque 1.01"), "bad-args");
+    let st = cmd(&mut s, "status");
+    assert_eq!(field(&st, "gates"), Some("off"), "{st:?}");
+    assert_eq!(field(&st, "mode"), Some("foc"), "{st:?}");
     assert_ok(&cmd(&mut s, "enable"));
     let r = cmd(&mut s, "step 0.4");
     assert_ok(&r);
@@ -100,10 +114,7 @@ fn foc_torque_and_watchdog_on_the_rtl() {
     let st = cmd(&mut s, "status");
     assert_eq!(field(&st, "fault"), Some("WATCHDOG"), "{st:?}");
     assert_eq!(field(&st, "gates"), Some("off"), "{st:?}");
-    match cmd(&mut s, "enable").fin {
-        Final::Err { code, .. } => assert_eq!(code, "fault-latched"),
-        Final::Ok => panic!("enable with a latched fault"),
-    }
+    assert_err(&cmd(&mut s, "enable"), "fault-latched");
     assert_ok(&cmd(&mut s, "fault clear"));
     assert_ok(&cmd(&mut s, "enable"));
     let r = cmd(&mut s, "torque 0.2");

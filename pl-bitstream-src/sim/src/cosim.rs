@@ -316,9 +316,8 @@ impl Bridge {
                 Err(_) => self.reply(Status::SlaveError, 0),
             },
             Op::Sync => {
-                // Boundaries crossed during the last accesses are carried
-                // into the next advance: collect them now.
-                self.run_to(self.drive.pl_cycles());
+                // `run_to` above also collected the boundaries crossed
+                // during the accesses since the last sync.
                 let r = self.reply(Status::Ok, 0);
                 self.boundaries = 0;
                 r
