@@ -76,6 +76,7 @@ fn banner(con: &mut Uart, boot: &control::Boot) {
             write!(con, "pl: bitstream v{}.{}", v.major(), v.minor())
         }
         PlKind::Absent => write!(con, "pl: absent"),
+        PlKind::RtlCosim => write!(con, "pl: rtl co-simulation"),
     };
     let _ = write!(
         con,

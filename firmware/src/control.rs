@@ -10,6 +10,9 @@
 //!   and the control step take at most about half of the CPU (the rest is
 //!   the console's): under QEMU the simulated PL may run slower than real
 //!   time, `status` reports the ratio as `sim_time_scale`.
+//!   With the co-simulated RTL (`cosim`) the PL runs in guest time on the
+//!   host: the tick syncs it to now and is set just after the next
+//!   control-period boundary the host reported.
 //! - the *control interrupt* (software-generated interrupt 1) runs
 //!   `Servo::control_step`: heartbeat, measurement, FOC or MPDTC inputs.
 //!   A boundary that finds the previous one still pending is an overrun.
@@ -18,8 +21,8 @@
 //!   is measured in PL time (the simulated PL's under QEMU: the drive's
 //!   own clock, independent of how fast the host runs the guest); while it
 //!   lasts the console waits, so the PL tick may use the whole CPU.
-use crate::pl;
 use crate::ps::{gic, timer};
+use crate::{cosim, pl};
 use core::cell::RefCell;
 use drive::bus::{BusError, RegisterBus};
 use drive::console::{Bench, DriveError, DriveOps, DriveStatus, PlKind};
@@ -40,6 +43,9 @@ enum Backend {
     Gp0(pl::Gp0),
     /// No bitstream: the simulated PL and motor (`drive::simpl`).
     Sim(SimDrive),
+    /// No bitstream, QEMU with the bridge: the Verilated `pl_top` and the
+    /// motor in the host process `pl-cosim`.
+    Cosim(cosim::Cosim),
 }
 
 impl RegisterBus for Backend {
@@ -47,12 +53,14 @@ impl RegisterBus for Backend {
         match self {
             Backend::Gp0(b) => b.read(addr),
             Backend::Sim(b) => b.read(addr),
+            Backend::Cosim(b) => b.read(addr),
         }
     }
     fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
         match self {
             Backend::Gp0(b) => b.write(addr, value),
             Backend::Sim(b) => b.write(addr, value),
+            Backend::Cosim(b) => b.write(addr, value),
         }
     }
 }
@@ -70,6 +78,9 @@ struct State {
     tick_start: u64,
     /// Uptime when the simulated PL started, us.
     sim_start_us: u64,
+    /// Co-simulation: global-timer count of the next PL tick, just after
+    /// the next control-period boundary.
+    next_tick: u64,
 }
 
 /// The drive state, touched only with IRQs masked (one core).
@@ -97,18 +108,30 @@ pub fn init() -> Boot {
     let mut cfg = ServoConfig::default();
     let (pl_kind, bus) = match presence {
         Presence::Ours { version } => (PlKind::Bitstream(version), Some(Backend::Gp0(pl::Gp0))),
-        // No bitstream: the simulated PL (the paper's motor, held at
-        // standstill), read through the same drivers.
-        Presence::Unconfigured => {
-            let sim = SimDrive::new(&SimConfig::default()).expect("paper motor parameters");
-            cfg = ServoConfig::for_simulated(sim.config());
-            (PlKind::Simulated, Some(Backend::Sim(sim)))
-        }
+        Presence::Unconfigured => match cosim::Cosim::open() {
+            // No bitstream, but QEMU runs the bridge: the Verilated PL with
+            // the same simulated motor.
+            Some(c) => {
+                cfg = ServoConfig::for_simulated(&SimConfig::default());
+                (PlKind::RtlCosim, Some(Backend::Cosim(c)))
+            }
+            // No bitstream: the simulated PL (the paper's motor, held at
+            // standstill), read through the same drivers.
+            None => {
+                let sim = SimDrive::new(&SimConfig::default()).expect("paper motor parameters");
+                cfg = ServoConfig::for_simulated(sim.config());
+                (PlKind::Simulated, Some(Backend::Sim(sim)))
+            }
+        },
         _ => (PlKind::Absent, None),
     };
     if let Some(mut bus) = bus {
         let mut servo = Servo::new(&cfg).expect("servo configuration");
         if servo.init(&mut bus).is_ok() {
+            if let Backend::Cosim(c) = &mut bus {
+                // The boundaries crossed during the set-up are no overruns.
+                let _ = c.sync();
+            }
             cortex_ar::interrupt::free(|| {
                 *STATE.0.borrow_mut() = Some(State {
                     servo,
@@ -118,6 +141,7 @@ pub fn init() -> Boot {
                     stall_until: 0,
                     tick_start: 0,
                     sim_start_us: timer::uptime_us(),
+                    next_tick: 0,
                 });
             });
             gic::enable(gic::IRQ_GLOBAL_TIMER);
@@ -155,6 +179,26 @@ pub fn on_pl_tick() {
             }
             // The bitstream's PL runs on its own: the tick is the control rate.
             Backend::Gp0(_) => 1,
+            // The PL runs to now; the next tick comes just after the next
+            // boundary (one global-timer count per PL cycle under QEMU).
+            Backend::Cosim(c) => {
+                let period = period_cycles(&s.servo);
+                let (mut n, since) = match c.sync() {
+                    Ok(r) => (r.boundaries, u64::from(r.since_boundary)),
+                    Err(_) => (0, u64::MAX),
+                };
+                if s.next_tick == 0 {
+                    // The first tick (IRQs were off during the boot): no
+                    // control step was due before it.
+                    n = n.min(1);
+                }
+                s.next_tick = if since < period {
+                    now - since + period + COSIM_TICK_LAG
+                } else {
+                    now + period
+                };
+                n
+            }
         };
         if boundaries == 0 {
             return false;
@@ -170,9 +214,19 @@ pub fn on_pl_tick() {
     if raise {
         gic::send_sgi_self(SGI_CONTROL);
     } else {
-        timer::set_compare(now + guest_counts(1564));
+        let next = with(|s| match s.bus {
+            Backend::Cosim(_) => s.next_tick,
+            _ => now + guest_counts(1564),
+        })
+        .unwrap_or(now + guest_counts(1564));
+        timer::set_compare(next);
     }
 }
+
+/// Global-timer counts between a control-period boundary and the PL tick
+/// that serves it in co-simulation (the boundary is reported one cycle
+/// after the strobe; a little margin keeps the tick after it).
+const COSIM_TICK_LAG: u64 = 4;
 
 /// The control interrupt.
 pub fn on_control() {
@@ -184,6 +238,12 @@ pub fn on_control() {
             let _ = s.servo.control_step(&mut s.bus);
         }
         let end = timer::global_count();
+        if let Backend::Cosim(_) = s.bus {
+            // The PL runs in guest time: the next boundary, or at once
+            // when the step ran past it (counted as an overrun there).
+            timer::set_compare(s.next_tick.max(end + COSIM_TICK_LAG));
+            return;
+        }
         let busy = end.saturating_sub(s.tick_start);
         let nominal = guest_counts(period_cycles(&s.servo));
         // At most about half of the CPU for the PL and the control step,
@@ -198,13 +258,14 @@ impl State {
     fn pl_now(&self) -> u64 {
         match &self.bus {
             Backend::Sim(sim) => sim.pl_cycles(),
+            Backend::Cosim(c) => c.last.pl_cycles,
             Backend::Gp0(_) => timer::uptime_us(),
         }
     }
     /// PL time after `ms` milliseconds from now.
     fn pl_after_ms(&self, ms: u32) -> u64 {
         let per_ms = match &self.bus {
-            Backend::Sim(_) => u64::from(drive::regmap::PL_CLOCK_HZ / 1000),
+            Backend::Sim(_) | Backend::Cosim(_) => u64::from(drive::regmap::PL_CLOCK_HZ / 1000),
             Backend::Gp0(_) => 1000,
         };
         self.pl_now() + u64::from(ms) * per_ms
@@ -302,7 +363,7 @@ impl DriveOps for FwDrive {
                     let guest_s = (timer::uptime_us() - s.sim_start_us) as f64 * 1e-6;
                     Some(sim.sim_time_scale(guest_s))
                 }
-                Backend::Gp0(_) => None,
+                Backend::Gp0(_) | Backend::Cosim(_) => None,
             },
         })
         .unwrap_or(DriveStatus {

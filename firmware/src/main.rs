@@ -16,6 +16,8 @@ mod board;
 #[cfg(target_os = "none")]
 mod control;
 #[cfg(target_os = "none")]
+mod cosim;
+#[cfg(target_os = "none")]
 mod log;
 #[cfg(target_os = "none")]
 mod panic;
@@ -25,6 +27,8 @@ mod pl;
 mod ps;
 #[cfg(target_os = "none")]
 mod rx;
+#[cfg(target_os = "none")]
+mod semihosting;
 
 /// The firmware only runs on the target; on the host this crate is an empty
 /// binary so that `cargo build --workspace` and clippy work everywhere.

@@ -30,6 +30,15 @@ pub fn boot() -> Session {
     boot_with(None)
 }
 
+/// A booted firmware whose PL is the Verilated `pl_top` behind the
+/// co-simulation bridge (`pl-cosim`, built beside the test binaries by
+/// `cargo test --workspace`, or `$DRIVE_PL_COSIM`).
+pub fn boot_rtl() -> Session {
+    let mut q = Qemu::new(elf());
+    q.pl_rtl = true;
+    Session::spawn_qemu(&q, TIMEOUT).expect("firmware boots to its prompt with the bridge")
+}
+
 /// Sends `line`, returns the reply (panics with the transcript on a
 /// protocol error).
 pub fn cmd(s: &mut Session, line: &str) -> Reply {

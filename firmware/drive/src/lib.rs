@@ -20,6 +20,7 @@ extern crate std;
 
 pub mod bus;
 pub mod console;
+pub mod cosim;
 pub mod fixedpoint;
 pub mod gates;
 pub mod mpdcc;

@@ -5,6 +5,7 @@
 //! safe types. Tests in `tests/` drive them against the cycle-exact Rust
 //! models in the `drive` crate.
 
+pub mod cosim;
 pub mod gate_driver;
 pub mod mpdtc_core;
 pub mod mpdtc_vectors;

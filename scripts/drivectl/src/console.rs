@@ -1,7 +1,7 @@
 //! `drivectl console`, `drivectl send`, `drivectl log`.
 use anyhow::{bail, Context as _, Result};
 use drivectl::defmt_log::LogTable;
-use drivectl::link::{default_elf, Final, Qemu, Session};
+use drivectl::link::{default_elf, Final, Qemu, Session, PROMPT};
 use std::io::{IsTerminal, Read, Write};
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -24,12 +24,18 @@ pub struct Target {
     /// Run QEMU with -icount shift=0 (repeatable guest time).
     #[arg(long)]
     pub icount: bool,
+    /// What the QEMU firmware's PL is: `sim` (the fast simulated PL) or
+    /// `rtl` (the Verilated pl_top through the co-simulation bridge
+    /// `pl-cosim`; implies -icount).
+    #[arg(long, default_value = "sim", value_parser = ["sim", "rtl"])]
+    pub pl: String,
 }
 
 impl Target {
     fn qemu(&self) -> Qemu {
         let mut q = Qemu::new(self.elf.clone().unwrap_or_else(default_elf));
         q.icount = self.icount;
+        q.pl_rtl = self.pl == "rtl";
         q
     }
 }
@@ -103,10 +109,27 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
     );
     let result = if std::io::stdin().is_terminal() {
         eprintln!("drivectl: console on this terminal; Ctrl-A X quits QEMU\r");
+        // The bridge lives as long as QEMU does.
+        let bridge = if q.pl_rtl {
+            let b = drivectl::cosim::Bridge::start()?;
+            q.cosim_dir = Some(b.dir().to_path_buf());
+            eprintln!(
+                "drivectl: PL = the Verilated pl_top (pl-cosim in {})\r",
+                b.dir().display()
+            );
+            Some(b)
+        } else {
+            None
+        };
         let status = q
             .interactive()?
             .status()
             .context("cannot start qemu-system-arm")?;
+        if let Some(b) = bridge {
+            if let Ok(stats) = b.finish() {
+                eprintln!("drivectl: pl-cosim: {}", stats.trim());
+            }
+        }
         if status.success() {
             Ok(())
         } else {
@@ -124,7 +147,9 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
 }
 
 /// Standard input is a pipe: hold it until the firmware is ready, relay
-/// both ways, quit one second after the input ends.
+/// both ways, quit one second after the input ends and the firmware is back
+/// at its prompt (a slow command, e.g. a `step` on the co-simulated RTL,
+/// may print nothing for longer; at most 30 s of silence).
 fn piped_console(q: &Qemu) -> Result<()> {
     let mut s = Session::spawn_qemu(q, Duration::from_secs(20))?;
     let mut out = std::io::stdout();
@@ -140,6 +165,7 @@ fn piped_console(q: &Qemu) -> Result<()> {
         }
     });
     let mut eof_at: Option<Instant> = None;
+    let mut tail: Vec<u8> = Vec::new();
     loop {
         match rx.try_recv() {
             Ok(chunk) => s.send(&chunk)?,
@@ -151,12 +177,22 @@ fn piped_console(q: &Qemu) -> Result<()> {
         let got = s.drain_quiet(Duration::from_millis(20), Duration::from_millis(100))?;
         out.write_all(&got)?;
         out.flush()?;
+        tail.extend_from_slice(&got);
+        let keep = tail.len().saturating_sub(PROMPT.len());
+        tail.drain(..keep);
         if !got.is_empty() {
             if let Some(t) = &mut eof_at {
                 *t = Instant::now();
             }
         }
-        if eof_at.is_some_and(|t| t.elapsed() > Duration::from_secs(1)) {
+        let at_prompt = tail == PROMPT.as_bytes();
+        if eof_at.is_some_and(|t| {
+            let e = t.elapsed();
+            (at_prompt && e > Duration::from_secs(1)) || e > Duration::from_secs(30)
+        }) {
+            if let Some(Ok(stats)) = s.finish_bridge() {
+                eprintln!("drivectl: pl-cosim: {}", stats.trim());
+            }
             return Ok(());
         }
     }

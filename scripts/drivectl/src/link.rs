@@ -29,6 +29,11 @@ pub struct Qemu {
     /// `-icount shift=0`: guest time advances 1 ns per instruction, so
     /// timer readings are repeatable cost figures.
     pub icount: bool,
+    /// The PL is the co-simulated RTL: a `pl-cosim` bridge is started with
+    /// QEMU (see [`crate::cosim`]).
+    pub pl_rtl: bool,
+    /// The bridge's directory once started (set by the spawner).
+    pub cosim_dir: Option<PathBuf>,
 }
 
 impl Qemu {
@@ -37,6 +42,8 @@ impl Qemu {
             elf: elf.into(),
             defmt_raw: None,
             icount: false,
+            pl_rtl: false,
+            cosim_dir: None,
         }
     }
 
@@ -62,7 +69,9 @@ impl Qemu {
         .iter()
         .map(|s| s.to_string())
         .collect();
-        if self.icount {
+        if let Some(dir) = &self.cosim_dir {
+            a.extend(crate::cosim::qemu_args(dir));
+        } else if self.icount {
             a.extend(["-icount".into(), "shift=0".into()]);
         }
         a.extend(["-kernel".into(), self.elf.display().to_string()]);
@@ -142,6 +151,8 @@ pub struct Session {
     pending: Vec<u8>,
     /// Everything received so far (for diagnostics).
     pub transcript: Vec<u8>,
+    /// The co-simulation bridge of this QEMU, if any.
+    bridge: Option<crate::cosim::Bridge>,
 }
 
 impl Session {
@@ -173,6 +184,7 @@ impl Session {
             rx,
             pending: Vec::new(),
             transcript: Vec::new(),
+            bridge: None,
         }
     }
 
@@ -180,6 +192,14 @@ impl Session {
     /// the end of the boot banner.
     pub fn spawn_qemu(q: &Qemu, boot_timeout: Duration) -> Result<Self> {
         q.check()?;
+        let mut q = q.clone();
+        let bridge = if q.pl_rtl && q.cosim_dir.is_none() {
+            let b = crate::cosim::Bridge::start()?;
+            q.cosim_dir = Some(b.dir().to_path_buf());
+            Some(b)
+        } else {
+            None
+        };
         let mut child = Command::new("qemu-system-arm")
             .args(q.args("stdio"))
             .stdin(Stdio::piped())
@@ -190,6 +210,7 @@ impl Session {
         let tx = Box::new(child.stdin.take().expect("piped stdin"));
         let rx = Box::new(child.stdout.take().expect("piped stdout"));
         let mut s = Self::new(Some(child), tx, rx);
+        s.bridge = bridge;
         s.read_until(BANNER_END.as_bytes(), boot_timeout)
             .context("firmware did not boot")?;
         s.read_until(PROMPT.as_bytes(), boot_timeout)?;
@@ -302,6 +323,18 @@ impl Session {
         self.send(format!("{line}\r").as_bytes())?;
         let text = self.read_until(PROMPT.as_bytes(), timeout)?;
         parse_reply(&String::from_utf8_lossy(&text))
+    }
+}
+
+impl Session {
+    /// Ends QEMU and returns the co-simulation bridge's statistics line
+    /// (JSON: control periods per wall second and more), if it had one.
+    pub fn finish_bridge(mut self) -> Option<Result<String>> {
+        if let Some(c) = &mut self.child {
+            let _ = c.kill();
+            let _ = c.wait();
+        }
+        self.bridge.take().map(crate::cosim::Bridge::finish)
     }
 }
 

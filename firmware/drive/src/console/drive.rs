@@ -15,6 +15,9 @@ pub enum PlKind {
     Bitstream(u32),
     /// A PL the firmware must not drive (foreign or incompatible design).
     Absent,
+    /// No bitstream, QEMU with the co-simulation bridge: the Verilated
+    /// `pl_top` and the simulated motor in a host process.
+    RtlCosim,
 }
 
 /// Live drive values for `status`.
@@ -184,6 +187,7 @@ pub fn write_status<W: Write>(out: &mut W, s: &DriveStatus) -> fmt::Result {
         PlKind::Simulated => out.write_str("pl: simulated\r\n")?,
         PlKind::Bitstream(v) => write!(out, "pl: bitstream v{}.{}\r\n", v >> 16, v & 0xFFFF)?,
         PlKind::Absent => out.write_str("pl: absent\r\n")?,
+        PlKind::RtlCosim => out.write_str("pl: rtl co-simulation\r\n")?,
     }
     if let Some(k) = s.sim_time_scale {
         write!(out, "sim_time_scale: {k:.2}\r\n")?;

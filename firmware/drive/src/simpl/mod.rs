@@ -13,7 +13,7 @@ pub mod regs;
 pub mod seq;
 pub mod simdrive;
 
-pub use simdrive::{Advance, SimConfig, SimDrive, Truth, Work};
+pub use simdrive::{Advance, PlModel, SimConfig, SimDrive, Truth, Work};
 
 /// "No event ahead" for the closed-form spans (any span is capped by the
 /// cycles asked for).

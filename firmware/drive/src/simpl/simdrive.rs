@@ -12,7 +12,7 @@
 
 use super::adc::adc_word;
 use super::inverter::potentials;
-use super::pl::{Events, SimPl};
+use super::pl::{Events, Pins, SimPl};
 use crate::bus::{BusError, RegisterBus};
 use crate::pmsm::frames::leg_voltage_alpha_beta;
 use crate::pmsm::params::{check_finite, check_pos, MotorParams, ParamError};
@@ -147,10 +147,61 @@ pub struct Work {
     pub plant_segments: u64,
 }
 
+/// A model of `pl_top` that [`SimDrive`] couples to the plant: the
+/// event-driven [`SimPl`] (default), or the Verilated RTL in co-simulation
+/// (`rtl-sim`'s bridge). Time in PL clock cycles; pins apply from the next
+/// cycle on.
+pub trait PlModel {
+    /// PL cycles run since the release of reset.
+    fn cycles(&self) -> u64;
+    /// Gate outputs now (bit 2 = leg a).
+    fn gates(&self) -> crate::gates::GateOutputs;
+    /// `CTRL.MODE` now.
+    fn mode(&self) -> u32;
+    /// Pin levels and converter data driven into the PL.
+    fn pins_mut(&mut self) -> &mut Pins;
+    /// Runs up to `max` cycles without bus accesses, stopping after the
+    /// first cycle whose events hit `stop`: (cycles run, merged events).
+    fn run(&mut self, max: u64, stop: &Events) -> (u64, Events);
+    /// Bus read (the cycles it takes are seen through [`Self::cycles`]).
+    fn read(&mut self, addr: usize) -> (Result<u32, BusError>, Events);
+    /// Bus write of a whole word.
+    fn write(&mut self, addr: usize, value: u32) -> (Result<(), BusError>, Events);
+    /// (cycles stepped one by one, closed-form skips) so far.
+    fn work(&self) -> (u64, u64);
+}
+
+impl PlModel for SimPl {
+    fn cycles(&self) -> u64 {
+        SimPl::cycles(self)
+    }
+    fn gates(&self) -> crate::gates::GateOutputs {
+        SimPl::gates(self)
+    }
+    fn mode(&self) -> u32 {
+        SimPl::mode(self)
+    }
+    fn pins_mut(&mut self) -> &mut Pins {
+        &mut self.pins
+    }
+    fn run(&mut self, max: u64, stop: &Events) -> (u64, Events) {
+        SimPl::run(self, max, stop)
+    }
+    fn read(&mut self, addr: usize) -> (Result<u32, BusError>, Events) {
+        SimPl::read(self, addr)
+    }
+    fn write(&mut self, addr: usize, value: u32) -> (Result<(), BusError>, Events) {
+        SimPl::write(self, addr, value)
+    }
+    fn work(&self) -> (u64, u64) {
+        (self.stepped, self.skips)
+    }
+}
+
 /// Simulated `pl_top` + inverter + PMSM + ADC/encoder chain.
 #[derive(Debug, Clone)]
-pub struct SimDrive {
-    pl: SimPl,
+pub struct SimDrive<P = SimPl> {
+    pl: P,
     plant: Plant,
     cfg: SimConfig,
     /// Cycles since the plant was last advanced.
@@ -168,9 +219,19 @@ impl SimDrive {
     /// The drive right after the PL's reset, motor at rest current, angle 0.
     pub fn new(cfg: &SimConfig) -> Result<Self, ParamError> {
         cfg.validate()?;
+        Self::with_pl(cfg, SimPl::new(cfg.adc_conversion_cycles))
+    }
+}
+
+impl<P: PlModel> SimDrive<P> {
+    /// The drive on another model of `pl_top` (right after its reset; its
+    /// converter must answer `cfg.adc_conversion_cycles + 1` cycles after
+    /// each convert pulse with the word in its pins).
+    pub fn with_pl(cfg: &SimConfig, pl: P) -> Result<Self, ParamError> {
+        cfg.validate()?;
         let plant = Plant::new(&cfg.motor, 0.0, cfg.mechanics, cfg.omega_e_rad_s)?;
         let mut s = Self {
-            pl: SimPl::new(cfg.adc_conversion_cycles),
+            pl,
             plant,
             cfg: *cfg,
             lag: 0,
@@ -214,11 +275,17 @@ impl SimDrive {
 
     /// Work done so far.
     pub fn work(&self) -> Work {
+        let (stepped_cycles, skips) = self.pl.work();
         Work {
-            stepped_cycles: self.pl.stepped,
-            skips: self.pl.skips,
+            stepped_cycles,
+            skips,
             plant_segments: self.segments,
         }
+    }
+
+    /// The PL model.
+    pub fn pl(&self) -> &P {
+        &self.pl
     }
 
     /// Gate outputs now (bit 2 = leg a).
@@ -296,7 +363,7 @@ impl SimDrive {
         if ev.adc_convert {
             self.flush();
             let i = self.plant.i_abc_a();
-            self.pl.pins.adc_word = adc_word(i.map(|x| self.cfg.adc_counts(x)));
+            self.pl.pins_mut().adc_word = adc_word(i.map(|x| self.cfg.adc_counts(x)));
         }
         let foc = self.pl.mode() == mode::FOC_PWM;
         let mut boundary = false;
@@ -372,30 +439,35 @@ impl SimDrive {
         self.enc_count = count;
         let (a, b) = [(false, false), (true, false), (true, true), (false, true)]
             [count.rem_euclid(4) as usize];
-        self.pl.pins.enc_a = a;
-        self.pl.pins.enc_b = b;
-        self.pl.pins.enc_z = count.rem_euclid(cpr) == 0;
+        let z = count.rem_euclid(cpr) == 0;
+        let pins = self.pl.pins_mut();
+        pins.enc_a = a;
+        pins.enc_b = b;
+        pins.enc_z = z;
     }
 
-    fn bus_events(&mut self, ev: &Events) {
-        self.lag += 1;
+    /// Accounts for the `cycles` a bus access took (one for [`SimPl`]).
+    fn bus_events(&mut self, ev: &Events, cycles: u64) {
+        self.lag += cycles;
         let mut adv = self.carried;
-        adv.cycles += 1;
+        adv.cycles += cycles;
         self.on_events(ev, &mut adv);
         self.carried = adv;
     }
 }
 
-impl RegisterBus for SimDrive {
+impl<P: PlModel> RegisterBus for SimDrive<P> {
     fn read(&mut self, addr: usize) -> Result<u32, BusError> {
+        let c0 = self.pl.cycles();
         let (r, ev) = self.pl.read(addr);
-        self.bus_events(&ev);
+        self.bus_events(&ev, self.pl.cycles() - c0);
         r
     }
 
     fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
+        let c0 = self.pl.cycles();
         let (r, ev) = self.pl.write(addr, value);
-        self.bus_events(&ev);
+        self.bus_events(&ev, self.pl.cycles() - c0);
         r
     }
 }

@@ -1,0 +1,103 @@
+//! The PL as a co-simulation under QEMU: every register access travels
+//! over semihosting to the host process `pl-cosim` (Verilated `pl_top` and
+//! the plant, wire format `drive::cosim`) and waits for its reply.
+//!
+//! Selected when semihosting answers and the host's command line for the
+//! guest has `cosim=<dir>`: requests go to the FIFO `<dir>/req`, replies
+//! come from `<dir>/rep` (opened in that order, as `pl-cosim` does).
+//! Guest time is the global-timer count, one PL cycle per count under QEMU
+//! (both 100 MHz; see `drive::cosim`).
+use crate::ps::timer;
+use crate::semihosting::{self, HostFile};
+use drive::bus::{BusError, RegisterBus};
+use drive::cosim::{Op, Reply, Request, Status, REPLY_LEN};
+
+/// The bridge to `pl-cosim`.
+pub struct Cosim {
+    req: HostFile,
+    rep: HostFile,
+    /// The last reply (PL time, boundaries).
+    pub last: Reply,
+}
+
+/// Longest `<dir>` accepted, bytes.
+const DIR_MAX: usize = 200;
+
+impl Cosim {
+    /// Probes semihosting and opens the bridge named on the guest's command
+    /// line; `None` (nothing touched but the probe) when either is missing.
+    pub fn open() -> Option<Self> {
+        if !semihosting::probe() {
+            return None;
+        }
+        let mut line = [0u8; 256];
+        let n = semihosting::cmdline(&mut line)?;
+        let text = core::str::from_utf8(&line[..n]).ok()?;
+        let dir = text
+            .split_whitespace()
+            .find_map(|w| w.strip_prefix("cosim="))?
+            .trim_end_matches('\0');
+        if dir.is_empty() || dir.len() > DIR_MAX {
+            return None;
+        }
+        let path = |name: &[u8]| {
+            let mut p = [0u8; DIR_MAX + 8];
+            p[..dir.len()].copy_from_slice(dir.as_bytes());
+            p[dir.len()] = b'/';
+            p[dir.len() + 1..dir.len() + 1 + name.len()].copy_from_slice(name);
+            (p, dir.len() + 1 + name.len() + 1)
+        };
+        let (p, n) = path(b"req\0");
+        let req = HostFile::open(&p[..n], true)?;
+        let (p, n) = path(b"rep\0");
+        let rep = HostFile::open(&p[..n], false)?;
+        let mut c = Self {
+            req,
+            rep,
+            last: Reply {
+                status: Status::Ok,
+                data: 0,
+                boundaries: 0,
+                since_boundary: u32::MAX,
+                pl_cycles: 0,
+            },
+        };
+        c.sync().ok()?;
+        Some(c)
+    }
+
+    fn transact(&mut self, op: Op, addr: usize, data: u32) -> Result<Reply, BusError> {
+        let r = Request {
+            op,
+            addr: addr as u32,
+            data,
+            guest: timer::global_count(),
+        };
+        let mut b = [0u8; REPLY_LEN];
+        if !(self.req.write_all(&r.encode()) && self.rep.read_exact(&mut b)) {
+            // The host went away: no PL answers any more.
+            return Err(BusError::Absent);
+        }
+        let reply = Reply::decode(&b).map_err(|_| BusError::Absent)?;
+        self.last = reply;
+        match reply.status {
+            Status::Ok => Ok(reply),
+            Status::SlaveError | Status::BadRequest => Err(BusError::SlaveError),
+        }
+    }
+
+    /// Runs the PL to now; the reply's boundaries are those since the
+    /// previous sync.
+    pub fn sync(&mut self) -> Result<Reply, BusError> {
+        self.transact(Op::Sync, 0, 0)
+    }
+}
+
+impl RegisterBus for Cosim {
+    fn read(&mut self, addr: usize) -> Result<u32, BusError> {
+        Ok(self.transact(Op::Read, addr, 0)?.data)
+    }
+    fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
+        self.transact(Op::Write, addr, value).map(|_| ())
+    }
+}

@@ -1,0 +1,113 @@
+//! `pl-cosim --dir DIR [--stats FILE]`: the host end of the co-simulation
+//! bridge (`drive::cosim`). Creates the FIFOs `DIR/req` and `DIR/rep`,
+//! prints `ready` on stdout, then serves the firmware's requests (QEMU
+//! opens `req` for writing and `rep` for reading through semihosting) with
+//! the Verilated `pl_top` and the plant until the request FIFO closes. On
+//! exit it prints one JSON line of statistics (to FILE, or stderr): requests,
+//! PL cycles, control periods, wall seconds, control periods per wall
+//! second and shadow-model mismatches. Exit status 2 on bad arguments or
+//! when the FIFOs cannot be made, 1 on a mismatch.
+use rtl_sim::cosim::Bridge;
+use std::fs::OpenOptions;
+use std::io::{ErrorKind, Read, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Command, ExitCode};
+use std::time::Instant;
+
+fn usage() -> ExitCode {
+    eprintln!("usage: pl-cosim --dir DIR [--stats FILE]");
+    ExitCode::from(2)
+}
+
+fn fifo(p: &Path) -> Result<(), String> {
+    if p.exists() {
+        return Ok(());
+    }
+    let st = Command::new("mkfifo")
+        .arg(p)
+        .status()
+        .map_err(|e| format!("mkfifo: {e}"))?;
+    if st.success() {
+        Ok(())
+    } else {
+        Err(format!("mkfifo {} failed", p.display()))
+    }
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let (mut dir, mut stats) = (None, None);
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match (a.as_str(), it.next()) {
+            ("--dir", Some(d)) => dir = Some(PathBuf::from(d)),
+            ("--stats", Some(f)) => stats = Some(PathBuf::from(f)),
+            _ => return usage(),
+        }
+    }
+    let Some(dir) = dir else { return usage() };
+    let (req_p, rep_p) = (dir.join("req"), dir.join("rep"));
+    for p in [&req_p, &rep_p] {
+        if let Err(e) = fifo(p) {
+            eprintln!("pl-cosim: {e}");
+            return ExitCode::from(2);
+        }
+    }
+    let mut bridge = Bridge::new();
+    println!("ready");
+    let _ = std::io::stdout().flush();
+    // The guest opens `req` first, then `rep`: the same order here.
+    let (mut req, mut rep) = match (
+        OpenOptions::new().read(true).open(&req_p),
+        OpenOptions::new().write(true).open(&rep_p),
+    ) {
+        (Ok(a), Ok(b)) => (a, b),
+        (Err(e), _) | (_, Err(e)) => {
+            eprintln!("pl-cosim: cannot open the FIFOs: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let t0 = Instant::now();
+    let mut buf = [0u8; drive::cosim::REQUEST_LEN];
+    loop {
+        match req.read_exact(&mut buf) {
+            Ok(()) => {}
+            Err(e) if e.kind() == ErrorKind::UnexpectedEof => break,
+            Err(e) => {
+                eprintln!("pl-cosim: request FIFO: {e}");
+                break;
+            }
+        }
+        let r = bridge.handle(&buf);
+        if rep.write_all(&r.encode()).is_err() {
+            break;
+        }
+    }
+    let wall = t0.elapsed().as_secs_f64();
+    let pl = bridge.drive().pl();
+    let line = format!(
+        "{{\"requests\":{},\"pl_cycles\":{},\"control_periods\":{},\"wall_s\":{:.3},\
+         \"control_periods_per_wall_s\":{:.1},\"pl_cycles_per_wall_s\":{:.0},\"mismatches\":{},\"first_mismatch\":{:?}}}",
+        bridge.requests,
+        bridge.drive().pl_cycles(),
+        bridge.periods,
+        wall,
+        bridge.periods as f64 / wall.max(1e-9),
+        bridge.drive().pl_cycles() as f64 / wall.max(1e-9),
+        pl.mismatches(),
+        pl.first_mismatch().unwrap_or("")
+    );
+    match stats {
+        Some(f) => {
+            if let Err(e) = std::fs::write(&f, format!("{line}\n")) {
+                eprintln!("pl-cosim: {}: {e}", f.display());
+            }
+        }
+        None => eprintln!("{line}"),
+    }
+    if pl.mismatches() > 0 {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}

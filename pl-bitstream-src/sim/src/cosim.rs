@@ -1,0 +1,346 @@
+//! Co-simulation of the firmware against the Verilog: the Verilated
+//! `pl_top` coupled to the plant by `drive::simpl::SimDrive` (the same
+//! inverter, PMSM and ADC/encoder code as the simulated PL, through the
+//! [`PlModel`] trait: no second copy of the coupling), served to the
+//! firmware under QEMU over the bridge protocol of `drive::cosim`.
+//!
+//! [`RtlPl`] is the Verilated `pl_top` as a [`PlModel`]: one clock cycle
+//! per simulated cycle (no closed-form skips), an AXI4-Lite access in two
+//! cycles (the register-bus strobe in the first), the converter answering
+//! each `adc_cnv_o` pulse `conv + 1` cycles later with the word the plant
+//! set. `pl_top` has no port for the PWM period start (the FOC's control
+//! boundary), so a shadow `SimPl` runs in lock step with the same inputs
+//! and supplies that event and `CTRL.MODE`; the gates, every read's data
+//! and response come from the RTL, and the shadow is checked against them
+//! on every cycle ([`RtlPl::mismatches`]; the equivalence itself is
+//! `tests/simpl_equiv.rs`).
+use crate::pl_top::{PlTopSim, OKAY};
+use drive::bus::BusError;
+use drive::cosim::{Op, Reply, Request, Status, REQUEST_LEN};
+use drive::gates::GateOutputs;
+use drive::regmap::BASE_ADDR;
+use drive::simpl::pl::{Events, Pins, SimPl};
+use drive::simpl::{PlModel, SimConfig, SimDrive};
+
+/// What the shadow model does in a cycle.
+#[derive(Clone, Copy)]
+enum Shadow {
+    Idle,
+    Read(usize),
+    Write(usize, u32),
+}
+
+/// The Verilated `pl_top` as a [`PlModel`].
+pub struct RtlPl {
+    rtl: PlTopSim,
+    shadow: SimPl,
+    pins: Pins,
+    conv: u32,
+    cycles: u64,
+    mismatches: u64,
+    first_mismatch: Option<String>,
+}
+
+impl RtlPl {
+    /// A fresh `pl_top` out of reset; the converter answers `conv + 1`
+    /// cycles after each convert pulse.
+    pub fn new(conv: u32) -> Self {
+        let mut rtl = PlTopSim::new();
+        rtl.adc_echo = Some((conv, 0));
+        Self {
+            rtl,
+            shadow: SimPl::new(conv),
+            pins: Pins::default(),
+            conv,
+            cycles: 0,
+            mismatches: 0,
+            first_mismatch: None,
+        }
+    }
+
+    /// Cycles in which the shadow model disagreed with the RTL (gates or
+    /// read data): 0 unless the RTL and `drive::simpl` diverged.
+    pub fn mismatches(&self) -> u64 {
+        self.mismatches
+    }
+
+    /// The first disagreement, if any.
+    pub fn first_mismatch(&self) -> Option<&str> {
+        self.first_mismatch.as_deref()
+    }
+
+    fn mismatch(&mut self, what: String) {
+        self.mismatches += 1;
+        if self.first_mismatch.is_none() {
+            self.first_mismatch = Some(what);
+        }
+    }
+
+    fn rtl_gates(&self) -> (u8, u8) {
+        let o = self.rtl.peek();
+        (o.gate_hi, o.gate_lo)
+    }
+
+    /// One clock cycle of both models with the AXI inputs already set;
+    /// returns the RTL's outputs before the edge, the cycle's events and
+    /// the shadow's bus result.
+    fn cycle(
+        &mut self,
+        sh: Shadow,
+    ) -> (crate::pl_top::PtOut, Events, Option<Result<u32, BusError>>) {
+        let p = self.pins;
+        self.rtl.inp.enc_a = u8::from(p.enc_a);
+        self.rtl.inp.enc_b = u8::from(p.enc_b);
+        self.rtl.inp.enc_z = u8::from(p.enc_z);
+        self.rtl.inp.fault_ext_n = u8::from(p.fault_ext_n);
+        self.rtl.adc_echo = Some((self.conv, p.adc_word));
+        self.shadow.pins = p;
+        let g0 = self.rtl_gates();
+        let o = self.rtl.step();
+        let after = self.rtl.peek();
+        let (sev, res) = match sh {
+            Shadow::Idle => (self.shadow.run(1, &Events::ALL).1, None),
+            Shadow::Read(a) => {
+                let (r, ev) = self.shadow.read(a);
+                (ev, Some(r))
+            }
+            Shadow::Write(a, v) => {
+                let (r, ev) = self.shadow.write(a, v);
+                (ev, Some(r.map(|()| 0)))
+            }
+        };
+        self.cycles += 1;
+        let g = (after.gate_hi, after.gate_lo);
+        let sg = self.shadow.gates();
+        if g != (sg.hi, sg.lo) {
+            let c = self.cycles;
+            self.mismatch(format!(
+                "cycle {c}: gates rtl {g:?}, model ({}, {})",
+                sg.hi, sg.lo
+            ));
+        }
+        let ev = Events {
+            gates: g != g0,
+            adc_convert: after.adc_cnv == 1,
+            adc_average: o.adc_avg_valid == 1,
+            pwm_period: sev.pwm_period,
+        };
+        (o, ev, res)
+    }
+
+    fn axi(addr: usize) -> Option<u16> {
+        let rel = addr.checked_sub(BASE_ADDR)?;
+        u16::try_from(rel).ok().filter(|r| *r < 0x8000)
+    }
+
+    fn check_bus(
+        &mut self,
+        what: &str,
+        addr: usize,
+        rtl: Result<u32, BusError>,
+        model: Option<Result<u32, BusError>>,
+    ) {
+        if model != Some(rtl) {
+            self.mismatch(format!("{what} {addr:#x}: rtl {rtl:x?}, model {model:x?}"));
+        }
+    }
+}
+
+impl PlModel for RtlPl {
+    fn cycles(&self) -> u64 {
+        self.cycles
+    }
+    fn gates(&self) -> GateOutputs {
+        let (hi, lo) = self.rtl_gates();
+        GateOutputs { hi, lo }
+    }
+    fn mode(&self) -> u32 {
+        self.shadow.mode()
+    }
+    fn pins_mut(&mut self) -> &mut Pins {
+        &mut self.pins
+    }
+    fn run(&mut self, max: u64, stop: &Events) -> (u64, Events) {
+        let mut all = Events::default();
+        let mut n = 0;
+        while n < max {
+            let (_, ev, _) = self.cycle(Shadow::Idle);
+            n += 1;
+            all.gates |= ev.gates;
+            all.adc_convert |= ev.adc_convert;
+            all.adc_average |= ev.adc_average;
+            all.pwm_period |= ev.pwm_period;
+            if ev.hits(stop) {
+                break;
+            }
+        }
+        (n, all)
+    }
+    fn read(&mut self, addr: usize) -> (Result<u32, BusError>, Events) {
+        // Outside the GP0 window: no AXI transfer reaches pl_top.
+        let Some(rel) = Self::axi(addr) else {
+            return (Err(BusError::SlaveError), Events::default());
+        };
+        self.rtl.inp.araddr = rel;
+        self.rtl.inp.arvalid = 1;
+        self.rtl.inp.rready = 1;
+        let (_, e1, model) = self.cycle(Shadow::Read(addr));
+        self.rtl.inp.arvalid = 0;
+        let (o, e2, _) = self.cycle(Shadow::Idle);
+        let r = if o.rvalid != 1 {
+            Err(BusError::SlaveError)
+        } else if o.rresp == OKAY {
+            Ok(o.rdata)
+        } else {
+            Err(BusError::SlaveError)
+        };
+        self.check_bus("read", addr, r, model);
+        (r, merge(e1, e2))
+    }
+    fn write(&mut self, addr: usize, value: u32) -> (Result<(), BusError>, Events) {
+        let Some(rel) = Self::axi(addr) else {
+            return (Err(BusError::SlaveError), Events::default());
+        };
+        self.rtl.inp.awaddr = rel;
+        self.rtl.inp.wdata = value;
+        self.rtl.inp.wstrb = 0xF;
+        self.rtl.inp.awvalid = 1;
+        self.rtl.inp.wvalid = 1;
+        self.rtl.inp.bready = 1;
+        let (_, e1, model) = self.cycle(Shadow::Write(addr, value));
+        self.rtl.inp.awvalid = 0;
+        self.rtl.inp.wvalid = 0;
+        let (o, e2, _) = self.cycle(Shadow::Idle);
+        let r = if o.bvalid == 1 && o.bresp == OKAY {
+            Ok(0)
+        } else {
+            Err(BusError::SlaveError)
+        };
+        self.check_bus("write", addr, r, model);
+        (r.map(|_| ()), merge(e1, e2))
+    }
+    fn work(&self) -> (u64, u64) {
+        (self.cycles, 0)
+    }
+}
+
+fn merge(a: Events, b: Events) -> Events {
+    Events {
+        gates: a.gates | b.gates,
+        adc_convert: a.adc_convert | b.adc_convert,
+        adc_average: a.adc_average | b.adc_average,
+        pwm_period: a.pwm_period | b.pwm_period,
+    }
+}
+
+/// The host end of the bridge: the co-simulated drive and the time
+/// mapping of `drive::cosim`.
+pub struct Bridge {
+    drive: SimDrive<RtlPl>,
+    /// (guest time, PL cycle) of the first request.
+    origin: Option<(u64, u64)>,
+    boundaries: u32,
+    last_boundary: Option<u64>,
+    /// Requests served.
+    pub requests: u64,
+    /// Control-period boundaries seen in all.
+    pub periods: u64,
+}
+
+impl Bridge {
+    /// The drive with the default simulated motor (`SimConfig::default()`).
+    pub fn new() -> Self {
+        let cfg = SimConfig::default();
+        let pl = RtlPl::new(cfg.adc_conversion_cycles);
+        let drive = SimDrive::with_pl(&cfg, pl).expect("default motor parameters");
+        Self {
+            drive,
+            origin: None,
+            boundaries: 0,
+            last_boundary: None,
+            requests: 0,
+            periods: 0,
+        }
+    }
+
+    /// The co-simulated drive.
+    pub fn drive(&self) -> &SimDrive<RtlPl> {
+        &self.drive
+    }
+
+    /// The co-simulated drive, mutable (host tests drive it directly).
+    pub fn drive_mut(&mut self) -> &mut SimDrive<RtlPl> {
+        &mut self.drive
+    }
+
+    /// Runs the PL up to PL cycle `target` (never backwards), noting the
+    /// control-period boundaries.
+    fn run_to(&mut self, target: u64) {
+        loop {
+            let left = target.saturating_sub(self.drive.pl_cycles());
+            let adv = self.drive.advance_to_boundary(left);
+            if adv.control_periods > 0 {
+                self.boundaries = self.boundaries.saturating_add(adv.control_periods);
+                self.periods += u64::from(adv.control_periods);
+                self.last_boundary = Some(self.drive.pl_cycles());
+            }
+            if self.drive.pl_cycles() >= target {
+                break;
+            }
+        }
+    }
+
+    /// Serves one request record.
+    pub fn handle(&mut self, raw: &[u8; REQUEST_LEN]) -> Reply {
+        self.requests += 1;
+        let Ok(req) = Request::decode(raw) else {
+            return self.reply(Status::BadRequest, 0);
+        };
+        self.serve(&req)
+    }
+
+    /// Serves one request.
+    pub fn serve(&mut self, req: &Request) -> Reply {
+        let now = self.drive.pl_cycles();
+        let (g0, c0) = *self.origin.get_or_insert((req.guest, now));
+        let target = c0 + req.guest.saturating_sub(g0);
+        self.run_to(target);
+        let addr = req.addr as usize;
+        match req.op {
+            Op::Read => match drive::bus::RegisterBus::read(&mut self.drive, addr) {
+                Ok(v) => self.reply(Status::Ok, v),
+                Err(_) => self.reply(Status::SlaveError, 0),
+            },
+            Op::Write => match drive::bus::RegisterBus::write(&mut self.drive, addr, req.data) {
+                Ok(()) => self.reply(Status::Ok, 0),
+                Err(_) => self.reply(Status::SlaveError, 0),
+            },
+            Op::Sync => {
+                // `run_to` above also collected the boundaries crossed
+                // during the accesses since the last sync.
+                let r = self.reply(Status::Ok, 0);
+                self.boundaries = 0;
+                r
+            }
+        }
+    }
+
+    fn reply(&self, status: Status, data: u32) -> Reply {
+        let now = self.drive.pl_cycles();
+        Reply {
+            status,
+            data,
+            boundaries: self.boundaries,
+            since_boundary: self
+                .last_boundary
+                .map_or(u32::MAX, |b| u32::try_from(now - b).unwrap_or(u32::MAX)),
+            pl_cycles: now,
+        }
+    }
+}
+
+impl Default for Bridge {
+    fn default() -> Self {
+        Self::new()
+    }
+}

@@ -1,0 +1,161 @@
+//! The co-simulation bridge on the host, without QEMU:
+//! - the firmware's drive code (`Servo`) on the Verilated `pl_top` coupled to
+//!   the plant (`SimDrive<RtlPl>`) takes the same MPDTC decisions over a
+//!   0.4 N m step window as on the simulated PL (`SimDrive<SimPl>`), and the
+//!   settling times agree within 5 %;
+//! - the `pl-cosim` binary answers the wire protocol over its FIFOs: ID,
+//!   a read-only write refused, a scratch register round trip, the time
+//!   mapping (one guest count = one PL cycle) and the control-period
+//!   boundaries of the ADC average (1564 cycles after reset).
+use drive::bus::RegisterBus;
+use drive::cosim::{Op, Reply, Request, Status, REPLY_LEN};
+use drive::pl::mpdtc::Mpdtc;
+use drive::pl::top::Mode;
+use drive::regmap::{self as rm};
+use drive::servo::{Servo, ServoConfig, StepResult};
+use drive::simpl::{PlModel, SimConfig, SimDrive};
+use rtl_sim::cosim::{Bridge, RtlPl};
+use std::io::{BufRead, BufReader, Read, Write};
+use std::process::{Command, Stdio};
+
+/// `mode mpdtc`, `enable`, `step 0.4` armed at once (it starts after the
+/// 2 ms alignment): the step's result and the decision of every period of
+/// its window.
+fn mpdtc_step<P: PlModel>(sim: &mut SimDrive<P>) -> (StepResult, Vec<u8>) {
+    let mut s = Servo::new(&ServoConfig::for_simulated(sim.config())).unwrap();
+    s.init(sim).unwrap();
+    s.set_mode(sim, Mode::Mpdtc).unwrap();
+    s.enable(sim).unwrap();
+    s.begin_step(sim, 0.4, 2e-3).unwrap();
+    let mut decisions = Vec::new();
+    for _ in 0..1000 {
+        let a = sim.advance_to_boundary(20_000);
+        assert!(a.control_periods >= 1, "no boundary in 200 us");
+        s.control_step(&mut *sim).unwrap();
+        if s.torque_ref_nm() != 0.0 {
+            decisions.push(Mpdtc(&mut *sim).last_decision().unwrap());
+        }
+        if !s.step_pending() {
+            break;
+        }
+    }
+    assert_eq!(s.overruns(), 0);
+    (s.step_result().expect("step completed"), decisions)
+}
+
+#[test]
+fn the_servo_takes_the_same_mpdtc_decisions_on_the_rtl_as_on_the_simulated_pl() {
+    let cfg = SimConfig::default();
+    let mut model = SimDrive::new(&cfg).unwrap();
+    let (r_model, d_model) = mpdtc_step(&mut model);
+    let mut bridge = Bridge::new();
+    let (r_rtl, d_rtl) = mpdtc_step(bridge.drive_mut());
+    println!("simulated PL: {r_model:?}\nRTL: {r_rtl:?}");
+    let pl = bridge.drive().pl();
+    assert_eq!(pl.mismatches(), 0, "{:?}", pl.first_mismatch());
+    assert!(d_rtl.len() >= 128, "{} periods recorded", d_rtl.len());
+    let changes = d_rtl.windows(2).filter(|w| w[0] != w[1]).count();
+    assert!(changes > 5, "only {changes} state changes: {d_rtl:?}");
+    assert_eq!(d_rtl, d_model, "decisions over the step window");
+    let (t_rtl, t_model) = (r_rtl.settling_s.unwrap(), r_model.settling_s.unwrap());
+    assert!(
+        (t_rtl / t_model - 1.0).abs() <= 0.05,
+        "{t_rtl} vs {t_model}"
+    );
+    assert!((r_rtl.final_nm - 0.4).abs() < 0.05, "{r_rtl:?}");
+}
+
+fn req(op: Op, addr: usize, data: u32, guest: u64) -> Request {
+    Request {
+        op,
+        addr: addr as u32,
+        data,
+        guest,
+    }
+}
+
+#[test]
+fn pl_cosim_serves_the_protocol_over_its_fifos() {
+    let dir = std::env::temp_dir().join(format!("pl-cosim-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let stats = dir.join("stats.json");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_pl-cosim"))
+        .arg("--dir")
+        .arg(&dir)
+        .arg("--stats")
+        .arg(&stats)
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut line = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut line)
+        .unwrap();
+    assert_eq!(line.trim(), "ready");
+    let mut tx = std::fs::OpenOptions::new()
+        .write(true)
+        .open(dir.join("req"))
+        .unwrap();
+    let mut rx = std::fs::File::open(dir.join("rep")).unwrap();
+    let mut ask = |r: Request| -> Reply {
+        tx.write_all(&r.encode()).unwrap();
+        let mut b = [0u8; REPLY_LEN];
+        rx.read_exact(&mut b).unwrap();
+        Reply::decode(&b).unwrap()
+    };
+    let g0 = 5_000_000; // any origin: only differences count
+    let id = ask(req(Op::Read, rm::TOP.addr(&rm::ID), 0, g0));
+    assert_eq!(
+        (id.status, id.data),
+        (Status::Ok, u32::from_be_bytes(*b"PSDR"))
+    );
+    let first_cycle = id.pl_cycles;
+    let ro = ask(req(Op::Write, rm::TOP.addr(&rm::ID), 1, g0 + 10));
+    assert_eq!(ro.status, Status::SlaveError);
+    let scratch = rm::TOP.addr(&rm::SCRATCH);
+    assert_eq!(
+        ask(req(Op::Write, scratch, 0x1234_5678, g0 + 20)).status,
+        Status::Ok
+    );
+    let r = ask(req(Op::Read, scratch, 0, g0 + 30));
+    assert_eq!((r.status, r.data), (Status::Ok, 0x1234_5678));
+    let bad = ask(req(Op::Read, rm::BASE_ADDR + 0x7FFC, 0, g0 + 40));
+    assert_eq!(bad.status, Status::SlaveError);
+    // The ID read started at the origin and took 2 cycles. 100,000 guest
+    // counts later the PL is 100,000 cycles on, and the ADC averages at
+    // 4 x 391 cycles crossed in between are the control-period boundaries
+    // (mode off).
+    let s = ask(req(Op::Sync, 0, 0, g0 + 100_000));
+    assert_eq!(s.pl_cycles, first_cycle - 2 + 100_000, "{s:?}");
+    let expect = (s.pl_cycles as f64 / 1564.0) as u32;
+    assert!(
+        s.boundaries.abs_diff(expect) <= 1,
+        "{s:?}, expected {expect}"
+    );
+    assert!(s.since_boundary < 1564, "{s:?}");
+    let s2 = ask(req(Op::Sync, 0, 0, g0 + 100_000 + 3128));
+    assert_eq!(s2.boundaries, 2, "{s2:?}");
+    // A garbled record changes nothing and is answered as such.
+    let mut raw = req(Op::Read, scratch, 0, g0 + 200_000).encode();
+    raw[0] = 77;
+    tx.write_all(&raw).unwrap();
+    let mut b = [0u8; REPLY_LEN];
+    rx.read_exact(&mut b).unwrap();
+    assert_eq!(Reply::decode(&b).unwrap().status, Status::BadRequest);
+    drop(tx);
+    assert!(child.wait().unwrap().success());
+    let st = std::fs::read_to_string(&stats).unwrap();
+    assert!(st.contains("\"mismatches\":0"), "{st}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn rtl_pl_counts_a_read_as_two_cycles() {
+    let mut pl = RtlPl::new(50);
+    let c0 = pl.cycles();
+    let (r, _) = pl.read(rm::TOP.addr(&rm::ID));
+    assert_eq!(r, Ok(rm::ID_VALUE));
+    assert_eq!(pl.cycles() - c0, 2);
+    let mut sim = SimDrive::with_pl(&SimConfig::default(), pl).unwrap();
+    assert_eq!(sim.read(rm::TOP.addr(&rm::ID)), Ok(rm::ID_VALUE));
+}
