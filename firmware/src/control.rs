@@ -321,4 +321,10 @@ impl DriveOps for FwDrive {
     fn bench(&mut self) -> Result<Bench, DriveError> {
         Ok(crate::bench::run())
     }
+    fn config(&mut self) -> Result<ServoConfig, DriveError> {
+        run(|s| Ok(*s.servo.config()))
+    }
+    fn reconfigure(&mut self, cfg: &ServoConfig) -> Result<(), DriveError> {
+        run(|s| s.servo.reconfigure(&mut s.bus, cfg))
+    }
 }

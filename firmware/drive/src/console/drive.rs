@@ -3,7 +3,7 @@
 use super::{write_err, ErrorCode};
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
-use crate::servo::{Measured, ServoError, StepResult};
+use crate::servo::{Measured, ServoConfig, ServoError, StepResult};
 use core::fmt::{self, Write};
 
 /// What is behind the drivers.
@@ -99,6 +99,14 @@ pub trait DriveOps {
     fn status(&mut self) -> DriveStatus;
     /// Counts the control code's guest instructions.
     fn bench(&mut self) -> Result<Bench, DriveError>;
+    /// The drive's configuration.
+    fn config(&mut self) -> Result<ServoConfig, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Replaces the configuration (`Servo::reconfigure`).
+    fn reconfigure(&mut self, _cfg: &ServoConfig) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
 }
 
 /// Writes the final `ERR` line of a failed drive command.
@@ -140,6 +148,14 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
                  is smaller than {min_nm:.4} Nm and has no settling time"
             ),
         ),
+        DriveError::Servo(ServoError::GatesOn) => write_err(
+            out,
+            ErrorCode::GatesOn,
+            format_args!("{cmd}: needs the gates off (`disable` first)"),
+        ),
+        DriveError::Servo(ServoError::BadConfig(e)) => {
+            write_err(out, ErrorCode::BadArgs, format_args!("{cmd}: {e}"))
+        }
         DriveError::Servo(ServoError::Bus(b)) => write_err(
             out,
             ErrorCode::BusError,

@@ -51,6 +51,8 @@ pub enum ErrorCode {
     Timeout,
     /// Not available in this build or setup.
     Unsupported,
+    /// A change that needs the gates off, with them on.
+    GatesOn,
 }
 
 impl ErrorCode {
@@ -69,6 +71,7 @@ impl ErrorCode {
             ErrorCode::BusError => "bus-error",
             ErrorCode::Timeout => "timeout",
             ErrorCode::Unsupported => "unsupported",
+            ErrorCode::GatesOn => "gates-on",
         }
     }
 }

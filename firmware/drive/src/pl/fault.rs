@@ -1,6 +1,8 @@
 //! Fault block: latched faults, over-current limit, watchdog timeout.
 use crate::bus::{BusError, RegisterBus};
-use crate::regs::fault::{FaultStatus, FaultStatusValue, WdgTimeout, WdgTimeoutValue};
+use crate::regs::fault::{
+    FaultStatus, FaultStatusValue, OcLimit, OcLimitValue, WdgTimeout, WdgTimeoutValue,
+};
 
 /// Latched fault bits (`FAULT_STATUS`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -67,6 +69,10 @@ impl<B: RegisterBus> Fault<B> {
     /// Watchdog timeout, PL clock cycles (the PL clamps to >= 1000).
     pub fn set_watchdog_timeout(&mut self, cycles: u32) -> Result<(), BusError> {
         WdgTimeout::write(&mut self.0, WdgTimeoutValue::ZERO.with_value(cycles))
+    }
+    /// Over-current trip level, ADC counts of a raw sample's magnitude.
+    pub fn set_oc_limit(&mut self, counts: u32) -> Result<(), BusError> {
+        OcLimit::write(&mut self.0, OcLimitValue::ZERO.with_value(counts))
     }
 }
 

@@ -57,6 +57,15 @@ pub struct ServoConfig {
     pub watchdog_cycles: u32,
     /// `MPDTC_ALIGN_TIME`, PL clock cycles.
     pub align_cycles: u32,
+    /// `ENC_CPR`, encoder counts per mechanical revolution.
+    pub enc_cpr: u32,
+    /// Over-current trip (`OC_LIMIT`, converted with `adc`), A.
+    pub current_limit_a: f64,
+    /// FOC tuning; its period and measurement lag follow from the PL
+    /// timing above ([`Servo::new`] sets them).
+    pub foc: FocParams,
+    /// MPDTC tuning; its control period follows from `adc_period_cycles`.
+    pub mpdtc: MpdtcParams,
     /// Smallest `step` size, N m: its 10 % settling band must stand clear
     /// of the torque estimate's resolution (one ADC count, 10 mA, is about
     /// 1 mN m of q-axis torque) and ripple; a step of zero has no settling
@@ -81,6 +90,11 @@ impl Default for ServoConfig {
             watchdog_cycles: 200_000,
             // 2 ms of rotor alignment before the MPDTC's first decision.
             align_cycles: 200_000,
+            enc_cpr: 4096,
+            // Below the 16 A full scale of the simulated PL's ADC.
+            current_limit_a: 14.0,
+            foc: FocParams::default(),
+            mpdtc: MpdtcParams::default(),
             // Band 5 mN m: about 5 ADC counts of i_q.
             step_min_nm: 0.05,
         }
@@ -124,6 +138,10 @@ pub enum ServoError {
     },
     /// The PL answered with an error.
     Bus(BusError),
+    /// A configuration change that needs the gates off, with them on.
+    GatesOn,
+    /// A configuration the controllers refuse.
+    BadConfig(ParamError),
 }
 
 impl From<BusError> for ServoError {
@@ -183,11 +201,11 @@ impl Servo {
         let foc_params = FocParams {
             period_s: period_s(2 * cfg.foc_half_period_cycles),
             measurement_lag_s: foc_measurement_lag_s(cfg),
-            ..FocParams::default()
+            ..cfg.foc
         };
         let mp = MpdtcParams {
             control_period_s: period_s(4 * cfg.adc_period_cycles),
-            ..MpdtcParams::default()
+            ..cfg.mpdtc
         };
         let mpdtc = MpdtcConfig::new(cfg.motor, mp)?;
         Ok(Self {
@@ -216,7 +234,18 @@ impl Servo {
     pub fn init<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
         Pwm(&mut *bus).set_gates(false)?;
         Top(&mut *bus).set_mode(Mode::Off)?;
+        self.write_pl_config(bus)?;
+        Top(&mut *bus).heartbeat(0)
+    }
+
+    /// Writes the configuration's PL registers (gates off, core held).
+    fn write_pl_config<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
         Adc(&mut *bus).set_period(self.cfg.adc_period_cycles)?;
+        Encoder(&mut *bus).set_cpr(self.cfg.enc_cpr)?;
+        // `Config::check` refuses a limit beyond the ADC's range; any other
+        // `ServoConfig` gets the largest trip level.
+        let oc = crate::config::oc_limit_counts(&self.cfg).unwrap_or(2047);
+        Fault(&mut *bus).set_oc_limit(oc)?;
         let mut pwm = Pwm(&mut *bus);
         pwm.set_dead_time(self.cfg.dead_time_cycles)?;
         pwm.set_half_period(self.cfg.foc_half_period_cycles)?;
@@ -225,8 +254,40 @@ impl Servo {
         let mut m = Mpdtc(&mut *bus);
         m.set_ctrl(false, true)?;
         m.load_params(&self.mpdtc_regs)?;
-        m.set_align_time(self.cfg.align_cycles)?;
-        Top(&mut *bus).heartbeat(0)
+        m.set_align_time(self.cfg.align_cycles)
+    }
+
+    /// Replaces the configuration. With the gates on only a change of the
+    /// torque limit is accepted (and not below the present reference);
+    /// with them off the controllers are rebuilt and the PL registers
+    /// written, the mode stays. On an error nothing changed.
+    pub fn reconfigure<B: RegisterBus>(
+        &mut self,
+        bus: &mut B,
+        cfg: &ServoConfig,
+    ) -> Result<(), ServoError> {
+        let next = Servo::new(cfg).map_err(ServoError::BadConfig)?;
+        if libm::fabs(self.torque_ref_nm) > cfg.torque_limit_nm {
+            return Err(ServoError::TorqueOutOfRange(self.torque_ref_nm));
+        }
+        if self.gates {
+            let live_only = ServoConfig {
+                torque_limit_nm: cfg.torque_limit_nm,
+                ..self.cfg
+            };
+            if live_only != *cfg {
+                return Err(ServoError::GatesOn);
+            }
+            self.cfg.torque_limit_nm = cfg.torque_limit_nm;
+            return Ok(());
+        }
+        self.cfg = next.cfg;
+        self.foc_params = next.foc_params;
+        self.foc = next.foc;
+        self.mpdtc = next.mpdtc;
+        self.mpdtc_regs = next.mpdtc_regs;
+        self.write_pl_config(bus)?;
+        Ok(())
     }
 
     /// The configuration.
