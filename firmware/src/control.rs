@@ -22,10 +22,11 @@ use crate::pl;
 use crate::ps::{gic, timer};
 use core::cell::RefCell;
 use drive::bus::{BusError, RegisterBus};
-use drive::console::{Bench, DriveError, DriveOps, DriveStatus, PlKind};
+use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind};
 use drive::pl::fault::Faults;
 use drive::pl::presence::Presence;
 use drive::pl::top::Mode;
+use drive::servo::faults::FaultRecord;
 use drive::servo::{Servo, ServoConfig, ServoError, StepResult};
 use drive::simpl::{SimConfig, SimDrive};
 
@@ -70,6 +71,9 @@ struct State {
     tick_start: u64,
     /// Uptime when the simulated PL started, us.
     sim_start_us: u64,
+    /// Control-period boundaries the next PL tick crosses without a
+    /// control step (`debug fault overrun`, simulated PL).
+    skip_boundaries: u32,
 }
 
 /// The drive state, touched only with IRQs masked (one core).
@@ -118,6 +122,7 @@ pub fn init() -> Boot {
                     stall_until: 0,
                     tick_start: 0,
                     sim_start_us: timer::uptime_us(),
+                    skip_boundaries: 0,
                 });
             });
             gic::enable(gic::IRQ_GLOBAL_TIMER);
@@ -150,8 +155,17 @@ pub fn on_pl_tick() {
         let boundaries = match &mut s.bus {
             // Up to the next control-period boundary (at most two periods).
             Backend::Sim(sim) => {
-                sim.advance_to_boundary(2 * period_cycles(&s.servo))
-                    .control_periods
+                let period = period_cycles(&s.servo);
+                let mut n = sim.advance_to_boundary(2 * period).control_periods;
+                // `debug fault overrun`: more boundaries before the step.
+                for _ in 0..core::mem::take(&mut s.skip_boundaries) {
+                    n += sim.advance_to_boundary(2 * period).control_periods;
+                }
+                if n == 0 {
+                    // No result from the ADC that paces the period.
+                    let _ = s.servo.note_no_boundary(sim, 2);
+                }
+                n
             }
             // The bitstream's PL runs on its own: the tick is the control rate.
             Backend::Gp0(_) => 1,
@@ -179,7 +193,9 @@ pub fn on_control() {
     with(|s| {
         s.control_pending = false;
         let stalled = s.stalled();
-        if !stalled {
+        if stalled {
+            s.servo.note_skipped();
+        } else {
             // A bus error leaves the gates to the PL's own fault logic.
             let _ = s.servo.control_step(&mut s.bus);
         }
@@ -320,6 +336,37 @@ impl DriveOps for FwDrive {
     }
     fn bench(&mut self) -> Result<Bench, DriveError> {
         Ok(crate::bench::run())
+    }
+    fn fault_record(&mut self, k: usize) -> Result<(Option<FaultRecord>, u32), DriveError> {
+        run(|s| {
+            let h = s.servo.fault_history();
+            Ok((h.records().nth(k).copied(), h.total))
+        })
+    }
+    fn inject(&mut self, f: Injection) -> Result<(), DriveError> {
+        match f {
+            Injection::AdcStuck => run(|s| Ok(drive::pl::adc::Adc(&mut s.bus).set_enabled(false)?)),
+            Injection::External => with(|s| match &mut s.bus {
+                Backend::Sim(sim) => {
+                    // 10 us at the pin; a boundary crossed here is the
+                    // next tick's.
+                    sim.set_external_fault(true);
+                    let _ = sim.advance(1000);
+                    sim.set_external_fault(false);
+                    Ok(())
+                }
+                Backend::Gp0(_) => Err(DriveError::Unsupported),
+            })
+            .unwrap_or(Err(DriveError::Absent)),
+            Injection::Overrun => with(|s| match &s.bus {
+                Backend::Sim(_) => {
+                    s.skip_boundaries = 2;
+                    Ok(())
+                }
+                Backend::Gp0(_) => Err(DriveError::Unsupported),
+            })
+            .unwrap_or(Err(DriveError::Absent)),
+        }
     }
     fn config(&mut self) -> Result<ServoConfig, DriveError> {
         run(|s| Ok(*s.servo.config()))

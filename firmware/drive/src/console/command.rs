@@ -66,8 +66,9 @@ pub const COMMANDS: &[Spec] = &[
     },
     Spec {
         name: "fault",
-        args: "[clear]",
-        help: "list the latched faults, or clear them (the gates stay off until `enable`)",
+        args: "[clear|history]",
+        help: "list the latched faults, clear them (the gates stay off until `enable`), or \
+               the last 16 with drive time [s], code and the samples before [A, Nm]",
     },
     Spec {
         name: "config",
@@ -78,11 +79,11 @@ pub const COMMANDS: &[Spec] = &[
     },
     Spec {
         name: "debug",
-        args: "panic|stall <ms>|bench",
+        args: "panic|stall <ms>|bench|fault <f>",
         help: "diagnostics: `panic` forces a firmware panic (gates off, message, halt); \
                `stall <ms>` stops the control loop and heartbeat for <ms> of PL time (the \
                simulated PL's under QEMU); `bench` counts guest instructions of the control \
-               code",
+               code; `fault <f>` makes a fault happen (<f>: external, adc-stuck or overrun)",
     },
 ];
 
@@ -111,6 +112,10 @@ pub enum Command<'a> {
     Fault,
     /// `fault clear`.
     FaultClear,
+    /// `fault history`.
+    FaultHistory,
+    /// `debug fault <f>`.
+    DebugFault(drive::Injection),
     /// `debug stall <ms>`.
     DebugStall(u32),
     /// `debug bench`.
@@ -228,6 +233,12 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
         "debug" => match args.as_slice() {
             ["panic"] => Ok(Command::DebugPanic),
             ["bench"] => Ok(Command::DebugBench),
+            ["fault", f] => drive::Injection::from_name(f)
+                .map(Command::DebugFault)
+                .ok_or(ParseError::BadArgs(
+                    "debug",
+                    "fault takes external, adc-stuck or overrun",
+                )),
             ["stall", ms] => match ms.parse::<u32>() {
                 Ok(ms) if (1..=STALL_MAX_MS).contains(&ms) => Ok(Command::DebugStall(ms)),
                 _ => Err(ParseError::BadArgs(
@@ -237,7 +248,7 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
             },
             _ => Err(ParseError::BadArgs(
                 "debug",
-                "expected `debug panic`, `debug stall <ms>` or `debug bench`",
+                "expected `debug panic`, `debug stall <ms>`, `debug bench` or `debug fault <f>`",
             )),
         },
         "mode" => match args.as_slice() {
@@ -284,9 +295,10 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
         "fault" => match args.as_slice() {
             [] => Ok(Command::Fault),
             ["clear"] => Ok(Command::FaultClear),
+            ["history"] => Ok(Command::FaultHistory),
             _ => Err(ParseError::BadArgs(
                 "fault",
-                "expected `fault` or `fault clear`",
+                "expected `fault`, `fault clear` or `fault history`",
             )),
         },
         "config" => match args.as_slice() {
@@ -455,6 +467,24 @@ pub fn execute<W: Write>(
             out.write_str("fault: ")?;
             f.write_names(out)?;
             out.write_str("\r\ngates: off (safe state)\r\n")?;
+        }
+        Command::FaultHistory => {
+            let mut shown = 0;
+            let mut total = 0;
+            for k in 0..crate::servo::faults::HISTORY_LEN {
+                let (r, t) = try_drive!("fault", drv.fault_record(k));
+                total = t;
+                let Some(r) = r else { break };
+                shown += 1;
+                write!(out, "#{shown} ")?;
+                r.write_summary(out)?;
+                out.write_str("\r\n")?;
+            }
+            write!(out, "history: {shown} shown, {total} since boot\r\n")?;
+        }
+        Command::DebugFault(f) => {
+            try_drive!("debug", drv.inject(f));
+            out.write_str("injected\r\n")?;
         }
         Command::DebugStall(ms) => {
             try_drive!("debug", drv.stall(ms));
@@ -628,7 +658,7 @@ mod tests {
         );
         assert_eq!(
             reply("debug"),
-            "ERR bad-args debug: expected `debug panic`, `debug stall <ms>` or `debug bench`\r\n"
+            "ERR bad-args debug: expected `debug panic`, `debug stall <ms>`, `debug bench` or `debug fault <f>`\r\n"
         );
         assert_eq!(
             reply("help a b"),
@@ -671,6 +701,7 @@ mod tests {
                 .replace("<Nm>", "0.1")
                 .replace("<window_ms>", "2")
                 .replace("<ms>", "5")
+                .replace("<f>", "adc-stuck")
                 .replace(['[', ']'], "");
             for alt in args.split('|') {
                 let line = std::format!("{} {}", s.name, alt);
@@ -679,9 +710,10 @@ mod tests {
         }
     }
 
-    use crate::console::drive::{Bench, DriveError, DriveOps, DriveStatus, PlKind};
+    use crate::console::drive::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind};
     use crate::pl::fake::FakePl;
     use crate::pl::fault::Faults;
+    use crate::servo::faults::FaultRecord;
     use crate::servo::{Servo, ServoConfig, StepResult};
 
     /// The console's view of a drive: the real `Servo` on the fake PL,
@@ -763,6 +795,21 @@ mod tests {
         }
         fn config(&mut self) -> Result<ServoConfig, DriveError> {
             Ok(*self.servo.config())
+        }
+        fn fault_record(&mut self, k: usize) -> Result<(Option<FaultRecord>, u32), DriveError> {
+            let h = self.servo.fault_history();
+            Ok((h.records().nth(k).copied(), h.total))
+        }
+        fn inject(&mut self, f: Injection) -> Result<(), DriveError> {
+            match f {
+                Injection::AdcStuck => {
+                    crate::pl::adc::Adc(&mut self.pl)
+                        .set_enabled(false)
+                        .unwrap();
+                    Ok(())
+                }
+                _ => Err(DriveError::Unsupported),
+            }
         }
         fn reconfigure(&mut self, cfg: &ServoConfig) -> Result<(), DriveError> {
             Ok(self.servo.reconfigure(&mut self.pl, cfg)?)

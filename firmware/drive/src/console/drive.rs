@@ -3,6 +3,7 @@
 use super::{write_err, ErrorCode};
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
+use crate::servo::faults::FaultRecord;
 use crate::servo::{Measured, ServoConfig, ServoError, StepResult};
 use core::fmt::{self, Write};
 
@@ -53,6 +54,29 @@ pub struct Bench {
     pub runs: u32,
 }
 
+/// A fault `debug fault` makes happen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Injection {
+    /// The external fault input asserted for 10 us (simulated PL only).
+    External,
+    /// The ADC stopped (`ADC_CTRL.ENABLE` = 0; `fault clear` restarts it).
+    AdcStuck,
+    /// Two control periods pass without a control step (simulated PL only).
+    Overrun,
+}
+
+impl Injection {
+    /// From the console word.
+    pub fn from_name(s: &str) -> Option<Self> {
+        match s {
+            "external" => Some(Injection::External),
+            "adc-stuck" => Some(Injection::AdcStuck),
+            "overrun" => Some(Injection::Overrun),
+            _ => None,
+        }
+    }
+}
+
 /// Why a drive command failed (nothing changed).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum DriveError {
@@ -99,6 +123,15 @@ pub trait DriveOps {
     fn status(&mut self) -> DriveStatus;
     /// Counts the control code's guest instructions.
     fn bench(&mut self) -> Result<Bench, DriveError>;
+    /// The `k`-th fault of the history (oldest first) and the number of
+    /// faults recorded since boot.
+    fn fault_record(&mut self, _k: usize) -> Result<(Option<FaultRecord>, u32), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Makes a fault happen (`debug fault`), to test the drive's reaction.
+    fn inject(&mut self, _f: Injection) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
     /// The drive's configuration.
     fn config(&mut self) -> Result<ServoConfig, DriveError> {
         Err(DriveError::Unsupported)

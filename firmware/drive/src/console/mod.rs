@@ -18,7 +18,7 @@ pub use command::{
     execute, parse, write_parse_error, Action, Command, Context, ParseError, Spec, Status,
     COMMANDS, STALL_MAX_MS, STEP_WINDOW_DEFAULT_S, STEP_WINDOW_MAX_S,
 };
-pub use drive::{Bench, DriveError, DriveOps, DriveStatus, PlKind};
+pub use drive::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind};
 pub use editor::{LineEditor, LineError, LINE_MAX};
 
 /// Printed when the console is ready for a line.

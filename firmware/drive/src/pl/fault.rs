@@ -4,19 +4,58 @@ use crate::regs::fault::{
     FaultStatus, FaultStatusValue, OcLimit, OcLimitValue, WdgTimeout, WdgTimeoutValue,
 };
 
-/// Latched fault bits (`FAULT_STATUS`).
+/// Latched faults of the drive: bits 0..=2 are `FAULT_STATUS` (the PL
+/// turns the gates off itself), bits 3.. the faults the PS detects (the
+/// drive turns the gates off in the control step that sees them). The
+/// stable fault code of bit `n` is `n + 1`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Faults(pub u32);
 
 impl Faults {
-    /// Bit names, by bit position (the register map's field names).
-    pub const NAMES: [&'static str; 3] = ["OVERCURRENT", "EXTERNAL", "WATCHDOG"];
+    /// Bit names, by bit position (the register map's field names first).
+    pub const NAMES: [&'static str; 6] = [
+        "OVERCURRENT",
+        "EXTERNAL",
+        "WATCHDOG",
+        "ENCODER_LOSS",
+        "ADC_STUCK",
+        "CONTROL_OVERRUN",
+    ];
     /// The watchdog bit.
     pub const WATCHDOG: u32 = FaultStatusValue::ZERO.with_watchdog(true).bits();
-    /// The latched flags, by field, in bit order (as [`Self::NAMES`]).
-    fn flags(self) -> [bool; 3] {
-        let v = FaultStatusValue::from_bits(self.0);
-        [v.overcurrent(), v.external(), v.watchdog()]
+    /// The bits of `FAULT_STATUS`.
+    pub const PL_MASK: u32 = 0b111;
+    /// The encoder position jumped further in one control period than the
+    /// motor can turn (noise, lost counts, a broken line).
+    pub const ENCODER_LOSS: u32 = 1 << 3;
+    /// No new ADC result for two control periods.
+    pub const ADC_STUCK: u32 = 1 << 4;
+    /// Two or more control periods in a row without a control step.
+    pub const CONTROL_OVERRUN: u32 = 1 << 5;
+    /// The latched flags, in bit order (as [`Self::NAMES`]).
+    fn flags(self) -> [bool; 6] {
+        let v = FaultStatusValue::from_bits(self.0 & Self::PL_MASK);
+        let b = |m: u32| self.0 & m != 0;
+        [
+            v.overcurrent(),
+            v.external(),
+            v.watchdog(),
+            b(Self::ENCODER_LOSS),
+            b(Self::ADC_STUCK),
+            b(Self::CONTROL_OVERRUN),
+        ]
+    }
+    /// Stable code of the fault `bit` (0-based): `bit + 1`.
+    pub const fn code(bit: usize) -> u32 {
+        bit as u32 + 1
+    }
+    /// The bits set, in bit order.
+    pub fn bits(self) -> impl Iterator<Item = usize> {
+        self.flags()
+            .into_iter()
+            .enumerate()
+            .filter(|(_, set)| *set)
+            .map(|(i, _)| i)
     }
     /// No fault latched.
     pub fn none(self) -> bool {
@@ -51,7 +90,9 @@ pub struct Fault<B>(pub B);
 impl<B: RegisterBus> Fault<B> {
     /// Latched faults.
     pub fn latched(&mut self) -> Result<Faults, BusError> {
-        Ok(Faults(FaultStatus::read(&mut self.0)?.bits()))
+        Ok(Faults(
+            FaultStatus::read(&mut self.0)?.bits() & Faults::PL_MASK,
+        ))
     }
     /// Clears every latched fault whose condition is gone (write 1 to clear);
     /// returns what is still latched. The gates stay off until `GATE_EN`
@@ -93,6 +134,13 @@ mod tests {
         assert_eq!(s(Faults(0)), "none");
         assert_eq!(s(Faults(4)), "WATCHDOG");
         assert_eq!(s(Faults(5)), "OVERCURRENT WATCHDOG");
+        assert_eq!(
+            s(Faults(Faults::ADC_STUCK | Faults::CONTROL_OVERRUN | 2)),
+            "EXTERNAL ADC_STUCK CONTROL_OVERRUN"
+        );
+        assert_eq!(s(Faults(Faults::ENCODER_LOSS)), "ENCODER_LOSS");
+        let codes: std::vec::Vec<u32> = Faults(0b11_1111).bits().map(Faults::code).collect();
+        assert_eq!(codes, [1, 2, 3, 4, 5, 6]);
     }
 
     #[test]
