@@ -418,6 +418,14 @@ impl Config {
             }));
         }
         let sc = self.apply(base);
+        // The FOC needs a new averaged result (4 ADC periods) every PWM
+        // period, and the ADC_STUCK check counts on it.
+        if 4 * sc.adc_period_cycles > 2 * sc.foc_half_period_cycles {
+            return Err(ConfigError::Invalid(ParamError {
+                field: "adc_period",
+                reason: "4 ADC periods must fit in the FOC period (2 foc_half_period)",
+            }));
+        }
         if oc_limit_counts(&sc).is_none() {
             return Err(ConfigError::Invalid(ParamError {
                 field: "current_limit",

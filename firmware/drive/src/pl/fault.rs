@@ -28,7 +28,7 @@ impl Faults {
     /// The encoder position jumped further in one control period than the
     /// motor can turn (noise, lost counts, a broken line).
     pub const ENCODER_LOSS: u32 = 1 << 3;
-    /// No new ADC result for two control periods.
+    /// A control period without a new ADC result.
     pub const ADC_STUCK: u32 = 1 << 4;
     /// Two or more control periods in a row without a control step.
     pub const CONTROL_OVERRUN: u32 = 1 << 5;

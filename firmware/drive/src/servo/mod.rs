@@ -37,9 +37,10 @@ mod step;
 use faults::{FaultHistory, FaultRecord, Sample, Snapshot};
 pub use step::{StepRecorder, StepResult, STEP_SAMPLES_MAX};
 
-/// Control steps in a row that found no new ADC result before the drive
-/// latches `ADC_STUCK`.
-pub const ADC_STALE_STEPS: u32 = 2;
+/// Control periods without a new ADC result that latch `ADC_STUCK`: one
+/// (a control period holds one averaged result in MPDTC and off, four in
+/// FOC, `Config::check` keeps it so).
+pub const ADC_STALE_STEPS: u32 = 1;
 /// Control periods missed in a row (between two control steps) that latch
 /// `CONTROL_OVERRUN`: one late step is tolerated, the PL holds its outputs.
 pub const OVERRUN_PERIODS: u64 = 2;
@@ -734,6 +735,8 @@ fn period_s(cycles: u32) -> f64 {
     f64::from(cycles) / f64::from(regmap::PL_CLOCK_HZ)
 }
 
+#[cfg(test)]
+mod fault_tests;
 #[cfg(test)]
 mod sim_tests;
 #[cfg(test)]
