@@ -183,3 +183,31 @@ fn gates_go_off_within_one_control_period_on_the_simulated_pl() {
         );
     }
 }
+
+/// Mode changes move the control-period boundary (the first FOC boundary
+/// may come before the next ADC result): no false ADC_STUCK, in either
+/// direction, with the gates on and off.
+#[test]
+fn mode_changes_on_the_simulated_pl_raise_no_fault() {
+    let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+    let mut s = Servo::new(&ServoConfig::for_simulated(sim.config())).unwrap();
+    s.init(&mut sim).unwrap();
+    for (k, mode) in [Mode::Mpdtc, Mode::Foc, Mode::Off, Mode::Foc, Mode::Mpdtc]
+        .into_iter()
+        .cycle()
+        .take(12)
+        .enumerate()
+    {
+        s.set_mode(&mut sim, mode).unwrap();
+        if mode != Mode::Off && k % 2 == 0 {
+            s.enable(&mut sim).unwrap();
+        }
+        for _ in 0..(50 + 37 * k) {
+            let a = sim.advance_to_boundary(20_000);
+            assert_eq!(a.control_periods, 1);
+            s.control_step(&mut sim).unwrap();
+        }
+        assert!(s.faults(&mut sim).unwrap().none(), "{k} {mode:?}");
+    }
+    assert_eq!(s.fault_history().total, 0);
+}

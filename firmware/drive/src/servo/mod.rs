@@ -362,6 +362,9 @@ impl Servo {
         self.gates_off(bus)?;
         Top(&mut *bus).set_mode(m)?;
         self.mode = m;
+        // The next boundary may come sooner than a period of the new mode
+        // (without a new ADC result in between).
+        self.note_skipped();
         Ok(())
     }
 
