@@ -553,5 +553,7 @@ pub fn write_schema<W: Write>(out: &mut W) -> fmt::Result {
     out.write_char(']')
 }
 
+pub mod store;
+
 #[cfg(test)]
 mod tests;
