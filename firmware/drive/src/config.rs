@@ -553,6 +553,7 @@ pub fn write_schema<W: Write>(out: &mut W) -> fmt::Result {
     out.write_char(']')
 }
 
+pub mod spi_nor;
 pub mod store;
 
 #[cfg(test)]
