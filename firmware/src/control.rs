@@ -19,10 +19,13 @@
 //!   own clock, independent of how fast the host runs the guest); while it
 //!   lasts the console waits, so the PL tick may use the whole CPU.
 use crate::pl;
+use crate::ps::qspi::Qspi;
 use crate::ps::{gic, timer};
 use core::cell::RefCell;
 use drive::bus::{BusError, RegisterBus};
-use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind};
+use drive::config::spi_nor::SpiNor;
+use drive::config::{store, Config};
+use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
 use drive::pl::fault::Faults;
 use drive::pl::presence::Presence;
 use drive::pl::top::Mode;
@@ -71,6 +74,8 @@ struct State {
     tick_start: u64,
     /// Uptime when the simulated PL started, us.
     sim_start_us: u64,
+    /// The configuration store.
+    store: StoreStatus,
     /// Control-period boundaries the next PL tick crosses without a
     /// control step (`debug fault overrun`, simulated PL).
     skip_boundaries: u32,
@@ -110,6 +115,25 @@ pub fn init() -> Boot {
         }
         _ => (PlKind::Absent, None),
     };
+    // The saved configuration, if the flash holds a valid one.
+    let mut store = StoreStatus {
+        slots: [store::SlotState::Empty; 2],
+        loaded: None,
+    };
+    match store::load(&mut SpiNor(Qspi::init()), &cfg) {
+        Ok(l) => {
+            store.slots = l.slots;
+            if let Some((c, slot)) = l.config {
+                cfg = c.apply(&cfg);
+                store.loaded = Some(slot);
+            }
+            defmt::info!(
+                "config flash: loaded slot {=?}",
+                store.loaded.map(|s| s as u8)
+            );
+        }
+        Err(_) => defmt::warn!("config flash: not readable, defaults"),
+    }
     if let Some(mut bus) = bus {
         let mut servo = Servo::new(&cfg).expect("servo configuration");
         if servo.init(&mut bus).is_ok() {
@@ -123,6 +147,7 @@ pub fn init() -> Boot {
                     tick_start: 0,
                     sim_start_us: timer::uptime_us(),
                     skip_boundaries: 0,
+                    store,
                 });
             });
             gic::enable(gic::IRQ_GLOBAL_TIMER);
@@ -320,6 +345,7 @@ impl DriveOps for FwDrive {
                 }
                 Backend::Gp0(_) => None,
             },
+            store: Some(s.store),
         })
         .unwrap_or(DriveStatus {
             mode: Mode::Off,
@@ -332,6 +358,7 @@ impl DriveOps for FwDrive {
             overruns: 0,
             pl: PlKind::Absent,
             sim_time_scale: None,
+            store: None,
         })
     }
     fn bench(&mut self) -> Result<Bench, DriveError> {
@@ -370,6 +397,20 @@ impl DriveOps for FwDrive {
     }
     fn config(&mut self) -> Result<ServoConfig, DriveError> {
         run(|s| Ok(*s.servo.config()))
+    }
+    fn save_config(&mut self) -> Result<usize, DriveError> {
+        let sc = run(|s| Ok(*s.servo.config()))?;
+        // The flash is the console's alone: no need to hold off the
+        // control loop while it is written.
+        let mut flash = SpiNor(Qspi);
+        let slot = store::save(&mut flash, &Config::from_servo(&sc), &sc)
+            .map_err(|_| DriveError::Flash)?;
+        let l = store::load(&mut flash, &sc).map_err(|_| DriveError::Flash)?;
+        with(|s| {
+            s.store.slots = l.slots;
+            s.store.loaded = Some(slot);
+        });
+        Ok(slot)
     }
     fn reconfigure(&mut self, cfg: &ServoConfig) -> Result<(), DriveError> {
         run(|s| s.servo.reconfigure(&mut s.bus, cfg))

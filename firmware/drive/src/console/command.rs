@@ -72,10 +72,10 @@ pub const COMMANDS: &[Spec] = &[
     },
     Spec {
         name: "config",
-        args: "list|get <name>|set <name> <value>|reset|schema",
+        args: "list|get <name>|set <name> <value>|reset|schema|save",
         help: "parameters with units and ranges: `list` every one, `get`/`set` one (checked; \
                most need the gates off), `reset` to the defaults, `schema` the table as one \
-               JSON line",
+               JSON line, `save` to flash (loaded at boot)",
     },
     Spec {
         name: "debug",
@@ -130,6 +130,8 @@ pub enum Command<'a> {
     ConfigReset,
     /// `config schema`.
     ConfigSchema,
+    /// `config save`.
+    ConfigSave,
 }
 
 /// Default `step` window, s.
@@ -307,9 +309,10 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
             ["set", n, v] => Ok(Command::ConfigSet(n, v)),
             ["reset"] => Ok(Command::ConfigReset),
             ["schema"] => Ok(Command::ConfigSchema),
+            ["save"] => Ok(Command::ConfigSave),
             _ => Err(ParseError::BadArgs(
                 "config",
-                "expected `config list|get <name>|set <name> <value>|reset|schema`",
+                "expected `config list|get <name>|set <name> <value>|reset|schema|save`",
             )),
         },
         _ => Err(ParseError::Unknown(name)),
@@ -532,6 +535,10 @@ pub fn execute<W: Write>(
             }
             try_drive!("config", drv.reconfigure(&c.apply(&sc)));
             out.write_str("config: defaults\r\n")?;
+        }
+        Command::ConfigSave => {
+            let slot = try_drive!("config", drv.save_config());
+            write!(out, "config: saved to slot{slot}\r\n")?;
         }
         Command::ConfigSchema => {
             config::write_schema(out)?;
@@ -788,6 +795,7 @@ mod tests {
                 overruns: self.servo.overruns(),
                 pl: PlKind::Simulated,
                 sim_time_scale: Some(4.0),
+                store: None,
             }
         }
         fn bench(&mut self) -> Result<Bench, DriveError> {
@@ -1040,8 +1048,8 @@ mod tests {
         let mut d = TestDrive::new();
         let before = *d.servo.config();
         for (bad, msg) in [
-            ("config", "config: expected `config list|get <name>|set <name> <value>|reset|schema`"),
-            ("config set mpdtc_t_tol", "config: expected `config list|get <name>|set <name> <value>|reset|schema`"),
+            ("config", "config: expected `config list|get <name>|set <name> <value>|reset|schema|save`"),
+            ("config set mpdtc_t_tol", "config: expected `config list|get <name>|set <name> <value>|reset|schema|save`"),
             ("config get nothing", "config: nothing: no such parameter (see `config list`)"),
             ("config set nothing 1", "config: nothing: no such parameter (see `config list`)"),
             ("config set mpdtc_t_tol nan", "config: mpdtc_t_tol: expected a finite number"),

@@ -1,6 +1,7 @@
 //! The drive commands' side of the console: what the firmware provides
 //! ([`DriveOps`]) and how replies and errors are written.
 use super::{write_err, ErrorCode};
+use crate::config::store::SlotState;
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
 use crate::servo::faults::FaultRecord;
@@ -16,6 +17,16 @@ pub enum PlKind {
     Bitstream(u32),
     /// A PL the firmware must not drive (foreign or incompatible design).
     Absent,
+}
+
+/// What the configuration store in flash held at boot and since.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct StoreStatus {
+    /// Each slot's record.
+    pub slots: [SlotState; 2],
+    /// The slot the running configuration came from (at boot or the last
+    /// `config save`); `None`: the defaults.
+    pub loaded: Option<usize>,
 }
 
 /// Live drive values for `status`.
@@ -41,6 +52,8 @@ pub struct DriveStatus {
     pub pl: PlKind,
     /// Guest time / simulated time (simulated PL only).
     pub sim_time_scale: Option<f64>,
+    /// The configuration store (`None`: no flash access here).
+    pub store: Option<StoreStatus>,
 }
 
 /// Guest instructions of the control code, measured by `debug bench`.
@@ -88,6 +101,8 @@ pub enum DriveError {
     Timeout,
     /// Not available in this build or setup.
     Unsupported,
+    /// The configuration flash did not answer as expected.
+    Flash,
 }
 
 impl From<ServoError> for DriveError {
@@ -130,6 +145,10 @@ pub trait DriveOps {
     }
     /// Makes a fault happen (`debug fault`), to test the drive's reaction.
     fn inject(&mut self, _f: Injection) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Saves the running configuration to flash; returns the slot.
+    fn save_config(&mut self) -> Result<usize, DriveError> {
         Err(DriveError::Unsupported)
     }
     /// The drive's configuration.
@@ -209,6 +228,11 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
             ErrorCode::Unsupported,
             format_args!("{cmd}: not available here"),
         ),
+        DriveError::Flash => write_err(
+            out,
+            ErrorCode::FlashError,
+            format_args!("{cmd}: the configuration flash failed (nothing loaded or changed)"),
+        ),
     }
 }
 
@@ -236,6 +260,18 @@ pub fn write_status<W: Write>(out: &mut W, s: &DriveStatus) -> fmt::Result {
     }
     if let Some(k) = s.sim_time_scale {
         write!(out, "sim_time_scale: {k:.2}\r\n")?;
+    }
+    if let Some(st) = &s.store {
+        write!(
+            out,
+            "config_flash: slot0 {} slot1 {}, running ",
+            st.slots[0].name(),
+            st.slots[1].name()
+        )?;
+        match st.loaded {
+            Some(k) => write!(out, "slot{k}\r\n")?,
+            None => out.write_str("defaults\r\n")?,
+        }
     }
     Ok(())
 }
