@@ -24,12 +24,17 @@ pub struct Target {
     /// Run QEMU with -icount shift=0 (repeatable guest time).
     #[arg(long)]
     pub icount: bool,
+    /// QSPI flash image of QEMU (the saved configuration); created erased
+    /// (16 MiB of 0xFF) when missing.
+    #[arg(long, default_value = "target/run/qspi-flash.img")]
+    pub flash: PathBuf,
 }
 
 impl Target {
     fn qemu(&self) -> Qemu {
         let mut q = Qemu::new(self.elf.clone().unwrap_or_else(default_elf));
         q.icount = self.icount;
+        q.flash = Some(self.flash.clone());
         q
     }
 }
