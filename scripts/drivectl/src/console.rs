@@ -61,6 +61,49 @@ pub struct SendArgs {
 }
 
 #[derive(clap::Args)]
+pub struct ConfigFileArgs {
+    #[command(flatten)]
+    pub target: Target,
+    /// Seconds to wait for boot and for each reply.
+    #[arg(long, default_value_t = 20.0)]
+    pub timeout_s: f64,
+    /// The TOML file.
+    pub file: PathBuf,
+}
+
+fn session(target: &Target, t: Duration) -> Result<Session> {
+    match &target.port {
+        Some(p) => Session::open_serial(p, target.baud, t),
+        None => Session::spawn_qemu(&target.qemu(), t),
+    }
+}
+
+pub fn config_pull(a: ConfigFileArgs) -> Result<()> {
+    let t = timeout(a.timeout_s)?;
+    let mut s = session(&a.target, t)?;
+    let (schema, values) = drivectl::config_file::pull(&mut s, t)?;
+    let text = drivectl::config_file::to_toml(&schema, &values)?;
+    std::fs::write(&a.file, text).with_context(|| format!("cannot write {}", a.file.display()))?;
+    println!(
+        "{} parameters written to {}",
+        values.len(),
+        a.file.display()
+    );
+    Ok(())
+}
+
+pub fn config_push(a: ConfigFileArgs) -> Result<()> {
+    let t = timeout(a.timeout_s)?;
+    let text = std::fs::read_to_string(&a.file)
+        .with_context(|| format!("cannot read {}", a.file.display()))?;
+    let mut s = session(&a.target, t)?;
+    let n = drivectl::config_file::push(&mut s, &text, t)
+        .with_context(|| format!("push {}", a.file.display()))?;
+    println!("{n} parameters set and saved to the drive's flash");
+    Ok(())
+}
+
+#[derive(clap::Args)]
 pub struct LogArgs {
     /// Firmware ELF that produced the log (its defmt table decodes it).
     #[arg(long)]

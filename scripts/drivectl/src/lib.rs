@@ -1,4 +1,6 @@
 //! Library side of `drivectl`, shared with the system tests: the link to a
-//! running firmware (QEMU or serial) and defmt log decoding.
+//! running firmware (QEMU or serial), defmt log decoding and the
+//! configuration file.
+pub mod config_file;
 pub mod defmt_log;
 pub mod link;
