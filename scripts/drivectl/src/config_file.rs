@@ -127,8 +127,11 @@ fn ok_lines(s: &mut Session, line: &str, t: Duration) -> Result<Vec<String>> {
     }
 }
 
+/// Parameter values by name, in the table's units.
+pub type Values = Vec<(String, f64)>;
+
 /// The drive's schema and present values.
-pub fn pull(s: &mut Session, t: Duration) -> Result<(Vec<ParamSchema>, Vec<(String, f64)>)> {
+pub fn pull(s: &mut Session, t: Duration) -> Result<(Vec<ParamSchema>, Values)> {
     let schema_line = ok_lines(s, "config schema", t)?;
     let schema = parse_schema(schema_line.first().map(String::as_str).unwrap_or(""))?;
     let values = ok_lines(s, "config list", t)?
