@@ -362,7 +362,7 @@ impl DriveOps for FwDrive {
         })
     }
     fn bench(&mut self) -> Result<Bench, DriveError> {
-        Ok(crate::bench::run())
+        crate::bench::run().ok_or(DriveError::Unsupported)
     }
     fn fault_record(&mut self, k: usize) -> Result<(Option<FaultRecord>, u32), DriveError> {
         run(|s| {
