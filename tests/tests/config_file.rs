@@ -30,6 +30,8 @@ fn pull_edit_push_reaches_the_drive_and_its_flash() {
     assert_eq!(get(&mut s, "mpdtc_t_tol"), "mpdtc_t_tol = 0.05 Nm");
     assert_eq!(get(&mut s, "enc_zero"), "enc_zero = 5000 counts");
     assert_ne!(cmd(&mut s, "config list").lines, before_list.lines);
+    // QEMU writes the flash image asynchronously: let it land.
+    std::thread::sleep(std::time::Duration::from_millis(300));
     drop(s);
     // Saved: the next boot has it.
     let mut s = boot_with_flash(&img);

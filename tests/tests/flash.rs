@@ -10,6 +10,12 @@ fn assert_ok(r: &Reply) {
     assert!(r.is_ok(), "{r:?}");
 }
 
+/// QEMU writes the flash image asynchronously (the n25q128 model's page
+/// and sector writes are queued to its block layer): a kill right after
+/// the reply may still lose the save. Where a test needs the save on disk,
+/// it waits this long before the kill.
+const IMAGE_WRITE: std::time::Duration = std::time::Duration::from_millis(300);
+
 fn t_tol(s: &mut Session) -> f64 {
     let r = cmd(s, "config get mpdtc_t_tol");
     assert_ok(&r);
@@ -49,6 +55,7 @@ fn saved_configuration_survives_a_reboot() {
     assert_eq!(r.lines, ["config: saved to slot1"], "{r:?}");
     // Unsaved: gone after the reboot.
     assert_ok(&cmd(&mut s, "config set mpdtc_t_tol 0.07"));
+    std::thread::sleep(IMAGE_WRITE);
     drop(s);
     let mut s = boot_with_flash(&img);
     assert_eq!(
@@ -74,6 +81,7 @@ fn bad_records_are_ignored_and_reported() {
     assert_ok(&cmd(&mut s, "config save"));
     assert_ok(&cmd(&mut s, "config set mpdtc_t_tol 0.06"));
     assert_ok(&cmd(&mut s, "config save"));
+    std::thread::sleep(IMAGE_WRITE);
     drop(s);
     let slot = |k: u32| (SLOT0_ADDR + k * SECTOR_BYTES) as usize;
     let mut mem = std::fs::read(&img).unwrap();
@@ -102,6 +110,7 @@ fn bad_records_are_ignored_and_reported() {
     // The next save overwrites a bad slot and loads at the next boot.
     assert_ok(&cmd(&mut s, "config set mpdtc_t_tol 0.04"));
     assert_ok(&cmd(&mut s, "config save"));
+    std::thread::sleep(IMAGE_WRITE);
     drop(s);
     let mut s = boot_with_flash(&img);
     assert_eq!(t_tol(&mut s), 0.04);
@@ -120,6 +129,7 @@ fn saves_cut_by_a_power_cut_leave_the_old_or_the_new_configuration() {
     let t0 = Instant::now();
     assert_ok(&cmd(&mut s, "config save"));
     let save = t0.elapsed();
+    std::thread::sleep(IMAGE_WRITE);
     drop(s);
     let mut old = 0.001;
     let mut seed: u64 = 0x2545_F491_4F6C_DD1D;
