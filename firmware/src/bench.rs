@@ -16,7 +16,7 @@ use drive::pmsm::foc::{Foc, FocParams};
 use drive::pmsm::params::MotorParams;
 use drive::pmsm::sim::{Controller, Measurement};
 use drive::regmap::seq_state;
-use drive::regs::adc::{AdcIa, AdcIaValue, AdcIb, AdcIbValue, AdcIc, AdcIcValue};
+use drive::regs::adc::{AdcCount, AdcIa, AdcIaValue, AdcIb, AdcIbValue, AdcIc, AdcIcValue};
 use drive::regs::enc::{EncCpr, EncCprValue, EncPos, EncPosValue, EncWindow, EncWindowValue};
 use drive::regs::mpdtc::{MpdtcSeqStatus, MpdtcSeqStatusValue};
 use drive::regs::pwm::{GateCtrl, GateCtrlValue};
@@ -45,9 +45,12 @@ fn count(mut f: impl FnMut()) -> u32 {
 }
 
 /// A PL that answers every read like a running drive (gates on, the MPDTC
-/// sequence in SAMPLE, aligned) and drops writes: the control code's own
-/// cost, without the simulated PL's.
-struct Quiet;
+/// sequence in SAMPLE, aligned, a new ADC result every read of
+/// `ADC_COUNT`) and drops writes: the control code's own cost, without the
+/// simulated PL's.
+struct Quiet {
+    adc_count: u32,
+}
 
 impl RegisterBus for Quiet {
     fn read(&mut self, addr: usize) -> Result<u32, BusError> {
@@ -64,6 +67,10 @@ impl RegisterBus for Quiet {
             EncCpr::ADDR => EncCprValue::ZERO.with_value(4096).bits(),
             EncPos::ADDR => EncPosValue::ZERO.with_value(1234).bits(),
             EncWindow::ADDR => EncWindowValue::ZERO.with_value(100_000).bits(),
+            AdcCount::ADDR => {
+                self.adc_count = self.adc_count.wrapping_add(1);
+                self.adc_count
+            }
             _ => 0,
         })
     }
@@ -72,8 +79,9 @@ impl RegisterBus for Quiet {
     }
 }
 
-/// Runs the measurements.
-pub fn run() -> Bench {
+/// Runs the measurements; `None` if the control step latched a fault on
+/// the quiet PL (its figure would not be the whole step's).
+pub fn run() -> Option<Bench> {
     let motor = MotorParams::default();
     let mut foc = Foc::new(&motor, &FocParams::default()).expect("paper FOC parameters");
     let mut k = 0u32;
@@ -87,16 +95,20 @@ pub fn run() -> Bench {
         core::hint::black_box(foc.step(core::hint::black_box(&m), 0.4));
     });
     let mut servo = Servo::new(&ServoConfig::default()).expect("default servo configuration");
-    let mut bus = Quiet;
+    let mut bus = Quiet { adc_count: 0 };
     let _ = servo.set_mode(&mut bus, Mode::Mpdtc);
     let _ = servo.enable(&mut bus);
     let _ = servo.set_torque_ref(0.4);
     let mpdtc_period = count(|| {
         let _ = servo.control_step(&mut bus);
     });
-    Bench {
+    // A fault would have stopped the controller part way: no figure then.
+    if !servo.faults(&mut bus).map(|f| f.none()).unwrap_or(false) {
+        return None;
+    }
+    Some(Bench {
         foc_step,
         mpdtc_period,
         runs: RUNS,
-    }
+    })
 }

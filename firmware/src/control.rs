@@ -21,14 +21,18 @@
 //!   is measured in PL time (the simulated PL's under QEMU: the drive's
 //!   own clock, independent of how fast the host runs the guest); while it
 //!   lasts the console waits, so the PL tick may use the whole CPU.
+use crate::ps::qspi::Qspi;
 use crate::ps::{gic, timer};
 use crate::{cosim, pl};
 use core::cell::RefCell;
 use drive::bus::{BusError, RegisterBus};
-use drive::console::{Bench, DriveError, DriveOps, DriveStatus, PlKind};
+use drive::config::spi_nor::SpiNor;
+use drive::config::{store, Config};
+use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
 use drive::pl::fault::Faults;
 use drive::pl::presence::Presence;
 use drive::pl::top::Mode;
+use drive::servo::faults::FaultRecord;
 use drive::servo::{Servo, ServoConfig, ServoError, StepResult};
 use drive::simpl::{SimConfig, SimDrive};
 
@@ -81,6 +85,11 @@ struct State {
     /// Co-simulation: global-timer count of the next PL tick, just after
     /// the next control-period boundary.
     next_tick: u64,
+    /// The configuration store.
+    store: StoreStatus,
+    /// Control-period boundaries the next PL tick crosses without a
+    /// control step (`debug fault overrun`, simulated PL).
+    skip_boundaries: u32,
 }
 
 /// The drive state, touched only with IRQs masked (one core).
@@ -125,6 +134,25 @@ pub fn init() -> Boot {
         },
         _ => (PlKind::Absent, None),
     };
+    // The saved configuration, if the flash holds a valid one.
+    let mut store = StoreStatus {
+        slots: [store::SlotState::Empty; 2],
+        loaded: None,
+    };
+    match store::load(&mut SpiNor(Qspi::init()), &cfg) {
+        Ok(l) => {
+            store.slots = l.slots;
+            if let Some((c, slot)) = l.config {
+                cfg = c.apply(&cfg);
+                store.loaded = Some(slot);
+            }
+            defmt::info!(
+                "config flash: loaded slot {=?}",
+                store.loaded.map(|s| s as u8)
+            );
+        }
+        Err(_) => defmt::warn!("config flash: not readable, defaults"),
+    }
     if let Some(mut bus) = bus {
         let mut servo = Servo::new(&cfg).expect("servo configuration");
         if servo.init(&mut bus).is_ok() {
@@ -142,6 +170,8 @@ pub fn init() -> Boot {
                     tick_start: 0,
                     sim_start_us: timer::uptime_us(),
                     next_tick: 0,
+                    skip_boundaries: 0,
+                    store,
                 });
             });
             gic::enable(gic::IRQ_GLOBAL_TIMER);
@@ -174,8 +204,17 @@ pub fn on_pl_tick() {
         let boundaries = match &mut s.bus {
             // Up to the next control-period boundary (at most two periods).
             Backend::Sim(sim) => {
-                sim.advance_to_boundary(2 * period_cycles(&s.servo))
-                    .control_periods
+                let period = period_cycles(&s.servo);
+                let mut n = sim.advance_to_boundary(2 * period).control_periods;
+                // `debug fault overrun`: more boundaries before the step.
+                for _ in 0..core::mem::take(&mut s.skip_boundaries) {
+                    n += sim.advance_to_boundary(2 * period).control_periods;
+                }
+                if n == 0 {
+                    // No result from the ADC that paces the period.
+                    let _ = s.servo.note_no_boundary(sim, 2);
+                }
+                n
             }
             // The bitstream's PL runs on its own: the tick is the control rate.
             Backend::Gp0(_) => 1,
@@ -233,7 +272,9 @@ pub fn on_control() {
     with(|s| {
         s.control_pending = false;
         let stalled = s.stalled();
-        if !stalled {
+        if stalled {
+            s.servo.note_skipped();
+        } else {
             // A bus error leaves the gates to the PL's own fault logic.
             let _ = s.servo.control_step(&mut s.bus);
         }
@@ -365,6 +406,7 @@ impl DriveOps for FwDrive {
                 }
                 Backend::Gp0(_) | Backend::Cosim(_) => None,
             },
+            store: Some(s.store),
         })
         .unwrap_or(DriveStatus {
             mode: Mode::Off,
@@ -377,9 +419,61 @@ impl DriveOps for FwDrive {
             overruns: 0,
             pl: PlKind::Absent,
             sim_time_scale: None,
+            store: None,
         })
     }
     fn bench(&mut self) -> Result<Bench, DriveError> {
-        Ok(crate::bench::run())
+        crate::bench::run().ok_or(DriveError::Unsupported)
+    }
+    fn fault_record(&mut self, k: usize) -> Result<(Option<FaultRecord>, u32), DriveError> {
+        run(|s| {
+            let h = s.servo.fault_history();
+            Ok((h.records().nth(k).copied(), h.total))
+        })
+    }
+    fn inject(&mut self, f: Injection) -> Result<(), DriveError> {
+        match f {
+            Injection::AdcStuck => run(|s| Ok(drive::pl::adc::Adc(&mut s.bus).set_enabled(false)?)),
+            Injection::External => with(|s| match &mut s.bus {
+                Backend::Sim(sim) => {
+                    // 10 us at the pin; a boundary crossed here is the
+                    // next tick's.
+                    sim.set_external_fault(true);
+                    let _ = sim.advance(1000);
+                    sim.set_external_fault(false);
+                    Ok(())
+                }
+                Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
+            })
+            .unwrap_or(Err(DriveError::Absent)),
+            Injection::Overrun => with(|s| match &s.bus {
+                Backend::Sim(_) => {
+                    s.skip_boundaries = 2;
+                    Ok(())
+                }
+                Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
+            })
+            .unwrap_or(Err(DriveError::Absent)),
+        }
+    }
+    fn config(&mut self) -> Result<ServoConfig, DriveError> {
+        run(|s| Ok(*s.servo.config()))
+    }
+    fn save_config(&mut self) -> Result<usize, DriveError> {
+        let sc = run(|s| Ok(*s.servo.config()))?;
+        // The flash is the console's alone: no need to hold off the
+        // control loop while it is written.
+        let mut flash = SpiNor(Qspi);
+        let slot = store::save(&mut flash, &Config::from_servo(&sc), &sc)
+            .map_err(|_| DriveError::Flash)?;
+        let l = store::load(&mut flash, &sc).map_err(|_| DriveError::Flash)?;
+        with(|s| {
+            s.store.slots = l.slots;
+            s.store.loaded = Some(slot);
+        });
+        Ok(slot)
+    }
+    fn reconfigure(&mut self, cfg: &ServoConfig) -> Result<(), DriveError> {
+        run(|s| s.servo.reconfigure(&mut s.bus, cfg))
     }
 }

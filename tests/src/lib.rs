@@ -39,6 +39,24 @@ pub fn boot_rtl() -> Session {
     Session::spawn_qemu(&q, TIMEOUT).expect("firmware boots to its prompt with the bridge")
 }
 
+/// A fresh erased QSPI flash image `target/run/tests/<name>.img` (one per
+/// test: QEMU locks its image).
+pub fn fresh_flash(name: &str) -> PathBuf {
+    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../target/run/tests")
+        .join(format!("{name}.img"));
+    let _ = std::fs::remove_file(&p);
+    drivectl::link::ensure_flash_image(&p).expect("flash image");
+    p
+}
+
+/// A booted firmware with `flash` as its QSPI flash image.
+pub fn boot_with_flash(flash: &std::path::Path) -> Session {
+    let mut q = Qemu::new(elf());
+    q.flash = Some(flash.to_path_buf());
+    Session::spawn_qemu(&q, TIMEOUT).expect("firmware boots to its prompt")
+}
+
 /// Sends `line`, returns the reply (panics with the transcript on a
 /// protocol error).
 pub fn cmd(s: &mut Session, line: &str) -> Reply {

@@ -19,6 +19,7 @@
 extern crate std;
 
 pub mod bus;
+pub mod config;
 pub mod console;
 pub mod cosim;
 pub mod fixedpoint;

@@ -4,5 +4,6 @@
 //! a size check; they are reached through `&'static` references built from
 //! the documented base address, never `&mut`.
 pub mod gic;
+pub mod qspi;
 pub mod timer;
 pub mod uart;

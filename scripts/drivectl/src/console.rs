@@ -29,6 +29,10 @@ pub struct Target {
     /// `pl-cosim`; implies -icount).
     #[arg(long, default_value = "sim", value_parser = ["sim", "rtl"])]
     pub pl: String,
+    /// QSPI flash image of QEMU (the saved configuration); created erased
+    /// (16 MiB of 0xFF) when missing.
+    #[arg(long, default_value = "target/run/qspi-flash.img")]
+    pub flash: PathBuf,
 }
 
 impl Target {
@@ -36,6 +40,7 @@ impl Target {
         let mut q = Qemu::new(self.elf.clone().unwrap_or_else(default_elf));
         q.icount = self.icount;
         q.pl_rtl = self.pl == "rtl";
+        q.flash = Some(self.flash.clone());
         q
     }
 }
@@ -59,6 +64,49 @@ pub struct SendArgs {
     pub timeout_s: f64,
     /// The command line, e.g. "status".
     pub command: String,
+}
+
+#[derive(clap::Args)]
+pub struct ConfigFileArgs {
+    #[command(flatten)]
+    pub target: Target,
+    /// Seconds to wait for boot and for each reply.
+    #[arg(long, default_value_t = 20.0)]
+    pub timeout_s: f64,
+    /// The TOML file.
+    pub file: PathBuf,
+}
+
+fn session(target: &Target, t: Duration) -> Result<Session> {
+    match &target.port {
+        Some(p) => Session::open_serial(p, target.baud, t),
+        None => Session::spawn_qemu(&target.qemu(), t),
+    }
+}
+
+pub fn config_pull(a: ConfigFileArgs) -> Result<()> {
+    let t = timeout(a.timeout_s)?;
+    let mut s = session(&a.target, t)?;
+    let (schema, values) = drivectl::config_file::pull(&mut s, t)?;
+    let text = drivectl::config_file::to_toml(&schema, &values)?;
+    std::fs::write(&a.file, text).with_context(|| format!("cannot write {}", a.file.display()))?;
+    println!(
+        "{} parameters written to {}",
+        values.len(),
+        a.file.display()
+    );
+    Ok(())
+}
+
+pub fn config_push(a: ConfigFileArgs) -> Result<()> {
+    let t = timeout(a.timeout_s)?;
+    let text = std::fs::read_to_string(&a.file)
+        .with_context(|| format!("cannot read {}", a.file.display()))?;
+    let mut s = session(&a.target, t)?;
+    let n = drivectl::config_file::push(&mut s, &text, t)
+        .with_context(|| format!("push {}", a.file.display()))?;
+    println!("{n} parameters set and saved to the drive's flash");
+    Ok(())
 }
 
 #[derive(clap::Args)]

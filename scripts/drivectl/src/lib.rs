@@ -1,5 +1,7 @@
 //! Library side of `drivectl`, shared with the system tests: the link to a
-//! running firmware (QEMU or serial) and defmt log decoding.
+//! running firmware (QEMU or serial), the co-simulation bridge, defmt log
+//! decoding and the configuration file.
+pub mod config_file;
 pub mod cosim;
 pub mod defmt_log;
 pub mod link;

@@ -34,6 +34,33 @@ pub struct Qemu {
     pub pl_rtl: bool,
     /// The bridge's directory once started (set by the spawner).
     pub cosim_dir: Option<PathBuf>,
+    /// Image of the QSPI flash (the configuration store), see
+    /// [`ensure_flash_image`]; `None`: an erased flash that lives as long
+    /// as QEMU.
+    pub flash: Option<PathBuf>,
+}
+
+/// Bytes of the QSPI flash image: QEMU's n25q128, 16 MiB.
+pub const FLASH_IMAGE_BYTES: u64 = 16 << 20;
+
+/// Creates `path` as an erased flash image (all 0xFF) if it does not
+/// exist; an existing file must have the flash's size.
+pub fn ensure_flash_image(path: &Path) -> Result<()> {
+    match std::fs::metadata(path) {
+        Ok(m) if m.len() == FLASH_IMAGE_BYTES => Ok(()),
+        Ok(m) => bail!(
+            "flash image {} is {} bytes, expected {FLASH_IMAGE_BYTES} (delete it to start afresh)",
+            path.display(),
+            m.len()
+        ),
+        Err(_) => {
+            if let Some(dir) = path.parent() {
+                std::fs::create_dir_all(dir)?;
+            }
+            std::fs::write(path, vec![0xFF; FLASH_IMAGE_BYTES as usize])
+                .with_context(|| format!("cannot create flash image {}", path.display()))
+        }
+    }
 }
 
 impl Qemu {
@@ -44,6 +71,7 @@ impl Qemu {
             icount: false,
             pl_rtl: false,
             cosim_dir: None,
+            flash: None,
         }
     }
 
@@ -74,11 +102,22 @@ impl Qemu {
         } else if self.icount {
             a.extend(["-icount".into(), "shift=0".into()]);
         }
+        if let Some(f) = &self.flash {
+            // Drives 0..=7 are the two SPI controllers' flashes; 8 is the
+            // QSPI controller's first (bus 0, chip select 0).
+            a.extend([
+                "-drive".into(),
+                format!("if=mtd,index=8,format=raw,file={}", f.display()),
+            ]);
+        }
         a.extend(["-kernel".into(), self.elf.display().to_string()]);
         a
     }
 
     fn check(&self) -> Result<()> {
+        if let Some(f) = &self.flash {
+            ensure_flash_image(f)?;
+        }
         if !self.elf.is_file() {
             bail!(
                 "firmware ELF {} not found: build it with `cargo fw-build` (or scripts/run)",

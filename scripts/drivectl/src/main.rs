@@ -28,6 +28,9 @@ enum Cmd {
     Send(console::SendArgs),
     /// Decode a raw defmt log stream (UART0 capture) into text.
     Log(console::LogArgs),
+    /// The drive's configuration as a TOML file.
+    #[command(subcommand)]
+    Config(ConfigCmd),
     /// Reproduce the papers' experiments.
     #[command(subcommand)]
     Paper(PaperCmd),
@@ -37,6 +40,15 @@ enum Cmd {
     /// Benchmarks (called by scripts/bench).
     #[command(subcommand)]
     Bench(BenchCmd),
+}
+
+#[derive(Subcommand)]
+enum ConfigCmd {
+    /// Write the drive's configuration (`config list`) to a TOML file.
+    Pull(console::ConfigFileArgs),
+    /// Check a TOML file against the drive's `config schema`, set its
+    /// values (all or nothing), then `config save` to the drive's flash.
+    Push(console::ConfigFileArgs),
 }
 
 #[derive(Subcommand)]
@@ -80,6 +92,8 @@ fn dispatch(cmd: Cmd) -> Result<()> {
         Cmd::Console(a) => console::console(a),
         Cmd::Send(a) => console::send(a),
         Cmd::Log(a) => console::log(a),
+        Cmd::Config(ConfigCmd::Pull(a)) => console::config_pull(a),
+        Cmd::Config(ConfigCmd::Push(a)) => console::config_push(a),
         Cmd::Paper(PaperCmd::Mpdtc(a)) => paper_mpdtc::run(a),
         Cmd::Paper(PaperCmd::Mpdcc(a)) => paper_mpdcc::run(a),
         Cmd::Sim(SimCmd::Replay(a)) => sim::replay(a),

@@ -5,6 +5,7 @@
 
 use super::drive::{self, DriveOps};
 use super::{write_err, ErrorCode};
+use crate::config::{self, Config};
 use crate::pl::top::Mode;
 use core::fmt::{self, Write};
 
@@ -65,16 +66,24 @@ pub const COMMANDS: &[Spec] = &[
     },
     Spec {
         name: "fault",
-        args: "[clear]",
-        help: "list the latched faults, or clear them (the gates stay off until `enable`)",
+        args: "[clear|history]",
+        help: "list the latched faults, clear them (the gates stay off until `enable`), or \
+               the last 16 with drive time [s], code and the samples before [A, Nm]",
+    },
+    Spec {
+        name: "config",
+        args: "list|get <name>|set <name> <value>|reset|schema|save",
+        help: "parameters with units and ranges: `list` every one, `get`/`set` one (checked; \
+               most need the gates off), `reset` to the defaults, `schema` the table as one \
+               JSON line, `save` to flash (loaded at boot)",
     },
     Spec {
         name: "debug",
-        args: "panic|stall <ms>|bench",
+        args: "panic|stall <ms>|bench|fault <f>",
         help: "diagnostics: `panic` forces a firmware panic (gates off, message, halt); \
                `stall <ms>` stops the control loop and heartbeat for <ms> of PL time (the \
                simulated PL's under QEMU); `bench` counts guest instructions of the control \
-               code",
+               code; `fault <f>` makes a fault happen (<f>: external, adc-stuck or overrun)",
     },
 ];
 
@@ -103,10 +112,26 @@ pub enum Command<'a> {
     Fault,
     /// `fault clear`.
     FaultClear,
+    /// `fault history`.
+    FaultHistory,
+    /// `debug fault <f>`.
+    DebugFault(drive::Injection),
     /// `debug stall <ms>`.
     DebugStall(u32),
     /// `debug bench`.
     DebugBench,
+    /// `config list`.
+    ConfigList,
+    /// `config get <name>`.
+    ConfigGet(&'a str),
+    /// `config set <name> <value>` (the value is checked by the table).
+    ConfigSet(&'a str, &'a str),
+    /// `config reset`.
+    ConfigReset,
+    /// `config schema`.
+    ConfigSchema,
+    /// `config save`.
+    ConfigSave,
 }
 
 /// Default `step` window, s.
@@ -210,6 +235,12 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
         "debug" => match args.as_slice() {
             ["panic"] => Ok(Command::DebugPanic),
             ["bench"] => Ok(Command::DebugBench),
+            ["fault", f] => drive::Injection::from_name(f)
+                .map(Command::DebugFault)
+                .ok_or(ParseError::BadArgs(
+                    "debug",
+                    "fault takes external, adc-stuck or overrun",
+                )),
             ["stall", ms] => match ms.parse::<u32>() {
                 Ok(ms) if (1..=STALL_MAX_MS).contains(&ms) => Ok(Command::DebugStall(ms)),
                 _ => Err(ParseError::BadArgs(
@@ -219,7 +250,7 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
             },
             _ => Err(ParseError::BadArgs(
                 "debug",
-                "expected `debug panic`, `debug stall <ms>` or `debug bench`",
+                "expected `debug panic`, `debug stall <ms>`, `debug bench` or `debug fault <f>`",
             )),
         },
         "mode" => match args.as_slice() {
@@ -266,9 +297,22 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
         "fault" => match args.as_slice() {
             [] => Ok(Command::Fault),
             ["clear"] => Ok(Command::FaultClear),
+            ["history"] => Ok(Command::FaultHistory),
             _ => Err(ParseError::BadArgs(
                 "fault",
-                "expected `fault` or `fault clear`",
+                "expected `fault`, `fault clear` or `fault history`",
+            )),
+        },
+        "config" => match args.as_slice() {
+            ["list"] => Ok(Command::ConfigList),
+            ["get", n] => Ok(Command::ConfigGet(n)),
+            ["set", n, v] => Ok(Command::ConfigSet(n, v)),
+            ["reset"] => Ok(Command::ConfigReset),
+            ["schema"] => Ok(Command::ConfigSchema),
+            ["save"] => Ok(Command::ConfigSave),
+            _ => Err(ParseError::BadArgs(
+                "config",
+                "expected `config list|get <name>|set <name> <value>|reset|schema|save`",
             )),
         },
         _ => Err(ParseError::Unknown(name)),
@@ -314,6 +358,21 @@ fn write_spec<W: Write>(out: &mut W, s: &Spec) -> fmt::Result {
         out.write_char(' ')?;
     }
     write!(out, " {}\r\n", s.help)
+}
+
+/// The `ERR bad-args` line of a refused `config` value.
+fn config_error<W: Write>(
+    out: &mut W,
+    name: &str,
+    e: config::ConfigError,
+) -> Result<Action, fmt::Error> {
+    let (w, more) = clip(name);
+    write_err(
+        out,
+        ErrorCode::BadArgs,
+        format_args!("config: {w}{more}: {e}"),
+    )?;
+    Ok(Action::None)
 }
 
 /// Writes the reply of `cmd`, ending with `OK` or `ERR`.
@@ -412,6 +471,24 @@ pub fn execute<W: Write>(
             f.write_names(out)?;
             out.write_str("\r\ngates: off (safe state)\r\n")?;
         }
+        Command::FaultHistory => {
+            let mut shown = 0;
+            let mut total = 0;
+            for k in 0..crate::servo::faults::HISTORY_LEN {
+                let (r, t) = try_drive!("fault", drv.fault_record(k));
+                total = t;
+                let Some(r) = r else { break };
+                shown += 1;
+                write!(out, "#{shown} ")?;
+                r.write_summary(out)?;
+                out.write_str("\r\n")?;
+            }
+            write!(out, "history: {shown} shown, {total} since boot\r\n")?;
+        }
+        Command::DebugFault(f) => {
+            try_drive!("debug", drv.inject(f));
+            out.write_str("injected\r\n")?;
+        }
         Command::DebugStall(ms) => {
             try_drive!("debug", drv.stall(ms));
             write!(out, "stalled: {ms} ms\r\n")?;
@@ -421,6 +498,51 @@ pub fn execute<W: Write>(
             write!(out, "foc_step: {} instructions\r\n", b.foc_step)?;
             write!(out, "mpdtc_period: {} instructions\r\n", b.mpdtc_period)?;
             write!(out, "runs: {}\r\n", b.runs)?;
+        }
+        Command::ConfigList => {
+            let c = Config::from_servo(&try_drive!("config", drv.config()));
+            for (p, &v) in config::PARAMS.iter().zip(c.values()) {
+                config::write_list_line(out, p, v)?;
+                out.write_str("\r\n")?;
+            }
+        }
+        Command::ConfigGet(name) => {
+            let c = Config::from_servo(&try_drive!("config", drv.config()));
+            let Some((i, p)) = config::lookup(name) else {
+                return config_error(out, name, config::ConfigError::UnknownName);
+            };
+            config::write_value(out, p, c.values()[i])?;
+            out.write_str("\r\n")?;
+        }
+        Command::ConfigSet(name, value) => {
+            let sc = try_drive!("config", drv.config());
+            let mut c = Config::from_servo(&sc);
+            let set = config::parse_value(value).and_then(|v| c.set(&sc, name, v));
+            if let Err(e) = set {
+                return config_error(out, name, e);
+            }
+            try_drive!("config", drv.reconfigure(&c.apply(&sc)));
+            if let Some((i, p)) = config::lookup(name) {
+                config::write_value(out, p, c.values()[i])?;
+                out.write_str("\r\n")?;
+            }
+        }
+        Command::ConfigReset => {
+            let sc = try_drive!("config", drv.config());
+            let c = Config::default();
+            if let Err(e) = c.check(&sc) {
+                return config_error(out, "reset", e);
+            }
+            try_drive!("config", drv.reconfigure(&c.apply(&sc)));
+            out.write_str("config: defaults\r\n")?;
+        }
+        Command::ConfigSave => {
+            let slot = try_drive!("config", drv.save_config());
+            write!(out, "config: saved to slot{slot}\r\n")?;
+        }
+        Command::ConfigSchema => {
+            config::write_schema(out)?;
+            out.write_str("\r\n")?;
         }
     }
     out.write_str("OK\r\n")?;
@@ -543,7 +665,7 @@ mod tests {
         );
         assert_eq!(
             reply("debug"),
-            "ERR bad-args debug: expected `debug panic`, `debug stall <ms>` or `debug bench`\r\n"
+            "ERR bad-args debug: expected `debug panic`, `debug stall <ms>`, `debug bench` or `debug fault <f>`\r\n"
         );
         assert_eq!(
             reply("help a b"),
@@ -586,6 +708,7 @@ mod tests {
                 .replace("<Nm>", "0.1")
                 .replace("<window_ms>", "2")
                 .replace("<ms>", "5")
+                .replace("<f>", "adc-stuck")
                 .replace(['[', ']'], "");
             for alt in args.split('|') {
                 let line = std::format!("{} {}", s.name, alt);
@@ -594,9 +717,10 @@ mod tests {
         }
     }
 
-    use crate::console::drive::{Bench, DriveError, DriveOps, DriveStatus, PlKind};
+    use crate::console::drive::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind};
     use crate::pl::fake::FakePl;
     use crate::pl::fault::Faults;
+    use crate::servo::faults::FaultRecord;
     use crate::servo::{Servo, ServoConfig, StepResult};
 
     /// The console's view of a drive: the real `Servo` on the fake PL,
@@ -671,10 +795,32 @@ mod tests {
                 overruns: self.servo.overruns(),
                 pl: PlKind::Simulated,
                 sim_time_scale: Some(4.0),
+                store: None,
             }
         }
         fn bench(&mut self) -> Result<Bench, DriveError> {
             Err(DriveError::Unsupported)
+        }
+        fn config(&mut self) -> Result<ServoConfig, DriveError> {
+            Ok(*self.servo.config())
+        }
+        fn fault_record(&mut self, k: usize) -> Result<(Option<FaultRecord>, u32), DriveError> {
+            let h = self.servo.fault_history();
+            Ok((h.records().nth(k).copied(), h.total))
+        }
+        fn inject(&mut self, f: Injection) -> Result<(), DriveError> {
+            match f {
+                Injection::AdcStuck => {
+                    crate::pl::adc::Adc(&mut self.pl)
+                        .set_enabled(false)
+                        .unwrap();
+                    Ok(())
+                }
+                _ => Err(DriveError::Unsupported),
+            }
+        }
+        fn reconfigure(&mut self, cfg: &ServoConfig) -> Result<(), DriveError> {
+            Ok(self.servo.reconfigure(&mut self.pl, cfg)?)
         }
     }
 
@@ -858,5 +1004,86 @@ mod tests {
             reply_on(&mut d, "debug bench"),
             "ERR unsupported debug: not available here\r\n"
         );
+    }
+
+    #[test]
+    fn config_list_get_set_reset_schema() {
+        let mut d = TestDrive::new();
+        let r = reply_on(&mut d, "config list");
+        let lines: std::vec::Vec<&str> = r.trim_end().split("\r\n").collect();
+        assert_eq!(lines.len(), crate::config::N_PARAMS + 1, "{r}");
+        assert!(
+            lines.contains(&"mpdtc_t_tol = 0.08 Nm  [0..0.5]  MPDTC torque tolerance band T_tol")
+        );
+        assert!(lines.contains(&"dead_time = 50 cycles  [0..1023]  inverter dead time (DEAD_TIME), PL clock cycles of 10 ns"));
+        assert_one_final_line(&r);
+        assert_eq!(
+            reply_on(&mut d, "config get mpdtc_t_tol"),
+            "mpdtc_t_tol = 0.08 Nm\r\nOK\r\n"
+        );
+        assert_eq!(
+            reply_on(&mut d, "config set mpdtc_t_tol 0.05"),
+            "mpdtc_t_tol = 0.05 Nm\r\nOK\r\n"
+        );
+        assert_eq!(
+            reply_on(&mut d, "config get mpdtc_t_tol"),
+            "mpdtc_t_tol = 0.05 Nm\r\nOK\r\n"
+        );
+        let r = reply_on(&mut d, "config schema");
+        assert_eq!(r.matches("\r\n").count(), 2, "{r}");
+        assert!(r.starts_with("[{\"name\":\"motor_r_s\""), "{r}");
+        assert!(r.ends_with("]\r\nOK\r\n"), "{r}");
+        assert_eq!(
+            reply_on(&mut d, "config reset"),
+            "config: defaults\r\nOK\r\n"
+        );
+        assert_eq!(
+            reply_on(&mut d, "config get mpdtc_t_tol"),
+            "mpdtc_t_tol = 0.08 Nm\r\nOK\r\n"
+        );
+    }
+
+    #[test]
+    fn config_bad_input_changes_nothing() {
+        let mut d = TestDrive::new();
+        let before = *d.servo.config();
+        for (bad, msg) in [
+            ("config", "config: expected `config list|get <name>|set <name> <value>|reset|schema|save`"),
+            ("config set mpdtc_t_tol", "config: expected `config list|get <name>|set <name> <value>|reset|schema|save`"),
+            ("config get nothing", "config: nothing: no such parameter (see `config list`)"),
+            ("config set nothing 1", "config: nothing: no such parameter (see `config list`)"),
+            ("config set mpdtc_t_tol nan", "config: mpdtc_t_tol: expected a finite number"),
+            ("config set mpdtc_t_tol inf", "config: mpdtc_t_tol: expected a finite number"),
+            ("config set mpdtc_t_tol -inf", "config: mpdtc_t_tol: expected a finite number"),
+            ("config set mpdtc_t_tol 0.1Nm", "config: mpdtc_t_tol: expected a finite number"),
+            ("config set mpdtc_t_tol 0.6", "config: mpdtc_t_tol: out of range [0..0.5] Nm"),
+            ("config set motor_pole_pairs 7.5", "config: motor_pole_pairs: expected a whole number"),
+            ("config set obs_kp 1000", "config: obs_kp: invalid parameter `obs_kp_v_per_a`: observer unstable: roots of eq. (16) outside the unit circle"),
+        ] {
+            assert_eq!(
+                reply_on(&mut d, bad),
+                std::format!("ERR bad-args {msg}\r\n"),
+                "{bad}"
+            );
+        }
+        assert_eq!(d.servo.config(), &before);
+        // With the gates on, only the torque limit may change.
+        assert!(reply_on(&mut d, "mode foc").ends_with("OK\r\n"));
+        assert!(reply_on(&mut d, "enable").ends_with("OK\r\n"));
+        assert_eq!(
+            reply_on(&mut d, "config set mpdtc_t_tol 0.05"),
+            "ERR gates-on config: needs the gates off (`disable` first)\r\n"
+        );
+        assert_eq!(d.servo.config(), &before);
+        assert_eq!(
+            reply_on(&mut d, "config set torque_limit 0.5"),
+            "torque_limit = 0.5 Nm\r\nOK\r\n"
+        );
+        assert!(reply_on(&mut d, "torque 0.6").starts_with("ERR bad-args "));
+        assert_eq!(
+            reply_on(&mut d, "config reset"),
+            "config: defaults\r\nOK\r\n"
+        );
+        assert_eq!(d.servo.config(), &before);
     }
 }

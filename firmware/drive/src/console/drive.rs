@@ -1,9 +1,11 @@
 //! The drive commands' side of the console: what the firmware provides
 //! ([`DriveOps`]) and how replies and errors are written.
 use super::{write_err, ErrorCode};
+use crate::config::store::SlotState;
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
-use crate::servo::{Measured, ServoError, StepResult};
+use crate::servo::faults::FaultRecord;
+use crate::servo::{Measured, ServoConfig, ServoError, StepResult};
 use core::fmt::{self, Write};
 
 /// What is behind the drivers.
@@ -18,6 +20,16 @@ pub enum PlKind {
     /// No bitstream, QEMU with the co-simulation bridge: the Verilated
     /// `pl_top` and the simulated motor in a host process.
     RtlCosim,
+}
+
+/// What the configuration store in flash held at boot and since.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct StoreStatus {
+    /// Each slot's record.
+    pub slots: [SlotState; 2],
+    /// The slot the running configuration came from (at boot or the last
+    /// `config save`); `None`: the defaults.
+    pub loaded: Option<usize>,
 }
 
 /// Live drive values for `status`.
@@ -43,6 +55,8 @@ pub struct DriveStatus {
     pub pl: PlKind,
     /// Guest time / simulated time (simulated PL only).
     pub sim_time_scale: Option<f64>,
+    /// The configuration store (`None`: no flash access here).
+    pub store: Option<StoreStatus>,
 }
 
 /// Guest instructions of the control code, measured by `debug bench`.
@@ -56,6 +70,29 @@ pub struct Bench {
     pub runs: u32,
 }
 
+/// A fault `debug fault` makes happen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Injection {
+    /// The external fault input asserted for 10 us (simulated PL only).
+    External,
+    /// The ADC stopped (`ADC_CTRL.ENABLE` = 0; `fault clear` restarts it).
+    AdcStuck,
+    /// Two control periods pass without a control step (simulated PL only).
+    Overrun,
+}
+
+impl Injection {
+    /// From the console word.
+    pub fn from_name(s: &str) -> Option<Self> {
+        match s {
+            "external" => Some(Injection::External),
+            "adc-stuck" => Some(Injection::AdcStuck),
+            "overrun" => Some(Injection::Overrun),
+            _ => None,
+        }
+    }
+}
+
 /// Why a drive command failed (nothing changed).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum DriveError {
@@ -67,6 +104,8 @@ pub enum DriveError {
     Timeout,
     /// Not available in this build or setup.
     Unsupported,
+    /// The configuration flash did not answer as expected.
+    Flash,
 }
 
 impl From<ServoError> for DriveError {
@@ -102,6 +141,27 @@ pub trait DriveOps {
     fn status(&mut self) -> DriveStatus;
     /// Counts the control code's guest instructions.
     fn bench(&mut self) -> Result<Bench, DriveError>;
+    /// The `k`-th fault of the history (oldest first) and the number of
+    /// faults recorded since boot.
+    fn fault_record(&mut self, _k: usize) -> Result<(Option<FaultRecord>, u32), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Makes a fault happen (`debug fault`), to test the drive's reaction.
+    fn inject(&mut self, _f: Injection) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Saves the running configuration to flash; returns the slot.
+    fn save_config(&mut self) -> Result<usize, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// The drive's configuration.
+    fn config(&mut self) -> Result<ServoConfig, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Replaces the configuration (`Servo::reconfigure`).
+    fn reconfigure(&mut self, _cfg: &ServoConfig) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
 }
 
 /// Writes the final `ERR` line of a failed drive command.
@@ -143,6 +203,14 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
                  is smaller than {min_nm:.4} Nm and has no settling time"
             ),
         ),
+        DriveError::Servo(ServoError::GatesOn) => write_err(
+            out,
+            ErrorCode::GatesOn,
+            format_args!("{cmd}: needs the gates off (`disable` first)"),
+        ),
+        DriveError::Servo(ServoError::BadConfig(e)) => {
+            write_err(out, ErrorCode::BadArgs, format_args!("{cmd}: {e}"))
+        }
         DriveError::Servo(ServoError::Bus(b)) => write_err(
             out,
             ErrorCode::BusError,
@@ -162,6 +230,11 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
             out,
             ErrorCode::Unsupported,
             format_args!("{cmd}: not available here"),
+        ),
+        DriveError::Flash => write_err(
+            out,
+            ErrorCode::FlashError,
+            format_args!("{cmd}: the configuration flash failed (nothing loaded or changed)"),
         ),
     }
 }
@@ -191,6 +264,18 @@ pub fn write_status<W: Write>(out: &mut W, s: &DriveStatus) -> fmt::Result {
     }
     if let Some(k) = s.sim_time_scale {
         write!(out, "sim_time_scale: {k:.2}\r\n")?;
+    }
+    if let Some(st) = &s.store {
+        write!(
+            out,
+            "config_flash: slot0 {} slot1 {}, running ",
+            st.slots[0].name(),
+            st.slots[1].name()
+        )?;
+        match st.loaded {
+            Some(k) => write!(out, "slot{k}\r\n")?,
+            None => out.write_str("defaults\r\n")?,
+        }
     }
     Ok(())
 }

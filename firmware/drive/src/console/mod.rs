@@ -18,7 +18,7 @@ pub use command::{
     execute, parse, write_parse_error, Action, Command, Context, ParseError, Spec, Status,
     COMMANDS, STALL_MAX_MS, STEP_WINDOW_DEFAULT_S, STEP_WINDOW_MAX_S,
 };
-pub use drive::{Bench, DriveError, DriveOps, DriveStatus, PlKind};
+pub use drive::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
 pub use editor::{LineEditor, LineError, LINE_MAX};
 
 /// Printed when the console is ready for a line.
@@ -51,6 +51,10 @@ pub enum ErrorCode {
     Timeout,
     /// Not available in this build or setup.
     Unsupported,
+    /// A change that needs the gates off, with them on.
+    GatesOn,
+    /// The configuration flash failed.
+    FlashError,
 }
 
 impl ErrorCode {
@@ -69,6 +73,8 @@ impl ErrorCode {
             ErrorCode::BusError => "bus-error",
             ErrorCode::Timeout => "timeout",
             ErrorCode::Unsupported => "unsupported",
+            ErrorCode::GatesOn => "gates-on",
+            ErrorCode::FlashError => "flash-error",
         }
     }
 }

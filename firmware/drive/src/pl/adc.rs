@@ -54,6 +54,10 @@ impl<B: RegisterBus> Adc<B> {
         AdcCtrl::write(&mut self.0, AdcCtrlValue::ZERO.with_enable(false))?;
         AdcCtrl::write(&mut self.0, AdcCtrlValue::ZERO.with_enable(true))
     }
+    /// Starts (`true`) or stops the conversions (`ADC_CTRL.ENABLE`).
+    pub fn set_enabled(&mut self, on: bool) -> Result<(), BusError> {
+        AdcCtrl::write(&mut self.0, AdcCtrlValue::ZERO.with_enable(on))
+    }
     /// Cycles between conversion starts, as stored.
     pub fn period(&mut self) -> Result<u32, BusError> {
         Ok(AdcPeriod::read(&mut self.0)?.value())

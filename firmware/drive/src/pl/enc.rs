@@ -46,6 +46,13 @@ impl<B: RegisterBus> Encoder<B> {
             window: EncWindow::read(&mut self.0)?.value(),
         })
     }
+    /// Counts per mechanical revolution (the PL clamps to 4..=65535).
+    pub fn set_cpr(&mut self, cpr: u32) -> Result<(), BusError> {
+        EncCpr::write(
+            &mut self.0,
+            crate::regs::enc::EncCprValue::ZERO.with_value(cpr),
+        )
+    }
 }
 
 #[cfg(test)]

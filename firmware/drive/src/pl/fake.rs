@@ -1,7 +1,8 @@
 //! A fake PL for driver tests: every register of the map with its reset
 //! value and the table's write rules (`Register::apply_write`), plus a log of
-//! the writes. It has no behaviour beyond storage; tests poke read-only
-//! registers through [`FakePl::set`] to play the hardware.
+//! the writes. Its one behaviour: `ADC_COUNT` advances at every read while
+//! `ADC_CTRL.ENABLE` is set (an ADC that keeps converting); otherwise tests
+//! poke read-only registers through [`FakePl::set`] to play the hardware.
 use crate::bus::{BusError, RegisterBus};
 use crate::regmap::{self, RegError};
 use std::vec::Vec;
@@ -36,6 +37,10 @@ impl FakePl {
 
 impl RegisterBus for FakePl {
     fn read(&mut self, addr: usize) -> Result<u32, BusError> {
+        let count = regmap::ADC.addr(&regmap::ADC_COUNT);
+        if addr == count && self.get(regmap::ADC.addr(&regmap::ADC_CTRL)) & 1 != 0 {
+            self.set(count, self.get(count).wrapping_add(1));
+        }
         self.regs
             .iter()
             .find(|(a, _)| *a == addr)

@@ -1,20 +1,61 @@
 //! Fault block: latched faults, over-current limit, watchdog timeout.
 use crate::bus::{BusError, RegisterBus};
-use crate::regs::fault::{FaultStatus, FaultStatusValue, WdgTimeout, WdgTimeoutValue};
+use crate::regs::fault::{
+    FaultStatus, FaultStatusValue, OcLimit, OcLimitValue, WdgTimeout, WdgTimeoutValue,
+};
 
-/// Latched fault bits (`FAULT_STATUS`).
+/// Latched faults of the drive: bits 0..=2 are `FAULT_STATUS` (the PL
+/// turns the gates off itself), bits 3.. the faults the PS detects (the
+/// drive turns the gates off in the control step that sees them). The
+/// stable fault code of bit `n` is `n + 1`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Faults(pub u32);
 
 impl Faults {
-    /// Bit names, by bit position (the register map's field names).
-    pub const NAMES: [&'static str; 3] = ["OVERCURRENT", "EXTERNAL", "WATCHDOG"];
+    /// Bit names, by bit position (the register map's field names first).
+    pub const NAMES: [&'static str; 6] = [
+        "OVERCURRENT",
+        "EXTERNAL",
+        "WATCHDOG",
+        "ENCODER_LOSS",
+        "ADC_STUCK",
+        "CONTROL_OVERRUN",
+    ];
     /// The watchdog bit.
     pub const WATCHDOG: u32 = FaultStatusValue::ZERO.with_watchdog(true).bits();
-    /// The latched flags, by field, in bit order (as [`Self::NAMES`]).
-    fn flags(self) -> [bool; 3] {
-        let v = FaultStatusValue::from_bits(self.0);
-        [v.overcurrent(), v.external(), v.watchdog()]
+    /// The bits of `FAULT_STATUS`.
+    pub const PL_MASK: u32 = 0b111;
+    /// The encoder position jumped further in one control period than the
+    /// motor can turn (noise, lost counts, a broken line).
+    pub const ENCODER_LOSS: u32 = 1 << 3;
+    /// A control period without a new ADC result.
+    pub const ADC_STUCK: u32 = 1 << 4;
+    /// Two or more control periods in a row without a control step.
+    pub const CONTROL_OVERRUN: u32 = 1 << 5;
+    /// The latched flags, in bit order (as [`Self::NAMES`]).
+    fn flags(self) -> [bool; 6] {
+        let v = FaultStatusValue::from_bits(self.0 & Self::PL_MASK);
+        let b = |m: u32| self.0 & m != 0;
+        [
+            v.overcurrent(),
+            v.external(),
+            v.watchdog(),
+            b(Self::ENCODER_LOSS),
+            b(Self::ADC_STUCK),
+            b(Self::CONTROL_OVERRUN),
+        ]
+    }
+    /// Stable code of the fault `bit` (0-based): `bit + 1`.
+    pub const fn code(bit: usize) -> u32 {
+        bit as u32 + 1
+    }
+    /// The bits set, in bit order.
+    pub fn bits(self) -> impl Iterator<Item = usize> {
+        self.flags()
+            .into_iter()
+            .enumerate()
+            .filter(|(_, set)| *set)
+            .map(|(i, _)| i)
     }
     /// No fault latched.
     pub fn none(self) -> bool {
@@ -49,7 +90,9 @@ pub struct Fault<B>(pub B);
 impl<B: RegisterBus> Fault<B> {
     /// Latched faults.
     pub fn latched(&mut self) -> Result<Faults, BusError> {
-        Ok(Faults(FaultStatus::read(&mut self.0)?.bits()))
+        Ok(Faults(
+            FaultStatus::read(&mut self.0)?.bits() & Faults::PL_MASK,
+        ))
     }
     /// Clears every latched fault whose condition is gone (write 1 to clear);
     /// returns what is still latched. The gates stay off until `GATE_EN`
@@ -67,6 +110,10 @@ impl<B: RegisterBus> Fault<B> {
     /// Watchdog timeout, PL clock cycles (the PL clamps to >= 1000).
     pub fn set_watchdog_timeout(&mut self, cycles: u32) -> Result<(), BusError> {
         WdgTimeout::write(&mut self.0, WdgTimeoutValue::ZERO.with_value(cycles))
+    }
+    /// Over-current trip level, ADC counts of a raw sample's magnitude.
+    pub fn set_oc_limit(&mut self, counts: u32) -> Result<(), BusError> {
+        OcLimit::write(&mut self.0, OcLimitValue::ZERO.with_value(counts))
     }
 }
 
@@ -87,6 +134,13 @@ mod tests {
         assert_eq!(s(Faults(0)), "none");
         assert_eq!(s(Faults(4)), "WATCHDOG");
         assert_eq!(s(Faults(5)), "OVERCURRENT WATCHDOG");
+        assert_eq!(
+            s(Faults(Faults::ADC_STUCK | Faults::CONTROL_OVERRUN | 2)),
+            "EXTERNAL ADC_STUCK CONTROL_OVERRUN"
+        );
+        assert_eq!(s(Faults(Faults::ENCODER_LOSS)), "ENCODER_LOSS");
+        let codes: std::vec::Vec<u32> = Faults(0b11_1111).bits().map(Faults::code).collect();
+        assert_eq!(codes, [1, 2, 3, 4, 5, 6]);
     }
 
     #[test]

@@ -32,8 +32,18 @@ use crate::pmsm::sim::{Actuation, Controller, Measurement};
 use crate::regmap::{self, seq_state};
 use crate::validate::ParamError;
 
+pub mod faults;
 mod step;
+use faults::{FaultHistory, FaultRecord, Sample, Snapshot};
 pub use step::{StepRecorder, StepResult, STEP_SAMPLES_MAX};
+
+/// Control periods without a new ADC result that latch `ADC_STUCK`: one
+/// (a control period holds one averaged result in MPDTC and off, four in
+/// FOC, `Config::check` keeps it so).
+pub const ADC_STALE_STEPS: u32 = 1;
+/// Control periods missed in a row (between two control steps) that latch
+/// `CONTROL_OVERRUN`: one late step is tolerated, the PL holds its outputs.
+pub const OVERRUN_PERIODS: u64 = 2;
 
 /// Configuration of the drive (defaults: the paper's setup).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -57,6 +67,15 @@ pub struct ServoConfig {
     pub watchdog_cycles: u32,
     /// `MPDTC_ALIGN_TIME`, PL clock cycles.
     pub align_cycles: u32,
+    /// `ENC_CPR`, encoder counts per mechanical revolution.
+    pub enc_cpr: u32,
+    /// Over-current trip (`OC_LIMIT`, converted with `adc`), A.
+    pub current_limit_a: f64,
+    /// FOC tuning; its period and measurement lag follow from the PL
+    /// timing above ([`Servo::new`] sets them).
+    pub foc: FocParams,
+    /// MPDTC tuning; its control period follows from `adc_period_cycles`.
+    pub mpdtc: MpdtcParams,
     /// Smallest `step` size, N m: its 10 % settling band must stand clear
     /// of the torque estimate's resolution (one ADC count, 10 mA, is about
     /// 1 mN m of q-axis torque) and ripple; a step of zero has no settling
@@ -81,6 +100,11 @@ impl Default for ServoConfig {
             watchdog_cycles: 200_000,
             // 2 ms of rotor alignment before the MPDTC's first decision.
             align_cycles: 200_000,
+            enc_cpr: 4096,
+            // Below the 16 A full scale of the simulated PL's ADC.
+            current_limit_a: 14.0,
+            foc: FocParams::default(),
+            mpdtc: MpdtcParams::default(),
             // Band 5 mN m: about 5 ADC counts of i_q.
             step_min_nm: 0.05,
         }
@@ -124,6 +148,10 @@ pub enum ServoError {
     },
     /// The PL answered with an error.
     Bus(BusError),
+    /// A configuration change that needs the gates off, with them on.
+    GatesOn,
+    /// A configuration the controllers refuse.
+    BadConfig(ParamError),
 }
 
 impl From<BusError> for ServoError {
@@ -168,6 +196,18 @@ pub struct Servo {
     /// Gate transitions per leg (cumulative, from the commanded switching).
     transitions: [u64; 3],
     rec: StepRecorder,
+    /// Faults the PS detected, latched ([`Faults`] bits 3..).
+    ps_faults: u32,
+    /// Faults (PL and PS) already in the history while latched.
+    seen: u32,
+    history: FaultHistory,
+    snapshot: Snapshot,
+    /// Drive time: control periods run and missed, s.
+    time_s: f64,
+    last_adc_count: Option<u32>,
+    adc_stale: u32,
+    last_pos: Option<u32>,
+    missed: u64,
 }
 
 impl Servo {
@@ -183,11 +223,11 @@ impl Servo {
         let foc_params = FocParams {
             period_s: period_s(2 * cfg.foc_half_period_cycles),
             measurement_lag_s: foc_measurement_lag_s(cfg),
-            ..FocParams::default()
+            ..cfg.foc
         };
         let mp = MpdtcParams {
             control_period_s: period_s(4 * cfg.adc_period_cycles),
-            ..MpdtcParams::default()
+            ..cfg.mpdtc
         };
         let mpdtc = MpdtcConfig::new(cfg.motor, mp)?;
         Ok(Self {
@@ -208,6 +248,15 @@ impl Servo {
             measured: Measured::default(),
             transitions: [0; 3],
             rec: StepRecorder::new(),
+            ps_faults: 0,
+            seen: 0,
+            history: FaultHistory::default(),
+            snapshot: Snapshot::default(),
+            time_s: 0.0,
+            last_adc_count: None,
+            adc_stale: 0,
+            last_pos: None,
+            missed: 0,
         })
     }
 
@@ -216,7 +265,18 @@ impl Servo {
     pub fn init<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
         Pwm(&mut *bus).set_gates(false)?;
         Top(&mut *bus).set_mode(Mode::Off)?;
+        self.write_pl_config(bus)?;
+        Top(&mut *bus).heartbeat(0)
+    }
+
+    /// Writes the configuration's PL registers (gates off, core held).
+    fn write_pl_config<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
         Adc(&mut *bus).set_period(self.cfg.adc_period_cycles)?;
+        Encoder(&mut *bus).set_cpr(self.cfg.enc_cpr)?;
+        // `Config::check` refuses a limit beyond the ADC's range; any other
+        // `ServoConfig` gets the largest trip level.
+        let oc = crate::config::oc_limit_counts(&self.cfg).unwrap_or(2047);
+        Fault(&mut *bus).set_oc_limit(oc)?;
         let mut pwm = Pwm(&mut *bus);
         pwm.set_dead_time(self.cfg.dead_time_cycles)?;
         pwm.set_half_period(self.cfg.foc_half_period_cycles)?;
@@ -225,8 +285,40 @@ impl Servo {
         let mut m = Mpdtc(&mut *bus);
         m.set_ctrl(false, true)?;
         m.load_params(&self.mpdtc_regs)?;
-        m.set_align_time(self.cfg.align_cycles)?;
-        Top(&mut *bus).heartbeat(0)
+        m.set_align_time(self.cfg.align_cycles)
+    }
+
+    /// Replaces the configuration. With the gates on only a change of the
+    /// torque limit is accepted (and not below the present reference);
+    /// with them off the controllers are rebuilt and the PL registers
+    /// written, the mode stays. On an error nothing changed.
+    pub fn reconfigure<B: RegisterBus>(
+        &mut self,
+        bus: &mut B,
+        cfg: &ServoConfig,
+    ) -> Result<(), ServoError> {
+        let next = Servo::new(cfg).map_err(ServoError::BadConfig)?;
+        if libm::fabs(self.torque_ref_nm) > cfg.torque_limit_nm {
+            return Err(ServoError::TorqueOutOfRange(self.torque_ref_nm));
+        }
+        if self.gates {
+            let live_only = ServoConfig {
+                torque_limit_nm: cfg.torque_limit_nm,
+                ..self.cfg
+            };
+            if live_only != *cfg {
+                return Err(ServoError::GatesOn);
+            }
+            self.cfg.torque_limit_nm = cfg.torque_limit_nm;
+            return Ok(());
+        }
+        self.cfg = next.cfg;
+        self.foc_params = next.foc_params;
+        self.foc = next.foc;
+        self.mpdtc = next.mpdtc;
+        self.mpdtc_regs = next.mpdtc_regs;
+        self.write_pl_config(bus)?;
+        Ok(())
     }
 
     /// The configuration.
@@ -270,6 +362,9 @@ impl Servo {
         self.gates_off(bus)?;
         Top(&mut *bus).set_mode(m)?;
         self.mode = m;
+        // The next boundary may come sooner than a period of the new mode
+        // (without a new ADC result in between).
+        self.note_skipped();
         Ok(())
     }
 
@@ -278,7 +373,7 @@ impl Servo {
         if self.mode == Mode::Off {
             return Err(ServoError::ModeOff);
         }
-        let f = Fault(&mut *bus).latched()?;
+        let f = self.faults(bus)?;
         if !f.none() {
             return Err(ServoError::FaultLatched(f));
         }
@@ -336,16 +431,117 @@ impl Servo {
         Ok(())
     }
 
-    /// Latched faults.
+    /// Latched faults: the PL's and the PS's.
     pub fn faults<B: RegisterBus>(&mut self, bus: &mut B) -> Result<Faults, BusError> {
-        Fault(bus).latched()
+        Ok(Faults(Fault(bus).latched()?.0 | self.ps_faults))
     }
 
     /// Clears the latched faults whose condition is gone; the gates stay
-    /// off until `enable`. Returns what is still latched.
+    /// off until `enable`. Returns what is still latched. The watchdog is
+    /// fed and the ADC started first (their conditions are the drive's to
+    /// end); the PS's checks start afresh.
     pub fn clear_faults<B: RegisterBus>(&mut self, bus: &mut B) -> Result<Faults, ServoError> {
         self.gates_off(bus)?;
-        Ok(Fault(&mut *bus).clear()?)
+        self.beat = self.beat.wrapping_add(1);
+        Top(&mut *bus).heartbeat(self.beat)?;
+        Adc(&mut *bus).set_enabled(true)?;
+        let left = Fault(&mut *bus).clear()?;
+        self.ps_faults = 0;
+        self.seen = left.0;
+        self.note_skipped();
+        Ok(left)
+    }
+
+    /// The fault history, oldest first.
+    pub fn fault_history(&self) -> &FaultHistory {
+        &self.history
+    }
+
+    /// Drive time: control periods run and missed, s.
+    pub fn time_s(&self) -> f64 {
+        self.time_s
+    }
+
+    /// The control steps were skipped for a while (`debug stall`): the
+    /// period-to-period checks start afresh.
+    pub fn note_skipped(&mut self) {
+        self.last_adc_count = None;
+        self.adc_stale = 0;
+        self.last_pos = None;
+    }
+
+    /// The PL gave no control-period boundary for `periods` control periods
+    /// (the MPDTC period and mode off are paced by the ADC's results): after
+    /// [`ADC_STALE_STEPS`] of them the ADC is stuck.
+    pub fn note_no_boundary<B: RegisterBus>(
+        &mut self,
+        bus: &mut B,
+        periods: u32,
+    ) -> Result<(), BusError> {
+        self.time_s += f64::from(periods) * self.control_period_s();
+        if self.mode == Mode::Foc {
+            return Ok(());
+        }
+        self.adc_stale += periods;
+        if self.adc_stale >= ADC_STALE_STEPS {
+            self.latch_ps(bus, Faults::ADC_STUCK)?;
+        }
+        Ok(())
+    }
+
+    /// Records the faults in `latched` not yet in the history.
+    fn record_new(&mut self, latched: u32) {
+        for bit in Faults(latched & !self.seen).bits() {
+            self.history.push(FaultRecord {
+                bit,
+                time_s: self.time_s,
+                snapshot: self.snapshot,
+            });
+        }
+        self.seen = latched;
+    }
+
+    /// Latches PS-detected faults: recorded, gates off at once.
+    fn latch_ps<B: RegisterBus>(&mut self, bus: &mut B, bits: u32) -> Result<(), BusError> {
+        self.ps_faults |= bits;
+        let pl = Fault(&mut *bus).latched()?.0;
+        self.record_new(pl | self.ps_faults);
+        self.gates_off(bus).map_err(|e| match e {
+            ServoError::Bus(b) => b,
+            _ => BusError::SlaveError,
+        })
+    }
+
+    /// The PS's checks of one control period: no new ADC result, an
+    /// impossible encoder jump, control periods missed. Returns the faults
+    /// they found.
+    fn ps_checks(&mut self, adc_count: u32, pos: u32, cpr: u32) -> u32 {
+        let mut f = 0;
+        if self.last_adc_count == Some(adc_count) {
+            self.adc_stale += 1;
+        } else {
+            self.adc_stale = 0;
+        }
+        self.last_adc_count = Some(adc_count);
+        if self.adc_stale >= ADC_STALE_STEPS {
+            f |= Faults::ADC_STUCK;
+        }
+        // The shortest way round from the last position: more than an
+        // eighth of a turn in one control period (> 30000 rpm at 16 kHz)
+        // is no motor's motion.
+        if let Some(last) = self.last_pos {
+            let cpr = cpr.max(1);
+            let d = (pos + cpr - last % cpr) % cpr;
+            if d.min(cpr - d) > cpr / 8 {
+                f |= Faults::ENCODER_LOSS;
+            }
+        }
+        self.last_pos = Some(pos);
+        if self.missed >= OVERRUN_PERIODS {
+            f |= Faults::CONTROL_OVERRUN;
+        }
+        self.missed = 0;
+        f
     }
 
     /// Arms a step to `nm` recorded over `window_s` (at most
@@ -389,6 +585,8 @@ impl Servo {
     /// Notes `n` control periods that passed without a control step.
     pub fn note_overruns(&mut self, n: u64) {
         self.overruns += n;
+        self.missed += n;
+        self.time_s += n as f64 * self.control_period_s();
     }
 
     /// One control period: heartbeat, measurement, then the active
@@ -442,6 +640,23 @@ impl Servo {
             torque_nm: self.cfg.motor.torque_nm(i_d, i_q),
             omega_e_rad_s: m.omega_e_rad_s,
         };
+        self.time_s += self.control_period_s();
+        self.snapshot.push(Sample {
+            measured: self.measured,
+            torque_ref_nm: self.torque_ref_nm,
+        });
+        let adc_count = Adc(&mut *bus).count()?;
+        let ps = self.ps_checks(adc_count, enc.pos, enc.cpr);
+        let pl = Fault(&mut *bus).latched()?.0;
+        if ps & !self.ps_faults != 0 {
+            self.latch_ps(bus, ps)?;
+            running = false;
+        } else if pl & !self.seen != 0 {
+            self.record_new(pl | self.ps_faults);
+        } else {
+            // Cleared by hand or by the PL: forget them.
+            self.seen &= pl | self.ps_faults;
+        }
         if running {
             if let Some(r) = self
                 .rec
@@ -523,6 +738,8 @@ fn period_s(cycles: u32) -> f64 {
     f64::from(cycles) / f64::from(regmap::PL_CLOCK_HZ)
 }
 
+#[cfg(test)]
+mod fault_tests;
 #[cfg(test)]
 mod sim_tests;
 #[cfg(test)]

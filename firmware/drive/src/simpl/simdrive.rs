@@ -299,6 +299,12 @@ impl<P: PlModel> SimDrive<P> {
         self.plant.set_load_torque_nm(load_nm)
     }
 
+    /// Drives the external fault input (active low at the pin): `true`
+    /// asserts the fault from the next cycle on.
+    pub fn set_external_fault(&mut self, asserted: bool) {
+        self.pl.pins_mut().fault_ext_n = !asserted;
+    }
+
     /// Plant truth (as of the end of the last [`Self::advance`]).
     pub fn truth(&self) -> Truth {
         let st = self.plant.state();

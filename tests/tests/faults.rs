@@ -1,0 +1,191 @@
+//! Faults under QEMU: each PS- and PL-detected fault latched with its name,
+//! the gates off, `fault history` with drive time, code and the samples
+//! before, `fault clear`, and the history's length.
+use drivectl::link::{Final, Reply, Session};
+use std::time::{Duration, Instant};
+use system_tests::{boot, cmd, field};
+
+fn assert_ok(r: &Reply) {
+    assert!(r.is_ok(), "{r:?}");
+}
+
+fn assert_err(r: &Reply, want_code: &str) {
+    match &r.fin {
+        Final::Err { code, .. } => assert_eq!(code, want_code, "{r:?}"),
+        Final::Ok => panic!("expected ERR {want_code}, got {r:?}"),
+    }
+}
+
+/// The `fault:` line of `status` once it names `name` (the control step
+/// that sees a PS fault runs a few control periods after the command).
+fn wait_fault(s: &mut Session, name: &str) -> Reply {
+    let end = Instant::now() + Duration::from_secs(10);
+    loop {
+        let st = cmd(s, "status");
+        let line = st.lines.iter().find(|l| l.starts_with("fault: ")).unwrap();
+        if line.split_whitespace().any(|w| w == name) {
+            return st;
+        }
+        assert!(Instant::now() < end, "no {name}: {st:?}");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+/// `fault history` lines (without the summary line) and the summary.
+fn history(s: &mut Session) -> (Vec<String>, String) {
+    let r = cmd(s, "fault history");
+    assert_ok(&r);
+    let (last, recs) = r.lines.split_last().unwrap();
+    (recs.to_vec(), last.clone())
+}
+
+/// Injects `what` with the gates on in `mode`; the fault `name` (code
+/// `code`) latches, the gates are off, the history's newest entry names it
+/// with a snapshot, and `fault clear` lets `enable` work again.
+fn fault_cycle(s: &mut Session, mode: &str, what: &str, name: &str, code: u32) {
+    assert_ok(&cmd(s, &format!("mode {mode}")));
+    assert_ok(&cmd(s, "enable"));
+    assert_ok(&cmd(s, "torque 0.2"));
+    // Let the control loop run a few periods first (the FOC's first step
+    // restarts the ADC to sync it to the PWM).
+    let periods = |s: &mut Session| -> u64 {
+        field(&cmd(s, "status"), "periods")
+            .unwrap()
+            .parse()
+            .unwrap()
+    };
+    let p0 = periods(s);
+    let end = Instant::now() + Duration::from_secs(10);
+    while periods(s) < p0 + 10 {
+        assert!(Instant::now() < end);
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    let (before, _) = history(s);
+    let r = cmd(s, &format!("debug fault {what}"));
+    assert_eq!(r.lines, ["injected"], "{r:?}");
+    let st = wait_fault(s, name);
+    assert_eq!(field(&st, "gates"), Some("off"), "{st:?}");
+    assert_err(&cmd(s, "enable"), "fault-latched");
+    // The PL latches EXTERNAL itself; the history entry is the control
+    // step's, at the next boundary.
+    let end = Instant::now() + Duration::from_secs(10);
+    let recs = loop {
+        let (recs, _) = history(s);
+        if recs.len() > before.len() {
+            break recs;
+        }
+        assert!(Instant::now() < end, "{recs:?}");
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let rec = recs
+        .iter()
+        .rev()
+        .find(|l| l.contains(&format!(" code {code} {name}: ")))
+        .unwrap_or_else(|| panic!("{name} not in {recs:?}"));
+    // `#<n> t=<s> s code <c> <NAME>: 8 samples, i_d .. A, i_q .. A, ...`
+    let t: f64 = rec
+        .split_once("t=")
+        .and_then(|(_, r)| r.split_whitespace().next())
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("{rec}"));
+    assert!(t > 0.0, "{rec}");
+    assert!(rec.contains(": 8 samples, i_d "), "{rec}");
+    assert!(
+        rec.contains(" A, i_q ") && rec.contains(" Nm (ref "),
+        "{rec}"
+    );
+    let r = cmd(s, "fault clear");
+    assert_ok(&r);
+    assert_eq!(r.lines[0], "fault: none", "{r:?}");
+    assert_ok(&cmd(s, "enable"));
+    let st = cmd(s, "status");
+    assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+    assert_eq!(field(&st, "gates"), Some("on"), "{st:?}");
+    assert_ok(&cmd(s, "disable"));
+}
+
+#[test]
+fn external_fault_in_foc_and_mpdtc() {
+    let mut s = boot();
+    let (recs, sum) = history(&mut s);
+    assert!(recs.is_empty(), "{recs:?}");
+    assert_eq!(sum, "history: 0 shown, 0 since boot");
+    fault_cycle(&mut s, "foc", "external", "EXTERNAL", 2);
+    fault_cycle(&mut s, "mpdtc", "external", "EXTERNAL", 2);
+}
+
+/// The ADC stops: in FOC the control step sees no new result; in MPDTC the
+/// control period itself (one averaged result) stops coming.
+#[test]
+fn adc_stuck_in_foc_and_mpdtc() {
+    let mut s = boot();
+    fault_cycle(&mut s, "foc", "adc-stuck", "ADC_STUCK", 5);
+    fault_cycle(&mut s, "mpdtc", "adc-stuck", "ADC_STUCK", 5);
+}
+
+#[test]
+fn control_overrun() {
+    let mut s = boot();
+    fault_cycle(&mut s, "foc", "overrun", "CONTROL_OVERRUN", 6);
+    let st = cmd(&mut s, "status");
+    let overruns: u64 = field(&st, "overruns").unwrap().parse().unwrap();
+    assert!(overruns >= 2, "{st:?}");
+}
+
+#[test]
+fn bad_fault_arguments_change_nothing() {
+    let mut s = boot();
+    for bad in [
+        "fault history 1",
+        "fault hist",
+        "fault clear now",
+        "debug fault",
+        "debug fault fire",
+        "debug fault external 1",
+    ] {
+        assert_err(&cmd(&mut s, bad), "bad-args");
+    }
+    let st = cmd(&mut s, "status");
+    assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+    assert_eq!(history(&mut s).1, "history: 0 shown, 0 since boot");
+}
+
+/// 18 faults: the history shows the last 16, oldest first, and counts all.
+#[test]
+fn history_keeps_the_last_16() {
+    let mut s = boot();
+    assert_ok(&cmd(&mut s, "mode foc"));
+    for k in 0..18 {
+        let r = cmd(&mut s, "debug fault external");
+        assert_ok(&r);
+        wait_fault(&mut s, "EXTERNAL");
+        // The control step records it at the next boundary.
+        let end = Instant::now() + Duration::from_secs(10);
+        while history(&mut s).1
+            != format!("history: {} shown, {} since boot", (k + 1).min(16), k + 1)
+        {
+            assert!(Instant::now() < end, "{:?}", history(&mut s));
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        assert_ok(&cmd(&mut s, "fault clear"));
+    }
+    let (recs, sum) = history(&mut s);
+    assert_eq!(sum, "history: 16 shown, 18 since boot");
+    assert_eq!(recs.len(), 16);
+    let times: Vec<f64> = recs
+        .iter()
+        .enumerate()
+        .map(|(i, l)| {
+            assert!(l.starts_with(&format!("#{} t=", i + 1)), "{l}");
+            l.split_once("t=")
+                .unwrap()
+                .1
+                .split_whitespace()
+                .next()
+                .unwrap()
+                .parse()
+                .unwrap()
+        })
+        .collect();
+    assert!(times.windows(2).all(|w| w[0] < w[1]), "{times:?}");
+}
