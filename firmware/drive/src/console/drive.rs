@@ -1,9 +1,10 @@
 //! The drive commands' side of the console: what the firmware provides
 //! ([`DriveOps`]) and how replies and errors are written.
 use super::{write_err, ErrorCode};
+use crate::pl::capture::{CapSample, CapStatus, Trigger};
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
-use crate::servo::{Measured, ServoError, StepResult};
+use crate::servo::{Measured, ServoError, StepResult, SweepPoint};
 use core::fmt::{self, Write};
 
 /// What is behind the drivers.
@@ -99,6 +100,34 @@ pub trait DriveOps {
     fn status(&mut self) -> DriveStatus;
     /// Counts the control code's guest instructions.
     fn bench(&mut self) -> Result<Bench, DriveError>;
+    /// Arms the capture buffer at the control rate with `pre` samples
+    /// before the trigger.
+    fn capture_arm(&mut self, _t: Trigger, _pre: u32) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Manual capture trigger.
+    fn capture_trigger(&mut self) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Capture state.
+    fn capture_status(&mut self) -> Result<CapStatus, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Sample `i` of the record.
+    fn capture_sample(&mut self, _i: u32) -> Result<CapSample, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Time between capture samples in the active mode, s.
+    fn capture_period_s(&mut self) -> f64 {
+        0.0
+    }
+    /// One frequency of `sweep`: the sine reference at `f_hz` (kept
+    /// running), a capture of it, gain and phase.
+    fn sweep_point(&mut self, _f_hz: f64, _amp_nm: f64) -> Result<SweepPoint, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Ends a sweep: the sine stops, the reference returns to 0 N m.
+    fn sweep_end(&mut self) {}
 }
 
 /// Writes the final `ERR` line of a failed drive command.
@@ -139,6 +168,11 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
                 "{cmd}: the reference is already {from_nm:.4} Nm; a step to {to_nm:.4} Nm \
                  is smaller than {min_nm:.4} Nm and has no settling time"
             ),
+        ),
+        DriveError::Servo(ServoError::BadFrequency(f)) => write_err(
+            out,
+            ErrorCode::BadArgs,
+            format_args!("{cmd}: {f} Hz is outside (0, control rate / 4]"),
         ),
         DriveError::Servo(ServoError::Bus(b)) => write_err(
             out,

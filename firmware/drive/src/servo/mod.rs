@@ -17,6 +17,7 @@
 //!   ADC results.
 use crate::bus::{BusError, RegisterBus};
 use crate::pl::adc::{Adc, AdcScale};
+use crate::pl::capture::Capture;
 use crate::pl::enc::Encoder;
 use crate::pl::fault::{Fault, Faults};
 use crate::pl::mpdtc::Mpdtc;
@@ -34,6 +35,8 @@ use crate::validate::ParamError;
 
 mod step;
 pub use step::{StepRecorder, StepResult, STEP_SAMPLES_MAX};
+mod sweep;
+pub use sweep::{bandwidth_hz, tone_response, Sine, SweepPoint};
 
 /// Configuration of the drive (defaults: the paper's setup).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -124,6 +127,8 @@ pub enum ServoError {
     },
     /// The PL answered with an error.
     Bus(BusError),
+    /// A sine frequency outside (0, control rate / 4], Hz.
+    BadFrequency(f64),
 }
 
 impl From<BusError> for ServoError {
@@ -168,6 +173,8 @@ pub struct Servo {
     /// Gate transitions per leg (cumulative, from the commanded switching).
     transitions: [u64; 3],
     rec: StepRecorder,
+    /// Sine torque reference (`sweep`), while the gates are on.
+    sine: Option<Sine>,
 }
 
 impl Servo {
@@ -208,6 +215,7 @@ impl Servo {
             measured: Measured::default(),
             transitions: [0; 3],
             rec: StepRecorder::new(),
+            sine: None,
         })
     }
 
@@ -311,6 +319,7 @@ impl Servo {
         }
         self.gates = false;
         self.rec.cancel();
+        self.sine = None;
         Pwm(&mut *bus).set_gates(false)?;
         Mpdtc(&mut *bus).set_ctrl(false, true)?;
         Ok(())
@@ -449,12 +458,19 @@ impl Servo {
             {
                 self.torque_ref_nm = r;
             }
+            if let Some(sine) = &mut self.sine {
+                self.torque_ref_nm = sine.next_nm();
+            }
         }
         match (self.mode, running) {
             (Mode::Foc, true) => self.foc_step(bus, &m)?,
             (Mode::Mpdtc, true) => self.mpdtc_step(bus, &m)?,
             _ => {}
         }
+        // The capture channels of this period (after the controller, so
+        // that the MPDTC core's inputs go out first).
+        let me = self.measured;
+        Capture(&mut *bus).write_channels(me.i_d_a, me.i_q_a, me.torque_nm, self.torque_ref_nm)?;
         Ok(())
     }
 
