@@ -204,6 +204,9 @@ fn wait_and_dump(s: &mut Session, timeout_s: f64, quiet: bool) -> Result<Vec<Row
     pb.set_message("capture: reading the record");
     let rows = parse_dump(&ok(s, "capture dump", Duration::from_secs(120))?)?;
     pb.finish_and_clear();
+    if rows.len() < 2 {
+        bail!("the record has {} samples", rows.len());
+    }
     Ok(rows)
 }
 
@@ -229,8 +232,16 @@ fn range(v: impl Iterator<Item = f64> + Clone) -> (f64, f64) {
     (lo - pad, hi + pad)
 }
 
-/// Torque and reference (top), i_d and i_q (bottom) against time.
-fn plot_record(path: &Path, title: &str, rows: &[Row]) -> Result<()> {
+/// Torque and reference (top), i_d and i_q (bottom) against time, up to
+/// `until_ms` after the trigger (`None`: the whole record).
+fn plot_record(path: &Path, title: &str, rows: &[Row], until_ms: Option<f64>) -> Result<()> {
+    let n = rows
+        .iter()
+        .take_while(|r| until_ms.is_none_or(|u| r.t_ms <= u))
+        .count()
+        .max(2)
+        .min(rows.len());
+    let rows = &rows[..n];
     let root = SVGBackend::new(path, (900, 700)).into_drawing_area();
     root.fill(&WHITE).map_err(err)?;
     let (top, bottom) = root.split_vertically(380);
@@ -352,13 +363,18 @@ pub fn step(a: StepArgs) -> Result<()> {
     );
     write_csv(&csv, &rows)?;
     let settling_ms = field(&r, "settling_time").and_then(|v| v.parse().ok());
+    let on = if a.common.target.port.is_some() {
+        "board"
+    } else {
+        "QEMU, simulated PL"
+    };
     let title = format!(
-        "{} torque step 0 -> {} Nm on the drive (QEMU, simulated PL): PL capture, {} us per sample",
+        "{} torque step 0 -> {} Nm ({on}): PL capture, {} us per sample",
         a.mode.name().to_uppercase(),
         a.to,
         ts_us
     );
-    plot_record(&svg, &title, &rows)?;
+    plot_record(&svg, &title, &rows, Some(3.0))?;
     let rep = StepReport {
         mode: a.mode.name(),
         to_nm: a.to,
@@ -577,7 +593,7 @@ pub fn capture(a: CaptureArgs) -> Result<()> {
         a.common.out.join("capture.svg"),
     );
     write_csv(&csv, &rows)?;
-    plot_record(&svg, &format!("PL capture, trigger {}", a.trigger), &rows)?;
+    plot_record(&svg, &format!("PL capture, trigger {}", a.trigger), &rows, None)?;
     let rep = CaptureReport {
         trigger: a.trigger.clone(),
         samples: rows.len(),
