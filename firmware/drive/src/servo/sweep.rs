@@ -47,7 +47,8 @@ pub fn tone_response(reference: &[f64], out: &[f64], f_hz: f64, ts_s: f64) -> Op
     let len = reference.len().min(out.len());
     let per_period = 1.0 / (f_hz * ts_s);
     let periods = libm::floor(len as f64 / per_period);
-    if !(periods >= 1.0) {
+    // NaN (a non-finite frequency) fails too.
+    if periods.is_nan() || periods < 1.0 {
         return None;
     }
     let n = (libm::round(periods * per_period) as usize).min(len);
@@ -64,7 +65,7 @@ pub fn tone_response(reference: &[f64], out: &[f64], f_hz: f64, ts_s: f64) -> Op
         yi -= (o[k] - mo) * s;
     }
     let mag_x = libm::hypot(xr, xi);
-    if !(mag_x > 0.0) {
+    if mag_x.is_nan() || mag_x <= 0.0 {
         return None;
     }
     let gain = libm::hypot(yr, yi) / mag_x;
@@ -153,7 +154,7 @@ impl Servo {
         amp_nm: f64,
     ) -> Result<(), ServoError> {
         let amp = self.check_torque(amp_nm)?;
-        if !(amp > 0.0) {
+        if amp <= 0.0 {
             return Err(ServoError::TorqueOutOfRange(amp_nm));
         }
         if !(f_hz > 0.0 && f_hz <= 0.25 * self.control_rate_hz()) {
