@@ -80,7 +80,7 @@ pub const COMMANDS: &[Spec] = &[
     },
     Spec {
         name: "capture",
-        args: "arm <trigger> [pre_samples]|trigger|status|dump",
+        args: "arm <trigger> [<pre_samples>]|trigger|status|dump",
         help: "PL capture buffer at the control rate (1024 samples: i_d, i_q [A], torque, \
                torque_ref [Nm], switching state, ADC_IA): `arm` with trigger manual, step \
                (reference step >= 0.05 Nm), fault, or <channel>>x / <channel><x (channel i_d, \
@@ -89,7 +89,7 @@ pub const COMMANDS: &[Spec] = &[
     },
     Spec {
         name: "sweep",
-        args: "<f_start_hz> <f_stop_hz> <amplitude_nm> [points]",
+        args: "<f_start_hz> <f_stop_hz> <amplitude_nm> [<points>]",
         help: "frequency response of the torque loop: a sine torque reference per frequency \
                (log spaced, default 6 points, 2..=32), gain [dB] and phase [deg] of the \
                captured torque against the captured reference, one `f_hz gain_db phase_deg` \
@@ -825,6 +825,12 @@ mod tests {
                 .replace("<Nm>", "0.1")
                 .replace("<window_ms>", "2")
                 .replace("<ms>", "5")
+                .replace("<trigger>", "torque>0.2")
+                .replace("<pre_samples>", "10")
+                .replace("<f_start_hz>", "100")
+                .replace("<f_stop_hz>", "1000")
+                .replace("<amplitude_nm>", "0.1")
+                .replace("<points>", "4")
                 .replace(['[', ']'], "");
             for alt in args.split('|') {
                 let line = std::format!("{} {}", s.name, alt);
