@@ -593,7 +593,12 @@ pub fn capture(a: CaptureArgs) -> Result<()> {
         a.common.out.join("capture.svg"),
     );
     write_csv(&csv, &rows)?;
-    plot_record(&svg, &format!("PL capture, trigger {}", a.trigger), &rows, None)?;
+    plot_record(
+        &svg,
+        &format!("PL capture, trigger {}", a.trigger),
+        &rows,
+        None,
+    )?;
     let rep = CaptureReport {
         trigger: a.trigger.clone(),
         samples: rows.len(),
