@@ -29,11 +29,12 @@ use drive::bus::{BusError, RegisterBus};
 use drive::config::spi_nor::SpiNor;
 use drive::config::{store, Config};
 use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
+use drive::pl::capture::{CapSample, CapStatus, Trigger};
 use drive::pl::fault::Faults;
 use drive::pl::presence::Presence;
 use drive::pl::top::Mode;
 use drive::servo::faults::FaultRecord;
-use drive::servo::{Servo, ServoConfig, ServoError, StepResult};
+use drive::servo::{Servo, ServoConfig, ServoError, StepResult, SweepPoint};
 use drive::simpl::{SimConfig, SimDrive};
 
 /// Software-generated interrupt of the control step.
@@ -475,5 +476,52 @@ impl DriveOps for FwDrive {
     }
     fn reconfigure(&mut self, cfg: &ServoConfig) -> Result<(), DriveError> {
         run(|s| s.servo.reconfigure(&mut s.bus, cfg))
+    }
+    fn capture_arm(&mut self, t: Trigger, pre: u32) -> Result<(), DriveError> {
+        run(|s| s.servo.capture_arm(&mut s.bus, t, pre))
+    }
+    fn capture_trigger(&mut self) -> Result<(), DriveError> {
+        run(|s| s.servo.capture_trigger(&mut s.bus))
+    }
+    fn capture_status(&mut self) -> Result<CapStatus, DriveError> {
+        run(|s| s.servo.capture_status(&mut s.bus))
+    }
+    fn capture_sample(&mut self, i: u32) -> Result<CapSample, DriveError> {
+        run(|s| s.servo.capture_sample(&mut s.bus, i))
+    }
+    fn capture_period_s(&mut self) -> f64 {
+        with(|s| s.servo.capture_period_s()).unwrap_or(0.0)
+    }
+    fn sweep_point(&mut self, f_hz: f64, amp_nm: f64) -> Result<SweepPoint, DriveError> {
+        run(|s| s.servo.sine_start(&mut s.bus, f_hz, amp_nm))?;
+        let settle_ms = (Servo::sine_settle_s(f_hz) * 1e3) as u32 + 1;
+        let until = with(|s| s.pl_after_ms(settle_ms)).ok_or(DriveError::Absent)?;
+        let deadline = timer::uptime_us() + 60_000_000;
+        let alive = || with(|s| s.servo.sine_running()).unwrap_or(false);
+        while with(|s| s.pl_now() < until).unwrap_or(false) {
+            if !alive() {
+                return Err(DriveError::Servo(ServoError::GatesOff));
+            }
+            wait();
+        }
+        run(|s| {
+            s.servo.capture_arm(&mut s.bus, Trigger::Manual, 0)?;
+            s.servo.capture_trigger(&mut s.bus)
+        })?;
+        loop {
+            if let Some(p) = run(|s| s.servo.record_response(&mut s.bus, f_hz))? {
+                return Ok(p);
+            }
+            if !alive() {
+                return Err(DriveError::Servo(ServoError::GatesOff));
+            }
+            if timer::uptime_us() > deadline {
+                return Err(DriveError::Timeout);
+            }
+            wait();
+        }
+    }
+    fn sweep_end(&mut self) {
+        with(|s| s.servo.sine_stop());
     }
 }

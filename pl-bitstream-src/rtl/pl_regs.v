@@ -122,7 +122,32 @@ module pl_regs (
     output wire         fault_status_watchdog_clr_o,
     input  wire   [2:0] fault_raw_i,
     output wire  [10:0] oc_limit_o,
-    output wire  [31:0] wdg_timeout_o
+    output wire  [31:0] wdg_timeout_o,
+    // block CAPTURE
+    output wire   [1:0] cap_source_o,
+    output wire   [9:0] cap_pre_o,
+    output wire   [7:0] cap_decim_o,
+    output wire  [15:0] cap_step_o,
+    output wire   [2:0] cap_thr_ch_o,
+    output wire  [15:0] cap_thr_level_o,
+    output wire         cap_thr_edge_o,
+    output wire   [2:0] cap_sel_o,
+    output wire         cap_arm_we_o,
+    output wire         cap_trig_we_o,
+    input  wire   [1:0] cap_status_state_i,
+    input  wire  [10:0] cap_status_trig_index_i,
+    input  wire  [10:0] cap_status_count_i,
+    output wire  [15:0] cap_in_id_o,
+    output wire  [15:0] cap_in_iq_o,
+    output wire  [15:0] cap_in_torque_o,
+    output wire  [15:0] cap_in_tref_o,
+    output wire   [9:0] cap_rd_index_o,
+    input  wire  [15:0] cap_data0_i_d_i,
+    input  wire  [15:0] cap_data0_i_q_i,
+    input  wire  [15:0] cap_data1_torque_i,
+    input  wire  [15:0] cap_data1_tref_i,
+    input  wire   [2:0] cap_data2_sw_i,
+    input  wire  [15:0] cap_data2_sel_i
 );
 
     // Byte-strobe merge of a write over the current (zero-extended) value.
@@ -195,6 +220,21 @@ module pl_regs (
     reg  [23:0] enc_window_q;
     reg  [10:0] oc_limit_q;
     reg  [31:0] wdg_timeout_q;
+    reg   [1:0] cap_source_q;
+    reg   [9:0] cap_pre_q;
+    reg   [7:0] cap_decim_q;
+    reg  [15:0] cap_step_q;
+    reg   [2:0] cap_thr_ch_q;
+    reg  [15:0] cap_thr_level_q;
+    reg         cap_thr_edge_q;
+    reg   [2:0] cap_sel_q;
+    reg         cap_arm_q;
+    reg         cap_trig_q;
+    reg  [15:0] cap_in_id_q;
+    reg  [15:0] cap_in_iq_q;
+    reg  [15:0] cap_in_torque_q;
+    reg  [15:0] cap_in_tref_q;
+    reg   [9:0] cap_rd_index_q;
 
     // Write decode, and the word each write leaves (merged, clamped).
     wire w_ctrl = wr_i && wr_addr_i == 15'h0008;
@@ -302,6 +342,38 @@ module pl_regs (
     wire [31:0] n_oc_limit = clamp(merge({21'd0, oc_limit_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h000007ff);
     wire w_wdg_timeout = wr_i && wr_addr_i == 15'h600c;
     wire [31:0] n_wdg_timeout = clamp(merge(wdg_timeout_q, wr_data_i, wr_strb_i), 32'h000003e8, 32'hffffffff);
+    wire w_cap_source = wr_i && wr_addr_i == 15'h7000;
+    wire [31:0] n_cap_source = merge({30'd0, cap_source_q}, wr_data_i, wr_strb_i);
+    wire w_cap_pre = wr_i && wr_addr_i == 15'h7004;
+    wire [31:0] n_cap_pre = clamp(merge({22'd0, cap_pre_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h000003ff);
+    wire w_cap_decim = wr_i && wr_addr_i == 15'h7008;
+    wire [31:0] n_cap_decim = merge({24'd0, cap_decim_q}, wr_data_i, wr_strb_i);
+    wire w_cap_step = wr_i && wr_addr_i == 15'h700c;
+    wire [31:0] n_cap_step = merge({16'd0, cap_step_q}, wr_data_i, wr_strb_i);
+    wire w_cap_thr_ch = wr_i && wr_addr_i == 15'h7010;
+    wire [31:0] n_cap_thr_ch = merge({29'd0, cap_thr_ch_q}, wr_data_i, wr_strb_i);
+    wire bad_cap_thr_ch = n_cap_thr_ch > 32'h00000004;
+    wire w_cap_thr_level = wr_i && wr_addr_i == 15'h7014;
+    wire [31:0] n_cap_thr_level = merge({16'd0, cap_thr_level_q}, wr_data_i, wr_strb_i);
+    wire w_cap_thr_edge = wr_i && wr_addr_i == 15'h7018;
+    wire [31:0] n_cap_thr_edge = merge({31'd0, cap_thr_edge_q}, wr_data_i, wr_strb_i);
+    wire w_cap_sel = wr_i && wr_addr_i == 15'h701c;
+    wire [31:0] n_cap_sel = merge({29'd0, cap_sel_q}, wr_data_i, wr_strb_i);
+    wire bad_cap_sel = n_cap_sel > 32'h00000004;
+    wire w_cap_arm = wr_i && wr_addr_i == 15'h7020;
+    wire [31:0] n_cap_arm = merge({31'd0, cap_arm_q}, wr_data_i, wr_strb_i);
+    wire w_cap_trig = wr_i && wr_addr_i == 15'h7024;
+    wire [31:0] n_cap_trig = merge({31'd0, cap_trig_q}, wr_data_i, wr_strb_i);
+    wire w_cap_in_id = wr_i && wr_addr_i == 15'h7030;
+    wire [31:0] n_cap_in_id = merge({16'd0, cap_in_id_q}, wr_data_i, wr_strb_i);
+    wire w_cap_in_iq = wr_i && wr_addr_i == 15'h7034;
+    wire [31:0] n_cap_in_iq = merge({16'd0, cap_in_iq_q}, wr_data_i, wr_strb_i);
+    wire w_cap_in_torque = wr_i && wr_addr_i == 15'h7038;
+    wire [31:0] n_cap_in_torque = merge({16'd0, cap_in_torque_q}, wr_data_i, wr_strb_i);
+    wire w_cap_in_tref = wr_i && wr_addr_i == 15'h703c;
+    wire [31:0] n_cap_in_tref = merge({16'd0, cap_in_tref_q}, wr_data_i, wr_strb_i);
+    wire w_cap_rd_index = wr_i && wr_addr_i == 15'h7040;
+    wire [31:0] n_cap_rd_index = clamp(merge({22'd0, cap_rd_index_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h000003ff);
     wire w_any_ok = w_ctrl | w_err | w_heartbeat | w_scratch | w_mpdtc_ctrl
         | w_mpdtc_start | w_mpdtc_in_id | w_mpdtc_in_iq | w_mpdtc_in_cos0 | w_mpdtc_in_sin0
         | w_mpdtc_in_cos1 | w_mpdtc_in_sin1 | w_mpdtc_in_cos2 | w_mpdtc_in_sin2 | w_mpdtc_in_w_ts
@@ -312,9 +384,12 @@ module pl_regs (
         | w_mpdtc_align_period | w_mpdtc_align_on | w_mpdtc_align_time | w_gate_ctrl | w_dead_time
         | w_pwm_period | w_duty_a | w_duty_b | w_duty_c | w_sw_state
         | w_adc_ctrl | w_adc_period | w_enc_cpr | w_enc_window | w_fault_status
-        | w_oc_limit | w_wdg_timeout;
+        | w_oc_limit | w_wdg_timeout | w_cap_source | w_cap_pre | w_cap_decim
+        | w_cap_step | w_cap_thr_ch | w_cap_thr_level | w_cap_thr_edge | w_cap_sel
+        | w_cap_arm | w_cap_trig | w_cap_in_id | w_cap_in_iq | w_cap_in_torque
+        | w_cap_in_tref | w_cap_rd_index;
     // Access errors of this cycle (set ERR).
-    wire bad_value = (w_ctrl && bad_ctrl);
+    wire bad_value = (w_ctrl && bad_ctrl) || (w_cap_thr_ch && bad_cap_thr_ch) || (w_cap_sel && bad_cap_sel);
     wire bad_addr = (wr_i && !w_any_ok) || (rd_i && rd_err_o);
 
     assign wr_err_o = wr_i && !w_any_ok;
@@ -372,6 +447,21 @@ module pl_regs (
             enc_window_q <= 24'h186a0;
             oc_limit_q <= 11'h708;
             wdg_timeout_q <= 32'h989680;
+            cap_source_q <= 2'h0;
+            cap_pre_q <= 10'h80;
+            cap_decim_q <= 8'h0;
+            cap_step_q <= 16'h1f4;
+            cap_thr_ch_q <= 3'h2;
+            cap_thr_level_q <= 16'h0;
+            cap_thr_edge_q <= 1'h0;
+            cap_sel_q <= 3'h0;
+            cap_arm_q <= 1'h0;
+            cap_trig_q <= 1'h0;
+            cap_in_id_q <= 16'h0;
+            cap_in_iq_q <= 16'h0;
+            cap_in_torque_q <= 16'h0;
+            cap_in_tref_q <= 16'h0;
+            cap_rd_index_q <= 10'h0;
         end else begin
             if (w_ctrl && !bad_ctrl) ctrl_q <= n_ctrl[1:0];
             // A flag set in this cycle wins over its clear.
@@ -426,6 +516,21 @@ module pl_regs (
             if (w_enc_window) enc_window_q <= n_enc_window[23:0];
             if (w_oc_limit) oc_limit_q <= n_oc_limit[10:0];
             if (w_wdg_timeout) wdg_timeout_q <= n_wdg_timeout[31:0];
+            if (w_cap_source) cap_source_q <= n_cap_source[1:0];
+            if (w_cap_pre) cap_pre_q <= n_cap_pre[9:0];
+            if (w_cap_decim) cap_decim_q <= n_cap_decim[7:0];
+            if (w_cap_step) cap_step_q <= n_cap_step[15:0];
+            if (w_cap_thr_ch && !bad_cap_thr_ch) cap_thr_ch_q <= n_cap_thr_ch[2:0];
+            if (w_cap_thr_level) cap_thr_level_q <= n_cap_thr_level[15:0];
+            if (w_cap_thr_edge) cap_thr_edge_q <= n_cap_thr_edge[0:0];
+            if (w_cap_sel && !bad_cap_sel) cap_sel_q <= n_cap_sel[2:0];
+            if (w_cap_arm) cap_arm_q <= n_cap_arm[0:0];
+            if (w_cap_trig) cap_trig_q <= n_cap_trig[0:0];
+            if (w_cap_in_id) cap_in_id_q <= n_cap_in_id[15:0];
+            if (w_cap_in_iq) cap_in_iq_q <= n_cap_in_iq[15:0];
+            if (w_cap_in_torque) cap_in_torque_q <= n_cap_in_torque[15:0];
+            if (w_cap_in_tref) cap_in_tref_q <= n_cap_in_tref[15:0];
+            if (w_cap_rd_index) cap_rd_index_q <= n_cap_rd_index[9:0];
         end
     end
 
@@ -435,7 +540,7 @@ module pl_regs (
         rd_err_o  = 1'b0;
         case (rd_addr_i)
             15'h0000: rd_data_o = 32'h50534452;  // ID
-            15'h0004: rd_data_o = 32'h00010002;  // VERSION
+            15'h0004: rd_data_o = 32'h00010003;  // VERSION
             15'h0008: rd_data_o = {30'd0, ctrl_q};  // CTRL
             15'h000c: rd_data_o = {28'd0, status_fault_i, status_gates_active_i, status_mode_i};  // STATUS
             15'h0010: rd_data_o = {30'd0, err_q};  // ERR
@@ -504,6 +609,26 @@ module pl_regs (
             15'h6004: rd_data_o = {29'd0, fault_raw_i};  // FAULT_RAW
             15'h6008: rd_data_o = {21'd0, oc_limit_q};  // OC_LIMIT
             15'h600c: rd_data_o = wdg_timeout_q;  // WDG_TIMEOUT
+            15'h7000: rd_data_o = {30'd0, cap_source_q};  // CAP_SOURCE
+            15'h7004: rd_data_o = {22'd0, cap_pre_q};  // CAP_PRE
+            15'h7008: rd_data_o = {24'd0, cap_decim_q};  // CAP_DECIM
+            15'h700c: rd_data_o = {16'd0, cap_step_q};  // CAP_STEP
+            15'h7010: rd_data_o = {29'd0, cap_thr_ch_q};  // CAP_THR_CH
+            15'h7014: rd_data_o = {16'd0, cap_thr_level_q};  // CAP_THR_LEVEL
+            15'h7018: rd_data_o = {31'd0, cap_thr_edge_q};  // CAP_THR_EDGE
+            15'h701c: rd_data_o = {29'd0, cap_sel_q};  // CAP_SEL
+            15'h7020: rd_data_o = {31'd0, cap_arm_q};  // CAP_ARM
+            15'h7024: rd_data_o = {31'd0, cap_trig_q};  // CAP_TRIG
+            15'h7028: rd_data_o = {5'd0, cap_status_count_i, 1'd0, cap_status_trig_index_i, 2'd0, cap_status_state_i};  // CAP_STATUS
+            15'h7030: rd_data_o = {16'd0, cap_in_id_q};  // CAP_IN_ID
+            15'h7034: rd_data_o = {16'd0, cap_in_iq_q};  // CAP_IN_IQ
+            15'h7038: rd_data_o = {16'd0, cap_in_torque_q};  // CAP_IN_TORQUE
+            15'h703c: rd_data_o = {16'd0, cap_in_tref_q};  // CAP_IN_TREF
+            15'h7040: rd_data_o = {22'd0, cap_rd_index_q};  // CAP_RD_INDEX
+            15'h7044: rd_data_o = {cap_data0_i_q_i, cap_data0_i_d_i};  // CAP_DATA0
+            15'h7048: rd_data_o = {cap_data1_tref_i, cap_data1_torque_i};  // CAP_DATA1
+            15'h704c: rd_data_o = {cap_data2_sel_i, 13'd0, cap_data2_sw_i};  // CAP_DATA2
+            15'h7050: rd_data_o = 32'h00000400;  // CAP_DEPTH
             default: rd_err_o = rd_i;
         endcase
     end
@@ -563,6 +688,21 @@ module pl_regs (
     assign fault_status_watchdog_clr_o = w_fault_status ? n_fault_status[2] : 1'd0;
     assign oc_limit_o = oc_limit_q;
     assign wdg_timeout_o = wdg_timeout_q;
+    assign cap_source_o = cap_source_q;
+    assign cap_pre_o = cap_pre_q;
+    assign cap_decim_o = cap_decim_q;
+    assign cap_step_o = cap_step_q;
+    assign cap_thr_ch_o = cap_thr_ch_q;
+    assign cap_thr_level_o = cap_thr_level_q;
+    assign cap_thr_edge_o = cap_thr_edge_q;
+    assign cap_sel_o = cap_sel_q;
+    assign cap_arm_we_o = w_cap_arm;
+    assign cap_trig_we_o = w_cap_trig;
+    assign cap_in_id_o = cap_in_id_q;
+    assign cap_in_iq_o = cap_in_iq_q;
+    assign cap_in_torque_o = cap_in_torque_q;
+    assign cap_in_tref_o = cap_in_tref_q;
+    assign cap_rd_index_o = cap_rd_index_q;
 
 `ifdef FORMAL
     reg f_past_valid = 1'b0;
@@ -697,6 +837,40 @@ module pl_regs (
             if ($past(!w_wdg_timeout)) assert (wdg_timeout_q == $past(wdg_timeout_q));
             // WDG_TIMEOUT: always inside its clamp range.
             assert (wdg_timeout_q >= 32'h000003e8);
+            // CAP_SOURCE: changed only by a write.
+            if ($past(!w_cap_source)) assert (cap_source_q == $past(cap_source_q));
+            // CAP_PRE: changed only by a write.
+            if ($past(!w_cap_pre)) assert (cap_pre_q == $past(cap_pre_q));
+            // CAP_DECIM: changed only by a write.
+            if ($past(!w_cap_decim)) assert (cap_decim_q == $past(cap_decim_q));
+            // CAP_STEP: changed only by a write.
+            if ($past(!w_cap_step)) assert (cap_step_q == $past(cap_step_q));
+            // CAP_THR_CH: changed only by a write.
+            if ($past(!w_cap_thr_ch)) assert (cap_thr_ch_q == $past(cap_thr_ch_q));
+            // CAP_THR_CH: a rejected value is never stored.
+            assert ({29'd0, cap_thr_ch_q} <= 32'h00000004);
+            // CAP_THR_LEVEL: changed only by a write.
+            if ($past(!w_cap_thr_level)) assert (cap_thr_level_q == $past(cap_thr_level_q));
+            // CAP_THR_EDGE: changed only by a write.
+            if ($past(!w_cap_thr_edge)) assert (cap_thr_edge_q == $past(cap_thr_edge_q));
+            // CAP_SEL: changed only by a write.
+            if ($past(!w_cap_sel)) assert (cap_sel_q == $past(cap_sel_q));
+            // CAP_SEL: a rejected value is never stored.
+            assert ({29'd0, cap_sel_q} <= 32'h00000004);
+            // CAP_ARM: changed only by a write.
+            if ($past(!w_cap_arm)) assert (cap_arm_q == $past(cap_arm_q));
+            // CAP_TRIG: changed only by a write.
+            if ($past(!w_cap_trig)) assert (cap_trig_q == $past(cap_trig_q));
+            // CAP_IN_ID: changed only by a write.
+            if ($past(!w_cap_in_id)) assert (cap_in_id_q == $past(cap_in_id_q));
+            // CAP_IN_IQ: changed only by a write.
+            if ($past(!w_cap_in_iq)) assert (cap_in_iq_q == $past(cap_in_iq_q));
+            // CAP_IN_TORQUE: changed only by a write.
+            if ($past(!w_cap_in_torque)) assert (cap_in_torque_q == $past(cap_in_torque_q));
+            // CAP_IN_TREF: changed only by a write.
+            if ($past(!w_cap_in_tref)) assert (cap_in_tref_q == $past(cap_in_tref_q));
+            // CAP_RD_INDEX: changed only by a write.
+            if ($past(!w_cap_rd_index)) assert (cap_rd_index_q == $past(cap_rd_index_q));
         end
     end
 `endif

@@ -15,6 +15,10 @@
 //                    page; started by the sequence, or by MPDTC_START while
 //                    the sequence is IDLE); PWM.SW_STATE drives the gates
 //                    instead when MPDTC_CTRL.MANUAL = 1 (reset)
+//   capture_buf   <- PS-written i_d, i_q, torque, torque reference, the
+//                    selected switching state and a selectable channel, one
+//                    sample per CAP_DECIM + 1 averaged ADC results (CAPTURE
+//                    page)
 //   gate_driver   <- selected state, DEAD_TIME, enable = GATE_EN && mode != off
 //                    (&& sequence out of IDLE in mode MPDTC without MANUAL),
 //                    fault = fault_block trip (all gates off at the next edge)
@@ -168,6 +172,20 @@ module pl_top (
     wire        enc_b;
     wire        enc_z;
     wire        fault_ext_n;
+    // Capture ring size: the register map's CAPTURE_DEPTH.
+    localparam integer CAP_AW = $clog2(RM_CAP_DEPTH_RESET);
+    wire [ 1:0] cap_source;
+    wire [ 9:0] cap_pre;
+    wire [ 7:0] cap_decim;
+    wire [15:0] cap_step, cap_thr_level;
+    wire [ 2:0] cap_thr_ch, cap_sel;
+    wire        cap_thr_edge, cap_arm, cap_trig;
+    wire [15:0] cap_in_id, cap_in_iq, cap_in_torque, cap_in_tref;
+    wire [ 9:0] cap_rd_index;
+    wire [ 1:0] cap_state;
+    wire [CAP_AW:0] cap_count, cap_trig_index;
+    wire [82:0] cap_rd;
+    reg  [15:0] cap_sel_ch;
 
     // Switching-state source by mode (CTRL.MODE).
     wire sel_pwm = {30'd0, ctrl_mode} == RM_MODE_FOC_PWM;
@@ -282,8 +300,86 @@ module pl_top (
         .fault_status_watchdog_clr_o   (fault_clr[2]),
         .fault_raw_i                (fault_raw),
         .oc_limit_o                 (oc_limit),
-        .wdg_timeout_o              (wdg_timeout)
+        .wdg_timeout_o              (wdg_timeout),
+        // CAPTURE
+        .cap_source_o               (cap_source),
+        .cap_pre_o                  (cap_pre),
+        .cap_decim_o                (cap_decim),
+        .cap_step_o                 (cap_step),
+        .cap_thr_ch_o               (cap_thr_ch),
+        .cap_thr_level_o            (cap_thr_level),
+        .cap_thr_edge_o             (cap_thr_edge),
+        .cap_sel_o                  (cap_sel),
+        .cap_arm_we_o               (cap_arm),
+        .cap_trig_we_o              (cap_trig),
+        .cap_status_state_i         (cap_state),
+        .cap_status_trig_index_i    ({{(10 - CAP_AW) {1'b0}}, cap_trig_index}),
+        .cap_status_count_i         ({{(10 - CAP_AW) {1'b0}}, cap_count}),
+        .cap_in_id_o                (cap_in_id),
+        .cap_in_iq_o                (cap_in_iq),
+        .cap_in_torque_o            (cap_in_torque),
+        .cap_in_tref_o              (cap_in_tref),
+        .cap_rd_index_o             (cap_rd_index),
+        .cap_data0_i_d_i            (cap_rd[15:0]),
+        .cap_data0_i_q_i            (cap_rd[31:16]),
+        .cap_data1_torque_i         (cap_rd[47:32]),
+        .cap_data1_tref_i           (cap_rd[63:48]),
+        .cap_data2_sw_i             (cap_rd[82:80]),
+        .cap_data2_sel_i            (cap_rd[79:64])
     );
+
+    // Selectable channel (CAP_SEL; the register rejects values above 4).
+    always @(*) begin
+        case (cap_sel)
+            3'd0: cap_sel_ch = avg_a;
+            3'd1: cap_sel_ch = avg_b;
+            3'd2: cap_sel_ch = avg_c;
+            3'd3: cap_sel_ch = enc_pos;
+            default: cap_sel_ch = enc_speed;
+        endcase
+    end
+
+`ifdef FORMAL
+    // capture_buf only observes (nothing of it reaches the gates or the
+    // faults) and its pointer logic has its own proof; leaving it out of
+    // this one keeps the pl_top proof and its mutants fast.
+    assign cap_state = 2'd0;
+    assign cap_count = {(CAP_AW + 1) {1'b0}};
+    assign cap_trig_index = {(CAP_AW + 1) {1'b0}};
+    assign cap_rd = 83'd0;
+    wire unused_cap = ^{cap_arm, cap_trig, cap_source, cap_pre, cap_decim, cap_step, cap_thr_ch,
+        cap_thr_level, cap_thr_edge, cap_sel_ch, cap_in_id, cap_in_iq, cap_in_torque, cap_in_tref,
+        cap_rd_index};
+`else
+    capture_buf #(
+        .AW(CAP_AW)
+    ) u_cap (
+        .clk_i       (clk_i),
+        .rst_i       (rst),
+        .arm_i       (cap_arm),
+        .trig_i      (cap_trig),
+        .source_i    (cap_source),
+        .pre_i       ({6'd0, cap_pre}),
+        .decim_i     (cap_decim),
+        .step_i      (cap_step),
+        .thr_ch_i    (cap_thr_ch),
+        .thr_level_i (cap_thr_level),
+        .thr_edge_i  (cap_thr_edge),
+        .sample_i    (adc_avg_valid_o),
+        .fault_i     (fault_any),
+        .ch_id_i     (cap_in_id),
+        .ch_iq_i     (cap_in_iq),
+        .ch_torque_i (cap_in_torque),
+        .ch_tref_i   (cap_in_tref),
+        .ch_sel_i    (cap_sel_ch),
+        .ch_sw_i     (state_sel),
+        .rd_index_i  ({6'd0, cap_rd_index}),
+        .state_o     (cap_state),
+        .count_o     (cap_count),
+        .trig_index_o(cap_trig_index),
+        .rd_data_o   (cap_rd)
+    );
+`endif
 
     mpdtc_seq u_seq (
         .clk_i         (clk_i),

@@ -232,7 +232,7 @@ pub const VERSION: Register = Register {
     offset: 0x004,
     access: Access::Ro,
     width: 32,
-    reset: 0x0001_0002,
+    reset: 0x0001_0003,
     format: "major.minor, 16 bits each",
     invalid: Invalid::AllValid,
     hw: Hw::Const,
@@ -1228,12 +1228,375 @@ pub const FAULT: Block = Block {
     doc: "Over-current, external and watchdog faults, latched.",
     registers: &[&FAULT_STATUS, &FAULT_RAW, &OC_LIMIT, &WDG_TIMEOUT],
 };
+// ---------------------------------------------------------------- block 7
+/// Samples the capture buffer holds (`capture_buf`'s ring; a power of two).
+pub const CAPTURE_DEPTH: u32 = 1024;
+/// Capture trigger sources (`CAP_SOURCE`).
+pub mod cap_source {
+    /// Only a `CAP_TRIG` write.
+    pub const MANUAL: u32 = 0;
+    /// A torque-reference step: |CAP_IN_TREF - its previous sample| >= CAP_STEP.
+    pub const REF_STEP: u32 = 1;
+    /// The channel CAP_THR_CH crosses CAP_THR_LEVEL (edge CAP_THR_EDGE).
+    pub const THRESHOLD: u32 = 2;
+    /// Any latched fault (FAULT_STATUS != 0) at a sample.
+    pub const FAULT: u32 = 3;
+}
+/// Capture states (`CAP_STATUS.STATE`).
+pub mod cap_state {
+    /// Not armed: the ring keeps its last record.
+    pub const IDLE: u32 = 0;
+    /// Armed: samples go into the ring, waiting for the trigger.
+    pub const ARMED: u32 = 1;
+    /// Triggered: taking the samples after the trigger.
+    pub const TRIGGERED: u32 = 2;
+    /// The record is complete.
+    pub const DONE: u32 = 3;
+}
+const CAP_I_FMT: &str = "signed 16-bit two's complement, mA (range +-32.767 A)";
+const CAP_T_FMT: &str = "signed 16-bit two's complement, 0.1 mN m (range +-3.2767 N m)";
+/// CAPTURE: trigger source.
+pub const CAP_SOURCE: Register = Register {
+    name: "CAP_SOURCE",
+    offset: 0x000,
+    access: Access::Rw,
+    width: 2,
+    reset: 0,
+    format: "enum: 0 manual, 1 reference step, 2 threshold, 3 fault",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Trigger of the armed capture, tested at each sample; a CAP_TRIG write \
+          triggers whatever the source.",
+};
+/// CAPTURE: pre-trigger length.
+pub const CAP_PRE: Register = Register {
+    name: "CAP_PRE",
+    offset: 0x004,
+    access: Access::Rw,
+    width: 10,
+    reset: 128,
+    format: "unsigned, samples",
+    invalid: Invalid::Clamp {
+        min: 0,
+        max: CAPTURE_DEPTH - 1,
+    },
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Samples kept before the trigger sample (latched by CAP_ARM); the record \
+          holds CAPTURE_DEPTH - CAP_PRE samples from the trigger on. A trigger before \
+          CAP_PRE samples were taken keeps fewer (CAP_STATUS.TRIG_INDEX).",
+};
+/// CAPTURE: decimation.
+pub const CAP_DECIM: Register = Register {
+    name: "CAP_DECIM",
+    offset: 0x008,
+    access: Access::Rw,
+    width: 8,
+    reset: 0,
+    format: "unsigned, averaged ADC results per sample - 1",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "A sample every CAP_DECIM + 1 averaged ADC results (adc_avg_valid): 0 = the \
+          MPDTC control rate, 3 = the FOC control rate (one PWM period).",
+};
+/// CAPTURE: reference-step trigger size.
+pub const CAP_STEP: Register = Register {
+    name: "CAP_STEP",
+    offset: 0x00C,
+    access: Access::Rw,
+    width: 16,
+    reset: 500,
+    format: "unsigned, 0.1 mN m",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Source 1 triggers on a sample whose CAP_IN_TREF differs from the previous \
+          sample's by at least this much (reset 0.05 N m).",
+};
+/// CAPTURE: threshold channel.
+pub const CAP_THR_CH: Register = Register {
+    name: "CAP_THR_CH",
+    offset: 0x010,
+    access: Access::Rw,
+    width: 3,
+    reset: 2,
+    format: "enum: 0 i_d, 1 i_q, 2 torque, 3 torque reference, 4 selectable",
+    invalid: Invalid::Reject { max: 4 },
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Channel source 2 compares with CAP_THR_LEVEL.",
+};
+/// CAPTURE: threshold level.
+pub const CAP_THR_LEVEL: Register = Register {
+    name: "CAP_THR_LEVEL",
+    offset: 0x014,
+    access: Access::Rw,
+    width: 16,
+    reset: 0,
+    format: "signed 16-bit two's complement, the channel's unit",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Source 2 triggers when the channel crosses this level between two samples \
+          (rising: previous < level <= present; falling: previous > level >= present).",
+};
+/// CAPTURE: threshold edge.
+pub const CAP_THR_EDGE: Register = Register {
+    name: "CAP_THR_EDGE",
+    offset: 0x018,
+    access: Access::Rw,
+    width: 1,
+    reset: 0,
+    format: "0 rising, 1 falling",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Direction of the threshold crossing.",
+};
+/// CAPTURE: selectable channel.
+pub const CAP_SEL: Register = Register {
+    name: "CAP_SEL",
+    offset: 0x01C,
+    access: Access::Rw,
+    width: 3,
+    reset: 0,
+    format: "enum: 0 ADC_IA, 1 ADC_IB, 2 ADC_IC, 3 ENC_POS, 4 ENC_SPEED",
+    invalid: Invalid::Reject { max: 4 },
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "What the selectable channel records: the low 16 bits of that register.",
+};
+/// CAPTURE: arm.
+pub const CAP_ARM: Register = Register {
+    name: "CAP_ARM",
+    offset: 0x020,
+    access: Access::Rw,
+    width: 1,
+    reset: 0,
+    format: "any value",
+    invalid: Invalid::AllValid,
+    hw: Hw::Strobe,
+    fields: &[],
+    doc: "Every write starts a new record: the ring empties, CAP_PRE is latched, \
+          state ARMED.",
+};
+/// CAPTURE: manual trigger.
+pub const CAP_TRIG: Register = Register {
+    name: "CAP_TRIG",
+    offset: 0x024,
+    access: Access::Rw,
+    width: 1,
+    reset: 0,
+    format: "any value",
+    invalid: Invalid::AllValid,
+    hw: Hw::Strobe,
+    fields: &[],
+    doc: "A write while ARMED triggers at the next sample (any source); ignored \
+          otherwise.",
+};
+/// CAPTURE: status.
+pub const CAP_STATUS: Register = Register {
+    name: "CAP_STATUS",
+    offset: 0x028,
+    access: Access::Ro,
+    width: 32,
+    reset: 0,
+    format: "state and counters",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[
+        field(
+            "STATE",
+            0,
+            2,
+            "0 idle, 1 armed, 2 triggered, 3 done (drive::regmap::cap_state)",
+        ),
+        field(
+            "TRIG_INDEX",
+            4,
+            11,
+            "record index of the trigger sample (valid in DONE)",
+        ),
+        field(
+            "COUNT",
+            16,
+            11,
+            "samples in the record (at most CAPTURE_DEPTH)",
+        ),
+    ],
+    doc: "Capture progress; the record is index 0 (oldest) to COUNT - 1.",
+};
+/// CAPTURE: PS-written i_d.
+pub const CAP_IN_ID: Register = Register {
+    name: "CAP_IN_ID",
+    offset: 0x030,
+    access: Access::Rw,
+    width: 16,
+    reset: 0,
+    format: CAP_I_FMT,
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Channel 0, measured d current, written by the PS every control period.",
+};
+/// CAPTURE: PS-written i_q.
+pub const CAP_IN_IQ: Register = Register {
+    name: "CAP_IN_IQ",
+    offset: 0x034,
+    access: Access::Rw,
+    width: 16,
+    reset: 0,
+    format: CAP_I_FMT,
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Channel 1, measured q current, written by the PS every control period.",
+};
+/// CAPTURE: PS-written torque.
+pub const CAP_IN_TORQUE: Register = Register {
+    name: "CAP_IN_TORQUE",
+    offset: 0x038,
+    access: Access::Rw,
+    width: 16,
+    reset: 0,
+    format: CAP_T_FMT,
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Channel 2, torque from the measured currents, written by the PS every \
+          control period.",
+};
+/// CAPTURE: PS-written torque reference.
+pub const CAP_IN_TREF: Register = Register {
+    name: "CAP_IN_TREF",
+    offset: 0x03C,
+    access: Access::Rw,
+    width: 16,
+    reset: 0,
+    format: CAP_T_FMT,
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Channel 3, torque reference, written by the PS every control period.",
+};
+/// CAPTURE: read index.
+pub const CAP_RD_INDEX: Register = Register {
+    name: "CAP_RD_INDEX",
+    offset: 0x040,
+    access: Access::Rw,
+    width: 10,
+    reset: 0,
+    format: "unsigned, record index (0 = oldest)",
+    invalid: Invalid::Clamp {
+        min: 0,
+        max: CAPTURE_DEPTH - 1,
+    },
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Sample CAP_DATA0..2 show, one cycle after the write.",
+};
+/// CAPTURE: read data, currents.
+pub const CAP_DATA0: Register = Register {
+    name: "CAP_DATA0",
+    offset: 0x044,
+    access: Access::Ro,
+    width: 32,
+    reset: 0,
+    format: "two 16-bit fields, formats of CAP_IN_ID/IQ",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[
+        field("I_D", 0, 16, "i_d, mA, two's complement"),
+        field("I_Q", 16, 16, "i_q, mA, two's complement"),
+    ],
+    doc: "Channels 0 and 1 of sample CAP_RD_INDEX.",
+};
+/// CAPTURE: read data, torques.
+pub const CAP_DATA1: Register = Register {
+    name: "CAP_DATA1",
+    offset: 0x048,
+    access: Access::Ro,
+    width: 32,
+    reset: 0,
+    format: "two 16-bit fields, formats of CAP_IN_TORQUE/TREF",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[
+        field("TORQUE", 0, 16, "torque, 0.1 mN m, two's complement"),
+        field(
+            "TREF",
+            16,
+            16,
+            "torque reference, 0.1 mN m, two's complement",
+        ),
+    ],
+    doc: "Channels 2 and 3 of sample CAP_RD_INDEX.",
+};
+/// CAPTURE: read data, switching state and selectable channel.
+pub const CAP_DATA2: Register = Register {
+    name: "CAP_DATA2",
+    offset: 0x04C,
+    access: Access::Ro,
+    width: 32,
+    reset: 0,
+    format: "bits and a 16-bit field",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[
+        field(
+            "SW",
+            0,
+            3,
+            "switching state applied to the gate driver (GATE_STATUS.STATE)",
+        ),
+        field("SEL", 16, 16, "the selectable channel (CAP_SEL)"),
+    ],
+    doc: "Channels 5 (switching state) and 4 (selectable) of sample CAP_RD_INDEX.",
+};
+/// CAPTURE: depth.
+pub const CAP_DEPTH: Register = Register {
+    name: "CAP_DEPTH",
+    offset: 0x050,
+    access: Access::Ro,
+    width: 16,
+    reset: CAPTURE_DEPTH,
+    format: "unsigned, samples",
+    invalid: Invalid::AllValid,
+    hw: Hw::Const,
+    fields: &[],
+    doc: "Size of the ring.",
+};
+
 /// Block 7.
 pub const CAPTURE: Block = Block {
     name: "CAPTURE",
     index: 7,
-    doc: "Reserved for the capture buffer (not implemented yet): every access is SLVERR.",
-    registers: &[],
+    doc: "Triggered capture buffer (capture_buf): a ring of CAPTURE_DEPTH samples of six \
+          channels at the control rate, with pre-trigger.",
+    registers: &[
+        &CAP_SOURCE,
+        &CAP_PRE,
+        &CAP_DECIM,
+        &CAP_STEP,
+        &CAP_THR_CH,
+        &CAP_THR_LEVEL,
+        &CAP_THR_EDGE,
+        &CAP_SEL,
+        &CAP_ARM,
+        &CAP_TRIG,
+        &CAP_STATUS,
+        &CAP_IN_ID,
+        &CAP_IN_IQ,
+        &CAP_IN_TORQUE,
+        &CAP_IN_TREF,
+        &CAP_RD_INDEX,
+        &CAP_DATA0,
+        &CAP_DATA1,
+        &CAP_DATA2,
+        &CAP_DEPTH,
+    ],
 };
 
 /// Every block, in page order.

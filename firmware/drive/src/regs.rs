@@ -94,7 +94,7 @@ pub mod top {
         }
     }
 
-    /// `TOP.VERSION` at `0x43C00004` (RO, 32 bits, reset `0x10002`): Version of this register map (bumped when the table changes).
+    /// `TOP.VERSION` at `0x43C00004` (RO, 32 bits, reset `0x10003`): Version of this register map (bumped when the table changes).
     ///
     /// Format: major.minor, 16 bits each. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -118,7 +118,7 @@ pub mod top {
 
     impl VersionValue {
         /// The value after reset.
-        pub const RESET: Self = Self(0x10002);
+        pub const RESET: Self = Self(0x10003);
         /// All zeros.
         pub const ZERO: Self = Self(0);
 
@@ -5255,9 +5255,1465 @@ pub mod fault {
     }
 }
 
-/// Block 7 `CAPTURE` at `0x43C07000`: Reserved for the capture buffer (not implemented yet): every access is SLVERR.
+/// Block 7 `CAPTURE` at `0x43C07000`: Triggered capture buffer (capture_buf): a ring of CAPTURE_DEPTH samples of six channels at the control rate, with pre-trigger.
 pub mod capture {
+    use super::*;
 
     /// Absolute address of the block.
     pub const BASE: usize = 0x43C07000;
+
+    /// `CAPTURE.CAP_SOURCE` at `0x43C07000` (RW, 2 bits, reset `0x0`): Trigger of the armed capture, tested at each sample; a CAP_TRIG write triggers whatever the source.
+    ///
+    /// Format: enum: 0 manual, 1 reference step, 2 threshold, 3 fault. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapSource;
+
+    impl CapSource {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07000;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_SOURCE;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapSourceValue, BusError> {
+            bus.read(Self::ADDR).map(CapSourceValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapSourceValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapSourceValue) -> CapSourceValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapSource`]; bits above bit 1 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapSourceValue(u32);
+
+    impl CapSourceValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 1:0, 2 bits): The whole register (enum: 0 manual, 1 reference step, 2 threshold, 3 fault).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3
+        }
+
+        /// Sets `VALUE` (bits 1:0, 2 bits) to the low 2 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3) | (v & 0x3))
+        }
+    }
+
+    impl Default for CapSourceValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_PRE` at `0x43C07004` (RW, 10 bits, reset `0x80`): Samples kept before the trigger sample (latched by CAP_ARM); the record holds CAPTURE_DEPTH - CAP_PRE samples from the trigger on. A trigger before CAP_PRE samples were taken keeps fewer (CAP_STATUS.TRIG_INDEX).
+    ///
+    /// Format: unsigned, samples. Writes: the hardware clamps the written word to 0..=1023 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapPre;
+
+    impl CapPre {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07004;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_PRE;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapPreValue, BusError> {
+            bus.read(Self::ADDR).map(CapPreValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapPreValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapPreValue) -> CapPreValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapPre`]; bits above bit 9 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapPreValue(u32);
+
+    impl CapPreValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x80);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 9:0, 10 bits): The whole register (unsigned, samples).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FF
+        }
+
+        /// Sets `VALUE` (bits 9:0, 10 bits) to the low 10 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FF) | (v & 0x3FF))
+        }
+    }
+
+    impl Default for CapPreValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_DECIM` at `0x43C07008` (RW, 8 bits, reset `0x0`): A sample every CAP_DECIM + 1 averaged ADC results (adc_avg_valid): 0 = the MPDTC control rate, 3 = the FOC control rate (one PWM period).
+    ///
+    /// Format: unsigned, averaged ADC results per sample - 1. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapDecim;
+
+    impl CapDecim {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07008;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_DECIM;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapDecimValue, BusError> {
+            bus.read(Self::ADDR).map(CapDecimValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapDecimValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapDecimValue) -> CapDecimValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapDecim`]; bits above bit 7 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapDecimValue(u32);
+
+    impl CapDecimValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 7:0, 8 bits): The whole register (unsigned, averaged ADC results per sample - 1).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFF
+        }
+
+        /// Sets `VALUE` (bits 7:0, 8 bits) to the low 8 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFF) | (v & 0xFF))
+        }
+    }
+
+    impl Default for CapDecimValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_STEP` at `0x43C0700C` (RW, 16 bits, reset `0x1F4`): Source 1 triggers on a sample whose CAP_IN_TREF differs from the previous sample's by at least this much (reset 0.05 N m).
+    ///
+    /// Format: unsigned, 0.1 mN m. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapStep;
+
+    impl CapStep {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0700C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_STEP;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapStepValue, BusError> {
+            bus.read(Self::ADDR).map(CapStepValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapStepValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapStepValue) -> CapStepValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapStep`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapStepValue(u32);
+
+    impl CapStepValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x1F4);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, 0.1 mN m).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for CapStepValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_THR_CH` at `0x43C07010` (RW, 3 bits, reset `0x2`): Channel source 2 compares with CAP_THR_LEVEL.
+    ///
+    /// Format: enum: 0 i_d, 1 i_q, 2 torque, 3 torque reference, 4 selectable. Writes: the hardware rejects a word above 4: the register keeps its value and `ERR.BAD_VALUE` is set.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapThrCh;
+
+    impl CapThrCh {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07010;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_THR_CH;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapThrChValue, BusError> {
+            bus.read(Self::ADDR).map(CapThrChValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapThrChValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapThrChValue) -> CapThrChValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapThrCh`]; bits above bit 2 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapThrChValue(u32);
+
+    impl CapThrChValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x2);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 2:0, 3 bits): The whole register (enum: 0 i_d, 1 i_q, 2 torque, 3 torque reference, 4 selectable).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x7
+        }
+
+        /// Sets `VALUE` (bits 2:0, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x7) | (v & 0x7))
+        }
+    }
+
+    impl Default for CapThrChValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_THR_LEVEL` at `0x43C07014` (RW, 16 bits, reset `0x0`): Source 2 triggers when the channel crosses this level between two samples (rising: previous < level <= present; falling: previous > level >= present).
+    ///
+    /// Format: signed 16-bit two's complement, the channel's unit. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapThrLevel;
+
+    impl CapThrLevel {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07014;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_THR_LEVEL;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapThrLevelValue, BusError> {
+            bus.read(Self::ADDR).map(CapThrLevelValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapThrLevelValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapThrLevelValue) -> CapThrLevelValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapThrLevel`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapThrLevelValue(u32);
+
+    impl CapThrLevelValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, the channel's unit).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for CapThrLevelValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_THR_EDGE` at `0x43C07018` (RW, 1 bits, reset `0x0`): Direction of the threshold crossing.
+    ///
+    /// Format: 0 rising, 1 falling. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapThrEdge;
+
+    impl CapThrEdge {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07018;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_THR_EDGE;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapThrEdgeValue, BusError> {
+            bus.read(Self::ADDR).map(CapThrEdgeValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapThrEdgeValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapThrEdgeValue) -> CapThrEdgeValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapThrEdge`]; bits above bit 0 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapThrEdgeValue(u32);
+
+    impl CapThrEdgeValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bit 0): The whole register (0 rising, 1 falling).
+        pub const fn value(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `VALUE` (bit 0).
+        pub const fn with_value(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+    }
+
+    impl Default for CapThrEdgeValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_SEL` at `0x43C0701C` (RW, 3 bits, reset `0x0`): What the selectable channel records: the low 16 bits of that register.
+    ///
+    /// Format: enum: 0 ADC_IA, 1 ADC_IB, 2 ADC_IC, 3 ENC_POS, 4 ENC_SPEED. Writes: the hardware rejects a word above 4: the register keeps its value and `ERR.BAD_VALUE` is set.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapSel;
+
+    impl CapSel {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0701C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_SEL;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapSelValue, BusError> {
+            bus.read(Self::ADDR).map(CapSelValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapSelValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapSelValue) -> CapSelValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapSel`]; bits above bit 2 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapSelValue(u32);
+
+    impl CapSelValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 2:0, 3 bits): The whole register (enum: 0 ADC_IA, 1 ADC_IB, 2 ADC_IC, 3 ENC_POS, 4 ENC_SPEED).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x7
+        }
+
+        /// Sets `VALUE` (bits 2:0, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x7) | (v & 0x7))
+        }
+    }
+
+    impl Default for CapSelValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_ARM` at `0x43C07020` (RW, 1 bits, reset `0x0`): Every write starts a new record: the ring empties, CAP_PRE is latched, state ARMED.
+    ///
+    /// Format: any value. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapArm;
+
+    impl CapArm {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07020;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_ARM;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapArmValue, BusError> {
+            bus.read(Self::ADDR).map(CapArmValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapArmValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapArmValue) -> CapArmValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapArm`]; bits above bit 0 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapArmValue(u32);
+
+    impl CapArmValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bit 0): The whole register (any value).
+        pub const fn value(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `VALUE` (bit 0).
+        pub const fn with_value(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+    }
+
+    impl Default for CapArmValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_TRIG` at `0x43C07024` (RW, 1 bits, reset `0x0`): A write while ARMED triggers at the next sample (any source); ignored otherwise.
+    ///
+    /// Format: any value. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapTrig;
+
+    impl CapTrig {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07024;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_TRIG;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapTrigValue, BusError> {
+            bus.read(Self::ADDR).map(CapTrigValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapTrigValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapTrigValue) -> CapTrigValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapTrig`]; bits above bit 0 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapTrigValue(u32);
+
+    impl CapTrigValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bit 0): The whole register (any value).
+        pub const fn value(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `VALUE` (bit 0).
+        pub const fn with_value(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+    }
+
+    impl Default for CapTrigValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_STATUS` at `0x43C07028` (RO, 32 bits, reset `0x0`): Capture progress; the record is index 0 (oldest) to COUNT - 1.
+    ///
+    /// Format: state and counters. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapStatus;
+
+    impl CapStatus {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07028;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_STATUS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapStatusValue, BusError> {
+            bus.read(Self::ADDR).map(CapStatusValue)
+        }
+    }
+
+    /// A value of [`CapStatus`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapStatusValue(u32);
+
+    impl CapStatusValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `STATE` (bits 1:0, 2 bits): 0 idle, 1 armed, 2 triggered, 3 done (drive::regmap::cap_state)
+        pub const fn state(self) -> u32 {
+            self.0 & 0x3
+        }
+
+        /// Sets `STATE` (bits 1:0, 2 bits) to the low 2 bits of `v` (higher bits are dropped).
+        pub const fn with_state(self, v: u32) -> Self {
+            Self((self.0 & !0x3) | (v & 0x3))
+        }
+
+        /// `TRIG_INDEX` (bits 14:4, 11 bits): record index of the trigger sample (valid in DONE)
+        pub const fn trig_index(self) -> u32 {
+            (self.0 >> 4) & 0x7FF
+        }
+
+        /// Sets `TRIG_INDEX` (bits 14:4, 11 bits) to the low 11 bits of `v` (higher bits are dropped).
+        pub const fn with_trig_index(self, v: u32) -> Self {
+            Self((self.0 & !(0x7FF << 4)) | ((v & 0x7FF) << 4))
+        }
+
+        /// `COUNT` (bits 26:16, 11 bits): samples in the record (at most CAPTURE_DEPTH)
+        pub const fn count(self) -> u32 {
+            (self.0 >> 16) & 0x7FF
+        }
+
+        /// Sets `COUNT` (bits 26:16, 11 bits) to the low 11 bits of `v` (higher bits are dropped).
+        pub const fn with_count(self, v: u32) -> Self {
+            Self((self.0 & !(0x7FF << 16)) | ((v & 0x7FF) << 16))
+        }
+    }
+
+    impl Default for CapStatusValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_IN_ID` at `0x43C07030` (RW, 16 bits, reset `0x0`): Channel 0, measured d current, written by the PS every control period.
+    ///
+    /// Format: signed 16-bit two's complement, mA (range +-32.767 A). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInId;
+
+    impl CapInId {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07030;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_IN_ID;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapInIdValue, BusError> {
+            bus.read(Self::ADDR).map(CapInIdValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapInIdValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapInIdValue) -> CapInIdValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapInId`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInIdValue(u32);
+
+    impl CapInIdValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, mA (range +-32.767 A)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for CapInIdValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_IN_IQ` at `0x43C07034` (RW, 16 bits, reset `0x0`): Channel 1, measured q current, written by the PS every control period.
+    ///
+    /// Format: signed 16-bit two's complement, mA (range +-32.767 A). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInIq;
+
+    impl CapInIq {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07034;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_IN_IQ;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapInIqValue, BusError> {
+            bus.read(Self::ADDR).map(CapInIqValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapInIqValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapInIqValue) -> CapInIqValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapInIq`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInIqValue(u32);
+
+    impl CapInIqValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, mA (range +-32.767 A)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for CapInIqValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_IN_TORQUE` at `0x43C07038` (RW, 16 bits, reset `0x0`): Channel 2, torque from the measured currents, written by the PS every control period.
+    ///
+    /// Format: signed 16-bit two's complement, 0.1 mN m (range +-3.2767 N m). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInTorque;
+
+    impl CapInTorque {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07038;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_IN_TORQUE;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapInTorqueValue, BusError> {
+            bus.read(Self::ADDR).map(CapInTorqueValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapInTorqueValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapInTorqueValue) -> CapInTorqueValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapInTorque`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInTorqueValue(u32);
+
+    impl CapInTorqueValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, 0.1 mN m (range +-3.2767 N m)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for CapInTorqueValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_IN_TREF` at `0x43C0703C` (RW, 16 bits, reset `0x0`): Channel 3, torque reference, written by the PS every control period.
+    ///
+    /// Format: signed 16-bit two's complement, 0.1 mN m (range +-3.2767 N m). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInTref;
+
+    impl CapInTref {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0703C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_IN_TREF;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapInTrefValue, BusError> {
+            bus.read(Self::ADDR).map(CapInTrefValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapInTrefValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapInTrefValue) -> CapInTrefValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapInTref`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInTrefValue(u32);
+
+    impl CapInTrefValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, 0.1 mN m (range +-3.2767 N m)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for CapInTrefValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_RD_INDEX` at `0x43C07040` (RW, 10 bits, reset `0x0`): Sample CAP_DATA0..2 show, one cycle after the write.
+    ///
+    /// Format: unsigned, record index (0 = oldest). Writes: the hardware clamps the written word to 0..=1023 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapRdIndex;
+
+    impl CapRdIndex {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07040;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_RD_INDEX;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapRdIndexValue, BusError> {
+            bus.read(Self::ADDR).map(CapRdIndexValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapRdIndexValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapRdIndexValue) -> CapRdIndexValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapRdIndex`]; bits above bit 9 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapRdIndexValue(u32);
+
+    impl CapRdIndexValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 9:0, 10 bits): The whole register (unsigned, record index (0 = oldest)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FF
+        }
+
+        /// Sets `VALUE` (bits 9:0, 10 bits) to the low 10 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FF) | (v & 0x3FF))
+        }
+    }
+
+    impl Default for CapRdIndexValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_DATA0` at `0x43C07044` (RO, 32 bits, reset `0x0`): Channels 0 and 1 of sample CAP_RD_INDEX.
+    ///
+    /// Format: two 16-bit fields, formats of CAP_IN_ID/IQ. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapData0;
+
+    impl CapData0 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07044;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_DATA0;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapData0Value, BusError> {
+            bus.read(Self::ADDR).map(CapData0Value)
+        }
+    }
+
+    /// A value of [`CapData0`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapData0Value(u32);
+
+    impl CapData0Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `I_D` (bits 15:0, 16 bits): i_d, mA, two's complement
+        pub const fn i_d(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `I_D` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_i_d(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `I_Q` (bits 31:16, 16 bits): i_q, mA, two's complement
+        pub const fn i_q(self) -> u32 {
+            (self.0 >> 16) & 0xFFFF
+        }
+
+        /// Sets `I_Q` (bits 31:16, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_i_q(self, v: u32) -> Self {
+            Self((self.0 & !(0xFFFF << 16)) | ((v & 0xFFFF) << 16))
+        }
+    }
+
+    impl Default for CapData0Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_DATA1` at `0x43C07048` (RO, 32 bits, reset `0x0`): Channels 2 and 3 of sample CAP_RD_INDEX.
+    ///
+    /// Format: two 16-bit fields, formats of CAP_IN_TORQUE/TREF. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapData1;
+
+    impl CapData1 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07048;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_DATA1;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapData1Value, BusError> {
+            bus.read(Self::ADDR).map(CapData1Value)
+        }
+    }
+
+    /// A value of [`CapData1`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapData1Value(u32);
+
+    impl CapData1Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `TORQUE` (bits 15:0, 16 bits): torque, 0.1 mN m, two's complement
+        pub const fn torque(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `TORQUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_torque(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `TREF` (bits 31:16, 16 bits): torque reference, 0.1 mN m, two's complement
+        pub const fn tref(self) -> u32 {
+            (self.0 >> 16) & 0xFFFF
+        }
+
+        /// Sets `TREF` (bits 31:16, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_tref(self, v: u32) -> Self {
+            Self((self.0 & !(0xFFFF << 16)) | ((v & 0xFFFF) << 16))
+        }
+    }
+
+    impl Default for CapData1Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_DATA2` at `0x43C0704C` (RO, 32 bits, reset `0x0`): Channels 5 (switching state) and 4 (selectable) of sample CAP_RD_INDEX.
+    ///
+    /// Format: bits and a 16-bit field. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapData2;
+
+    impl CapData2 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0704C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_DATA2;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapData2Value, BusError> {
+            bus.read(Self::ADDR).map(CapData2Value)
+        }
+    }
+
+    /// A value of [`CapData2`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapData2Value(u32);
+
+    impl CapData2Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `SW` (bits 2:0, 3 bits): switching state applied to the gate driver (GATE_STATUS.STATE)
+        pub const fn sw(self) -> u32 {
+            self.0 & 0x7
+        }
+
+        /// Sets `SW` (bits 2:0, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_sw(self, v: u32) -> Self {
+            Self((self.0 & !0x7) | (v & 0x7))
+        }
+
+        /// `SEL` (bits 31:16, 16 bits): the selectable channel (CAP_SEL)
+        pub const fn sel(self) -> u32 {
+            (self.0 >> 16) & 0xFFFF
+        }
+
+        /// Sets `SEL` (bits 31:16, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_sel(self, v: u32) -> Self {
+            Self((self.0 & !(0xFFFF << 16)) | ((v & 0xFFFF) << 16))
+        }
+    }
+
+    impl Default for CapData2Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_DEPTH` at `0x43C07050` (RO, 16 bits, reset `0x400`): Size of the ring.
+    ///
+    /// Format: unsigned, samples. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapDepth;
+
+    impl CapDepth {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07050;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_DEPTH;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapDepthValue, BusError> {
+            bus.read(Self::ADDR).map(CapDepthValue)
+        }
+    }
+
+    /// A value of [`CapDepth`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapDepthValue(u32);
+
+    impl CapDepthValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x400);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, samples).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for CapDepthValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
 }

@@ -40,6 +40,10 @@ struct Pair {
     writes: u64,
     hist: [u64; 16],
     log: Vec<String>,
+    /// Reads of CAP_DATA0..2 that returned a nonzero sample.
+    cap_data: u64,
+    /// Reads of CAP_STATUS in state DONE.
+    cap_done: u64,
 }
 
 impl Pair {
@@ -57,6 +61,8 @@ impl Pair {
             writes: 0,
             hist: [0; 16],
             log: Vec::new(),
+            cap_data: 0,
+            cap_done: 0,
         }
     }
 
@@ -131,6 +137,15 @@ impl Pair {
             Err(drive::bus::BusError::SlaveError)
         };
         self.reads += 1;
+        if let Ok(v) = want {
+            let n = name(rel);
+            if n.starts_with("CAP_DATA") && v != 0 {
+                self.cap_data += 1;
+            }
+            if n == "CAP_STATUS" && v & 3 == rm::cap_state::DONE {
+                self.cap_done += 1;
+            }
+        }
         if got != want {
             self.fail(&format!(
                 "read {rel:#06x} ({}): simpl {got:x?}, rtl {want:x?}",
@@ -264,6 +279,14 @@ fn value_for(rng: &mut Rng, r: &Register) -> u32 {
         "MPDTC_ALIGN_PERIOD" => &[0, 2, 3, 9, 40, 200],
         "MPDTC_ALIGN_ON" => &[0, 1, 3, 10, 100, 40000],
         "MPDTC_ALIGN_VEC" | "SW_STATE" => &[0, 1, 2, 3, 4, 5, 6, 7],
+        "CAP_PRE" => &[0, 1, 2, 7, 512, 1019, 1022, 1023, 1023, 5000],
+        "CAP_DECIM" => &[0, 0, 0, 1, 3],
+        "CAP_SOURCE" => &[0, 1, 2, 3],
+        "CAP_STEP" => &[0, 1, 40, 500],
+        "CAP_THR_CH" => &[0, 1, 2, 3, 4, 5],
+        "CAP_THR_LEVEL" => &[0, 1, 0xFFFF, 100, 0xFF00],
+        "CAP_SEL" => &[0, 1, 2, 3, 4, 5],
+        "CAP_RD_INDEX" => &[0, 1, 2, 3, 1020, 1023, 1024, 5000],
         _ => &[],
     };
     let roll = rng.next_u64() % 10;
@@ -361,6 +384,17 @@ fn run(seed: u64, ops: usize) -> Pair {
                         p.read(seq);
                     }
                     p.write(rel(&rm::TOP, &rm::HEARTBEAT), rng.next_u64() as u32);
+                    // The capture channels of this period, as the PS writes
+                    // them (small values around zero, sometimes large).
+                    for r in [
+                        &rm::CAP_IN_ID,
+                        &rm::CAP_IN_IQ,
+                        &rm::CAP_IN_TORQUE,
+                        &rm::CAP_IN_TREF,
+                    ] {
+                        let v = rng.range(-200, 200) * (1 + (rng.next_u64() % 2) as i32 * 100);
+                        p.write(rel(&rm::CAPTURE, r), v as u32 & 0xFFFF);
+                    }
                     p.write(rel(&rm::MPDTC, &rm::MPDTC_START), rng.next_u64() as u32);
                 }
             }
@@ -405,6 +439,13 @@ fn run(seed: u64, ops: usize) -> Pair {
                     }
                 }
                 p.write(rel(&rm::PWM, &rm::GATE_CTRL), 1);
+                // A new capture record now and then: short ones (most of
+                // the ring before the trigger) so that some complete.
+                if rng.next_u64() % 3 == 0 {
+                    let pre = [1023, 1020, 1000, 3][(rng.next_u64() % 4) as usize];
+                    p.write(rel(&rm::CAPTURE, &rm::CAP_PRE), pre);
+                    p.write(rel(&rm::CAPTURE, &rm::CAP_ARM), 1);
+                }
             }
             85..=86 => {
                 // Every register once.
@@ -462,4 +503,15 @@ fn simulated_pl_equals_verilated_pl_top() {
         p.sim_edges.len()
     );
     assert!(p.reads > 1000 && p.writes > 1000);
+    // The capture buffer completed records and its data was read.
+    println!(
+        "capture: {} CAP_STATUS reads in DONE, {} nonzero CAP_DATA reads",
+        p.cap_done, p.cap_data
+    );
+    assert!(
+        p.cap_done > 5 && p.cap_data > 100,
+        "capture: {} done, {} data",
+        p.cap_done,
+        p.cap_data
+    );
 }

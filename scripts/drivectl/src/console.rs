@@ -36,7 +36,7 @@ pub struct Target {
 }
 
 impl Target {
-    fn qemu(&self) -> Qemu {
+    pub fn qemu(&self) -> Qemu {
         let mut q = Qemu::new(self.elf.clone().unwrap_or_else(default_elf));
         q.icount = self.icount;
         q.pl_rtl = self.pl == "rtl";

@@ -5,6 +5,7 @@ use anyhow::Result;
 use clap::{Parser, Subcommand};
 
 mod console;
+mod experiment;
 mod paper_mpdcc;
 mod paper_mpdtc;
 mod sim;
@@ -40,6 +41,20 @@ enum Cmd {
     /// Benchmarks (called by scripts/bench).
     #[command(subcommand)]
     Bench(BenchCmd),
+    /// Experiments on the firmware (QEMU by default, --port for a board):
+    /// CSV, SVG plot, table or JSON.
+    #[command(subcommand)]
+    Experiment(ExperimentCmd),
+    /// Arm the PL capture buffer, wait for the record, write CSV and SVG.
+    Capture(experiment::CaptureArgs),
+}
+
+#[derive(Subcommand)]
+enum ExperimentCmd {
+    /// Torque step from rest, recorded by the PL capture buffer.
+    Step(experiment::StepArgs),
+    /// Frequency response of the torque loop (`sweep` on the firmware).
+    Sweep(experiment::SweepArgs),
 }
 
 #[derive(Subcommand)]
@@ -99,5 +114,8 @@ fn dispatch(cmd: Cmd) -> Result<()> {
         Cmd::Sim(SimCmd::Replay(a)) => sim::replay(a),
         Cmd::Bench(BenchCmd::Pmsm(a)) => paper_mpdtc::bench(a),
         Cmd::Bench(BenchCmd::Mpdcc(a)) => paper_mpdcc::bench(a),
+        Cmd::Experiment(ExperimentCmd::Step(a)) => experiment::step(a),
+        Cmd::Experiment(ExperimentCmd::Sweep(a)) => experiment::sweep(a),
+        Cmd::Capture(a) => experiment::capture(a),
     }
 }

@@ -6,7 +6,9 @@
 use super::drive::{self, DriveOps};
 use super::{write_err, ErrorCode};
 use crate::config::{self, Config};
+use crate::pl::capture::{self as pl_capture, CapState, Channel, Trigger};
 use crate::pl::top::Mode;
+use crate::servo::{bandwidth_hz, SweepPoint};
 use core::fmt::{self, Write};
 
 /// One console command: its name, its arguments (with units) and what it does.
@@ -85,6 +87,23 @@ pub const COMMANDS: &[Spec] = &[
                simulated PL's under QEMU); `bench` counts guest instructions of the control \
                code; `fault <f>` makes a fault happen (<f>: external, adc-stuck or overrun)",
     },
+    Spec {
+        name: "capture",
+        args: "arm <trigger> [<pre_samples>]|trigger|status|dump",
+        help: "PL capture buffer at the control rate (1024 samples: i_d, i_q [A], torque, \
+               torque_ref [Nm], switching state, ADC_IA): `arm` with trigger manual, step \
+               (reference step >= 0.05 Nm), fault, or <channel>>x / <channel><x (channel i_d, \
+               i_q [A], torque, torque_ref [Nm]) and pre-trigger samples (default 64, at most \
+               1023); `trigger` triggers by hand; `status`; `dump` prints the record as CSV",
+    },
+    Spec {
+        name: "sweep",
+        args: "<f_start_hz> <f_stop_hz> <amplitude_nm> [<points>]",
+        help: "frequency response of the torque loop: a sine torque reference per frequency \
+               (log spaced, default 6 points, 2..=32), gain [dB] and phase [deg] of the \
+               captured torque against the captured reference, one `f_hz gain_db phase_deg` \
+               line each, then the -3 dB bandwidth [Hz]; gates on, f_stop <= control rate / 4",
+    },
 ];
 
 /// A parsed command line.
@@ -132,6 +151,135 @@ pub enum Command<'a> {
     ConfigSchema,
     /// `config save`.
     ConfigSave,
+    /// `capture arm <trigger> [pre]`.
+    CaptureArm(Trigger, u32),
+    /// `capture trigger`.
+    CaptureTrigger,
+    /// `capture status`.
+    CaptureStatus,
+    /// `capture dump`.
+    CaptureDump,
+    /// `sweep <f_start_hz> <f_stop_hz> <amplitude_nm> [points]`.
+    Sweep {
+        /// First frequency, Hz.
+        f_start_hz: f64,
+        /// Last frequency, Hz.
+        f_stop_hz: f64,
+        /// Sine amplitude, N m.
+        amp_nm: f64,
+        /// Number of frequencies.
+        points: u32,
+    },
+}
+
+/// Default pre-trigger length of `capture arm`, samples.
+pub const CAPTURE_PRE_DEFAULT: u32 = 64;
+/// Reference step that triggers `capture arm step`, N m.
+pub const CAPTURE_STEP_NM: f64 = 0.05;
+/// Default number of `sweep` frequencies.
+pub const SWEEP_POINTS_DEFAULT: u32 = 6;
+/// Most `sweep` frequencies.
+pub const SWEEP_POINTS_MAX: u32 = 32;
+
+/// `capture arm`'s trigger word.
+fn capture_trigger(w: &str) -> Option<Trigger> {
+    match w {
+        "manual" => return Some(Trigger::Manual),
+        "step" => return Some(Trigger::RefStep(CAPTURE_STEP_NM)),
+        "fault" => return Some(Trigger::Fault),
+        _ => {}
+    }
+    let (i, falling) = match (w.find('>'), w.find('<')) {
+        (Some(i), None) => (i, false),
+        (None, Some(i)) => (i, true),
+        _ => return None,
+    };
+    let channel = Channel::from_name(&w[..i])?;
+    let level = number(&w[i + 1..])?;
+    Some(Trigger::Threshold {
+        channel,
+        level,
+        falling,
+    })
+}
+
+fn parse_capture<'a>(args: &[&'a str]) -> Result<Command<'a>, ParseError<'a>> {
+    const USAGE: &str = "expected `capture arm <trigger> [pre_samples]`, `capture trigger`, \
+                         `capture status` or `capture dump`";
+    match args {
+        ["trigger"] => Ok(Command::CaptureTrigger),
+        ["status"] => Ok(Command::CaptureStatus),
+        ["dump"] => Ok(Command::CaptureDump),
+        ["arm", t, rest @ ..] if rest.len() <= 1 => {
+            let t = capture_trigger(t).ok_or(ParseError::BadArgs(
+                "capture",
+                "trigger must be manual, step, fault or <channel>>x / <channel><x with channel \
+                 i_d, i_q, torque or torque_ref and a finite level",
+            ))?;
+            let pre = match rest {
+                [] => CAPTURE_PRE_DEFAULT,
+                [p] => match p.parse::<u32>() {
+                    Ok(p) if p < pl_capture::DEPTH => p,
+                    _ => {
+                        return Err(ParseError::BadArgs(
+                            "capture",
+                            "pre_samples must be a whole number in 0..=1023",
+                        ))
+                    }
+                },
+                _ => unreachable!(),
+            };
+            Ok(Command::CaptureArm(t, pre))
+        }
+        _ => Err(ParseError::BadArgs("capture", USAGE)),
+    }
+}
+
+fn parse_sweep<'a>(args: &[&'a str]) -> Result<Command<'a>, ParseError<'a>> {
+    let (f0, f1, a, n) = match args {
+        [f0, f1, a] => (*f0, *f1, *a, None),
+        [f0, f1, a, n] => (*f0, *f1, *a, Some(*n)),
+        _ => {
+            return Err(ParseError::BadArgs(
+                "sweep",
+                "expected <f_start_hz> <f_stop_hz> <amplitude_nm> [points]",
+            ))
+        }
+    };
+    let (Some(f_start_hz), Some(f_stop_hz)) = (number(f0), number(f1)) else {
+        return Err(ParseError::BadArgs(
+            "sweep",
+            "frequencies must be finite numbers [Hz]",
+        ));
+    };
+    if !(f_start_hz > 0.0 && f_stop_hz > f_start_hz) {
+        return Err(ParseError::BadArgs(
+            "sweep",
+            "need 0 < f_start_hz < f_stop_hz",
+        ));
+    }
+    let amp_nm = number(a).ok_or(ParseError::BadArgs(
+        "sweep",
+        "amplitude must be a finite number [Nm]",
+    ))?;
+    let points = match n {
+        None => SWEEP_POINTS_DEFAULT,
+        Some(n) => match n.parse::<u32>() {
+            Ok(n) if (2..=SWEEP_POINTS_MAX).contains(&n) => n,
+            _ => {
+                return Err(ParseError::BadArgs(
+                    "sweep",
+                    "points must be a whole number in 2..=32",
+                ))
+            }
+        },
+    };
+    Ok(Command::Sweep {
+        f_start_hz,
+        f_stop_hz,
+        amp_nm,
+        points,
+    })
 }
 
 /// Default `step` window, s.
@@ -315,6 +463,8 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
                 "expected `config list|get <name>|set <name> <value>|reset|schema|save`",
             )),
         },
+        "capture" => parse_capture(args.as_slice()),
+        "sweep" => parse_sweep(args.as_slice()),
         _ => Err(ParseError::Unknown(name)),
     }
 }
@@ -544,6 +694,95 @@ pub fn execute<W: Write>(
             config::write_schema(out)?;
             out.write_str("\r\n")?;
         }
+        Command::CaptureArm(t, pre) => {
+            try_drive!("capture", drv.capture_arm(t, pre));
+            write!(out, "capture: armed, pre {pre} samples\r\n")?;
+        }
+        Command::CaptureTrigger => {
+            try_drive!("capture", drv.capture_trigger());
+            out.write_str("capture: triggered by hand\r\n")?;
+        }
+        Command::CaptureStatus => {
+            let st = try_drive!("capture", drv.capture_status());
+            write!(out, "capture: {}\r\n", st.state.name())?;
+            write!(out, "samples: {}\r\n", st.count)?;
+            write!(out, "trigger_index: {}\r\n", st.trig_index)?;
+            write!(
+                out,
+                "sample_period: {:.3} us\r\n",
+                drv.capture_period_s() * 1e6
+            )?;
+        }
+        Command::CaptureDump => {
+            let st = try_drive!("capture", drv.capture_status());
+            if st.state != CapState::Done {
+                write_err(
+                    out,
+                    ErrorCode::BadArgs,
+                    format_args!(
+                        "capture: no complete record (state {}; `capture arm` first)",
+                        st.state.name()
+                    ),
+                )?;
+                return Ok(Action::None);
+            }
+            let ts = drv.capture_period_s();
+            out.write_str("t_ms,i_d_A,i_q_A,torque_Nm,torque_ref_Nm,sw_state,adc_ia_raw\r\n")?;
+            for i in 0..st.count {
+                let x = try_drive!("capture", drv.capture_sample(i));
+                let t = (f64::from(i) - f64::from(st.trig_index)) * ts * 1e3;
+                write!(
+                    out,
+                    "{t:.4},{:.3},{:.3},{:.4},{:.4},{},{}\r\n",
+                    x.i_d_a, x.i_q_a, x.torque_nm, x.torque_ref_nm, x.sw, x.sel as i16
+                )?;
+            }
+        }
+        Command::Sweep {
+            f_start_hz,
+            f_stop_hz,
+            amp_nm,
+            points,
+        } => {
+            let rate = drv.status().control_rate_hz;
+            if f_stop_hz > 0.25 * rate {
+                write_err(
+                    out,
+                    ErrorCode::BadArgs,
+                    format_args!(
+                        "sweep: f_stop {f_stop_hz} Hz is above a quarter of the control rate \
+                         ({rate:.0} Hz)"
+                    ),
+                )?;
+                return Ok(Action::None);
+            }
+            let mut pts: heapless::Vec<SweepPoint, { SWEEP_POINTS_MAX as usize }> =
+                heapless::Vec::new();
+            let ratio = f_stop_hz / f_start_hz;
+            out.write_str("f_hz gain_db phase_deg\r\n")?;
+            for k in 0..points {
+                let f = f_start_hz * libm::pow(ratio, f64::from(k) / f64::from(points - 1));
+                let p = match drv.sweep_point(f, amp_nm) {
+                    Ok(p) => p,
+                    Err(e) => {
+                        drv.sweep_end();
+                        drive::write_error(out, "sweep", e)?;
+                        return Ok(Action::None);
+                    }
+                };
+                write!(out, "{:.1} {:.2} {:.1}\r\n", p.f_hz, p.gain_db, p.phase_deg)?;
+                // Capacity is SWEEP_POINTS_MAX, the parser's bound on `points`.
+                let _ = pts.push(p);
+            }
+            drv.sweep_end();
+            match bandwidth_hz(&pts) {
+                Some(b) => write!(out, "bandwidth: {b:.0} Hz\r\n")?,
+                None => write!(
+                    out,
+                    "bandwidth: none (gain above -3 dB up to {f_stop_hz:.0} Hz)\r\n"
+                )?,
+            }
+        }
     }
     out.write_str("OK\r\n")?;
     Ok(Action::None)
@@ -709,6 +948,12 @@ mod tests {
                 .replace("<window_ms>", "2")
                 .replace("<ms>", "5")
                 .replace("<f>", "adc-stuck")
+                .replace("<trigger>", "torque>0.2")
+                .replace("<pre_samples>", "10")
+                .replace("<f_start_hz>", "100")
+                .replace("<f_stop_hz>", "1000")
+                .replace("<amplitude_nm>", "0.1")
+                .replace("<points>", "4")
                 .replace(['[', ']'], "");
             for alt in args.split('|') {
                 let line = std::format!("{} {}", s.name, alt);

@@ -2,10 +2,11 @@
 //! ([`DriveOps`]) and how replies and errors are written.
 use super::{write_err, ErrorCode};
 use crate::config::store::SlotState;
+use crate::pl::capture::{CapSample, CapStatus, Trigger};
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
 use crate::servo::faults::FaultRecord;
-use crate::servo::{Measured, ServoConfig, ServoError, StepResult};
+use crate::servo::{Measured, ServoConfig, ServoError, StepResult, SweepPoint};
 use core::fmt::{self, Write};
 
 /// What is behind the drivers.
@@ -162,6 +163,34 @@ pub trait DriveOps {
     fn reconfigure(&mut self, _cfg: &ServoConfig) -> Result<(), DriveError> {
         Err(DriveError::Unsupported)
     }
+    /// Arms the capture buffer at the control rate with `pre` samples
+    /// before the trigger.
+    fn capture_arm(&mut self, _t: Trigger, _pre: u32) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Manual capture trigger.
+    fn capture_trigger(&mut self) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Capture state.
+    fn capture_status(&mut self) -> Result<CapStatus, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Sample `i` of the record.
+    fn capture_sample(&mut self, _i: u32) -> Result<CapSample, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Time between capture samples in the active mode, s.
+    fn capture_period_s(&mut self) -> f64 {
+        0.0
+    }
+    /// One frequency of `sweep`: the sine reference at `f_hz` (kept
+    /// running), a capture of it, gain and phase.
+    fn sweep_point(&mut self, _f_hz: f64, _amp_nm: f64) -> Result<SweepPoint, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Ends a sweep: the sine stops, the reference returns to 0 N m.
+    fn sweep_end(&mut self) {}
 }
 
 /// Writes the final `ERR` line of a failed drive command.
@@ -211,6 +240,11 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
         DriveError::Servo(ServoError::BadConfig(e)) => {
             write_err(out, ErrorCode::BadArgs, format_args!("{cmd}: {e}"))
         }
+        DriveError::Servo(ServoError::BadFrequency(f)) => write_err(
+            out,
+            ErrorCode::BadArgs,
+            format_args!("{cmd}: {f} Hz is outside (0, control rate / 4]"),
+        ),
         DriveError::Servo(ServoError::Bus(b)) => write_err(
             out,
             ErrorCode::BusError,

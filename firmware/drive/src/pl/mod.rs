@@ -11,6 +11,7 @@
 //! - [`adc`]: averaged phase currents.
 //! - [`enc`]: encoder position and speed, converted to the electrical angle.
 //! - [`fault`]: latched faults, over-current limit, watchdog timeout.
+//! - [`capture`]: the triggered capture buffer (arm, channels, read-back).
 //! - [`mpdtc`]: parameters, per-period inputs and status of the MPDTC core
 //!   and its control sequence.
 //!
@@ -19,6 +20,7 @@
 //! shift or mask.
 
 pub mod adc;
+pub mod capture;
 pub mod enc;
 pub mod fault;
 pub mod mpdtc;

@@ -17,6 +17,7 @@
 //!   ADC results.
 use crate::bus::{BusError, RegisterBus};
 use crate::pl::adc::{Adc, AdcScale};
+use crate::pl::capture::Capture;
 use crate::pl::enc::Encoder;
 use crate::pl::fault::{Fault, Faults};
 use crate::pl::mpdtc::Mpdtc;
@@ -36,6 +37,8 @@ pub mod faults;
 mod step;
 use faults::{FaultHistory, FaultRecord, Sample, Snapshot};
 pub use step::{StepRecorder, StepResult, STEP_SAMPLES_MAX};
+mod sweep;
+pub use sweep::{bandwidth_hz, tone_response, Sine, SweepPoint};
 
 /// Control periods without a new ADC result that latch `ADC_STUCK`: one
 /// (a control period holds one averaged result in MPDTC and off, four in
@@ -152,6 +155,8 @@ pub enum ServoError {
     GatesOn,
     /// A configuration the controllers refuse.
     BadConfig(ParamError),
+    /// A sine frequency outside (0, control rate / 4], Hz.
+    BadFrequency(f64),
 }
 
 impl From<BusError> for ServoError {
@@ -208,6 +213,8 @@ pub struct Servo {
     adc_stale: u32,
     last_pos: Option<u32>,
     missed: u64,
+    /// Sine torque reference (`sweep`), while the gates are on.
+    sine: Option<Sine>,
 }
 
 impl Servo {
@@ -257,6 +264,7 @@ impl Servo {
             adc_stale: 0,
             last_pos: None,
             missed: 0,
+            sine: None,
         })
     }
 
@@ -406,6 +414,7 @@ impl Servo {
         }
         self.gates = false;
         self.rec.cancel();
+        self.sine = None;
         Pwm(&mut *bus).set_gates(false)?;
         Mpdtc(&mut *bus).set_ctrl(false, true)?;
         Ok(())
@@ -664,12 +673,19 @@ impl Servo {
             {
                 self.torque_ref_nm = r;
             }
+            if let Some(sine) = &mut self.sine {
+                self.torque_ref_nm = sine.next_nm();
+            }
         }
         match (self.mode, running) {
             (Mode::Foc, true) => self.foc_step(bus, &m)?,
             (Mode::Mpdtc, true) => self.mpdtc_step(bus, &m)?,
             _ => {}
         }
+        // The capture channels of this period (after the controller, so
+        // that the MPDTC core's inputs go out first).
+        let me = self.measured;
+        Capture(&mut *bus).write_channels(me.i_d_a, me.i_q_a, me.torque_nm, self.torque_ref_nm)?;
         Ok(())
     }
 

@@ -3,6 +3,7 @@
 //! the PMSM plant. See `docs/ARCHITECTURE.md` (simulated PL).
 
 pub mod adc;
+pub mod capture;
 pub mod core;
 pub mod enc;
 pub mod fault;

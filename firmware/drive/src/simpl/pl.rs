@@ -19,6 +19,7 @@
 //! between in closed form (each block's `quiet`/`skip`).
 
 use super::adc::Adc;
+use super::capture::{CapIn, Capture, Sample};
 use super::core::{sext, Core};
 use super::enc::{Encoder, Sync2};
 use super::fault::{Fault, FaultIn};
@@ -29,7 +30,7 @@ use super::NEVER;
 use crate::bus::BusError;
 use crate::gates::{DeadTime, GateDriver, GateInputs, GateOutputs, DEAD_TIME_MAX_CYCLES};
 use crate::pmsm::mpdtc_fixed::{FixedInputs, FixedParams};
-use crate::regmap::{self as rm, mode, ADC, ENC, FAULT, MPDTC, PWM, TOP};
+use crate::regmap::{self as rm, mode, ADC, CAPTURE, ENC, FAULT, MPDTC, PWM, TOP};
 
 const S_CTRL: usize = slot_of(&TOP, &rm::CTRL);
 const S_ERR: usize = slot_of(&TOP, &rm::ERR);
@@ -56,6 +57,21 @@ const S_ALIGN_VEC: usize = slot_of(&MPDTC, &rm::MPDTC_ALIGN_VEC);
 const S_ALIGN_PERIOD: usize = slot_of(&MPDTC, &rm::MPDTC_ALIGN_PERIOD);
 const S_ALIGN_ON: usize = slot_of(&MPDTC, &rm::MPDTC_ALIGN_ON);
 const S_ALIGN_TIME: usize = slot_of(&MPDTC, &rm::MPDTC_ALIGN_TIME);
+const S_CAP_SOURCE: usize = slot_of(&CAPTURE, &rm::CAP_SOURCE);
+const S_CAP_PRE: usize = slot_of(&CAPTURE, &rm::CAP_PRE);
+const S_CAP_DECIM: usize = slot_of(&CAPTURE, &rm::CAP_DECIM);
+const S_CAP_STEP: usize = slot_of(&CAPTURE, &rm::CAP_STEP);
+const S_CAP_THR_CH: usize = slot_of(&CAPTURE, &rm::CAP_THR_CH);
+const S_CAP_THR_LEVEL: usize = slot_of(&CAPTURE, &rm::CAP_THR_LEVEL);
+const S_CAP_THR_EDGE: usize = slot_of(&CAPTURE, &rm::CAP_THR_EDGE);
+const S_CAP_SEL: usize = slot_of(&CAPTURE, &rm::CAP_SEL);
+const S_CAP_ARM: usize = slot_of(&CAPTURE, &rm::CAP_ARM);
+const S_CAP_TRIG: usize = slot_of(&CAPTURE, &rm::CAP_TRIG);
+const S_CAP_IN_ID: usize = slot_of(&CAPTURE, &rm::CAP_IN_ID);
+const S_CAP_IN_IQ: usize = slot_of(&CAPTURE, &rm::CAP_IN_IQ);
+const S_CAP_IN_TORQUE: usize = slot_of(&CAPTURE, &rm::CAP_IN_TORQUE);
+const S_CAP_IN_TREF: usize = slot_of(&CAPTURE, &rm::CAP_IN_TREF);
+const S_CAP_RD_INDEX: usize = slot_of(&CAPTURE, &rm::CAP_RD_INDEX);
 
 const A_ID: usize = TOP.addr(&rm::ID);
 const A_VERSION: usize = TOP.addr(&rm::VERSION);
@@ -76,6 +92,11 @@ const A_MPDTC_LATENCY: usize = MPDTC.addr(&rm::MPDTC_LATENCY);
 const A_MPDTC_IQ_REF: usize = MPDTC.addr(&rm::MPDTC_IQ_REF);
 const A_SEQ_STATUS: usize = MPDTC.addr(&rm::MPDTC_SEQ_STATUS);
 const A_ALIGN_POS: usize = MPDTC.addr(&rm::MPDTC_ALIGN_POS);
+const A_CAP_STATUS: usize = CAPTURE.addr(&rm::CAP_STATUS);
+const A_CAP_DATA0: usize = CAPTURE.addr(&rm::CAP_DATA0);
+const A_CAP_DATA1: usize = CAPTURE.addr(&rm::CAP_DATA1);
+const A_CAP_DATA2: usize = CAPTURE.addr(&rm::CAP_DATA2);
+const A_CAP_DEPTH: usize = CAPTURE.addr(&rm::CAP_DEPTH);
 
 const DT_MAX: DeadTime = match DeadTime::new(DEAD_TIME_MAX_CYCLES) {
     Ok(d) => d,
@@ -195,6 +216,7 @@ pub struct SimPl {
     core_s: u8,
     core_iq_ref: i32,
     core_done: u16,
+    cap: Capture,
     cycles: u64,
     /// Pin levels applied from the next cycle on.
     pub pins: Pins,
@@ -223,6 +245,7 @@ impl SimPl {
             core_s: 0,
             core_iq_ref: 0,
             core_done: 0,
+            cap: Capture::default(),
             cycles: 0,
             pins: Pins::default(),
             stepped: 0,
@@ -309,6 +332,39 @@ impl SimPl {
         }
     }
 
+    /// `capture_buf`'s inputs in the present cycle.
+    fn cap_inputs(&self, c: &Comb, arm: bool, trig: bool) -> CapIn {
+        let sel = match self.r(S_CAP_SEL) {
+            0 => self.adc.avg_reg(0),
+            1 => self.adc.avg_reg(1),
+            2 => self.adc.avg_reg(2),
+            3 => u32::from(self.enc.pos),
+            _ => u32::from(self.enc.speed as u16),
+        };
+        CapIn {
+            arm,
+            trig,
+            source: self.r(S_CAP_SOURCE),
+            pre: self.r(S_CAP_PRE),
+            decim: self.r(S_CAP_DECIM),
+            step: self.r(S_CAP_STEP),
+            thr_ch: self.r(S_CAP_THR_CH),
+            thr_level: self.r(S_CAP_THR_LEVEL) as u16,
+            falling: self.r(S_CAP_THR_EDGE) & 1 != 0,
+            sample: self.adc.av,
+            fault: c.fault_any,
+            ch: Sample {
+                i_d: self.r(S_CAP_IN_ID) as u16,
+                i_q: self.r(S_CAP_IN_IQ) as u16,
+                torque: self.r(S_CAP_IN_TORQUE) as u16,
+                tref: self.r(S_CAP_IN_TREF) as u16,
+                sel: sel as u16,
+                sw: c.state_sel,
+            },
+            rd_index: self.r(S_CAP_RD_INDEX),
+        }
+    }
+
     fn dead_time(&self) -> DeadTime {
         // DEAD_TIME is clamped to the driver's range by the table.
         DeadTime::new(self.r(S_DEAD_TIME) as u16).unwrap_or(DT_MAX)
@@ -358,6 +414,7 @@ impl SimPl {
         let heartbeat = w(S_HEARTBEAT);
         let start = w(S_MPDTC_START);
         let c = self.comb(start);
+        let cap_in = self.cap_inputs(&c, w(S_CAP_ARM), w(S_CAP_TRIG));
         let mut ev = Events {
             adc_average: self.adc.av,
             pwm_period: self.pwm.bottom(),
@@ -430,6 +487,7 @@ impl SimPl {
         if valid {
             self.core_done = self.core_done.wrapping_add(1);
         }
+        self.cap.step(&cap_in);
         // Register file.
         let mut err_set = 0;
         match strobe {
@@ -503,6 +561,7 @@ impl SimPl {
         self.fault.skip(k);
         self.seq.skip(k);
         self.core.skip(k);
+        self.cap.skip(self.r(S_CAP_RD_INDEX));
         self.cycles += k;
         self.skips += 1;
     }
@@ -575,6 +634,11 @@ impl SimPl {
             A_MPDTC_IQ_REF => (self.core_iq_ref as u32) & rm::MPDTC_IQ_REF.mask(),
             A_SEQ_STATUS => self.seq.status(),
             A_ALIGN_POS => u32::from(self.seq.align_pos),
+            A_CAP_STATUS => self.cap.status(),
+            A_CAP_DATA0 => (u32::from(self.cap.rd.i_q) << 16) | u32::from(self.cap.rd.i_d),
+            A_CAP_DATA1 => (u32::from(self.cap.rd.tref) << 16) | u32::from(self.cap.rd.torque),
+            A_CAP_DATA2 => (u32::from(self.cap.rd.sel) << 16) | u32::from(self.cap.rd.sw),
+            A_CAP_DEPTH => rm::CAP_DEPTH.reset,
             _ => return slot(addr).map(|s| self.r(s)),
         };
         Some(v)

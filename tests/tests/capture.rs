@@ -1,0 +1,171 @@
+//! The PL capture buffer and the frequency response under QEMU, through the
+//! console: `capture arm|trigger|status|dump` and `sweep` on the simulated
+//! PL, bad arguments included.
+use drivectl::link::{Final, Reply, Session};
+use system_tests::{boot, cmd, field};
+
+fn assert_ok(r: &Reply) {
+    assert!(r.is_ok(), "{r:?}");
+}
+
+fn assert_err(r: &Reply, want_code: &str) {
+    match &r.fin {
+        Final::Err { code, .. } => assert_eq!(code, want_code, "{r:?}"),
+        Final::Ok => panic!("expected ERR {want_code}, got {r:?}"),
+    }
+}
+
+fn num(r: &Reply, key: &str) -> f64 {
+    field(r, key)
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("no number for {key}: {r:?}"))
+}
+
+/// Polls `capture status` until the record is complete.
+fn wait_done(s: &mut Session) -> Reply {
+    for _ in 0..200 {
+        let st = cmd(s, "capture status");
+        if field(&st, "capture") == Some("done") {
+            return st;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    }
+    panic!("capture did not complete");
+}
+
+#[test]
+fn bad_capture_and_sweep_arguments_change_nothing() {
+    let mut s = boot();
+    let st = cmd(&mut s, "capture status");
+    assert_ok(&st);
+    assert_eq!(field(&st, "capture"), Some("idle"), "{st:?}");
+    for bad in [
+        "capture",
+        "capture arm",
+        "capture arm bogus",
+        "capture arm torque>abc",
+        "capture arm torque>nan",
+        "capture arm speed>1",
+        "capture arm torque>0.1<0.2",
+        "capture arm manual 1024",
+        "capture arm manual -1",
+        "capture arm manual 10 20",
+        "capture dumpp",
+        "sweep",
+        "sweep 100",
+        "sweep 100 50 0.1",
+        "sweep 0 100 0.1",
+        "sweep 100 1000 nan",
+        "sweep 100 1000 0.1 1",
+        "sweep 100 1000 0.1 33",
+        "sweep 100 inf 0.1",
+    ] {
+        assert_err(&cmd(&mut s, bad), "bad-args");
+    }
+    // Nothing was armed by the refused lines; no record to dump.
+    let st = cmd(&mut s, "capture status");
+    assert_eq!(field(&st, "capture"), Some("idle"), "{st:?}");
+    assert_err(&cmd(&mut s, "capture dump"), "bad-args");
+    // A sweep needs a mode and the gates.
+    assert_err(&cmd(&mut s, "sweep 100 1000 0.1 2"), "mode-off");
+    assert_ok(&cmd(&mut s, "mode mpdtc"));
+    assert_err(&cmd(&mut s, "sweep 100 1000 0.1 2"), "gates-off");
+    assert_ok(&cmd(&mut s, "enable"));
+    // Beyond the torque limit, and above a quarter of the control rate.
+    assert_err(&cmd(&mut s, "sweep 100 1000 1.5 2"), "bad-args");
+    assert_err(&cmd(&mut s, "sweep 100 20000 0.1 2"), "bad-args");
+    let st = cmd(&mut s, "status");
+    assert_eq!(field(&st, "gates"), Some("on"), "{st:?}");
+    assert!(num(&st, "torque_ref").abs() < 1e-9, "{st:?}");
+}
+
+/// A step captured with its pre-trigger part: the record's trigger sample
+/// is at t = 0 with the new reference, the samples before it hold the old
+/// one, and the torque settles at the reference.
+#[test]
+fn capture_dump_shows_an_mpdtc_step_with_pre_trigger() {
+    let mut s = boot();
+    assert_ok(&cmd(&mut s, "mode mpdtc"));
+    assert_ok(&cmd(&mut s, "enable"));
+    assert_ok(&cmd(&mut s, "capture arm step 100"));
+    let st = cmd(&mut s, "capture status");
+    assert_eq!(field(&st, "capture"), Some("armed"), "{st:?}");
+    let ts_us = num(&st, "sample_period");
+    assert!((ts_us - 15.64).abs() < 0.01, "{st:?}");
+    assert_ok(&cmd(&mut s, "step 0.4"));
+    let st = wait_done(&mut s);
+    assert_eq!(num(&st, "samples"), 1024.0, "{st:?}");
+    assert_eq!(num(&st, "trigger_index"), 100.0, "{st:?}");
+    let d = cmd(&mut s, "capture dump");
+    assert_ok(&d);
+    assert_eq!(
+        d.lines[0],
+        "t_ms,i_d_A,i_q_A,torque_Nm,torque_ref_Nm,sw_state,adc_ia_raw"
+    );
+    let rows: Vec<Vec<f64>> = d.lines[1..]
+        .iter()
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 1024);
+    assert!(rows.iter().all(|r| r.len() == 7));
+    // t = 0 at the trigger sample; sample period 15.64 us.
+    assert_eq!(rows[100][0], 0.0);
+    assert!(
+        (rows[101][0] - ts_us * 1e-3).abs() < 1e-4,
+        "{:?}",
+        rows[101]
+    );
+    assert_eq!((rows[99][4], rows[100][4]), (0.0, 0.4));
+    assert!(rows[99][3].abs() < 0.05, "{:?}", rows[99]);
+    // Settled after 1 ms: the mean of the last 500 samples is 0.4 N m.
+    let tail = &rows[524..];
+    let mean = tail.iter().map(|r| r[3]).sum::<f64>() / tail.len() as f64;
+    assert!((mean - 0.4).abs() < 0.02, "{mean}");
+    // Switching states 0..=7 only, and the drive switched.
+    assert!(rows.iter().all(|r| (0.0..=7.0).contains(&r[5])));
+    assert!(rows[100..].windows(2).any(|w| w[0][5] != w[1][5]));
+}
+
+/// A manual trigger in FOC: the sample period is one PWM period.
+#[test]
+fn manual_capture_in_foc_at_the_pwm_rate() {
+    let mut s = boot();
+    assert_ok(&cmd(&mut s, "mode foc"));
+    assert_ok(&cmd(&mut s, "capture arm manual 0"));
+    let st = cmd(&mut s, "capture status");
+    assert!((num(&st, "sample_period") - 62.56).abs() < 0.01, "{st:?}");
+    assert_ok(&cmd(&mut s, "capture trigger"));
+    let st = wait_done(&mut s);
+    assert_eq!(num(&st, "trigger_index"), 0.0, "{st:?}");
+}
+
+/// `sweep` in both modes: one `f_hz gain_db phase_deg` line per point and
+/// the bandwidth; at the lowest frequency the torque follows the reference
+/// (near 0 dB, little lag).
+#[test]
+fn sweep_prints_the_frequency_response_in_both_modes() {
+    let mut s = boot();
+    for (mode, line) in [
+        ("mpdtc", "sweep 300 12000 0.2 3"),
+        ("foc", "sweep 200 3000 0.2 3"),
+    ] {
+        assert_ok(&cmd(&mut s, &format!("mode {mode}")));
+        assert_ok(&cmd(&mut s, "enable"));
+        let r = cmd(&mut s, line);
+        assert_ok(&r);
+        assert_eq!(r.lines[0], "f_hz gain_db phase_deg", "{r:?}");
+        let pts: Vec<Vec<f64>> = r.lines[1..4]
+            .iter()
+            .map(|l| l.split(' ').map(|x| x.parse().unwrap()).collect())
+            .collect();
+        assert!(
+            pts[0][1].abs() < 1.5 && pts[0][2].abs() < 30.0,
+            "{mode}: {r:?}"
+        );
+        assert!(pts[2][1] < pts[0][1], "{mode}: {r:?}");
+        assert!(r.lines[4].starts_with("bandwidth: "), "{r:?}");
+        // The reference is back at 0 after the sweep.
+        let st = cmd(&mut s, "status");
+        assert!(num(&st, "torque_ref").abs() < 1e-9, "{st:?}");
+    }
+}
