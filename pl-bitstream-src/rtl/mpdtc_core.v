@@ -267,8 +267,8 @@ module mpdtc_core (
     assign cs_s[0] = s0;
     assign cs_s[1] = s1;
     assign cs_s[2] = s2;
-    integer k;
-    always @(posedge clk_i) begin
+    always @(posedge clk_i) begin : stage1
+        integer k;
         for (k = 0; k < 3; k = k + 1) begin
             m_u0c[k]   <= rsat16(mul(cs_c[k], pu0));
             m_u0s[k]   <= rsat16(mul(cs_s[k], pu0));
@@ -295,7 +295,8 @@ module mpdtc_core (
     reg signed [25:0] la_d[0:2], la_q[0:2], nla_d[0:2];  // leg a, -leg a (d)
     reg signed [24:0] lb_d[0:2], lb_q[0:2];
     reg signed [47:0] f_ad, f_aq;
-    always @(posedge clk_i) begin
+    always @(posedge clk_i) begin : stage2
+        integer k;
         for (k = 0; k < 3; k = k + 1) begin
             la_d[k]  <= {m_u0c[k][24], m_u0c[k]};
             nla_d[k] <= -{m_u0c[k][24], m_u0c[k]};
@@ -315,7 +316,8 @@ module mpdtc_core (
     function automatic signed [47:0] ext26(input signed [25:0] x);
         ext26 = {{22{x[25]}}, x};
     endfunction
-    always @(posedge clk_i) begin
+    always @(posedge clk_i) begin : stage3
+        integer k;
         for (k = 0; k < 3; k = k + 1) begin
             lc_d[k]  <= leg_c(ext26(la_d[k]) + ext25(lb_d[k]), ext26(nla_d[k]) - ext25(lb_d[k]));
             lc_q[k]  <= leg_c(ext26(la_q[k]) + ext25(lb_q[k]), ext25(m_u0s[k]) - ext25(lb_q[k]));
@@ -340,8 +342,8 @@ module mpdtc_core (
     endfunction
     reg signed [24:0] u0_d, u0_q, u1_d, u1_q;
     reg signed [24:0] u2_d[0:7], u2_q[0:7];
-    integer s;
-    always @(posedge clk_i) begin
+    always @(posedge clk_i) begin : stage4
+        integer s;
         u0_d <= sat25(ext25(proj_ab(sp_q[2:1], ra_d[0], lb_d[0], rab_d[0]))
                       + (sp_q[0] ? ext25(lc_d[0]) : 48'sd0));
         u0_q <= sat25(ext25(proj_ab(sp_q[2:1], ra_q[0], lb_q[0], rab_q[0]))
@@ -415,7 +417,8 @@ module mpdtc_core (
     reg signed [24:0] y1_d, y1_q, iq_ref, y2_d[0:7], y2_q[0:7];
     reg signed [24:0] i1_d, i1_q, ihn_d, ihn_q;
     reg signed [47:0] yo_d[0:7], yo_q[0:7];
-    always @(posedge clk_i) begin
+    always @(posedge clk_i) begin : stages12_13
+        integer s;
         // 12
         y1_d   <= sat25(ext25(u1_d) + ext25(eta_d));
         y1_q   <= sat25(ext25(u1_q) + ext25(eta_q));
@@ -468,10 +471,10 @@ module mpdtc_core (
     endfunction
 
     reg [50:0] keys[0:7];
-    integer j;
     reg win;
     reg [2:0] best;
-    always @(*) begin
+    always @(*) begin : select8
+        integer s, j;
         for (s = 0; s < 8; s = s + 1) begin
             keys[s] = key(!inband2[s], inband2[s] ? cost2[s] : ext25(err2[s]), ntr2[s]);
         end
@@ -486,7 +489,8 @@ module mpdtc_core (
         end
     end
 
-    always @(posedge clk_i) begin
+    always @(posedge clk_i) begin : stages14_19
+        integer s;
         // 14
         k_pd <= mul(pa, i1_d);
         k_pq <= mul(pa, i1_q);
