@@ -317,6 +317,7 @@ module mpdtc_core (
     wire signed [42:0] mp[0:15];
     always @(*) begin : pool_operands
         integer m;
+        m  = 0;
         ma = {18 * 16{1'b0}};
         mb = {25 * 16{1'b0}};
         if (ph[0]) begin  // stage 1

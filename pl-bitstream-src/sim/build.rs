@@ -38,6 +38,11 @@ const TOPS: &[(&str, &[&str], &str)] = &[
         "pl_top_shim.cpp",
     ),
     ("mpdtc_core", &["mpdtc_core.v"], "mpdtc_core_shim.cpp"),
+    (
+        "mpdtc_frontend",
+        &["mpdtc_frontend.v", "sin_table.vh"],
+        "mpdtc_frontend_shim.cpp",
+    ),
 ];
 
 fn run(cmd: &mut Command) {
