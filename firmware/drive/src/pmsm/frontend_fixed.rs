@@ -141,11 +141,10 @@ pub fn frontend(inp: &FrontendInputs, p: &FrontendParams) -> FrontendOutputs {
         *t = trig(phi.wrapping_add(off));
     }
     // ADC -> phase currents -> Clarke -> Park at the sample's angle.
-    let mut i = [0i64; 3];
-    for k in 0..3 {
+    let i: [i64; 3] = core::array::from_fn(|k| {
         let diff = sx(inp.adc[k], 16) - sx(p.adc_off[k], 16);
-        i[k] = sat25(rshift_round(diff * sx(p.adc_gain[k], 18), ADC_SHIFT)) as i64;
-    }
+        sat25(rshift_round(diff * sx(p.adc_gain[k], 18), ADC_SHIFT)) as i64
+    });
     let al = rnd(ONE_THIRD as i64 * sat25(2 * i[0] - i[1] - i[2]) as i64);
     let be = rnd(INV_SQRT3 as i64 * sat25(i[1] - i[2]) as i64);
     let (c, s) = trig(phi);
