@@ -5,40 +5,39 @@
 // KINV sQ8.16 (25), WGT sQ3.14 (18), COST = MAG x WGT (43 bits, kept 48).
 //
 // Timing: in_valid_i (with in_ready_o high) captures the inputs and the
-// parameters; out_valid_o is high exactly LATENCY = 20 cycles later, with
-// s_next_o and the debug outputs valid in that cycle; the state registers
-// (S[k], S[k-1], eta, x, i_hat, nu, iq_ref_prev) take their next values at
-// the same edge that raises out_valid_o. Initiation interval = 20 cycles:
-// decision k+1 needs S[k+1] and the observer state of decision k, so one
-// decision is in flight at a time (in_ready_o low while busy). Latency and
-// II do not depend on the data. At a 1 us control period (100 cycles at
-// 100 MHz) the core is busy 20 % of the time.
+// parameters; out_valid_o is high exactly LATENCY = 11 cycles later, with
+// s_next_o and the debug outputs valid in that cycle (they hold until the
+// next decision); the state registers (S[k], S[k-1], eta, x, i_hat, nu,
+// iq_ref_prev) take their next values at the edge that raises out_valid_o.
+// Initiation interval = 11 cycles: decision k+1 needs S[k+1] and the
+// observer state of decision k, so one decision is in flight at a time
+// (in_ready_o low while busy). Latency and II do not depend on the data.
 //
-// Pipeline (stage n = register loaded at the n-th edge after capture). Each
-// stage has at most one multiplier and one adder level between registers;
-// where a stage needs a second operation it is done on parallel adders and a
-// mux, or on a constant folded into the low zero bits of an operand (the
-// rounding constant 2^15 under y << 16):
-//   1  basis products round(u0 x cos) ...; a i_m, a i_hat; -(w Ts) psi/L; T* / k_T
-//   2  legs a (negated), b; w Ts x i_m cascade
-//   3  leg c (sum and negated sum in parallel); projection of legs a + b
-//   4  projections (+ leg c) for S[k-1], S[k] and the 8 candidates
-//   5  y0 = u + eta_prev
-//   6  full = sat(round(a i_m + w Ts i_x + y0))
-//   7  full - i_m
-//   8  i0 = i_m + sat(round(lambda (full - i_m))) (two post-adders in parallel)
-//   9  e = i0 - i_hat, iq*_prev - i0_q; a i0 products
-//  10  kp e, ki e, K Ts (..) (multiply, round, saturate); w Ts i0 cascade
-//  11  eta, nu, x: add + clamp (x only if the last decision hit the band,
-//      when int_cond is set)
-//  12  y1 = u1 + eta, y2[s] = u2[s] + eta, iq* = T*/k_T + x
-//  13  i1, i_hat[k+1]; candidate offsets y2[s] << 16 (+ round, - w Ts psi/L)
-//  14  a i1, w Ts i1 products
-//  15  i2[s] for the 8 candidates (ternary add, round, saturate)
-//  16  |iq* - i2q[s]| (clipped), CSQ operands (round >> 8)
-//  17  squares i2 x CSQ; in-band flags; transition counts
-//  18  |I|^2 = sat(round((sq_d + sq_q) >> 13)), J^2 = |I|^2 x WGT[n]
-//  19  8-way lexicographic minimum (band, J^2 or error, n, index) -> S[k+1]
+// Multipliers: one decision in flight means a stage's multipliers idle in
+// the other 10 cycles, so 16 shared 18 x 25 multipliers (operands chosen by
+// the stage, one-hot ph) do all products of stages 1-8 (at most 16 per
+// stage), plus 8 for the weights of stage 9: 24 DSP48E1. Every stage
+// register loads only in its own cycle.
+//
+// Pipeline (stage n = register loaded at the n-th edge after capture; at
+// most one multiplier level and one adder (two or three inputs) between
+// registers; R(x) = sat25((x + 2^15) >>> 16)):
+//   1  full's MAC parts (a i_m + w i_m + eta<<16; the exact step of S[k-1]),
+//      lambda i_m, T* / k_T, kp i_hat, ki i_hat
+//   2  full; exact step of S[k] at angle 1; rounded legs at angle 2;
+//      a i_hat; K Ts iq*_prev
+//   3  i0 = R(lambda full + i_m<<16 - lambda i_m); candidate steps
+//   4  eta, nu, x before their clamps (multiply + add + saturate); the
+//      i1 and i_hat MACs without eta
+//   5  clamps; i1, i_hat[k+1] = sat25(MAC>>16 + eta) for the three clamp
+//      outcomes in parallel, then the mux (eta<<16 commutes with the
+//      rounding)
+//   6  a i1 + w i1 (+ back-EMF, rounding constant); y2[s] = step[s] + eta;
+//      iq* = T*/k_T + x
+//   7  i2[s] = sat25(MAC>>16 + y2[s]) for the 8 candidates
+//   8  squares i2 x CSQ (CSQ = i2 >>> 8); |iq* - i2q[s]| (clipped)
+//   9  |I|^2 = sat25(round((sq_d + sq_q) >> 13)), J^2 = |I|^2 x WGT[n]; band
+//  10  8-way lexicographic minimum (band, J^2 or error, n, index) -> S[k+1]
 // eta_lim and int_lim are meant to be >= 0 (the registers hold 24 bits, so
 // the PL always passes a non-negative value); a negative limit is still
 // defined, by the same comparator chain as the Rust model's clamp
@@ -64,7 +63,11 @@ module mpdtc_core (
     // parameter registers (FixedParams), captured with the inputs
     input  wire signed [17:0] p_a_i,
     input  wire signed [17:0] p_lambda_i,
+    // u0 is not used: the core forms U0 as 2 x u0_half (the register stays
+    // in the map for the PS side).
+    /* verilator lint_off UNUSEDSIGNAL */
     input  wire signed [24:0] p_u0_i,
+    /* verilator lint_on UNUSEDSIGNAL */
     input  wire signed [24:0] p_u0_half_i,
     input  wire signed [24:0] p_u0_h_i,
     input  wire signed [24:0] p_psi_l_i,
@@ -115,11 +118,9 @@ module mpdtc_core (
     output wire signed [24:0] st_nu_d_o,
     output wire signed [24:0] st_nu_q_o
 );
-    localparam integer LATENCY = 20;
+    localparam integer LATENCY = 11;
     localparam signed [47:0] MAX25 = 48'sd16777215;
     localparam signed [47:0] MIN25 = -48'sd16777216;
-    localparam signed [47:0] MAX18 = 48'sd131071;
-    localparam signed [47:0] MIN18 = -48'sd131072;
     localparam signed [47:0] RND16 = 48'sd32768;
 
     // ------------------------------------------------------------ helpers
@@ -129,70 +130,96 @@ module mpdtc_core (
         else sat25 = x[24:0];
     endfunction
 
-    function automatic signed [17:0] sat18(input signed [47:0] x);
-        if (x > MAX18) sat18 = MAX18[17:0];
-        else if (x < MIN18) sat18 = MIN18[17:0];
-        else sat18 = x[17:0];
-    endfunction
-
-    // sat25(round-half-up(x / 2^16))
-    function automatic signed [24:0] rsat16(input signed [47:0] x);
-        reg signed [47:0] t;
-        begin
-            t = (x + RND16) >>> 16;
-            rsat16 = sat25(t);
-        end
-    endfunction
-
     function automatic signed [47:0] ext25(input signed [24:0] x);
         ext25 = {{23{x[24]}}, x};
     endfunction
 
-    // (y << 16) + 2^15: a CUR addend under a MAC with the rounding constant
-    // in its 16 zero low bits.
+    function automatic signed [47:0] ext27(input signed [26:0] x);
+        ext27 = {{21{x[26]}}, x};
+    endfunction
+
+    function automatic signed [26:0] w27(input signed [24:0] x);
+        w27 = {{2{x[24]}}, x};
+    endfunction
+
+    function automatic signed [47:0] ext43(input signed [42:0] x);
+        ext43 = {{5{x[42]}}, x};
+    endfunction
+
+    // (y << 16) + 2^15: a CUR addend with the rounding constant in its 16
+    // zero low bits.
     function automatic signed [47:0] yr16(input signed [24:0] y);
         yr16 = {{7{y[24]}}, y, 16'h8000};
     endfunction
 
-    function automatic signed [47:0] ext18(input signed [17:0] x);
-        ext18 = {{30{x[17]}}, x};
+    // clamp(x, lim) for a CUR x (lim >= 0 meant; the comparator chain of
+    // the model otherwise).
+    function automatic signed [24:0] clamp(input signed [24:0] x, input signed [24:0] lim);
+        if (ext25(x) > ext25(lim)) clamp = lim;
+        else if (ext25(x) < -ext25(lim)) clamp = -lim;
+        else clamp = x;
     endfunction
 
-    // 18 x 25-bit signed product at its exact width (43 bits): the operands
-    // are sign-extended to 43 bits by the context, so the result is exact.
-    function automatic signed [42:0] mul43(input signed [17:0] c, input signed [24:0] x);
-        mul43 = c * x;
+    // alpha2 x (exact product) for alpha2 in -2..2 (state bits a, b, c:
+    // alpha2 = 2a - b - c): a shift and a conditional negation.
+    function automatic signed [47:0] alpha_term(input [2:0] st, input signed [42:0] x);
+        case ({1'b0, st[2], 1'b0} - {2'b00, st[1]} - {2'b00, st[0]})
+            3'sd2:   alpha_term = ext43(x) <<< 1;
+            3'sd1:   alpha_term = ext43(x);
+            -3'sd1:  alpha_term = -ext43(x);
+            -3'sd2:  alpha_term = -(ext43(x) <<< 1);
+            default: alpha_term = 48'sd0;
+        endcase
     endfunction
 
-    // COEF x CUR, exact, sign-extended to 48 bits explicitly (so that no
-    // tool sees undriven upper product bits).
-    function automatic signed [47:0] mul(input signed [17:0] c, input signed [24:0] x);
-        reg signed [42:0] p;
-        begin
-            p   = mul43(c, x);
-            mul = {{5{p[42]}}, p};
-        end
+    // beta x for beta = b - c in -1..1.
+    function automatic signed [47:0] beta_term(input [1:0] bc, input signed [42:0] x);
+        case (bc)
+            2'b10:   beta_term = ext43(x);
+            2'b01:   beta_term = -ext43(x);
+            default: beta_term = 48'sd0;
+        endcase
     endfunction
 
-    // clamp(x, lim) for lim >= 0 (x wide).
-    function automatic signed [24:0] clamp(input signed [47:0] x, input signed [24:0] lim);
-        if (x > ext25(lim)) clamp = lim;
-        else if (x < -ext25(lim)) clamp = -lim;
-        else clamp = x[24:0];
+    // Candidate step (Sa - Sc) a + (Sb - Sc) b from the rounded legs; the
+    // six non-zero values are precomputed (stage 3), this is a mux.
+    function automatic signed [26:0] cand(input [2:0] s, input signed [24:0] a,
+                                          input signed [24:0] b, input signed [26:0] ab,
+                                          input signed [26:0] nab, input signed [26:0] na,
+                                          input signed [26:0] nb);
+        case (s)
+            3'b100:  cand = w27(a);
+            3'b010:  cand = w27(b);
+            3'b001:  cand = nab;
+            3'b110:  cand = ab;
+            3'b101:  cand = nb;
+            3'b011:  cand = na;
+            default: cand = 27'sd0;
+        endcase
     endfunction
 
-    // Leg c = sat25(-sat25(a + b)), from t = a + b and nt = -a - b.
-    function automatic signed [24:0] leg_c(input signed [47:0] t, input signed [47:0] nt);
-        if (t > MAX25) leg_c = -MAX25[24:0];
-        else if (t <= MIN25) leg_c = MAX25[24:0];
-        else leg_c = nt[24:0];
+    function automatic [1:0] popcount3(input [2:0] v);
+        popcount3 = {1'b0, v[0]} + {1'b0, v[1]} + {1'b0, v[2]};
+    endfunction
+
+    // |t| clipped to MAX25, from t and -t computed in parallel.
+    function automatic signed [24:0] abs_clip(input signed [47:0] t, input signed [47:0] nt);
+        if (t < 0) abs_clip = (nt > MAX25) ? MAX25[24:0] : nt[24:0];
+        else abs_clip = (t > MAX25) ? MAX25[24:0] : t[24:0];
+    endfunction
+
+    // Selection key: {out of band, value (offset binary), n}; the first
+    // candidate with the least key wins (the model's strict < scan).
+    function automatic [50:0] key(input ob, input signed [47:0] val, input [1:0] n);
+        key = {ob, ~val[47], val[46:0], n};
     endfunction
 
     // ------------------------------------------------------------ control
-    reg  [LATENCY-1:0] vld_q;  // vld_q[n]: stage n+1 holds the decision
+    reg  [LATENCY-1:0] vld_q;  // vld_q[n]: stage n+1 computes in this cycle
     reg                busy_q;
     wire               start = in_valid_i && !busy_q;
-    wire               done = vld_q[LATENCY-2];  // stage 19 loads at this edge
+    wire [LATENCY-2:0] ph = vld_q[LATENCY-2:0];  // ph[n-1]: the cycle of stage n
+    wire               done = vld_q[LATENCY-2];  // stage 10 loads at this edge
 
     always @(posedge clk_i) begin
         if (rst_i) begin
@@ -218,8 +245,8 @@ module mpdtc_core (
     reg signed [17:0] c0, s0, c1, s1, c2, s2, g, tref;
     reg signed [17:0] pa, plam, pkint, pkp, pki;
     reg               pintcond;
-    reg signed [24:0] pu0, pu0half, pu0h, ppsi, pkinv, ptol, pintlim, petalim;
-    reg signed [17:0] pw2[0:3];
+    reg signed [24:0] pu0half, pu0h, ppsi, pkinv, ptol, pintlim, petalim;
+    reg        [71:0] pw2;
     always @(posedge clk_i) begin
         if (start) begin
             im_d <= i_d_i;
@@ -237,7 +264,6 @@ module mpdtc_core (
             pkint <= p_k_int_i;
             pkp <= p_kp_o_i;
             pki <= p_ki_o_i;
-            pu0 <= p_u0_i;
             pu0half <= p_u0_half_i;
             pu0h <= p_u0_h_i;
             ppsi <= p_psi_l_i;
@@ -246,234 +272,231 @@ module mpdtc_core (
             pintlim <= p_int_lim_i;
             pintcond <= p_int_cond_i;
             petalim <= p_eta_lim_i;
-            pw2[0] <= p_w2_i[17:0];
-            pw2[1] <= p_w2_i[35:18];
-            pw2[2] <= p_w2_i[53:36];
-            pw2[3] <= p_w2_i[71:54];
+            pw2 <= p_w2_i;
         end
     end
 
-    // ------------------------------------------------------------ stage 1
-    // Basis products per angle k: u0 c, u0 s, u0h s, u0/2 c, u0/2 s, u0h c.
-    reg signed [24:0] m_u0c[0:2], m_u0s[0:2], m_hs[0:2], m_halfc[0:2], m_halfs[0:2], m_hc[0:2];
-    reg signed [47:0] f_pd, f_pq, h_pd, h_pq, ppsi_g;
+    // ------------------------------------------------------------ stage registers
+    // 1
+    reg signed [47:0] fx_d, fx_q, kl_d, kl_q, kh_d, kh_q, kn_d, kn_q, ngpsi;
+    reg signed [47:0] fy_d, fy_q;
     reg signed [24:0] iq_orig;
-    reg signed [24:0] im_d_pmax, im_d_pmin, im_q_pmax, im_q_pmin;
-    wire signed [17:0] cs_c[0:2];
-    wire signed [17:0] cs_s[0:2];
-    assign cs_c[0] = c0;
-    assign cs_c[1] = c1;
-    assign cs_c[2] = c2;
-    assign cs_s[0] = s0;
-    assign cs_s[1] = s1;
-    assign cs_s[2] = s2;
-    integer k;
-    always @(posedge clk_i) begin
-        for (k = 0; k < 3; k = k + 1) begin
-            m_u0c[k]   <= rsat16(mul(cs_c[k], pu0));
-            m_u0s[k]   <= rsat16(mul(cs_s[k], pu0));
-            m_hs[k]    <= rsat16(mul(cs_s[k], pu0h));
-            m_halfc[k] <= rsat16(mul(cs_c[k], pu0half));
-            m_halfs[k] <= rsat16(mul(cs_s[k], pu0half));
-            m_hc[k]    <= rsat16(mul(cs_c[k], pu0h));
-        end
-        f_pd <= mul(pa, im_d);
-        f_pq <= mul(pa, im_q);
-        h_pd <= mul(pa, ih_d_q);
-        h_pq <= mul(pa, ih_q_q);
-        ppsi_g <= -mul(g, ppsi);
-        // T* (14 frac) x 1/k_T (16 frac) -> CUR: round half up >> 14.
-        iq_orig <= sat25((mul(tref, pkinv) + 48'sd8192) >>> 14);
-        // For stage 8: i_m + the two saturation values of the lambda term.
-        im_d_pmax <= sat25(ext25(im_d) + MAX25);
-        im_d_pmin <= sat25(ext25(im_d) + MIN25);
-        im_q_pmax <= sat25(ext25(im_q) + MAX25);
-        im_q_pmin <= sat25(ext25(im_q) + MIN25);
-    end
-
-    // ------------------------------------------------------------ stage 2
-    reg signed [25:0] la_d[0:2], la_q[0:2], nla_d[0:2];  // leg a, -leg a (d)
-    reg signed [24:0] lb_d[0:2], lb_q[0:2];
-    reg signed [47:0] f_ad, f_aq;
-    always @(posedge clk_i) begin
-        for (k = 0; k < 3; k = k + 1) begin
-            la_d[k]  <= {m_u0c[k][24], m_u0c[k]};
-            nla_d[k] <= -{m_u0c[k][24], m_u0c[k]};
-            la_q[k]  <= -{m_u0s[k][24], m_u0s[k]};  // may be +2^24: 26 bits
-            lb_d[k]  <= sat25(ext25(m_hs[k]) - ext25(m_halfc[k]));
-            lb_q[k]  <= sat25(ext25(m_halfs[k]) + ext25(m_hc[k]));
-        end
-        f_ad <= f_pd + mul(g, im_q);
-        f_aq <= f_pq - mul(g, im_d);
-    end
-
-    // ------------------------------------------------------------ stage 3
-    reg signed [24:0] lc_d[0:2], lc_q[0:2];
-    reg signed [24:0] ra_d[0:2], ra_q[0:2];  // sat25(leg a)
-    reg signed [24:0] rab_d[0:2], rab_q[0:2];  // sat25(sat25(a) + b)
-    reg signed [47:0] f_aq2;
-    function automatic signed [47:0] ext26(input signed [25:0] x);
-        ext26 = {{22{x[25]}}, x};
-    endfunction
-    always @(posedge clk_i) begin
-        for (k = 0; k < 3; k = k + 1) begin
-            lc_d[k]  <= leg_c(ext26(la_d[k]) + ext25(lb_d[k]), ext26(nla_d[k]) - ext25(lb_d[k]));
-            lc_q[k]  <= leg_c(ext26(la_q[k]) + ext25(lb_q[k]), ext25(m_u0s[k]) - ext25(lb_q[k]));
-            ra_d[k]  <= sat25(ext26(la_d[k]));
-            ra_q[k]  <= sat25(ext26(la_q[k]));
-            rab_d[k] <= sat25(ext25(sat25(ext26(la_d[k]))) + ext25(lb_d[k]));
-            rab_q[k] <= sat25(ext25(sat25(ext26(la_q[k]))) + ext25(lb_q[k]));
-        end
-        f_aq2 <= f_aq + ppsi_g;
-    end
-
-    // ------------------------------------------------------------ stage 4
-    // proj(b, s) = sat(sat(sat(a') + b') + c'): legs a, b (stage 3), then c.
-    function automatic signed [24:0] proj_ab(input [1:0] ab, input signed [24:0] ra,
-                                             input signed [24:0] lb, input signed [24:0] rab);
-        case (ab)
-            2'b00: proj_ab = 25'sd0;
-            2'b01: proj_ab = lb;
-            2'b10: proj_ab = ra;
-            default: proj_ab = rab;
-        endcase
-    endfunction
-    reg signed [24:0] u0_d, u0_q, u1_d, u1_q;
-    reg signed [24:0] u2_d[0:7], u2_q[0:7];
-    integer s;
-    always @(posedge clk_i) begin
-        u0_d <= sat25(ext25(proj_ab(sp_q[2:1], ra_d[0], lb_d[0], rab_d[0]))
-                      + (sp_q[0] ? ext25(lc_d[0]) : 48'sd0));
-        u0_q <= sat25(ext25(proj_ab(sp_q[2:1], ra_q[0], lb_q[0], rab_q[0]))
-                      + (sp_q[0] ? ext25(lc_q[0]) : 48'sd0));
-        u1_d <= sat25(ext25(proj_ab(sa_q[2:1], ra_d[1], lb_d[1], rab_d[1]))
-                      + (sa_q[0] ? ext25(lc_d[1]) : 48'sd0));
-        u1_q <= sat25(ext25(proj_ab(sa_q[2:1], ra_q[1], lb_q[1], rab_q[1]))
-                      + (sa_q[0] ? ext25(lc_q[1]) : 48'sd0));
-        for (s = 0; s < 8; s = s + 1) begin
-            u2_d[s] <= sat25(ext25(proj_ab(s[2:1], ra_d[2], lb_d[2], rab_d[2]))
-                             + (s[0] ? ext25(lc_d[2]) : 48'sd0));
-            u2_q[s] <= sat25(ext25(proj_ab(s[2:1], ra_q[2], lb_q[2], rab_q[2]))
-                             + (s[0] ? ext25(lc_q[2]) : 48'sd0));
-        end
-    end
-
-    // ------------------------------------------------------------ stages 5-8
-    reg signed [24:0] y0_d, y0_q, full_d, full_q, df_d, df_q, i0_d, i0_q;
-    // lambda (full - i_m): rounded alone (to detect saturation) and with
-    // i_m added under the rounding constant, in parallel.
-    wire signed [47:0] lam_d = mul(plam, df_d);
-    wire signed [47:0] lam_q = mul(plam, df_q);
-    wire signed [47:0] lr_d = (lam_d + RND16) >>> 16;
-    wire signed [47:0] lr_q = (lam_q + RND16) >>> 16;
-    wire signed [47:0] lri_d = (lam_d + yr16(im_d)) >>> 16;
-    wire signed [47:0] lri_q = (lam_q + yr16(im_q)) >>> 16;
-    always @(posedge clk_i) begin
-        y0_d   <= sat25(ext25(u0_d) + ext25(etap_d_q));
-        y0_q   <= sat25(ext25(u0_q) + ext25(etap_q_q));
-        full_d <= sat25((f_ad + yr16(y0_d)) >>> 16);
-        full_q <= sat25((f_aq2 + yr16(y0_q)) >>> 16);
-        df_d   <= sat25(ext25(full_d) - ext25(im_d));
-        df_q   <= sat25(ext25(full_q) - ext25(im_q));
-        i0_d   <= (lr_d > MAX25) ? im_d_pmax : (lr_d < MIN25) ? im_d_pmin : sat25(lri_d);
-        i0_q   <= (lr_q > MAX25) ? im_q_pmax : (lr_q < MIN25) ? im_q_pmin : sat25(lri_q);
-    end
-
-    // ------------------------------------------------------------ stages 9-11
-    reg signed [24:0] e_d, e_q, di, km_d, km_q, ki_d, ki_q, kx;
-    reg signed [24:0] eta_d, eta_q, nu_n_d, nu_n_q, x_n;
-    reg signed [47:0] g_pd, g_pq, g_ad, g_aq, g_aq2, h_ad, h_aq, h_aq2;
-    always @(posedge clk_i) begin
-        // 9
-        e_d  <= sat25(ext25(i0_d) - ext25(ih_d_q));
-        e_q  <= sat25(ext25(i0_q) - ext25(ih_q_q));
-        di   <= sat25(ext25(iqrp_q) - ext25(i0_q));
-        g_pd <= mul(pa, i0_d);
-        g_pq <= mul(pa, i0_q);
-        h_ad <= h_pd + mul(g, i0_q);
-        h_aq <= h_pq - mul(g, i0_d);
-        // 10
-        km_d  <= rsat16(mul(pkp, e_d));
-        km_q  <= rsat16(mul(pkp, e_q));
-        ki_d  <= rsat16(mul(pki, e_d));
-        ki_q  <= rsat16(mul(pki, e_q));
-        kx    <= rsat16(mul(pkint, di));
-        g_ad  <= g_pd + mul(g, i0_q);
-        g_aq  <= g_pq - mul(g, i0_d);
-        h_aq2 <= h_aq + ppsi_g;
-        // 11 (clamp(sat25(a + b), lim) = clamp(a + b, lim) for 0 <= lim <= MAX)
-        eta_d  <= clamp(ext25(km_d) + ext25(nu_d_q), petalim);
-        eta_q  <= clamp(ext25(km_q) + ext25(nu_q_q), petalim);
-        nu_n_d <= clamp(ext25(nu_d_q) + ext25(ki_d), petalim);
-        nu_n_q <= clamp(ext25(nu_q_q) + ext25(ki_q), petalim);
-        // Eq. (13), conditional on the previous band hit if enabled.
-        x_n    <= (band_q || !pintcond) ? clamp(ext25(x_q) + ext25(kx), pintlim) : x_q;
-        g_aq2  <= g_aq + ppsi_g;
-    end
-
-    // ------------------------------------------------------------ stages 12-13
-    reg signed [24:0] y1_d, y1_q, iq_ref, y2_d[0:7], y2_q[0:7];
-    reg signed [24:0] i1_d, i1_q, ihn_d, ihn_q;
-    reg signed [47:0] yo_d[0:7], yo_q[0:7];
-    always @(posedge clk_i) begin
-        // 12
-        y1_d   <= sat25(ext25(u1_d) + ext25(eta_d));
-        y1_q   <= sat25(ext25(u1_q) + ext25(eta_q));
-        iq_ref <= sat25(ext25(iq_orig) + ext25(x_n));
-        for (s = 0; s < 8; s = s + 1) begin
-            y2_d[s] <= sat25(ext25(u2_d[s]) + ext25(eta_d));
-            y2_q[s] <= sat25(ext25(u2_q[s]) + ext25(eta_q));
-        end
-        // 13
-        i1_d  <= sat25((g_ad + yr16(y1_d)) >>> 16);
-        i1_q  <= sat25((g_aq2 + yr16(y1_q)) >>> 16);
-        ihn_d <= sat25((h_ad + yr16(y1_d)) >>> 16);
-        ihn_q <= sat25((h_aq2 + yr16(y1_q)) >>> 16);
-        for (s = 0; s < 8; s = s + 1) begin
-            yo_d[s] <= yr16(y2_d[s]);
-            yo_q[s] <= yr16(y2_q[s]) + ppsi_g;
-        end
-    end
-
-    // ------------------------------------------------------------ stages 14-19
-    reg signed [47:0] k_pd, k_pq, k_wq, k_wd;
-    reg signed [24:0] i2_d[0:7], i2_q[0:7], err[0:7];
-    reg signed [17:0] dc[0:7], qc[0:7];
+    // 2
+    reg signed [24:0] full_d, full_q;
+    reg signed [47:0] v1r_d, v1r_q, ah_d, ah_q, kx;
+    reg signed [24:0] la_d, la_q, lb_d, lb_q;
+    // 3
+    reg signed [24:0] i0_d, i0_q;
+    reg signed [47:0] ahv_d, ahv_q;
+    reg signed [26:0] ab_d, ab_q, nab_d, nab_q, na_d, na_q, nb_d, nb_q;
+    // 4
+    reg signed [24:0] etar_d, etar_q, nur_d, nur_q, xr;
+    reg signed [47:0] t_d, t_q, h_d, h_q;
+    // 5
+    reg signed [24:0] eta_d, eta_q, nu_n_d, nu_n_q, x_n, i1_d, i1_q, ihn_d, ihn_q;
+    // 6
+    reg signed [47:0] cb_d, cb_q;
+    reg signed [26:0] y2_d[0:7], y2_q[0:7];
+    reg signed [24:0] iq_ref;
+    // 7
+    reg signed [24:0] i2_d[0:7], i2_q[0:7];
+    // 8
     reg signed [47:0] sq_d[0:7], sq_q[0:7];
-    reg               inband[0:7];
-    reg        [ 1:0] ntr[0:7];
+    reg signed [24:0] err[0:7];
+    // 9
     reg signed [47:0] cost2[0:7];
-    reg               inband2[0:7];
-    reg        [ 1:0] ntr2[0:7];
-    reg signed [24:0] err2[0:7];
+    reg               inband[0:7];
+    // 10
     reg        [ 2:0] s_next;
 
-    function automatic [1:0] popcount3(input [2:0] v);
-        popcount3 = {1'b0, v[0]} + {1'b0, v[1]} + {1'b0, v[2]};
-    endfunction
+    // ------------------------------------------------------------ shared multipliers
+    // Operands of the 16 shared multipliers by stage (one-hot ph); the
+    // products are exact (43 bits).
+    reg [18*16-1:0] ma;
+    reg [25*16-1:0] mb;
+    wire signed [42:0] mp[0:15];
+    always @(*) begin : pool_operands
+        integer m;
+        m  = 0;
+        ma = {18 * 16{1'b0}};
+        mb = {25 * 16{1'b0}};
+        if (ph[0]) begin  // stage 1
+            ma[18*0+:18] = pa;     mb[25*0+:25] = im_d;
+            ma[18*1+:18] = g;      mb[25*1+:25] = im_q;
+            ma[18*2+:18] = pa;     mb[25*2+:25] = im_q;
+            ma[18*3+:18] = g;      mb[25*3+:25] = im_d;
+            ma[18*4+:18] = c0;     mb[25*4+:25] = pu0half;
+            ma[18*5+:18] = s0;     mb[25*5+:25] = pu0half;
+            ma[18*6+:18] = c0;     mb[25*6+:25] = pu0h;
+            ma[18*7+:18] = s0;     mb[25*7+:25] = pu0h;
+            ma[18*8+:18] = g;      mb[25*8+:25] = ppsi;
+            ma[18*9+:18] = plam;   mb[25*9+:25] = im_d;
+            ma[18*10+:18] = plam;  mb[25*10+:25] = im_q;
+            ma[18*11+:18] = tref;  mb[25*11+:25] = pkinv;
+            ma[18*12+:18] = pkp;   mb[25*12+:25] = ih_d_q;
+            ma[18*13+:18] = pkp;   mb[25*13+:25] = ih_q_q;
+            ma[18*14+:18] = pki;   mb[25*14+:25] = ih_d_q;
+            ma[18*15+:18] = pki;   mb[25*15+:25] = ih_q_q;
+        end
+        if (ph[1]) begin  // stage 2
+            ma[18*0+:18] = c1;     mb[25*0+:25] = pu0half;
+            ma[18*1+:18] = s1;     mb[25*1+:25] = pu0half;
+            ma[18*2+:18] = c1;     mb[25*2+:25] = pu0h;
+            ma[18*3+:18] = s1;     mb[25*3+:25] = pu0h;
+            ma[18*4+:18] = c2;     mb[25*4+:25] = pu0half;
+            ma[18*5+:18] = s2;     mb[25*5+:25] = pu0half;
+            ma[18*6+:18] = c2;     mb[25*6+:25] = pu0h;
+            ma[18*7+:18] = s2;     mb[25*7+:25] = pu0h;
+            ma[18*8+:18] = pa;     mb[25*8+:25] = ih_d_q;
+            ma[18*9+:18] = pa;     mb[25*9+:25] = ih_q_q;
+            ma[18*10+:18] = pkint; mb[25*10+:25] = iqrp_q;
+        end
+        if (ph[2]) begin  // stage 3
+            ma[18*0+:18] = plam;   mb[25*0+:25] = full_d;
+            ma[18*1+:18] = plam;   mb[25*1+:25] = full_q;
+        end
+        if (ph[3]) begin  // stage 4
+            ma[18*0+:18] = pkp;    mb[25*0+:25] = i0_d;
+            ma[18*1+:18] = pkp;    mb[25*1+:25] = i0_q;
+            ma[18*2+:18] = pki;    mb[25*2+:25] = i0_d;
+            ma[18*3+:18] = pki;    mb[25*3+:25] = i0_q;
+            ma[18*4+:18] = pkint;  mb[25*4+:25] = i0_q;
+            ma[18*5+:18] = pa;     mb[25*5+:25] = i0_d;
+            ma[18*6+:18] = g;      mb[25*6+:25] = i0_q;
+            ma[18*7+:18] = pa;     mb[25*7+:25] = i0_q;
+            ma[18*8+:18] = g;      mb[25*8+:25] = i0_d;
+        end
+        if (ph[5]) begin  // stage 6
+            ma[18*0+:18] = pa;     mb[25*0+:25] = i1_d;
+            ma[18*1+:18] = g;      mb[25*1+:25] = i1_q;
+            ma[18*2+:18] = pa;     mb[25*2+:25] = i1_q;
+            ma[18*3+:18] = g;      mb[25*3+:25] = i1_d;
+        end
+        if (ph[7]) begin  // stage 8: i2 x CSQ, CSQ = i2 >>> 8 (17 bits)
+            for (m = 0; m < 8; m = m + 1) begin
+                ma[18*m+:18]     = {i2_d[m][24], i2_d[m][24:8]};
+                mb[25*m+:25]     = i2_d[m];
+                ma[18*(m+8)+:18] = {i2_q[m][24], i2_q[m][24:8]};
+                mb[25*(m+8)+:25] = i2_q[m];
+            end
+        end
+    end
+    genvar gm;
+    generate
+        for (gm = 0; gm < 16; gm = gm + 1) begin : g_pool
+            wire signed [17:0] a_w = ma[18*gm+:18];
+            wire signed [24:0] b_w = mb[25*gm+:25];
+            assign mp[gm] = a_w * b_w;
+        end
+    endgenerate
+    // Products as 48-bit values.
+    wire signed [47:0] P0 = ext43(mp[0]), P1 = ext43(mp[1]), P2 = ext43(mp[2]), P3 = ext43(mp[3]);
+    wire signed [47:0] P4 = ext43(mp[4]), P5 = ext43(mp[5]), P6 = ext43(mp[6]), P7 = ext43(mp[7]);
+    wire signed [47:0] P8 = ext43(mp[8]), P9 = ext43(mp[9]), P10 = ext43(mp[10]);
+    wire signed [47:0] P11 = ext43(mp[11]), P12 = ext43(mp[12]), P13 = ext43(mp[13]);
+    wire signed [47:0] P14 = ext43(mp[14]), P15 = ext43(mp[15]);
 
-    // |t| clipped to MAX25 (= min(|sat25(t)|, MAX25), see the model's err).
-    function automatic signed [24:0] abs_clip(input signed [47:0] t);
-        reg signed [47:0] a;
+    // ------------------------------------------------------------ stages 1-3
+    always @(posedge clk_i) begin
+        if (ph[0]) begin
+            // full = R(a im + w J im + u(S[k-1]) + eta_prev<<16), in two parts
+            fx_d  <= P0 + P1 + yr16(etap_d_q);
+            fx_q  <= P2 - P3 + yr16(etap_q_q);
+            fy_d  <= alpha_term(sp_q, mp[4]) + beta_term(sp_q[1:0], mp[7]);
+            fy_q  <= beta_term(sp_q[1:0], mp[6]) - alpha_term(sp_q, mp[5]) - P8;
+            ngpsi <= RND16 - P8;
+            kl_d  <= yr16(im_d) - P9;
+            kl_q  <= yr16(im_q) - P10;
+            // T* (14 frac) x 1/k_T (16 frac) -> CUR: round half up >> 14.
+            iq_orig <= sat25((P11 + 48'sd8192) >>> 14);
+            kh_d  <= yr16(nu_d_q) - P12;
+            kh_q  <= yr16(nu_q_q) - P13;
+            kn_d  <= yr16(nu_d_q) - P14;
+            kn_q  <= yr16(nu_q_q) - P15;
+        end
+        if (ph[1]) begin
+            full_d <= sat25((fx_d + fy_d) >>> 16);
+            full_q <= sat25((fx_q + fy_q) >>> 16);
+            // exact step of S[k] at angle 1 (+ rounding; q: - w Ts psi/L)
+            v1r_d <= alpha_term(sa_q, mp[0]) + beta_term(sa_q[1:0], mp[3]) + RND16;
+            v1r_q <= beta_term(sa_q[1:0], mp[2]) - alpha_term(sa_q, mp[1]) + ngpsi;
+            // legs a, b at angle 2, rounded once
+            la_d <= sat25((ext43(mp[4]) + ext43(mp[4]) + RND16) >>> 16);
+            la_q <= sat25((RND16 - ext43(mp[5]) - ext43(mp[5])) >>> 16);
+            lb_d <= sat25((P7 - P4 + RND16) >>> 16);
+            lb_q <= sat25((P5 + P6 + RND16) >>> 16);
+            ah_d <= P8;
+            ah_q <= P9;
+            kx   <= yr16(x_q) + P10;
+        end
+        if (ph[2]) begin
+            i0_d  <= sat25((P0 + kl_d) >>> 16);
+            i0_q  <= sat25((P1 + kl_q) >>> 16);
+            ahv_d <= ah_d + v1r_d;
+            ahv_q <= ah_q + v1r_q;
+            ab_d  <= w27(la_d) + w27(lb_d);
+            ab_q  <= w27(la_q) + w27(lb_q);
+            nab_d <= -w27(la_d) - w27(lb_d);
+            nab_q <= -w27(la_q) - w27(lb_q);
+            na_d  <= -w27(la_d);
+            na_q  <= -w27(la_q);
+            nb_d  <= -w27(lb_d);
+            nb_q  <= -w27(lb_q);
+        end
+    end
+
+    // ------------------------------------------------------------ stages 4-5
+    // i1 / i_hat: sat25(MAC >>> 16 + eta) for eta = clamp(eta_raw); the
+    // three outcomes of the clamp are summed in parallel and muxed.
+    function automatic signed [24:0] add_clamped(input signed [47:0] mac, input signed [24:0] raw,
+                                                 input signed [24:0] lim);
+        reg signed [47:0] hi, lo, mid, base;
         begin
-            a = (t < 0) ? -t : t;
-            abs_clip = (a > MAX25) ? MAX25[24:0] : a[24:0];
+            base = mac >>> 16;
+            hi   = base + ext25(lim);
+            lo   = base - ext25(lim);
+            mid  = base + ext25(raw);
+            if (ext25(raw) > ext25(lim)) add_clamped = sat25(hi);
+            else if (ext25(raw) < -ext25(lim)) add_clamped = sat25(lo);
+            else add_clamped = sat25(mid);
         end
     endfunction
 
-    // Selection key: {out of band, value (offset binary), n}; the first
-    // candidate with the least key wins (the model's strict < scan).
-    function automatic [50:0] key(input ob, input signed [47:0] val, input [1:0] n);
-        key = {ob, ~val[47], val[46:0], n};
-    endfunction
+    always @(posedge clk_i) begin
+        if (ph[3]) begin
+            etar_d <= sat25((P0 + kh_d) >>> 16);
+            etar_q <= sat25((P1 + kh_q) >>> 16);
+            nur_d  <= sat25((P2 + kn_d) >>> 16);
+            nur_q  <= sat25((P3 + kn_q) >>> 16);
+            xr     <= sat25((kx - P4) >>> 16);
+            t_d    <= P5 + P6 + v1r_d;
+            t_q    <= P7 - P8 + v1r_q;
+            h_d    <= ahv_d + P6;
+            h_q    <= ahv_q - P8;
+        end
+        if (ph[4]) begin
+            eta_d  <= clamp(etar_d, petalim);
+            eta_q  <= clamp(etar_q, petalim);
+            nu_n_d <= clamp(nur_d, petalim);
+            nu_n_q <= clamp(nur_q, petalim);
+            // Eq. (13), conditional on the previous band hit if enabled.
+            x_n    <= (band_q || !pintcond) ? clamp(xr, pintlim) : x_q;
+            i1_d   <= add_clamped(t_d, etar_d, petalim);
+            i1_q   <= add_clamped(t_q, etar_q, petalim);
+            ihn_d  <= add_clamped(h_d, etar_d, petalim);
+            ihn_q  <= add_clamped(h_q, etar_q, petalim);
+        end
+    end
 
+    // ------------------------------------------------------------ stages 6-10
     reg [50:0] keys[0:7];
-    integer j;
-    reg win;
     reg [2:0] best;
-    always @(*) begin
+    always @(*) begin : select8
+        integer s, j;
+        reg win;
         for (s = 0; s < 8; s = s + 1) begin
-            keys[s] = key(!inband2[s], inband2[s] ? cost2[s] : ext25(err2[s]), ntr2[s]);
+            keys[s] = key(!inband[s], inband[s] ? cost2[s] : ext25(err[s]),
+                          popcount3(s[2:0] ^ sa_q));
         end
         best = 3'd0;
         for (s = 7; s >= 0; s = s - 1) begin
@@ -486,34 +509,53 @@ module mpdtc_core (
         end
     end
 
-    always @(posedge clk_i) begin
-        // 14
-        k_pd <= mul(pa, i1_d);
-        k_pq <= mul(pa, i1_q);
-        k_wq <= mul(g, i1_q);
-        k_wd <= mul(g, i1_d);
-        for (s = 0; s < 8; s = s + 1) begin
-            // 15
-            i2_d[s] <= sat25((k_pd + k_wq + yo_d[s]) >>> 16);
-            i2_q[s] <= sat25((k_pq - k_wd + yo_q[s]) >>> 16);
-            // 16
-            err[s] <= abs_clip(ext25(iq_ref) - ext25(i2_q[s]));
-            dc[s]  <= sat18((ext25(i2_d[s]) + 48'sd128) >>> 8);
-            qc[s]  <= sat18((ext25(i2_q[s]) + 48'sd128) >>> 8);
-            // 17
-            sq_d[s]   <= mul(dc[s], i2_d[s]);
-            sq_q[s]   <= mul(qc[s], i2_q[s]);
-            inband[s] <= ext25(err[s]) <= ext25(ptol);
-            ntr[s]    <= popcount3(s[2:0] ^ sa_q);
-            err2[s]   <= err[s];
-            // 18
-            cost2[s]   <= mul(pw2[ntr[s]], sat25((sq_d[s] + sq_q[s] + 48'sd4096) >>> 13));
-            inband2[s] <= inband[s];
-            ntr2[s]    <= ntr[s];
+    // Weight of candidate s: WGT[popcount(s ^ S[k])].
+    function automatic signed [17:0] wgt(input [71:0] w, input [1:0] n);
+        wgt = w[18*n+:18];
+    endfunction
+
+    always @(posedge clk_i) begin : stages6_10
+        integer s;
+        if (ph[5]) begin
+            cb_d   <= P0 + P1 + RND16;
+            cb_q   <= P2 - P3 + ngpsi;
+            iq_ref <= sat25(ext25(iq_orig) + ext25(x_n));
+            for (s = 0; s < 8; s = s + 1) begin
+                y2_d[s] <= cand(s[2:0], la_d, lb_d, ab_d, nab_d, na_d, nb_d) + w27(eta_d);
+                y2_q[s] <= cand(s[2:0], la_q, lb_q, ab_q, nab_q, na_q, nb_q) + w27(eta_q);
+            end
         end
-        // 19
-        s_next <= best;
+        if (ph[6]) begin
+            for (s = 0; s < 8; s = s + 1) begin
+                i2_d[s] <= sat25((cb_d >>> 16) + ext27(y2_d[s]));
+                i2_q[s] <= sat25((cb_q >>> 16) + ext27(y2_q[s]));
+            end
+        end
+        if (ph[7]) begin
+            for (s = 0; s < 8; s = s + 1) begin
+                sq_d[s] <= ext43(mp[s]);
+                sq_q[s] <= ext43(mp[s+8]);
+                err[s]  <= abs_clip(ext25(iq_ref) - ext25(i2_q[s]), ext25(i2_q[s]) - ext25(iq_ref));
+            end
+        end
+        if (ph[8]) begin
+            for (s = 0; s < 8; s = s + 1) begin
+                cost2[s]  <= mulw(wgt(pw2, popcount3(s[2:0] ^ sa_q)),
+                                  sat25((sq_d[s] + sq_q[s] + 48'sd4096) >>> 13));
+                inband[s] <= ext25(err[s]) <= ext25(ptol);
+            end
+        end
+        if (ph[9]) s_next <= best;
     end
+
+    // The 8 weight multipliers of stage 9 (exact, 43 bits, sign-extended).
+    function automatic signed [47:0] mulw(input signed [17:0] c, input signed [24:0] x);
+        reg signed [42:0] p;
+        begin
+            p    = c * x;
+            mulw = ext43(p);
+        end
+    endfunction
 
     // ------------------------------------------------------------ state update
     always @(posedge clk_i) begin
@@ -535,8 +577,8 @@ module mpdtc_core (
             etap_d_q <= eta_d;
             etap_q_q <= eta_q;
             x_q <= x_n;
-            band_q <= inband2[0] | inband2[1] | inband2[2] | inband2[3]
-                    | inband2[4] | inband2[5] | inband2[6] | inband2[7];
+            band_q <= inband[0] | inband[1] | inband[2] | inband[3]
+                    | inband[4] | inband[5] | inband[6] | inband[7];
             iqrp_q <= iq_orig;
             ih_d_q <= ihn_d;
             ih_q_q <= ihn_q;
@@ -563,7 +605,7 @@ module mpdtc_core (
         for (gi = 0; gi < 8; gi = gi + 1) begin : g_out
             assign i2_d_o[25*gi+:25]  = i2_d[gi];
             assign i2_q_o[25*gi+:25]  = i2_q[gi];
-            assign err_o[25*gi+:25]   = err2[gi];
+            assign err_o[25*gi+:25]   = err[gi];
             assign cost2_o[48*gi+:48] = cost2[gi];
         end
     endgenerate

@@ -33,7 +33,7 @@
 //              starts the core (core_start_o, one cycle) and goes to MPDTC.
 //              A start before the sample is ignored; a second boundary in
 //              SAMPLE (the PS was late) counts an overrun and S[k] stays.
-//   3 MPDTC    waits for the core's out_valid (20 cycles), latches S[k+1]
+//   3 MPDTC    waits for the core's out_valid (11 cycles), latches S[k+1]
 //              (pending), goes to PWM. A boundary here counts an overrun.
 //   4 PWM      waits for the next boundary (sample_i): then S[k+1] becomes
 //              the applied state (at the gate driver's input 1 cycle after

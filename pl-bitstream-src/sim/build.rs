@@ -38,6 +38,11 @@ const TOPS: &[(&str, &[&str], &str)] = &[
         "pl_top_shim.cpp",
     ),
     ("mpdtc_core", &["mpdtc_core.v"], "mpdtc_core_shim.cpp"),
+    (
+        "mpdtc_frontend",
+        &["mpdtc_frontend.v", "sin_table.vh"],
+        "mpdtc_frontend_shim.cpp",
+    ),
 ];
 
 fn run(cmd: &mut Command) {
@@ -53,6 +58,9 @@ fn run(cmd: &mut Command) {
 /// cell models instead of the RTL, so the same bit-exact tests check what
 /// synthesis produced.
 const NETLIST_ENV: &str = "RTL_SIM_MPDTC_NETLIST";
+/// Xilinx cell models for the netlist (`cells_sim.v` of the yosys that
+/// wrote it; `scripts/rtl-gatesim` sets it).
+const CELLS_ENV: &str = "RTL_SIM_XILINX_CELLS";
 
 fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
     let netlist = (top == "mpdtc_core")
@@ -73,22 +81,27 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         .arg("-Wno-fatal")
         .arg(format!("-I{}", rtl.display()));
     if let Some(n) = netlist {
-        // yosys' data directory next to its binary (<prefix>/share/yosys).
-        let bin = String::from_utf8(
-            Command::new("sh")
-                .args(["-c", "command -v yosys"])
-                .output()
-                .expect("sh")
-                .stdout,
-        )
-        .unwrap();
-        let prefix = PathBuf::from(bin.trim())
-            .parent()
-            .and_then(Path::parent)
-            .map(Path::to_path_buf);
-        let cells = prefix
-            .expect("yosys not found")
-            .join("share/yosys/xilinx/cells_sim.v");
+        // The cell models of the yosys that wrote the netlist: `CELLS_ENV`,
+        // else those next to the yosys on PATH (<prefix>/share/yosys).
+        let cells = match env::var(CELLS_ENV) {
+            Ok(c) => PathBuf::from(c),
+            Err(_) => {
+                let bin = String::from_utf8(
+                    Command::new("sh")
+                        .args(["-c", "command -v yosys"])
+                        .output()
+                        .expect("sh")
+                        .stdout,
+                )
+                .unwrap();
+                PathBuf::from(bin.trim())
+                    .parent()
+                    .and_then(Path::parent)
+                    .map(Path::to_path_buf)
+                    .expect("yosys not found")
+                    .join("share/yosys/xilinx/cells_sim.v")
+            }
+        };
         println!("cargo:rerun-if-changed={n}");
         println!("cargo:warning=mpdtc_core: simulating the gate-level netlist {n}");
         cmd.args(["-Wno-lint", "-Wno-style"]).arg(n).arg(cells);
@@ -128,6 +141,7 @@ fn main() {
     let out = PathBuf::from(env::var("OUT_DIR").unwrap());
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-env-changed={NETLIST_ENV}");
+    println!("cargo:rerun-if-env-changed={CELLS_ENV}");
 
     let vroot = String::from_utf8(
         Command::new("verilator")

@@ -11,6 +11,7 @@ use std::fmt::Write;
 pub mod harness;
 pub mod rtl;
 pub mod rust;
+pub mod trig;
 
 /// Every generated file: (repository-relative path, contents) for the
 /// table `blocks`.
@@ -28,6 +29,7 @@ pub fn files(blocks: &[&Block]) -> Vec<(&'static str, String)> {
             harness::RUST_PATH,
             harness::rust(drive::regmap::PL_TOP_PORTS),
         ),
+        (trig::SIN_TABLE_PATH, trig::sin_table()),
     ]
 }
 

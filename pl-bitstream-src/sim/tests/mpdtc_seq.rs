@@ -3,7 +3,7 @@
 //! hand-computed timings: IDLE until the run condition, INITIAL = chopped
 //! alignment vector (period, on-time, dead time, the 50 % cap, duration) and
 //! the latched encoder reference, SAMPLE waiting for the averaged ADC sample
-//! and the START hand-shake, MPDTC (20 cycles), PWM applying S[k+1] only at
+//! and the START hand-shake, MPDTC (the core latency), PWM applying S[k+1] only at
 //! the next ADC average strobe, overruns, ignored starts, and the aborts to
 //! IDLE (fault, GATE_EN = 0, mode change, MANUAL).
 use drive::regmap::{self as rm, mode, seq_state, Block, Register};
@@ -232,10 +232,10 @@ fn sample_mpdtc_pwm_cycle_and_aborts() {
     w(&mut sim, &rm::ADC, &rm::ADC_CTRL, 1);
     until_sampled(&mut sim);
 
-    // START: MPDTC for the core's 20 cycles, then PWM.
+    // START: MPDTC for the core's latency, then PWM.
     w(&mut sim, &rm::MPDTC, &rm::MPDTC_START, 1);
     assert_eq!(state(&mut sim), seq_state::MPDTC);
-    sim.idle(20);
+    sim.idle(rm::MPDTC_LATENCY_CYCLES);
     assert_eq!(state(&mut sim), seq_state::PWM);
     let st = r(&mut sim, &rm::MPDTC, &rm::MPDTC_STATUS);
     assert_eq!(st >> 16, 1, "one decision");

@@ -10,9 +10,11 @@
 //! - [`mpdtc_ref`]: the MPDTC `f64` reference (interpretations of the paper
 //!   in its module doc); [`observer`]: eqs. (14)-(16) and their stability
 //!   test; [`mpdtc_fixed`]: the bit-accurate model of the PL core;
-//!   [`mpdtc_ctrl`]: both as [`sim::Controller`]s.
+//!   [`mpdtc_ctrl`]: both as [`sim::Controller`]s; [`frontend_fixed`]: the
+//!   bit-accurate model of the PL front end (encoder, ADC -> core inputs).
 pub mod foc;
 pub mod frames;
+pub mod frontend_fixed;
 pub mod measure;
 pub mod metrics;
 pub mod mpdtc_ctrl;

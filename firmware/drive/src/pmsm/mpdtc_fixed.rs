@@ -16,20 +16,27 @@
 //! | COEF | sQ1.16 | 18 | [-2, 2) | 1.53e-5 | `a`, `w Ts`, cos/sin, `lambda`, gains |
 //! | TRQ | sQ3.14 | 18 | [-8, 8) N m | 61 uN m | torque reference |
 //! | KINV | sQ8.16 | 25 | [-256, 256) A/N m | | `1 / k_T` |
-//! | CSQ | sQ8.8 (17 bits, held in 18) | 18 | [-256, 256) A | 3.9 mA | current operand of the square (cost); its `sat18` never engages |
+//! | CSQ | sQ8.8 (17 bits, held in 18) | 18 | [-256, 256) A | 3.9 mA | second operand of the square (cost): `CUR >> 8` (floor), wiring in the core |
 //! | MAG | uQ13.11 in s25 | 25 | [0, 8192) A^2 | 4.9e-4 A^2 | `|I|^2` |
 //! | WGT | sQ3.14 | 18 | [0, 8) | 6.1e-5 | `2^(n p)` (or `2^(2 n p)`), n = 0..3 |
 //! | COST | uQ16.25 (< 2^41) | 43 (kept 48) | exact | | `WGT * MAG`, compared, never rounded |
 //!
 //! Arithmetic rules (every operation of [`decide`] uses only these):
 //! - **Product** `COEF x CUR` is exact (43 bits, 32 fraction bits). A *MAC
-//!   expression* sums up to three such products and an addend `y` (CUR,
-//!   aligned by `<< 16`) in a 48-bit accumulator (no overflow possible:
-//!   |sum| < 3 * 2^41 + 2^40 < 2^47), then **rounds** once: `+ 2^15`,
-//!   arithmetic shift right by 16 (round half up), then **saturates** to
-//!   25 bits. In the core this is a DSP48 cascade (PCIN) with the rounding
-//!   constant OR-ed into the low bits of the C operand (`y << 16` has 16 zero
-//!   low bits), so one multiplier and one adder per stage.
+//!   expression* sums exact products, exact voltage steps and CUR addends
+//!   aligned by `<< 16` in a 48-bit accumulator (no overflow: every sum
+//!   here is below 2^45), then **rounds** once: `+ 2^15`, arithmetic shift
+//!   right by 16 (round half up), then **saturates** to 25 bits
+//!   (`R(x)`). A CUR addend `y << 16` has 16 zero low bits, so it commutes
+//!   with the rounding: `R(m + (y << 16)) = sat25(((m + 2^15) >> 16) + y)`;
+//!   the core adds such terms before or after the shift, whichever keeps
+//!   one multiplier and one adder per pipeline stage.
+//! - **Voltage steps**: the step of a known state (S[k-1] at the first
+//!   angle, S[k] at the second) enters its MAC exactly (`volt_exact`, four
+//!   products per angle); the candidates' steps at the third angle are
+//!   integer sums of two rounded legs (`legs`, `cand_step`), so opposite
+//!   states give exactly opposite steps and 000, 111 exactly 0. The core
+//!   uses `U0 = 2 (U0/2)`: the `u0` register is not read.
 //! - **Add/sub** of CUR values saturates to 25 bits.
 //! - **Clamp** to a symmetric limit register `L` (CUR): `min(max(x, -L), L)`.
 //! - Overflow argument: currents of the drive stay below 64 A (the inverter
@@ -276,94 +283,137 @@ pub struct FixedOutputs {
     pub next: FixedState,
 }
 
-/// dq current increments of the three leg basis vectors at one angle, CUR:
-/// leg a: `U0 (c, -s)`, leg b: `(-U0/2 c + U0h s, U0/2 s + U0h c)`,
-/// leg c := -(a + b), so that 111 (and 000) give exactly 0.
-fn basis(p: &FixedParams, (c, s): (i32, i32)) -> [(i32, i32); 3] {
-    let m = |k: i32, x: i32| mac(&[(x, k)], 0);
-    let a = (m(p.u0, c), -m(p.u0, s));
-    let b = (
-        sub(m(p.u0_h, s), m(p.u0_half, c)),
-        add(m(p.u0_half, s), m(p.u0_h, c)),
-    );
-    let cc = (-(add(a.0, b.0)), -(add(a.1, b.1)));
-    [a, b, (sat25(cc.0 as i64), sat25(cc.1 as i64))]
+/// Rounds an exact 32-fraction-bit sum to CUR: `sat25((x + 2^15) >> 16)`.
+#[inline]
+fn rnd(x: i64) -> i32 {
+    sat25(rshift_round(x, FRAC))
 }
 
-/// Projection of state `s` from the basis (sum of the legs that are on).
-fn proj(bs: &[(i32, i32); 3], s: u8) -> (i32, i32) {
-    let mut r = (0, 0);
-    for (leg, v) in bs.iter().enumerate() {
-        if (s >> (2 - leg)) & 1 == 1 {
-            r = (add(r.0, v.0), add(r.1, v.1));
-        }
-    }
-    r
+/// Exact product COEF x CUR (43 bits, 32 fraction bits).
+#[inline]
+fn p(c: i32, x: i32) -> i64 {
+    c as i64 * x as i64
 }
 
-/// One model step (eq. 5/10) in CUR: from `i` under projection `u` and
-/// observer term `eta`, with coupling from `i_x` (the currents of eq. 6).
-fn step(
-    p: &FixedParams,
-    w_ts: i32,
-    i: (i32, i32),
-    i_x: (i32, i32),
-    u: (i32, i32),
-    eta: (i32, i32),
-) -> (i32, i32) {
+/// `(alpha2, beta)` of switch state `s` (bits `SaSbSc`): its voltage vector
+/// in the stator frame is `U0 (alpha2 / 2, beta sqrt(3) / 2)`, with
+/// `alpha2 = 2 Sa - Sb - Sc` in -2..=2 and `beta = Sb - Sc` in -1..=1.
+#[inline]
+fn alpha_beta(s: u8) -> (i64, i64) {
+    let (a, b, c) = (((s >> 2) & 1) as i64, ((s >> 1) & 1) as i64, (s & 1) as i64);
+    (2 * a - b - c, b - c)
+}
+
+/// Exact dq current step of state `s` at the angle `(c, s)` (32 fraction
+/// bits): `(alpha2 (U0/2) c + beta U0h s, -alpha2 (U0/2) s + beta U0h c)`,
+/// the rotation of the stator-frame vector into the rotor frame. Four
+/// products per angle (`U0/2 c`, `U0/2 s`, `U0h c`, `U0h s`); 000 and 111
+/// give exactly 0. Used at the angles of [k-1, k] and [k, k+1], where one
+/// state is known and its step enters the MAC unrounded.
+fn volt_exact(p_: &FixedParams, (c, s): (i32, i32), st: u8) -> (i64, i64) {
+    let (al, be) = alpha_beta(st);
     (
-        mac(&[(p.a, i.0), (w_ts, i_x.1)], add(u.0, eta.0)),
-        mac(
-            &[(p.a, i.1), (-w_ts, i_x.0), (-w_ts, p.psi_l)],
-            add(u.1, eta.1),
+        al * p(c, p_.u0_half) + be * p(s, p_.u0_h),
+        -al * p(s, p_.u0_half) + be * p(c, p_.u0_h),
+    )
+}
+
+/// Rounded leg vectors at the angle of [k+1, k+2], CUR: leg a `(U0 c,
+/// -U0 s)` and leg b `(-U0/2 c + U0h s, U0/2 s + U0h c)`, each rounded once
+/// (U0 = 2 U0/2); leg c is `-(a + b)`. The candidates' steps are integer
+/// sums of these, so opposite states (100 and 011, ...) give exactly
+/// opposite steps and 000, 111 exactly 0.
+fn legs(p_: &FixedParams, (c, s): (i32, i32)) -> [(i32, i32); 2] {
+    [
+        (rnd(2 * p(c, p_.u0_half)), rnd(-2 * p(s, p_.u0_half))),
+        (
+            rnd(p(s, p_.u0_h) - p(c, p_.u0_half)),
+            rnd(p(s, p_.u0_half) + p(c, p_.u0_h)),
         ),
+    ]
+}
+
+/// Step of candidate `s` from the rounded legs: `(Sa - Sc) a + (Sb - Sc) b`
+/// (= `Sa a + Sb b + Sc c` with `c = -(a + b)`), exact integers (26 bits).
+fn cand_step(l: &[(i32, i32); 2], s: u8) -> (i64, i64) {
+    let (a, b, c) = (((s >> 2) & 1) as i64, ((s >> 1) & 1) as i64, (s & 1) as i64);
+    let (ka, kb) = (a - c, b - c);
+    (
+        ka * l[0].0 as i64 + kb * l[1].0 as i64,
+        ka * l[0].1 as i64 + kb * l[1].1 as i64,
     )
 }
 
 /// One control period of the core. Pure function of (state, inputs, params).
-pub fn decide(st: &FixedState, inp: &FixedInputs, p: &FixedParams) -> FixedOutputs {
+///
+/// Every model step (eq. 5/10) is one MAC expression, rounded once:
+/// `next = R(a i + (w Ts) J i_x + u + (eta << 16))` with `R(x) = sat25((x +
+/// 2^15) >> 16)`, `J i = (i_q, -i_d)` and the back-EMF term `-(w Ts) psi/L`
+/// on the q axis. Terms with 16 zero low bits (`eta << 16`, `nu << 16`,
+/// `x << 16`, `i_m << 16`) commute with the rounding, so the core may add
+/// them before or after the shift.
+pub fn decide(st: &FixedState, inp: &FixedInputs, p_: &FixedParams) -> FixedOutputs {
     let g = inp.w_ts;
-    let b0 = basis(p, inp.trig[0]);
-    let b1 = basis(p, inp.trig[1]);
-    let b2 = basis(p, inp.trig[2]);
     let im = inp.i_dq;
+    let gpsi = p(g, p_.psi_l);
+    let sh = |x: i32| (x as i64) << FRAC;
 
-    // Measurement age (interpretation 14): i0 = im + lambda (full - im).
-    let full = step(p, g, im, im, proj(&b0, st.s_prev), st.eta_prev);
+    // Measurement age (interpretation 14): i0 = im + lambda (full - im),
+    // as one MAC: R(lambda full + (im << 16) - lambda im).
+    let v0 = volt_exact(p_, inp.trig[0], st.s_prev);
+    let full = (
+        rnd(p(p_.a, im.0) + p(g, im.1) + v0.0 + sh(st.eta_prev.0)),
+        rnd(p(p_.a, im.1) - p(g, im.0) - gpsi + v0.1 + sh(st.eta_prev.1)),
+    );
     let i0 = (
-        add(im.0, mac(&[(p.lambda, sub(full.0, im.0))], 0)),
-        add(im.1, mac(&[(p.lambda, sub(full.1, im.1))], 0)),
+        rnd(p(p_.lambda, full.0) + sh(im.0) - p(p_.lambda, im.0)),
+        rnd(p(p_.lambda, full.1) + sh(im.1) - p(p_.lambda, im.1)),
     );
 
     // Eq. (13) in current units: x += K Ts (iq*_prev - i_q0), enabled when
     // the previous decision reached the band (if `int_conditional`).
-    let x = if st.band_reached || !p.int_conditional {
+    let x = if st.band_reached || !p_.int_conditional {
         clamp(
-            add(st.x, mac(&[(p.k_int, sub(st.iq_ref_prev, i0.1))], 0)),
-            p.int_lim,
+            rnd(p(p_.k_int, st.iq_ref_prev) - p(p_.k_int, i0.1) + sh(st.x)),
+            p_.int_lim,
         )
     } else {
         st.x
     };
     // T* -> A: TRQ (14 frac) x KINV (16 frac) -> 30 frac -> CUR (16).
-    let iq_orig = sat25(rshift_round(inp.t_ref as i64 * p.kinv_t as i64, TRQ_FRAC));
+    let iq_orig = sat25(rshift_round(inp.t_ref as i64 * p_.kinv_t as i64, TRQ_FRAC));
     let iq_ref = add(iq_orig, x);
 
-    // Observer (14)-(16) per axis, parallel model.
-    let e = (sub(i0.0, st.i_hat.0), sub(i0.1, st.i_hat.1));
+    // Observer (14)-(16) per axis, parallel model: kp (i0 - i_hat) + nu as
+    // one MAC, then the clamp.
+    let obs = |k: i32, i0: i32, ih: i32, nu: i32| rnd(p(k, i0) - p(k, ih) + sh(nu));
     let eta = (
-        clamp(add(mac(&[(p.kp_o, e.0)], 0), st.nu.0), p.eta_lim),
-        clamp(add(mac(&[(p.kp_o, e.1)], 0), st.nu.1), p.eta_lim),
+        clamp(obs(p_.kp_o, i0.0, st.i_hat.0, st.nu.0), p_.eta_lim),
+        clamp(obs(p_.kp_o, i0.1, st.i_hat.1, st.nu.1), p_.eta_lim),
     );
     let nu = (
-        clamp(add(st.nu.0, mac(&[(p.ki_o, e.0)], 0)), p.eta_lim),
-        clamp(add(st.nu.1, mac(&[(p.ki_o, e.1)], 0)), p.eta_lim),
+        clamp(obs(p_.ki_o, i0.0, st.i_hat.0, st.nu.0), p_.eta_lim),
+        clamp(obs(p_.ki_o, i0.1, st.i_hat.1, st.nu.1), p_.eta_lim),
     );
-    let u1 = proj(&b1, st.s_applied);
-    let i_hat = step(p, g, st.i_hat, i0, u1, eta);
 
-    // Eq. (10) and (11).
-    let i1 = step(p, g, i0, i0, u1, eta);
+    // Eq. (10): i1 and the observer's own prediction from i_hat.
+    let v1 = volt_exact(p_, inp.trig[1], st.s_applied);
+    let v1 = (v1.0, v1.1 - gpsi);
+    let i1 = (
+        rnd(p(p_.a, i0.0) + p(g, i0.1) + v1.0 + sh(eta.0)),
+        rnd(p(p_.a, i0.1) - p(g, i0.0) + v1.1 + sh(eta.1)),
+    );
+    let i_hat = (
+        rnd(p(p_.a, st.i_hat.0) + p(g, i0.1) + v1.0 + sh(eta.0)),
+        rnd(p(p_.a, st.i_hat.1) - p(g, i0.0) + v1.1 + sh(eta.1)),
+    );
+
+    // Eq. (11) for the 8 candidates.
+    let l2 = legs(p_, inp.trig[2]);
+    let base = (
+        p(p_.a, i1.0) + p(g, i1.1),
+        p(p_.a, i1.1) - p(g, i1.0) - gpsi,
+    );
     let mut out = FixedOutputs {
         iq_ref,
         eta,
@@ -371,26 +421,28 @@ pub fn decide(st: &FixedState, inp: &FixedInputs, p: &FixedParams) -> FixedOutpu
         ..Default::default()
     };
     for s in 0..8u8 {
-        let i2 = step(p, g, i1, i1, proj(&b2, s), eta);
-        let err = sub(iq_ref, i2.1).saturating_abs().min(CUR_MAX as i32);
-        let (dc, qc) = (
-            sat18(rshift_round(i2.0 as i64, CSQ_SHIFT)),
-            sat18(rshift_round(i2.1 as i64, CSQ_SHIFT)),
+        let v2 = cand_step(&l2, s);
+        let i2 = (
+            rnd(base.0 + ((v2.0 + eta.0 as i64) << FRAC)),
+            rnd(base.1 + ((v2.1 + eta.1 as i64) << FRAC)),
         );
-        let sq = i2.0 as i64 * dc as i64 + i2.1 as i64 * qc as i64;
+        let err = (iq_ref as i64 - i2.1 as i64).abs().min(CUR_MAX) as i32;
+        // CSQ = floor(CUR / 2^8): the square's second operand, 17 bits.
+        let (dc, qc) = ((i2.0 >> CSQ_SHIFT) as i64, (i2.1 >> CSQ_SHIFT) as i64);
+        let sq = i2.0 as i64 * dc + i2.1 as i64 * qc;
         let mag = sat25(rshift_round(sq, MAG_SHIFT)) as i64;
         let n = (SWITCH_WEIGHT[st.s_applied as usize & 7][s as usize]).trailing_zeros() as usize;
         out.i2[s as usize] = i2;
         out.err[s as usize] = err;
-        out.cost2[s as usize] = mag * p.w2[n] as i64;
+        out.cost2[s as usize] = mag * p_.w2[n] as i64;
     }
-    out.s_next = select(&out.err, &out.cost2, p.tol, st.s_applied);
+    out.s_next = select(&out.err, &out.cost2, p_.tol, st.s_applied);
     out.next = FixedState {
         s_applied: out.s_next,
         s_prev: st.s_applied,
         eta_prev: eta,
         x,
-        band_reached: out.err.iter().any(|&e| e <= p.tol),
+        band_reached: out.err.iter().any(|&e| e <= p_.tol),
         iq_ref_prev: iq_orig,
         i_hat,
         nu,

@@ -1,21 +1,25 @@
 //! `rtl-check mpdtc --seed S --vectors N`: runs N vectors (seed S) through
 //! the Verilated `mpdtc_core` and `mpdtc_fixed::decide` and prints a one-line
-//! JSON summary. Exit status 1 on any mismatch, 2 on bad arguments.
+//! JSON summary. `rtl-check frontend ...` does the same for
+//! `mpdtc_frontend` and `frontend_fixed::frontend` (plus the largest
+//! cos/sin error against libm, in COEF LSB). Exit status 1 on any mismatch,
+//! 2 on bad arguments.
 use std::process::ExitCode;
 use std::time::Instant;
 
 fn usage() -> ExitCode {
     eprintln!(
-        "usage: rtl-check mpdtc [--seed S] [--vectors N]   (defaults: seed 1, 100000 vectors)"
+        "usage: rtl-check mpdtc|frontend [--seed S] [--vectors N]   (defaults: seed 1, 100000 vectors)"
     );
     ExitCode::from(2)
 }
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    if args.first().map(String::as_str) != Some("mpdtc") {
-        return usage();
-    }
+    let core = match args.first().map(String::as_str) {
+        Some(c @ ("mpdtc" | "frontend")) => c.to_string(),
+        _ => return usage(),
+    };
     let (mut seed, mut vectors) = (1u64, 100_000u64);
     let mut it = args[1..].iter();
     while let Some(a) = it.next() {
@@ -27,6 +31,25 @@ fn main() -> ExitCode {
         }
     }
     let t0 = Instant::now();
+    if core == "frontend" {
+        let s = rtl_sim::mpdtc_frontend::check(seed, vectors);
+        let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
+        println!(
+            "{{\"core\":\"frontend\",\"seed\":{seed},\"vectors\":{},\"mismatches\":{},\"latency_cycles\":{},\
+             \"first_mismatch\":{},\"max_trig_err_lsb\":{:.3},\"seconds\":{:.2}}}",
+            s.vectors,
+            s.mismatches,
+            opt(s.latency_cycles.map(u64::from)),
+            opt(s.first_mismatch),
+            s.max_trig_err_lsb,
+            t0.elapsed().as_secs_f64()
+        );
+        return if s.mismatches == 0 && s.latency_cycles.is_some() {
+            ExitCode::SUCCESS
+        } else {
+            ExitCode::from(1)
+        };
+    }
     let s = rtl_sim::mpdtc_vectors::check(seed, vectors);
     let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
     println!(

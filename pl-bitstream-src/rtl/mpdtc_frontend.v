@@ -1,0 +1,226 @@
+// mpdtc_frontend: the PL front end of the MPDTC core, bit for bit
+// drive::pmsm::frontend_fixed::frontend (formats, table and error bound
+// there): encoder count -> electrical angle, speed -> angle step and w Ts,
+// cos/sin at the Park angle and at the core's three instants (1024-entry
+// sine table, generated sin_table.vh, with linear interpolation), ADC
+// offset/gain, Clarke and Park -> i_d, i_q in the core's format (CUR).
+//
+// Timing: in_valid_i captures the inputs and registers; out_valid_o is high
+// exactly LATENCY = 9 cycles later with every output valid (they hold until
+// the next capture). Stages read the captured registers, so a new
+// in_valid_i is taken at most every LATENCY cycles (one period in flight;
+// the control period is far longer). At most one multiplier level and one
+// adder between registers:
+//   1  pos - align; speed x spd_scale; ADC - offset
+//   2  count (+ cpr if negative); dphi = product >> 8; (ADC - off) x gain
+//   3  phi = count x ang_scale (low 32 bits); (dphi >> 8) x age[j];
+//      w Ts = sat18(round((dphi >> 8) x 2 pi 2^14 / 2^22)); Clarke sums
+//   4  the four angles (Park, three instants); i_alpha, i_beta (x 1/3, x 1/sqrt 3)
+//   5  table entries t0 = T[i], t1 = T[i + 1] and the fraction, 8 lookups
+//   6  t1 - t0
+//   7  t0 + round((t1 - t0) f / 2^16) (t0 << 16 in the addend)
+//   8  Park: i_d = R(c i_alpha + s i_beta), i_q = R(c i_beta - s i_alpha)
+`default_nettype none
+
+module mpdtc_frontend (
+    input  wire               clk_i,
+    input  wire               rst_i,
+    input  wire               in_valid_i,
+    // inputs of the period
+    input  wire        [15:0] pos_i,        // ENC_POS
+    input  wire signed [15:0] speed_i,      // ENC_SPEED, counts per window
+    input  wire signed [15:0] adc_a_i,      // averaged ADC results
+    input  wire signed [15:0] adc_b_i,
+    input  wire signed [15:0] adc_c_i,
+    input  wire signed [17:0] t_ref_i,      // TRQ, passed through
+    // registers
+    input  wire        [15:0] cpr_i,
+    input  wire        [15:0] align_pos_i,
+    input  wire        [31:0] ang_scale_i,
+    input  wire        [31:0] spd_scale_i,
+    input  wire signed [17:0] age0_i,       // COEF, periods after the sample
+    input  wire signed [17:0] age1_i,
+    input  wire signed [17:0] age2_i,
+    input  wire signed [15:0] off_a_i,
+    input  wire signed [15:0] off_b_i,
+    input  wire signed [15:0] off_c_i,
+    input  wire signed [17:0] gain_a_i,     // 2^-20 A per count
+    input  wire signed [17:0] gain_b_i,
+    input  wire signed [17:0] gain_c_i,
+    // results (the mpdtc_core inputs) and intermediate values
+    output wire               out_valid_o,
+    output wire signed [24:0] i_d_o,
+    output wire signed [24:0] i_q_o,
+    output wire signed [17:0] cos0_o,
+    output wire signed [17:0] sin0_o,
+    output wire signed [17:0] cos1_o,
+    output wire signed [17:0] sin1_o,
+    output wire signed [17:0] cos2_o,
+    output wire signed [17:0] sin2_o,
+    output wire signed [17:0] w_ts_o,
+    output wire signed [17:0] t_ref_o,
+    output wire        [31:0] phi_o,
+    output wire signed [31:0] dphi_o,
+    output wire signed [24:0] i_alpha_o,
+    output wire signed [24:0] i_beta_o
+);
+    localparam integer LATENCY = 9;
+    localparam signed [47:0] MAX25 = 48'sd16777215;
+    localparam signed [47:0] MIN25 = -48'sd16777216;
+    localparam signed [47:0] MAX18 = 48'sd131071;
+    localparam signed [47:0] MIN18 = -48'sd131072;
+    localparam signed [17:0] TWO_PI_Q14 = 18'sd102944;
+    localparam signed [17:0] ONE_THIRD = 18'sd21845;
+    localparam signed [17:0] INV_SQRT3 = 18'sd37837;
+
+    `include "sin_table.vh"
+
+    function automatic signed [24:0] sat25(input signed [47:0] x);
+        if (x > MAX25) sat25 = MAX25[24:0];
+        else if (x < MIN25) sat25 = MIN25[24:0];
+        else sat25 = x[24:0];
+    endfunction
+
+    function automatic signed [17:0] sat18(input signed [47:0] x);
+        if (x > MAX18) sat18 = MAX18[17:0];
+        else if (x < MIN18) sat18 = MIN18[17:0];
+        else sat18 = x[17:0];
+    endfunction
+
+    // ------------------------------------------------------------ control
+    reg [LATENCY-1:0] vld_q;
+    always @(posedge clk_i) begin
+        if (rst_i) vld_q <= {LATENCY{1'b0}};
+        else vld_q <= {vld_q[LATENCY-2:0], in_valid_i};
+    end
+    assign out_valid_o = vld_q[LATENCY-1];
+
+    // ------------------------------------------------------------ capture
+    reg        [15:0] pos, cpr, align;
+    reg signed [15:0] speed;
+    reg signed [15:0] adc[0:2], off[0:2];
+    reg signed [17:0] gain[0:2], age[0:2], tref;
+    reg        [31:0] ang_scale, spd_scale;
+    always @(posedge clk_i) begin
+        if (in_valid_i) begin
+            pos       <= pos_i;
+            speed     <= speed_i;
+            adc[0]    <= adc_a_i;
+            adc[1]    <= adc_b_i;
+            adc[2]    <= adc_c_i;
+            tref      <= t_ref_i;
+            cpr       <= cpr_i;
+            align     <= align_pos_i;
+            ang_scale <= ang_scale_i;
+            spd_scale <= spd_scale_i;
+            age[0]    <= age0_i;
+            age[1]    <= age1_i;
+            age[2]    <= age2_i;
+            off[0]    <= off_a_i;
+            off[1]    <= off_b_i;
+            off[2]    <= off_c_i;
+            gain[0]   <= gain_a_i;
+            gain[1]   <= gain_b_i;
+            gain[2]   <= gain_c_i;
+        end
+    end
+
+    // ------------------------------------------------------------ stages 1-4
+    reg signed [16:0] d1, adiff[0:2];
+    reg signed [31:0] dphi;
+    reg signed [17:0] cnt;
+    reg signed [24:0] cur[0:2];
+    reg        [31:0] phi, offs[0:2];
+    reg signed [17:0] w_ts;
+    reg signed [24:0] csa, csb;
+    reg        [31:0] ang[0:3];
+    reg signed [24:0] i_al, i_be;
+    reg signed [48:0] spdp;
+    wire signed [23:0] dphi24 = dphi[31:8];
+    // Products whose low or high bits are dropped on purpose: the angle
+    // and its offsets are taken modulo one turn (low 32 bits), the step
+    // is floor(product / 2^8).
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire signed [50:0] pw = cnt * $signed({1'b0, ang_scale});
+    wire signed [41:0] po[0:2];
+    wire signed [48:0] spdp_w = spdp;
+    /* verilator lint_on UNUSEDSIGNAL */
+    assign po[0] = dphi24 * age[0];
+    assign po[1] = dphi24 * age[1];
+    assign po[2] = dphi24 * age[2];
+    always @(posedge clk_i) begin : stages1_4
+        integer k;
+        // 1
+        d1   <= $signed({1'b0, pos}) - $signed({1'b0, align});
+        spdp <= speed * $signed({1'b0, spd_scale});
+        for (k = 0; k < 3; k = k + 1) adiff[k] <= {adc[k][15], adc[k]} - {off[k][15], off[k]};
+        // 2
+        cnt  <= (d1 < 0) ? {d1[16], d1} + $signed({2'b00, cpr}) : {d1[16], d1};
+        dphi <= spdp_w[39:8];
+        for (k = 0; k < 3; k = k + 1) cur[k] <= sat25((adiff[k] * gain[k] + 48'sd8) >>> 4);
+        // 3
+        phi  <= pw[31:0];
+        for (k = 0; k < 3; k = k + 1) offs[k] <= po[k][39:8];
+        w_ts <= sat18((dphi24 * TWO_PI_Q14 + 48'sd2097152) >>> 22);
+        csa  <= sat25({{23{cur[0][24]}}, cur[0]} + {{23{cur[0][24]}}, cur[0]}
+                      - {{23{cur[1][24]}}, cur[1]} - {{23{cur[2][24]}}, cur[2]});
+        csb  <= sat25({{23{cur[1][24]}}, cur[1]} - {{23{cur[2][24]}}, cur[2]});
+        // 4
+        ang[0] <= phi;
+        for (k = 0; k < 3; k = k + 1) ang[k+1] <= phi + offs[k];
+        i_al <= sat25((ONE_THIRD * csa + 48'sd32768) >>> 16);
+        i_be <= sat25((INV_SQRT3 * csb + 48'sd32768) >>> 16);
+    end
+
+    // ------------------------------------------------------------ stages 5-7
+    // Lookup e = 2 m + c: angle m (0 = Park, 1..3 = instants), cosine if c.
+    wire signed [17:0] v[0:7];
+    genvar ge;
+    generate
+        for (ge = 0; ge < 8; ge = ge + 1) begin : g_lut
+            // bits 5..0 of the angle are below the interpolation step
+            /* verilator lint_off UNUSEDSIGNAL */
+            wire [31:0] a = ang[ge/2] + ((ge % 2 == 1) ? 32'h4000_0000 : 32'h0);
+            /* verilator lint_on UNUSEDSIGNAL */
+            reg signed [17:0] t0_q, t1_q, v_q;
+            reg        [15:0] fr_q;
+            reg signed [18:0] dt_q;
+            always @(posedge clk_i) begin
+                // 5
+                t0_q <= sin_lut(a[31:22]);
+                t1_q <= sin_lut(a[31:22] + 10'd1);
+                fr_q <= a[21:6];
+                // 6
+                dt_q <= {t1_q[17], t1_q} - {t0_q[17], t0_q};
+                // 7
+                v_q <= sat18((dt_q * $signed({1'b0, fr_q})
+                              + $signed({{14{t0_q[17]}}, t0_q, 16'h8000})) >>> 16);
+            end
+            assign v[ge] = v_q;
+        end
+    endgenerate
+
+    // ------------------------------------------------------------ stage 8
+    reg signed [24:0] i_d, i_q;
+    always @(posedge clk_i) begin
+        i_d <= sat25((v[1] * i_al + v[0] * i_be + 48'sd32768) >>> 16);
+        i_q <= sat25((v[1] * i_be - v[0] * i_al + 48'sd32768) >>> 16);
+    end
+
+    assign i_d_o     = i_d;
+    assign i_q_o     = i_q;
+    assign cos0_o    = v[3];
+    assign sin0_o    = v[2];
+    assign cos1_o    = v[5];
+    assign sin1_o    = v[4];
+    assign cos2_o    = v[7];
+    assign sin2_o    = v[6];
+    assign w_ts_o    = w_ts;
+    assign t_ref_o   = tref;
+    assign phi_o     = phi;
+    assign dphi_o    = dphi;
+    assign i_alpha_o = i_al;
+    assign i_beta_o  = i_be;
+endmodule
+
+`default_nettype wire
