@@ -58,7 +58,7 @@ const fn op(name: &'static str, kind: Kind, deps: &'static [usize]) -> Op {
 
 use Kind::{Block as B, Lanes, Reg, Tree};
 
-/// One explorer evaluation with the paper's structure ([`super::fpga::FpgaConfig::paper`]):
+/// One explorer evaluation with the paper's structure (`Structure::PAPER`):
 /// one chord, no accuracy options.
 pub const EXPLORER_OPS_PAPER: &[Op] = &[
     op("load candidate, f_s", Reg, &[]),                    // 0
@@ -93,7 +93,7 @@ pub const EXPLORER_OPS_PAPER: &[Op] = &[
     op("return result", Reg, &[24]),                        // 25
 ];
 
-/// One explorer evaluation of our default core ([`super::fpga::FpgaConfig::improved`]):
+/// One explorer evaluation of our default core ([`super::fpga::Structure::CORE`]):
 /// four interpolation nodes, capacitor drift, stator damping, exact first step.
 pub const EXPLORER_OPS: &[Op] = &[
     op("load candidate, f_s", Reg, &[]),                    // 0
@@ -340,7 +340,7 @@ pub const SCHEDULER_OPS: &[Op] = &[
 ];
 
 /// The scheduler before dispatch with the paper's structure
-/// ([`super::fpga::FpgaConfig::paper`]: first-order rotations plus the `p`
+/// (`Structure::PAPER`: first-order rotations plus the `p`
 /// correction, one node, no stator damping, no capacitor drift), worst case;
 /// [`SCHEDULER_OPS`] without the operations of the accuracy options.
 pub const SCHEDULER_OPS_PAPER: &[Op] = &[
