@@ -38,6 +38,11 @@ const TOPS: &[(&str, &[&str], &str)] = &[
         "pl_top_shim.cpp",
     ),
     ("mpdtc_core", &["mpdtc_core.v"], "mpdtc_core_shim.cpp"),
+    (
+        "mpdcc_lane",
+        &["mpdcc_lane.v", "mpdcc_piece.v"],
+        "mpdcc_lane_shim.cpp",
+    ),
 ];
 
 fn run(cmd: &mut Command) {

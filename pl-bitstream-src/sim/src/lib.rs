@@ -6,6 +6,8 @@
 //! models in the `drive` crate.
 
 pub mod gate_driver;
+pub mod mpdcc_lane;
+pub mod mpdcc_vectors;
 pub mod mpdtc_core;
 pub mod mpdtc_vectors;
 pub mod pl_top;

@@ -764,7 +764,7 @@ fn bits_for(n: u32) -> u32 {
 /// of two, so each piece is one exact Algorithm-2 search with its own cap;
 /// the next piece is searched only when the previous one is capped (still
 /// inside at its end). Returns `(l_j, cycles)`.
-fn lane(k: &Coeffs, e0: i32, nodes: &Nodes, j: usize) -> (u32, u32) {
+pub fn lane(k: &Coeffs, e0: i32, nodes: &Nodes, j: usize) -> (u32, u32) {
     let bnd = k.bnd[j] as i32;
     let lam = k.lambda;
     let big_l = 1u32 << lam;
