@@ -43,6 +43,16 @@ const TOPS: &[(&str, &[&str], &str)] = &[
         &["mpdcc_lane.v", "mpdcc_piece.v"],
         "mpdcc_lane_shim.cpp",
     ),
+    (
+        "mpdcc_explorer",
+        &[
+            "mpdcc_explorer.v",
+            "mpdcc_lane.v",
+            "mpdcc_piece.v",
+            "mpdcc_pipe.v",
+        ],
+        "mpdcc_explorer_shim.cpp",
+    ),
 ];
 
 fn run(cmd: &mut Command) {

@@ -256,3 +256,87 @@ pub fn check_lane(seed: u64, n: u64) -> LaneSummary {
     s.latency_cycles = lat.flatten();
     s
 }
+
+/// Summary of an explorer run (one result per candidate).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ExplorerSummary {
+    /// States (decisions) run.
+    pub states: u64,
+    /// Candidates evaluated.
+    pub candidates: u64,
+    /// Candidates whose result differs in any field (a lost one counts).
+    pub mismatches: u64,
+    /// Index (candidate count before it) of the first mismatch.
+    pub first_mismatch: Option<u64>,
+    /// The latency, if every result had the same.
+    pub latency_cycles: Option<u32>,
+    /// Candidates with `L* = 0`, `0 < L* < 128`, `L* = 128`.
+    pub classes: [u64; 3],
+}
+
+/// `n` states (closed-loop and random, alternating; seed `seed`), every
+/// candidate through the RTL explorer and `fpga::explore`, compared on
+/// `s`, `L*`, `J`, `J_dl`, `f_s` and `Delta_j`.
+pub fn check_explorer(seed: u64, n: u64) -> ExplorerSummary {
+    use crate::mpdcc_explorer::MpdccExplorerSim;
+    let f = core();
+    let k = f.coeffs();
+    let p = DriveParams::default();
+    let mut rng = Rng(seed);
+    let cl = closed_loop_states();
+    let first = (seed as usize * 7919) % cl.len().max(1);
+    let mut sim = MpdccExplorerSim::new();
+    let mut s = ExplorerSummary {
+        states: 0,
+        candidates: 0,
+        mismatches: 0,
+        first_mismatch: None,
+        latency_cycles: None,
+        classes: [0; 3],
+    };
+    let mut lat: Option<Option<u32>> = None;
+    for idx in 0..n {
+        let x = if idx % 2 == 0 && !cl.is_empty() {
+            cl[(first + idx as usize / 2) % cl.len()]
+        } else {
+            match Inputs::quantize(&random_state(&mut rng, &p)) {
+                Ok(x) => x,
+                Err(_) => continue,
+            }
+        };
+        let c = fpga::common_terms(k, &x);
+        let cands: Vec<[u8; 3]> = candidates(x.s_prev).iter().copied().collect();
+        let got = sim.run(k, &c, x.s_prev, &cands);
+        s.states += 1;
+        for (i, &cand) in cands.iter().enumerate() {
+            let want = fpga::explore(k, &c, x.s_prev, cand);
+            s.classes[match want.l_star {
+                0 => 0,
+                128 => 2,
+                _ => 1,
+            }] += 1;
+            let ok = got.get(i).is_some_and(|g| {
+                g.s == want.s
+                    && g.l_star == want.l_star
+                    && g.cost == want.cost
+                    && g.j_dl == want.j_dl
+                    && g.fs == want.fs
+                    && g.deltas == want.deltas
+            });
+            if !ok {
+                s.mismatches += 1;
+                s.first_mismatch.get_or_insert(s.candidates);
+            }
+            if let Some(g) = got.get(i) {
+                lat = Some(match lat {
+                    None => Some(g.latency_cycles),
+                    Some(Some(l)) if l == g.latency_cycles => Some(l),
+                    _ => None,
+                });
+            }
+            s.candidates += 1;
+        }
+    }
+    s.latency_cycles = lat.flatten();
+    s
+}

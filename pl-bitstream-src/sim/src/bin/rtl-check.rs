@@ -3,12 +3,14 @@
 //! JSON summary. Exit status 1 on any mismatch, 2 on bad arguments.
 //! `rtl-check mpdcc-lane --seed S --vectors N`: the same for the MPDCC
 //! explorer's search lane (`mpdcc_lane` against `drive::mpdcc::fpga::lane`).
+//! `rtl-check mpdcc-explorer --seed S --vectors N`: N decision states, every
+//! candidate through `mpdcc_explorer` against `drive::mpdcc::fpga::explore`.
 use std::process::ExitCode;
 use std::time::Instant;
 
 fn usage() -> ExitCode {
     eprintln!(
-        "usage: rtl-check mpdtc|mpdcc-lane [--seed S] [--vectors N]   (defaults: seed 1, 100000 vectors)"
+        "usage: rtl-check mpdtc|mpdcc-lane|mpdcc-explorer [--seed S] [--vectors N]   (defaults: seed 1, 100000 vectors)"
     );
     ExitCode::from(2)
 }
@@ -16,7 +18,7 @@ fn usage() -> ExitCode {
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let core = match args.first().map(String::as_str) {
-        Some(c @ ("mpdtc" | "mpdcc-lane")) => c.to_string(),
+        Some(c @ ("mpdtc" | "mpdcc-lane" | "mpdcc-explorer")) => c.to_string(),
         _ => return usage(),
     };
     let (mut seed, mut vectors) = (1u64, 100_000u64);
@@ -32,6 +34,9 @@ fn main() -> ExitCode {
     let t0 = Instant::now();
     if core == "mpdcc-lane" {
         return mpdcc_lane(seed, vectors, t0);
+    }
+    if core == "mpdcc-explorer" {
+        return mpdcc_explorer(seed, vectors, t0);
     }
     let s = rtl_sim::mpdtc_vectors::check(seed, vectors);
     let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
@@ -61,6 +66,30 @@ fn mpdcc_lane(seed: u64, vectors: u64, t0: Instant) -> ExitCode {
         "{{\"core\":\"mpdcc_lane\",\"seed\":{seed},\"vectors\":{},\"mismatches\":{},\"latency_cycles\":{},\
          \"initiation_interval_cycles\":1,\"first_mismatch\":{},\"lj_zero\":{},\"lj_finite\":{},\"lj_horizon\":{},\"seconds\":{:.2}}}",
         s.vectors,
+        s.mismatches,
+        opt(s.latency_cycles.map(u64::from)),
+        opt(s.first_mismatch),
+        s.classes[0],
+        s.classes[1],
+        s.classes[2],
+        t0.elapsed().as_secs_f64()
+    );
+    if s.mismatches == 0 && s.latency_cycles.is_some() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
+fn mpdcc_explorer(seed: u64, vectors: u64, t0: Instant) -> ExitCode {
+    let s = rtl_sim::mpdcc_vectors::check_explorer(seed, vectors);
+    let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
+    println!(
+        "{{\"core\":\"mpdcc_explorer\",\"seed\":{seed},\"vectors\":{},\"candidates\":{},\"mismatches\":{},\
+         \"latency_cycles\":{},\"initiation_interval_cycles\":1,\"first_mismatch\":{},\"l_star_zero\":{},\
+         \"l_star_finite\":{},\"l_star_horizon\":{},\"seconds\":{:.2}}}",
+        s.states,
+        s.candidates,
         s.mismatches,
         opt(s.latency_cycles.map(u64::from)),
         opt(s.first_mismatch),
