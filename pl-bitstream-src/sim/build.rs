@@ -53,6 +53,17 @@ const TOPS: &[(&str, &[&str], &str)] = &[
         ],
         "mpdcc_explorer_shim.cpp",
     ),
+    (
+        "mpdcc_core",
+        &[
+            "mpdcc_core.v",
+            "mpdcc_explorer.v",
+            "mpdcc_lane.v",
+            "mpdcc_piece.v",
+            "mpdcc_pipe.v",
+        ],
+        "mpdcc_core_shim.cpp",
+    ),
 ];
 
 fn run(cmd: &mut Command) {
@@ -68,6 +79,10 @@ fn run(cmd: &mut Command) {
 /// cell models instead of the RTL, so the same bit-exact tests check what
 /// synthesis produced.
 const NETLIST_ENV: &str = "RTL_SIM_MPDTC_NETLIST";
+
+/// Explorers instantiated in the Verilated `mpdcc_core` (`n_use_i` selects
+/// how many a decision uses, so one model serves `--explorers 1..=6`).
+const MPDCC_CORE_EXPLORERS: u32 = 6;
 
 fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
     let netlist = (top == "mpdtc_core")
@@ -87,6 +102,10 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         .args(["-MAKEFLAGS", "OPT_FAST=-O1 OPT_SLOW=-O1 OPT_GLOBAL=-O1"])
         .arg("-Wno-fatal")
         .arg(format!("-I{}", rtl.display()));
+    if top == "mpdcc_core" {
+        // The most explorers of the table; a run uses n_use_i of them.
+        cmd.arg(format!("-GN={MPDCC_CORE_EXPLORERS}"));
+    }
     if let Some(n) = netlist {
         // yosys' data directory next to its binary (<prefix>/share/yosys).
         let bin = String::from_utf8(

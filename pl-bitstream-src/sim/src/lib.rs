@@ -6,6 +6,7 @@
 //! models in the `drive` crate.
 
 pub mod gate_driver;
+pub mod mpdcc_core;
 pub mod mpdcc_explorer;
 pub mod mpdcc_lane;
 pub mod mpdcc_vectors;

@@ -80,10 +80,11 @@ fn cases_of_state(f: &FpgaMpdcc, x: &Inputs, out: &mut Vec<LaneCase>) {
     }
 }
 
-/// Records the quantized states of the steps that search.
+/// Records the quantized states of the steps (all, or those that search).
 struct Recorder {
     f: FpgaMpdcc,
     states: Vec<Inputs>,
+    all: bool,
 }
 
 impl MpdccController for Recorder {
@@ -93,7 +94,7 @@ impl MpdccController for Recorder {
     fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
         let d = self.f.decide(st)?;
         if let (Some(o), Ok(x)) = (self.f.last_outcome(), Inputs::quantize(st)) {
-            if !o.results.is_empty() {
+            if self.all || !o.results.is_empty() {
                 self.states.push(x);
             }
         }
@@ -104,10 +105,20 @@ impl MpdccController for Recorder {
 /// Quantized states of the FPGA-model-driven loop that searched: two
 /// fundamental periods from start-up.
 pub fn closed_loop_states() -> Vec<Inputs> {
+    record_loop(false)
+}
+
+/// Every quantized state of the same loop (kept steps included).
+pub fn closed_loop_all_states() -> Vec<Inputs> {
+    record_loop(true)
+}
+
+fn record_loop(all: bool) -> Vec<Inputs> {
     let p = DriveParams::default();
     let mut r = Recorder {
         f: core(),
         states: Vec::new(),
+        all,
     };
     let cfg = LoopConfig {
         warmup_periods: 1,
@@ -338,5 +349,102 @@ pub fn check_explorer(seed: u64, n: u64) -> ExplorerSummary {
         }
     }
     s.latency_cycles = lat.flatten();
+    s
+}
+
+/// Summary of a core run (one decision per vector).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CoreSummary {
+    /// Decisions run.
+    pub vectors: u64,
+    /// Explorers used.
+    pub explorers: u32,
+    /// Decisions that differ in any field (position, kind, `L*`, candidate
+    /// count, `J` and `J_dl` of the chosen candidate, cycle count).
+    pub mismatches: u64,
+    /// Index of the first mismatch.
+    pub first_mismatch: Option<u64>,
+    /// Largest measured cycle count, start strobe to `done_o`.
+    pub worst_case_cycles: u32,
+    /// Mean measured cycle count.
+    pub mean_cycles: f64,
+    /// Kept, optimal, deadlock decisions.
+    pub kinds: [u64; 3],
+}
+
+/// `n` decisions (seed `seed`): every state of the FPGA-model-driven loop
+/// (kept steps included), random states, and the constructed worst case
+/// (`s(k-1)` with six admissible positions per phase, 216 candidates),
+/// through `mpdcc_core` with `explorers` explorers and `FpgaMpdcc::decide_raw`.
+pub fn check_core(seed: u64, n: u64, explorers: u32) -> CoreSummary {
+    use crate::mpdcc_core::MpdccCoreSim;
+    use drive::mpdcc::controller::DecisionKind;
+    use drive::mpdcc::cycles;
+    let f = core();
+    let k = f.coeffs();
+    let p = DriveParams::default();
+    let mut rng = Rng(seed);
+    let cl = closed_loop_all_states();
+    let first = (seed as usize * 7919) % cl.len().max(1);
+    let mut sim = MpdccCoreSim::new();
+    let mut s = CoreSummary {
+        vectors: 0,
+        explorers,
+        mismatches: 0,
+        first_mismatch: None,
+        worst_case_cycles: 0,
+        mean_cycles: 0.0,
+        kinds: [0; 3],
+    };
+    let mut sum = 0u64;
+    for idx in 0..n {
+        let x = match idx % 3 {
+            0 | 1 if !cl.is_empty() => cl[(first + idx as usize) % cl.len()],
+            _ => {
+                let mut st = random_state(&mut rng, &p);
+                if idx % 9 == 2 {
+                    // six admissible positions in every phase: 216 candidates
+                    st.s_prev = [3 + rng.range(0, 1) as u8, 3 + rng.range(0, 1) as u8, 3];
+                }
+                match Inputs::quantize(&st) {
+                    Ok(x) => x,
+                    Err(_) => continue,
+                }
+            }
+        };
+        let c = fpga::common_terms(k, &x);
+        let want = f.decide_raw(&x);
+        let got = sim.decide(k, &c, x.s_prev, explorers);
+        let d = want.decision;
+        let winner = want.results.iter().find(|r| r.s == d.s);
+        let (cost, j_dl) = match (d.kind, winner) {
+            (DecisionKind::Kept, _) | (_, None) => (0, 0),
+            (_, Some(r)) => (r.cost, r.j_dl),
+        };
+        let cands = drive::mpdcc::controller::candidates(x.s_prev).len() as u32;
+        let model_cycles = cycles::pipelined_core_cycles(explorers.clamp(1, 6), cands);
+        let ok = got.s == d.s
+            && got.kind == Some(d.kind)
+            && got.horizon_steps == d.horizon_steps
+            && got.candidates == d.candidates
+            && got.cost == cost
+            && got.j_dl == j_dl
+            && got.measured_cycles == Some(got.cycles)
+            && got.cycles == model_cycles;
+        if !ok {
+            s.mismatches += 1;
+            s.first_mismatch.get_or_insert(s.vectors);
+        }
+        s.kinds[match d.kind {
+            DecisionKind::Kept => 0,
+            DecisionKind::Optimal => 1,
+            DecisionKind::Deadlock => 2,
+        }] += 1;
+        let m = got.measured_cycles.unwrap_or(u32::MAX);
+        s.worst_case_cycles = s.worst_case_cycles.max(m);
+        sum += u64::from(m);
+        s.vectors += 1;
+    }
+    s.mean_cycles = sum as f64 / s.vectors.max(1) as f64;
     s
 }
