@@ -1,13 +1,11 @@
-// mpdcc_core: the MPDCC candidate search of paper 001 (Algorithm 1 after
-// the common terms) with N pipelined explorers, bit-exact with the decision
-// of drive::mpdcc::fpga (FpgaMpdcc::decide_raw, frozen core).
+// mpdcc_core: the MPDCC core of paper 001 (Algorithm 1) with a central
+// scheduler and N pipelined explorers, bit-exact with the decision of
+// drive::mpdcc::fpga (FpgaMpdcc::decide_raw, frozen core Structure::CORE).
 //
-// The common terms of the decision (e0, dn, dn1, P_n, P_ph, v_n, v_ph; the
-// scheduler's eq. 14 datapath, drive::mpdcc::fpga::common_terms) and the
-// design constants are inputs here, held stable from start_i to done_o;
-// that datapath is not in this module.
-//
-// On start_i the scheduler enumerates S(s(k-1)): per phase the positions
+// Inputs are the state registers (drive::mpdcc::fpga::Inputs, already
+// quantized) and the design constants (Coeffs), held stable from start_i to
+// done_o. On start_i the scheduler computes the common terms (mpdcc_common,
+// eq. 14, 16 cycles) and then enumerates S(s(k-1)): per phase the positions
 // within one level of s(k-1), a contiguous code range [lo, hi] because the
 // level is monotonic in the code; candidates in ascending code order
 // (a outer, c inner), n_use_i (1..N) of them per clock, candidate i of a
@@ -22,7 +20,9 @@
 // Decision: kept (lazy check passes: s(k-1), no candidates), optimal (best),
 // or deadlock (best_dl). done_o is high for one cycle with the decision;
 // cycles_o counts the clock edges from the start_i cycle to the done_o cycle:
-//   1 + ceil(|S| / n_use) + LAT + 1.
+//   16 + ceil(|S| / n_use) + 41 + 1   (drive::mpdcc::cycles::pipelined_core_cycles)
+// The search always runs (a kept decision takes as long): the lazy check
+// costs no separate pass.
 `default_nettype none
 
 module mpdcc_core #(
@@ -34,13 +34,33 @@ module mpdcc_core #(
     output wire               busy_o,
     input  wire        [2:0]  n_use_i,    // explorers used, 1..N (clamped)
     input  wire        [8:0]  s_prev_i,   // {c, b, a}
-    input  wire        [111:0] e0_i,
-    input  wire        [191:0] dn_i,
-    input  wire        [47:0] dn1_i,
-    input  wire        [95:0] pn_i,
-    input  wire        [95:0] pph_i,
+    // state registers (raw, drive::mpdcc::fpga::Inputs)
+    input  wire signed [15:0] i_a_i,
+    input  wire signed [15:0] i_b_i,
+    input  wire signed [15:0] psi_a_i,
+    input  wire signed [15:0] psi_b_i,
     input  wire signed [15:0] v_n_i,
     input  wire        [47:0] v_ph_i,
+    input  wire signed [15:0] ir_a_i,
+    input  wire signed [15:0] ir_b_i,
+    input  wire signed [15:0] omega_r_i,
+    input  wire signed [15:0] omega_s_i,
+    // design constants (drive::mpdcc::fpga::Coeffs)
+    input  wire signed [15:0] c_tau_i,
+    input  wire signed [15:0] c_r_i,
+    input  wire signed [15:0] c_w_i,
+    input  wire signed [15:0] c_p_i,
+    input  wire signed [15:0] c_s_i,
+    input  wire signed [15:0] c_3_i,
+    input  wire signed [15:0] c_d_i,
+    input  wire signed [15:0] c_n_i,
+    input  wire signed [15:0] c_ph_i,
+    input  wire signed [15:0] s3h_i,
+    input  wire signed [15:0] v_ph_ref_i,
+    input  wire signed [15:0] c_tau1_i,
+    input  wire signed [15:0] c_r1_i,
+    input  wire signed [15:0] c_w1_i,
+    input  wire signed [15:0] c_s1_i,
     input  wire signed [15:0] vdc_half_i,
     input  wire signed [15:0] g3_i,
     input  wire signed [15:0] gd_i,
@@ -56,6 +76,10 @@ module mpdcc_core #(
     output reg         [7:0]  candidates_o,
     output reg         [15:0] cycles_o
 );
+    // latency of mpdcc_common: the candidates start this many cycles after
+    // the start strobe's edge
+    localparam integer COMMON_LATENCY = 16;
+
     // ------------------------------------------------ admissible ranges
     function automatic [2:0] lo_of(input [2:0] f);
         case (f)
@@ -78,6 +102,7 @@ module mpdcc_core #(
     reg  [8:0] hi_q;         // {c, b, a}
     reg  [8:0] cur_q;
     reg        gen_q;        // enumerating
+    reg  [4:0] pre_q;        // cycles left until the common terms are valid
     reg        busy_q;
     reg  [2:0] nuse_q;
     reg  [15:0] cyc_q;
@@ -140,6 +165,22 @@ module mpdcc_core #(
         end
     end
 
+    // ---------------------------------------------------- common terms
+    wire [111:0] e0_w;
+    wire [191:0] dn_w;
+    wire [47:0]  dn1_w;
+    wire [95:0]  pn_w, pph_w;
+    mpdcc_common u_common (
+        .clk_i(clk_i), .rst_i(rst_i),
+        .i_a_i(i_a_i), .i_b_i(i_b_i), .psi_a_i(psi_a_i), .psi_b_i(psi_b_i),
+        .v_n_i(v_n_i), .v_ph_i(v_ph_i), .ir_a_i(ir_a_i), .ir_b_i(ir_b_i),
+        .omega_r_i(omega_r_i), .omega_s_i(omega_s_i),
+        .c_tau_i(c_tau_i), .c_r_i(c_r_i), .c_w_i(c_w_i), .c_p_i(c_p_i), .c_s_i(c_s_i),
+        .c_3_i(c_3_i), .c_d_i(c_d_i), .c_n_i(c_n_i), .c_ph_i(c_ph_i), .s3h_i(s3h_i),
+        .v_ph_ref_i(v_ph_ref_i), .c_tau1_i(c_tau1_i), .c_r1_i(c_r1_i), .c_w1_i(c_w1_i),
+        .c_s1_i(c_s1_i),
+        .e0_o(e0_w), .dn_o(dn_w), .dn1_o(dn1_w), .pn_o(pn_w), .pph_o(pph_w));
+
     // ------------------------------------------------------ explorers
     wire [N-1:0] rv;
     wire [8:0]  rs [0:N-1];
@@ -152,8 +193,8 @@ module mpdcc_core #(
             mpdcc_explorer u_exp (
                 .clk_i(clk_i), .rst_i(rst_i),
                 .in_valid_i(cv[gi]), .s_i(cand[gi]),
-                .s_prev_i(s_prev_i), .e0_i(e0_i), .dn_i(dn_i), .dn1_i(dn1_i),
-                .pn_i(pn_i), .pph_i(pph_i), .v_n_i(v_n_i), .v_ph_i(v_ph_i),
+                .s_prev_i(s_prev_i), .e0_i(e0_w), .dn_i(dn_w), .dn1_i(dn1_w),
+                .pn_i(pn_w), .pph_i(pph_w), .v_n_i(v_n_i), .v_ph_i(v_ph_i),
                 .vdc_half_i(vdc_half_i), .g3_i(g3_i), .gd_i(gd_i), .g3_1_i(g3_1_i),
                 .bnd_i(bnd_i), .lambda_n_i(lambda_n_i),
                 .out_valid_o(rv[gi]), .s_o(rs[gi]), .l_star_o(rl[gi]), .cost_o(rc[gi]),
@@ -191,12 +232,13 @@ module mpdcc_core #(
             end
         end
     end
-    wire all_in = !gen_q && busy_q && (received_q + nrecv == issued_q) && (nrecv != 8'd0);
+    wire all_in = !gen_q && busy_q && (pre_q == 5'd0) && (received_q + nrecv == issued_q)
+                  && (nrecv != 8'd0);
 
     always @(posedge clk_i) begin
         if (rst_i) begin
             lo_q <= 6'd0; hi_q <= 9'd0; cur_q <= 9'd0;
-            gen_q <= 1'b0; busy_q <= 1'b0; nuse_q <= 3'd1;
+            gen_q <= 1'b0; busy_q <= 1'b0; nuse_q <= 3'd1; pre_q <= 5'd0;
             cyc_q <= 16'd0; issued_q <= 8'd0; received_q <= 8'd0;
             hb_q <= 1'b0; hd_q <= 1'b0; lazy_q <= 1'b0;
             bs_q <= 9'd0; ds_q <= 9'd0; bl_q <= 8'd0; bc_q <= 32'd0; dc_q <= 32'd0;
@@ -210,7 +252,8 @@ module mpdcc_core #(
                 hi_q <= {hi_of(s_prev_i[8:6]), hi_of(s_prev_i[5:3]), hi_of(s_prev_i[2:0])};
                 cur_q <= {lo_of(s_prev_i[8:6]), lo_of(s_prev_i[5:3]), lo_of(s_prev_i[2:0])};
                 nuse_q <= (n_use_i == 3'd0) ? 3'd1 : (n_use_i > N[2:0]) ? N[2:0] : n_use_i;
-                gen_q <= 1'b1;
+                gen_q <= 1'b0;
+                pre_q <= COMMON_LATENCY[4:0];
                 busy_q <= 1'b1;
                 cyc_q <= 16'd1;
                 issued_q <= 8'd0;
@@ -218,6 +261,10 @@ module mpdcc_core #(
                 hb_q <= 1'b0; hd_q <= 1'b0; lazy_q <= 1'b0;
             end else if (busy_q) begin
                 cyc_q <= cyc_q + 16'd1;
+                if (pre_q != 5'd0) begin
+                    pre_q <= pre_q - 5'd1;
+                    if (pre_q == 5'd1) gen_q <= 1'b1;
+                end
                 if (gen_q) begin
                     cur_q <= nxt;
                     issued_q <= issued_q + nissue;

@@ -1,5 +1,5 @@
 // C ABI around the Verilated mpdcc_core (N = 6 explorers, n_use_i of them
-// used), for rtl-sim (Rust): one call = one decision (common terms and
+// used), for rtl-sim (Rust): one call = one decision (state registers and
 // constants held, start strobe, clock until done_o).
 #include <cstdint>
 
@@ -35,15 +35,11 @@ struct MkSim {
 
 extern "C" {
 
-struct MkCommon {
+struct MkIn {
     int32_t s_prev[3];
-    int32_t e0[7];
-    int32_t dn[4][3];
-    int32_t dn1[3];
-    int64_t pn[3];
-    int64_t pph[3];
-    int32_t v_n;
-    int32_t v_ph[3];
+    int32_t i_ab[2], psi_ab[2], v_n, v_ph[3], i_ref_ab[2], omega_r, omega_s;
+    int32_t c_tau, c_r, c_w, c_p, c_s, c_3, c_d, c_n, c_ph, s3h, v_ph_ref;
+    int32_t c_tau1, c_r1, c_w1, c_s1;
     int32_t vdc_half, g3, gd, g3_1;
     int32_t bnd[7];
     int32_t lambda_n;
@@ -74,22 +70,35 @@ void* mk_new() {
     return sim;
 }
 
-void mk_decide(void* p, const MkCommon* c, int32_t n_use, MkOut* out) {
+void mk_decide(void* p, const MkIn* c, int32_t n_use, MkOut* out) {
     auto* t = static_cast<MkSim*>(p)->top;
     t->s_prev_i = (c->s_prev[0] & 7) | ((c->s_prev[1] & 7) << 3) | ((c->s_prev[2] & 7) << 6);
-    for (int j = 0; j < 7; j++) {
-        put(t->e0_i, 16 * j, 16, (uint16_t)c->e0[j]);
-        put(t->bnd_i, 16 * j, 16, (uint16_t)c->bnd[j]);
-    }
-    for (int m = 0; m < 4; m++)
-        for (int ph = 0; ph < 3; ph++) put(t->dn_i, 16 * (3 * m + ph), 16, (uint16_t)c->dn[m][ph]);
-    for (int ph = 0; ph < 3; ph++) {
-        put(t->dn1_i, 16 * ph, 16, (uint16_t)c->dn1[ph]);
-        put(t->pn_i, 32 * ph, 32, (uint32_t)c->pn[ph]);
-        put(t->pph_i, 32 * ph, 32, (uint32_t)c->pph[ph]);
-        put(t->v_ph_i, 16 * ph, 16, (uint16_t)c->v_ph[ph]);
-    }
+    for (int j = 0; j < 7; j++) put(t->bnd_i, 16 * j, 16, (uint16_t)c->bnd[j]);
+    for (int ph = 0; ph < 3; ph++) put(t->v_ph_i, 16 * ph, 16, (uint16_t)c->v_ph[ph]);
+    t->i_a_i = (uint16_t)c->i_ab[0];
+    t->i_b_i = (uint16_t)c->i_ab[1];
+    t->psi_a_i = (uint16_t)c->psi_ab[0];
+    t->psi_b_i = (uint16_t)c->psi_ab[1];
     t->v_n_i = (uint16_t)c->v_n;
+    t->ir_a_i = (uint16_t)c->i_ref_ab[0];
+    t->ir_b_i = (uint16_t)c->i_ref_ab[1];
+    t->omega_r_i = (uint16_t)c->omega_r;
+    t->omega_s_i = (uint16_t)c->omega_s;
+    t->c_tau_i = (uint16_t)c->c_tau;
+    t->c_r_i = (uint16_t)c->c_r;
+    t->c_w_i = (uint16_t)c->c_w;
+    t->c_p_i = (uint16_t)c->c_p;
+    t->c_s_i = (uint16_t)c->c_s;
+    t->c_3_i = (uint16_t)c->c_3;
+    t->c_d_i = (uint16_t)c->c_d;
+    t->c_n_i = (uint16_t)c->c_n;
+    t->c_ph_i = (uint16_t)c->c_ph;
+    t->s3h_i = (uint16_t)c->s3h;
+    t->v_ph_ref_i = (uint16_t)c->v_ph_ref;
+    t->c_tau1_i = (uint16_t)c->c_tau1;
+    t->c_r1_i = (uint16_t)c->c_r1;
+    t->c_w1_i = (uint16_t)c->c_w1;
+    t->c_s1_i = (uint16_t)c->c_s1;
     t->vdc_half_i = (uint16_t)c->vdc_half;
     t->g3_i = (uint16_t)c->g3;
     t->gd_i = (uint16_t)c->gd;

@@ -1,26 +1,41 @@
 //! Safe wrapper of the Verilated `mpdcc_core` (shim:
 //! `csrc/mpdcc_core_shim.cpp`, 6 explorers instantiated, `n_use` of them
-//! used): one call = one decision from the common terms of
-//! `drive::mpdcc::fpga`.
+//! used): one call = one decision from the state registers
+//! (`drive::mpdcc::fpga::Inputs`).
 use core::ffi::c_void;
 use core::ptr::NonNull;
 
 use drive::mpdcc::controller::DecisionKind;
-use drive::mpdcc::fpga::{Coeffs, Common};
+use drive::mpdcc::fpga::{Coeffs, Inputs};
 
 /// Explorers instantiated in the Verilated model.
 pub const MAX_EXPLORERS: u32 = 6;
 
 #[repr(C)]
-struct MkCommon {
+struct MkIn {
     s_prev: [i32; 3],
-    e0: [i32; 7],
-    dn: [[i32; 3]; 4],
-    dn1: [i32; 3],
-    pn: [i64; 3],
-    pph: [i64; 3],
+    i_ab: [i32; 2],
+    psi_ab: [i32; 2],
     v_n: i32,
     v_ph: [i32; 3],
+    i_ref_ab: [i32; 2],
+    omega_r: i32,
+    omega_s: i32,
+    c_tau: i32,
+    c_r: i32,
+    c_w: i32,
+    c_p: i32,
+    c_s: i32,
+    c_3: i32,
+    c_d: i32,
+    c_n: i32,
+    c_ph: i32,
+    s3h: i32,
+    v_ph_ref: i32,
+    c_tau1: i32,
+    c_r1: i32,
+    c_w1: i32,
+    c_s1: i32,
     vdc_half: i32,
     g3: i32,
     gd: i32,
@@ -44,7 +59,7 @@ struct MkOut {
 
 extern "C" {
     fn mk_new() -> *mut c_void;
-    fn mk_decide(p: *mut c_void, c: *const MkCommon, n_use: i32, out: *mut MkOut);
+    fn mk_decide(p: *mut c_void, c: *const MkIn, n_use: i32, out: *mut MkOut);
     fn mk_free(p: *mut c_void);
 }
 
@@ -83,22 +98,39 @@ impl MpdccCoreSim {
         Self { ptr }
     }
 
-    /// One decision with `n_use` explorers (clamped to 1..=6 by the core).
-    pub fn decide(&mut self, k: &Coeffs, c: &Common, s_prev: [u8; 3], n_use: u32) -> RtlDecision {
-        let cm = MkCommon {
-            s_prev: s_prev.map(i32::from),
-            e0: c.e0.map(i32::from),
-            dn: c.dn.map(|r| r.map(i32::from)),
-            dn1: c.dn_1.map(i32::from),
-            pn: c.pn,
-            pph: c.pph,
-            v_n: i32::from(c.v_n),
-            v_ph: c.v_ph.map(i32::from),
-            vdc_half: i32::from(k.v_dc_half),
-            g3: i32::from(k.g3),
-            gd: i32::from(k.gd),
-            g3_1: i32::from(k.g3_1),
-            bnd: k.bnd.map(i32::from),
+    /// One decision on the state registers `x` with the constants `k` and
+    /// `n_use` explorers (clamped to 1..=6 by the core).
+    pub fn decide(&mut self, k: &Coeffs, x: &Inputs, n_use: u32) -> RtlDecision {
+        let w = i32::from;
+        let cm = MkIn {
+            s_prev: x.s_prev.map(i32::from),
+            i_ab: x.i_ab.map(w),
+            psi_ab: x.psi_ab.map(w),
+            v_n: w(x.v_n),
+            v_ph: x.v_ph.map(w),
+            i_ref_ab: x.i_ref_ab.map(w),
+            omega_r: w(x.omega_r),
+            omega_s: w(x.omega_s),
+            c_tau: w(k.c_tau),
+            c_r: w(k.c_r),
+            c_w: w(k.c_w),
+            c_p: w(k.c_p),
+            c_s: w(k.c_s),
+            c_3: w(k.c_3),
+            c_d: w(k.c_d),
+            c_n: w(k.c_n),
+            c_ph: w(k.c_ph),
+            s3h: w(k.s3h),
+            v_ph_ref: w(k.v_ph_ref),
+            c_tau1: w(k.c_tau1),
+            c_r1: w(k.c_r1),
+            c_w1: w(k.c_w1),
+            c_s1: w(k.c_s1),
+            vdc_half: w(k.v_dc_half),
+            g3: w(k.g3),
+            gd: w(k.gd),
+            g3_1: w(k.g3_1),
+            bnd: k.bnd.map(w),
             lambda_n: i32::from(k.lambda_n),
         };
         let mut o = MkOut::default();

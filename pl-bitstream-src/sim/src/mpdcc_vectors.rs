@@ -412,9 +412,8 @@ pub fn check_core(seed: u64, n: u64, explorers: u32) -> CoreSummary {
                 }
             }
         };
-        let c = fpga::common_terms(k, &x);
         let want = f.decide_raw(&x);
-        let got = sim.decide(k, &c, x.s_prev, explorers);
+        let got = sim.decide(k, &x, explorers);
         let d = want.decision;
         let winner = want.results.iter().find(|r| r.s == d.s);
         let (cost, j_dl) = match (d.kind, winner) {

@@ -1096,16 +1096,19 @@ impl CycleModel {
 /// from a candidate's strobe to its result (one candidate per clock).
 pub const PIPELINED_EXPLORER_LATENCY: u32 = 41;
 
-/// Clock cycles of one candidate search of the Verilog `mpdcc_core`
-/// (common terms given), from the start strobe to the decision strobe:
-/// one cycle to load the ranges, `ceil(|S| / n)` cycles issuing `n`
+/// Latency of the common-terms pipeline `mpdcc_common` (Verilog), cycles.
+pub const PIPELINED_COMMON_LATENCY: u32 = 16;
+
+/// Clock cycles of one decision of the Verilog `mpdcc_core`, from the
+/// start strobe to the decision strobe: the common terms
+/// ([`PIPELINED_COMMON_LATENCY`]), `ceil(|S| / n)` cycles issuing `n`
 /// candidates per clock, the explorers' latency for the last group, one
 /// cycle for the last comparison. Data-independent apart from `|S|`; a
 /// decision that keeps `s(k-1)` takes as long (the lazy check is the
 /// result of `s(k-1)` itself). Checked against the RTL's own count on every
 /// vector of `scripts/rtl-check mpdcc`.
 pub fn pipelined_core_cycles(n: u32, candidates: u32) -> u32 {
-    candidates.div_ceil(n.max(1)) + PIPELINED_EXPLORER_LATENCY + 1
+    PIPELINED_COMMON_LATENCY + candidates.div_ceil(n.max(1)) + PIPELINED_EXPLORER_LATENCY + 1
 }
 
 /// The paper's Table II, worst-case cycles for `n = 1..6` explorers.

@@ -118,7 +118,7 @@ fn mpdcc(seed: u64, vectors: u64, explorers: u32, t0: Instant) -> ExitCode {
     println!(
         "{{\"core\":\"mpdcc\",\"seed\":{seed},\"vectors\":{},\"mismatches\":{},\"explorers\":{},\
          \"worst_case_cycles\":{},\"mean_cycles\":{:.1},\"first_mismatch\":{},\"kept\":{},\"optimal\":{},\
-         \"deadlock\":{},\"common_terms_in_rtl\":false,\"seconds\":{:.2}}}",
+         \"deadlock\":{},\"seconds\":{:.2}}}",
         s.vectors,
         s.mismatches,
         s.explorers,
