@@ -187,7 +187,7 @@ pub fn lane_cases(seed: u64, n: u64) -> Vec<LaneCase> {
     // Start at a seed-dependent step so seeds see different states.
     let first = (seed as usize * 7919) % states.len().max(1);
     for x in states.iter().cycle().skip(first).take(states.len()) {
-        if pool_cl.len() as u64 >= n / 3 + 1 {
+        if pool_cl.len() as u64 > n / 3 {
             break;
         }
         cases_of_state(&f, x, &mut pool_cl);
