@@ -1228,6 +1228,26 @@ mod tests {
         assert_eq!(check_program(DUP), Err(ProgramError::Duplicate("a")));
     }
 
+    /// The Verilog core's count by hand: 216 candidates at N = 2 are 108
+    /// issue cycles after the 16 of the common terms, the last group's
+    /// results 41 cycles later, one cycle for the last comparison; fewer
+    /// candidates than explorers take one issue cycle.
+    #[test]
+    fn pipelined_core_cycles_by_hand() {
+        assert_eq!(pipelined_core_cycles(2, 216), 16 + 108 + 41 + 1);
+        assert_eq!(pipelined_core_cycles(4, 216), 16 + 54 + 41 + 1);
+        assert_eq!(pipelined_core_cycles(5, 216), 16 + 44 + 41 + 1);
+        assert_eq!(pipelined_core_cycles(6, 5), 16 + 1 + 41 + 1);
+        // Against the structural model of the iterative explorers: more
+        // than 20 times fewer cycles at every N for the full set (26x at
+        // N = 6, 44x at N = 2).
+        let m = CycleModel::default();
+        let lw = worst_lane_cycles(4, 3, 7);
+        for n in 1..=6 {
+            assert!(20 * pipelined_core_cycles(n, 216) < m.worst_case(n, 216, lw).total);
+        }
+    }
+
     #[test]
     fn paper_table_is_its_formula_rounded() {
         for n in 1..=6u32 {
