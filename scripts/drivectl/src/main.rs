@@ -5,6 +5,7 @@ use anyhow::Result;
 use clap::{Parser, Subcommand};
 
 mod console;
+mod explore;
 mod paper_mpdcc;
 mod paper_mpdtc;
 mod sim;
@@ -37,6 +38,16 @@ enum Cmd {
     /// Benchmarks (called by scripts/bench).
     #[command(subcommand)]
     Bench(BenchCmd),
+    /// Design exploration (research sweeps).
+    #[command(subcommand)]
+    Explore(ExploreCmd),
+}
+
+#[derive(Subcommand)]
+enum ExploreCmd {
+    /// FPGA MPDCC model: mismatch, f_sw and THD against the reference for
+    /// bounds, L, p and datapath structures.
+    Mpdcc(explore::Args),
 }
 
 #[derive(Subcommand)]
@@ -85,5 +96,6 @@ fn dispatch(cmd: Cmd) -> Result<()> {
         Cmd::Sim(SimCmd::Replay(a)) => sim::replay(a),
         Cmd::Bench(BenchCmd::Pmsm(a)) => paper_mpdtc::bench(a),
         Cmd::Bench(BenchCmd::Mpdcc(a)) => paper_mpdcc::bench(a),
+        Cmd::Explore(ExploreCmd::Mpdcc(a)) => explore::mpdcc(a),
     }
 }
