@@ -372,8 +372,9 @@ pub struct CoreSummary {
     pub kinds: [u64; 3],
 }
 
-/// `n` decisions (seed `seed`): every state of the FPGA-model-driven loop
-/// (kept steps included), random states, and the constructed worst case
+/// `n` decisions (seed `seed`), a third each: the states of the
+/// FPGA-model-driven loop (kept steps included), its steps that search, and
+/// random states, some of them the constructed worst case
 /// (`s(k-1)` with six admissible positions per phase, 216 candidates),
 /// through `mpdcc_core` with `explorers` explorers and `FpgaMpdcc::decide_raw`.
 pub fn check_core(seed: u64, n: u64, explorers: u32) -> CoreSummary {
@@ -385,6 +386,7 @@ pub fn check_core(seed: u64, n: u64, explorers: u32) -> CoreSummary {
     let p = DriveParams::default();
     let mut rng = Rng(seed);
     let cl = closed_loop_all_states();
+    let searched = closed_loop_states();
     let first = (seed as usize * 7919) % cl.len().max(1);
     let mut sim = MpdccCoreSim::new();
     let mut s = CoreSummary {
@@ -399,7 +401,8 @@ pub fn check_core(seed: u64, n: u64, explorers: u32) -> CoreSummary {
     let mut sum = 0u64;
     for idx in 0..n {
         let x = match idx % 3 {
-            0 | 1 if !cl.is_empty() => cl[(first + idx as usize) % cl.len()],
+            0 if !cl.is_empty() => cl[(first + idx as usize) % cl.len()],
+            1 if !searched.is_empty() => searched[(first + idx as usize) % searched.len()],
             _ => {
                 let mut st = random_state(&mut rng, &p);
                 if idx % 9 == 2 {
