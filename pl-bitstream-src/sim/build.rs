@@ -43,6 +43,32 @@ const TOPS: &[(&str, &[&str], &str)] = &[
         &["mpdtc_frontend.v", "sin_table.vh"],
         "mpdtc_frontend_shim.cpp",
     ),
+    (
+        "mpdcc_lane",
+        &["mpdcc_lane.v", "mpdcc_piece.v"],
+        "mpdcc_lane_shim.cpp",
+    ),
+    (
+        "mpdcc_explorer",
+        &[
+            "mpdcc_explorer.v",
+            "mpdcc_lane.v",
+            "mpdcc_piece.v",
+            "mpdcc_pipe.v",
+        ],
+        "mpdcc_explorer_shim.cpp",
+    ),
+    (
+        "mpdcc_core",
+        &[
+            "mpdcc_core.v",
+            "mpdcc_explorer.v",
+            "mpdcc_lane.v",
+            "mpdcc_piece.v",
+            "mpdcc_pipe.v",
+        ],
+        "mpdcc_core_shim.cpp",
+    ),
 ];
 
 fn run(cmd: &mut Command) {
@@ -62,6 +88,10 @@ const NETLIST_ENV: &str = "RTL_SIM_MPDTC_NETLIST";
 /// wrote it; `scripts/rtl-gatesim` sets it).
 const CELLS_ENV: &str = "RTL_SIM_XILINX_CELLS";
 
+/// Explorers instantiated in the Verilated `mpdcc_core` (`n_use_i` selects
+/// how many a decision uses, so one model serves `--explorers 1..=6`).
+const MPDCC_CORE_EXPLORERS: u32 = 6;
+
 fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
     let netlist = (top == "mpdtc_core")
         .then(|| env::var(NETLIST_ENV).ok())
@@ -80,6 +110,10 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         .args(["-MAKEFLAGS", "OPT_FAST=-O1 OPT_SLOW=-O1 OPT_GLOBAL=-O1"])
         .arg("-Wno-fatal")
         .arg(format!("-I{}", rtl.display()));
+    if top == "mpdcc_core" {
+        // The most explorers of the table; a run uses n_use_i of them.
+        cmd.arg(format!("-GN={MPDCC_CORE_EXPLORERS}"));
+    }
     if let Some(n) = netlist {
         // The cell models of the yosys that wrote the netlist: `CELLS_ENV`,
         // else those next to the yosys on PATH (<prefix>/share/yosys).

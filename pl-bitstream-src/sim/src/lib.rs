@@ -7,6 +7,10 @@
 
 pub mod cosim;
 pub mod gate_driver;
+pub mod mpdcc_core;
+pub mod mpdcc_explorer;
+pub mod mpdcc_lane;
+pub mod mpdcc_vectors;
 pub mod mpdtc_core;
 pub mod mpdtc_frontend;
 pub mod mpdtc_vectors;

@@ -6,6 +6,7 @@ use clap::{Parser, Subcommand};
 
 mod console;
 mod experiment;
+mod explore;
 mod paper_mpdcc;
 mod paper_mpdtc;
 mod sim;
@@ -47,6 +48,16 @@ enum Cmd {
     Experiment(ExperimentCmd),
     /// Arm the PL capture buffer, wait for the record, write CSV and SVG.
     Capture(experiment::CaptureArgs),
+    /// Design exploration (research sweeps).
+    #[command(subcommand)]
+    Explore(ExploreCmd),
+}
+
+#[derive(Subcommand)]
+enum ExploreCmd {
+    /// FPGA MPDCC model: mismatch, f_sw and THD against the reference for
+    /// bounds, L, p and datapath structures.
+    Mpdcc(explore::Args),
 }
 
 #[derive(Subcommand)]
@@ -117,5 +128,6 @@ fn dispatch(cmd: Cmd) -> Result<()> {
         Cmd::Experiment(ExperimentCmd::Step(a)) => experiment::step(a),
         Cmd::Experiment(ExperimentCmd::Sweep(a)) => experiment::sweep(a),
         Cmd::Capture(a) => experiment::capture(a),
+        Cmd::Explore(ExploreCmd::Mpdcc(a)) => explore::mpdcc(a),
     }
 }

@@ -24,8 +24,8 @@
 //! `K^-1 (X_r/D t K v) = (X_r/(3D)) t (3 v_x - v_a - v_b - v_c)`: one
 //! multiply per phase, no `sqrt(3)` on the candidate path.
 //!
-//! # Accuracy options ([`FpgaConfig`]; all on in [`FpgaConfig::improved`],
-//! all off in [`FpgaConfig::paper`])
+//! # Accuracy options ([`FpgaConfig`]; all on in [`Structure::CORE`], the
+//! specification of the Verilog core; all off in `Structure::PAPER`, a research option)
 //! Measured against the exact model, the paper's structure leaves errors of
 //! several 0.01 pu at `k+L` and, worse, the single chord through `k` and
 //! `k+L` misses the curvature of the current trajectories beyond `L`. Each
@@ -101,13 +101,40 @@ pub fn p_taylor(m: &super::params::MachineParams) -> f64 {
     m.x_m_pu / (2.0 * m.d_pu())
 }
 
-/// Build-time choices of the FPGA core.
+/// Build-time choices of the FPGA core: the frozen core, the one the Verilog
+/// `mpdcc_core` implements (its arithmetic is [`Structure::CORE`]). Only the
+/// number of explorers and the design-time value of `p` are free; both
+/// change constants or the cycle count, never the structure.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FpgaConfig {
     /// Number of explorer units `n` (1..=16).
     pub explorers: u32,
     /// Model correction factor `p` of eq. (4)/(9b).
     pub p_correction: f64,
+}
+
+impl FpgaConfig {
+    /// The core with two explorers (Sec. VII-A) and `p` from [`p_taylor`].
+    pub fn core(m: &super::params::MachineParams) -> Self {
+        Self::with_p(p_taylor(m))
+    }
+
+    /// [`FpgaConfig::core`] with another `p`.
+    pub fn with_p(p_correction: f64) -> Self {
+        Self {
+            explorers: 2,
+            p_correction,
+        }
+    }
+}
+
+/// The datapath's structure: which accuracy terms and how many
+/// interpolation nodes. [`Structure::CORE`] is the specification of the
+/// Verilog core; other structures (the paper's, design sweeps) are research
+/// options, built only with the `mpdcc-research` feature
+/// ([`FpgaMpdcc::research`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Structure {
     /// Add the second-order term `-(omega_s L T)^2/2 i*` to the reference
     /// rotation `A_0` of eq. (14b) (the paper has first order only).
     pub ref_second_order: bool,
@@ -137,46 +164,33 @@ pub struct FpgaConfig {
     pub nodes: u32,
 }
 
-impl FpgaConfig {
-    /// As the paper describes it: two explorers (Sec. VII-A), first-order
-    /// reference rotation, interpolated first step, the given `p`.
-    pub fn paper(p_correction: f64) -> Self {
-        Self {
-            explorers: 2,
-            p_correction,
-            ref_second_order: false,
-            exact_first_step: false,
-            third_order: false,
-            stator_damping: false,
-            capacitor_drift: false,
-            current_midpoint: false,
-            nodes: 1,
-        }
-    }
+impl Structure {
+    /// The frozen core: the paper's structure plus the accuracy options (all
+    /// but `current_midpoint`) and four interpolation nodes. Costs: a dozen
+    /// multiplies in the scheduler, about 30 block operations and three more
+    /// search pieces per candidate (docs/mpdcc-fpga.md, [`super::cycles`]).
+    pub const CORE: Structure = Structure {
+        ref_second_order: true,
+        exact_first_step: true,
+        third_order: true,
+        stator_damping: true,
+        capacitor_drift: true,
+        current_midpoint: false,
+        nodes: 4,
+    };
 
-    /// Our default: the paper's structure plus the accuracy options (all
-    /// but `current_midpoint`) and four interpolation nodes, with `p` from
-    /// [`p_taylor`]. Costs: a dozen multiplies in the scheduler, about 30
-    /// block operations and three more search pieces per candidate
-    /// (docs/mpdcc-fpga.md, [`super::cycles`]).
-    pub fn improved(m: &super::params::MachineParams) -> Self {
-        Self::with_p(p_taylor(m))
-    }
-
-    /// [`FpgaConfig::improved`] with another `p`.
-    pub fn with_p(p_correction: f64) -> Self {
-        Self {
-            explorers: 2,
-            p_correction,
-            ref_second_order: true,
-            exact_first_step: true,
-            third_order: true,
-            stator_damping: true,
-            capacitor_drift: true,
-            current_midpoint: false,
-            nodes: 4,
-        }
-    }
+    /// As the paper describes it: first-order reference rotation,
+    /// interpolated first step, one chord.
+    #[cfg(feature = "mpdcc-research")]
+    pub const PAPER: Structure = Structure {
+        ref_second_order: false,
+        exact_first_step: false,
+        third_order: false,
+        stator_damping: false,
+        capacitor_drift: false,
+        current_midpoint: false,
+        nodes: 1,
+    };
 }
 
 /// Why the FPGA model cannot be built for these parameters.
@@ -245,19 +259,19 @@ pub struct Coeffs {
     pub lambda_n: u16,
     /// `round(2^17 / l)` for `l = 0..=N_bar` (entry 0 unused), UQ1.17.
     pub recip: heapless::Vec<u32, 1025>,
-    /// [`FpgaConfig::ref_second_order`].
+    /// [`Structure::ref_second_order`].
     pub ref_second_order: bool,
-    /// [`FpgaConfig::exact_first_step`].
+    /// [`Structure::exact_first_step`].
     pub exact_first_step: bool,
-    /// [`FpgaConfig::third_order`].
+    /// [`Structure::third_order`].
     pub third_order: bool,
     /// `(L T)^2 / 6`, Q1.14 (third-order rotation term).
     pub c_3: i16,
-    /// [`FpgaConfig::capacitor_drift`].
+    /// [`Structure::capacitor_drift`].
     pub capacitor_drift: bool,
-    /// [`FpgaConfig::current_midpoint`].
+    /// [`Structure::current_midpoint`].
     pub current_midpoint: bool,
-    /// [`FpgaConfig::nodes`].
+    /// [`Structure::nodes`].
     pub nodes: u32,
     /// Stator damping `L T/(2 tau_s)` (0 without the option), Q1.14.
     pub c_d: i16,
@@ -277,7 +291,7 @@ pub struct Coeffs {
 
 impl Coeffs {
     /// Quantizes the design constants; every one must fit without saturation.
-    pub fn new(p: &DriveParams, cfg: &FpgaConfig) -> Result<Self, FpgaError> {
+    pub fn new(p: &DriveParams, cfg: &FpgaConfig, st: &Structure) -> Result<Self, FpgaError> {
         let p_corr = cfg.p_correction;
         p.validate().map_err(FpgaError::Params)?;
         if !p_corr.is_finite() || !(0.0..=8.0).contains(&p_corr) {
@@ -290,17 +304,17 @@ impl Coeffs {
         let d = m.d_pu();
         // Second-order stator damping of the machine rates: over m L steps
         // they are scaled by (1 - m c_d), c_d = L T/(2 tau_s).
-        let c_d = if cfg.stator_damping {
+        let c_d = if st.stator_damping {
             lt / (2.0 * m.tau_s_pu())
         } else {
             0.0
         };
-        if !(1..=MAX_NODES as u32).contains(&cfg.nodes) {
+        if !(1..=MAX_NODES as u32).contains(&st.nodes) {
             return Err(FpgaError::Nodes);
         }
         // Node K sits at 2^(K-1) L, which must not pass N_bar: use as many
         // nodes as fit (down to the single chord).
-        let mut nodes = cfg.nodes;
+        let mut nodes = st.nodes;
         while nodes > 1 && (c.extrapolation_steps << (nodes - 1)) > c.horizon_max_steps {
             nodes -= 1;
         }
@@ -356,12 +370,12 @@ impl Coeffs {
             bnd: [di, di, di, bn, bp, bp, bp],
             lambda_n: lam as u16,
             recip,
-            ref_second_order: cfg.ref_second_order,
-            exact_first_step: cfg.exact_first_step,
-            third_order: cfg.third_order,
+            ref_second_order: st.ref_second_order,
+            exact_first_step: st.exact_first_step,
+            third_order: st.third_order,
             c_3: q("c_3", lt * lt / 6.0, F_C)?,
-            capacitor_drift: cfg.capacitor_drift,
-            current_midpoint: cfg.current_midpoint,
+            capacitor_drift: st.capacitor_drift,
+            current_midpoint: st.current_midpoint,
             nodes,
             c_d: q("c_d", c_d, F_C)?,
             gd: q("gd", c_d * lt * m.x_r_pu() / (3.0 * d), F_C)?,
@@ -750,7 +764,7 @@ fn bits_for(n: u32) -> u32 {
 /// of two, so each piece is one exact Algorithm-2 search with its own cap;
 /// the next piece is searched only when the previous one is capped (still
 /// inside at its end). Returns `(l_j, cycles)`.
-fn lane(k: &Coeffs, e0: i32, nodes: &Nodes, j: usize) -> (u32, u32) {
+pub fn lane(k: &Coeffs, e0: i32, nodes: &Nodes, j: usize) -> (u32, u32) {
     let bnd = k.bnd[j] as i32;
     let lam = k.lambda;
     let big_l = 1u32 << lam;
@@ -900,11 +914,22 @@ impl FpgaMpdcc {
     /// Builds the core; rejects invalid parameters and coefficients that do
     /// not fit their formats.
     pub fn new(p: &DriveParams, cfg: FpgaConfig) -> Result<Self, FpgaError> {
+        Self::build(p, cfg, &Structure::CORE)
+    }
+
+    /// A core with another datapath structure (the paper's, design sweeps):
+    /// research only, not what the Verilog implements.
+    #[cfg(feature = "mpdcc-research")]
+    pub fn research(p: &DriveParams, cfg: FpgaConfig, st: Structure) -> Result<Self, FpgaError> {
+        Self::build(p, cfg, &st)
+    }
+
+    fn build(p: &DriveParams, cfg: FpgaConfig, st: &Structure) -> Result<Self, FpgaError> {
         if !(1..=16).contains(&cfg.explorers) {
             return Err(FpgaError::Explorers);
         }
         Ok(Self {
-            coeffs: Coeffs::new(p, &cfg)?,
+            coeffs: Coeffs::new(p, &cfg, st)?,
             cfg,
             last: None,
         })
@@ -969,7 +994,7 @@ mod tests {
     #[test]
     fn piecewise_lane_matches_scan() {
         let p = DriveParams::default();
-        let f = FpgaMpdcc::new(&p, FpgaConfig::improved(&p.machine)).unwrap();
+        let f = FpgaMpdcc::new(&p, FpgaConfig::core(&p.machine)).unwrap();
         let k = f.coeffs();
         let kn = k.nodes as usize;
         assert!(kn >= 3);
@@ -1026,7 +1051,7 @@ mod tests {
     fn decision_independent_of_explorer_count() {
         let p = DriveParams::default();
         let mk = |n| {
-            let mut c = FpgaConfig::improved(&p.machine);
+            let mut c = FpgaConfig::core(&p.machine);
             c.explorers = n;
             FpgaMpdcc::new(&p, c).unwrap()
         };

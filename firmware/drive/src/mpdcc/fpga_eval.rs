@@ -10,8 +10,12 @@ extern crate std;
 use std::println;
 
 use super::closed_loop::{self, LoopConfig};
-use super::controller::{candidates, rotate, CtrlState, MpdccController, StateError};
+#[cfg(feature = "mpdcc-research")]
+use super::controller::candidates;
+use super::controller::{rotate, CtrlState, MpdccController, StateError};
 use super::fixed::{to_f64, F_I};
+#[cfg(feature = "mpdcc-research")]
+use super::fpga::Structure;
 use super::fpga::{self, FpgaConfig, FpgaMpdcc, Inputs, P_PAPER};
 use super::machine::{self, clarke, inv_clarke, Discrete};
 use super::params::DriveParams;
@@ -201,7 +205,7 @@ fn correction_factor_p_against_exact_discretization() {
 #[test]
 fn one_step_and_l_step_predictions_match_exact_model() {
     let p = DriveParams::default();
-    let f = FpgaMpdcc::new(&p, FpgaConfig::improved(&p.machine)).unwrap();
+    let f = FpgaMpdcc::new(&p, FpgaConfig::core(&p.machine)).unwrap();
     let l = p.controller.extrapolation_steps as usize;
     let lsb = 1.0 / 8192.0;
     let lt = l as f64 * p.controller.ts_pu(&p.machine);
@@ -256,6 +260,7 @@ fn one_step_and_l_step_predictions_match_exact_model() {
 /// (inside or outside `[la, lb]`) when the nodes are off by `ea`, `eb` and
 /// the function's second difference is at most `m2`:
 /// `|wa| ea + |wb| eb + m2 |l - la| |l - lb| / 2`.
+#[cfg(feature = "mpdcc-research")]
 fn chord_bound(l: f64, la: f64, lb: f64, ea: f64, eb: f64, m2: f64) -> f64 {
     let wa = (lb - l) / (lb - la);
     let wb = (l - la) / (lb - la);
@@ -268,11 +273,12 @@ fn chord_bound(l: f64, la: f64, lb: f64, ea: f64, eb: f64, m2: f64) -> f64 {
 /// most [`chord_bound`] of the piece that `l` uses (node errors measured,
 /// including the quantization of `a_j` at `k`; `M2` = largest second
 /// difference of the exact trajectory over the horizon) plus 2 LSB.
+#[cfg(feature = "mpdcc-research")]
 #[test]
 fn interpolation_error_is_bounded() {
     let p = DriveParams::default();
-    let paper = FpgaMpdcc::new(&p, FpgaConfig::paper(fpga::p_taylor(&p.machine))).unwrap();
-    let ours = FpgaMpdcc::new(&p, FpgaConfig::improved(&p.machine)).unwrap();
+    let paper = FpgaMpdcc::research(&p, FpgaConfig::core(&p.machine), Structure::PAPER).unwrap();
+    let ours = FpgaMpdcc::new(&p, FpgaConfig::core(&p.machine)).unwrap();
     let big_l = p.controller.extrapolation_steps as f64;
     let n = p.controller.horizon_max_steps as usize;
     let q = 2.0 / 8192.0;
@@ -367,9 +373,17 @@ fn bad_input_is_rejected_without_state_change() {
         FpgaMpdcc::new(&q, FpgaConfig::with_p(1.0)).unwrap_err(),
         fpga::FpgaError::CoefficientRange("c_w")
     );
-    let mut cfg = FpgaConfig::with_p(1.0);
-    cfg.nodes = 5;
-    assert_eq!(FpgaMpdcc::new(&p, cfg).unwrap_err(), fpga::FpgaError::Nodes);
+    #[cfg(feature = "mpdcc-research")]
+    {
+        let st = Structure {
+            nodes: 5,
+            ..Structure::CORE
+        };
+        assert_eq!(
+            FpgaMpdcc::research(&p, FpgaConfig::with_p(1.0), st).unwrap_err(),
+            fpga::FpgaError::Nodes
+        );
+    }
     assert_eq!(
         FpgaMpdcc::new(&p, FpgaConfig::with_p(f64::NAN)).unwrap_err(),
         fpga::FpgaError::Correction
@@ -449,6 +463,7 @@ fn closed_loop_mismatch_against_reference() {
 
 /// Design exploration (run by hand): mismatch, f_sw and THD against the
 /// reference for L, p and the two accuracy options.
+#[cfg(feature = "mpdcc-research")]
 #[test]
 #[ignore]
 fn sweep_design_options() {
@@ -476,9 +491,8 @@ fn sweep_design_options() {
             ] {
                 let mut q = p;
                 q.controller.extrapolation_steps = l;
-                let fc = FpgaConfig {
-                    explorers: 2,
-                    p_correction: pc,
+                let fc = FpgaConfig::with_p(pc);
+                let st = Structure {
                     ref_second_order: so,
                     exact_first_step: ef,
                     third_order: so && ef,
@@ -487,12 +501,12 @@ fn sweep_design_options() {
                     current_midpoint: false,
                     nodes: if so && ef && 4 * l <= 128 { 3 } else { 1 },
                 };
-                let Ok(mut f) = FpgaMpdcc::new(&q, fc) else {
+                let Ok(mut f) = FpgaMpdcc::research(&q, fc, st) else {
                     continue;
                 };
                 let mut r = Reference::new(&q).unwrap();
                 let sh = closed_loop::run(&q, &cfg, &mut r, Some(&mut f), &mut |_| {}).unwrap();
-                let mut f = FpgaMpdcc::new(&q, fc).unwrap();
+                let mut f = FpgaMpdcc::research(&q, fc, st).unwrap();
                 let rf = closed_loop::run(&q, &cfg, &mut f, None, &mut |_| {}).unwrap();
                 println!(
                     "  L {l:2} p {pc:.3} 2nd {so:5} first {ef:5}: mismatch {:.2} % ({}/{} sw), fsw {:.1} ({:+.1} %), THD {:.2} ({:+.1} %), out {} dl {}",
@@ -505,81 +519,6 @@ fn sweep_design_options() {
                     100.0 * (rf.thd_percent / rr.thd_percent - 1.0),
                     rf.steps_outside_bounds,
                     rf.deadlocks
-                );
-            }
-        }
-    }
-}
-
-/// Design exploration (run by hand), long windows: noise floor (reference
-/// against itself with delta_i scaled by 1 + 1e-4) and candidate designs.
-#[test]
-#[ignore]
-fn sweep_long_windows() {
-    let base = DriveParams::default();
-    let periods: u32 = std::env::var("FPGA_SWEEP_PERIODS")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(40);
-    let cfg = LoopConfig {
-        warmup_periods: 1,
-        measure_periods: periods,
-    };
-    let dis: std::vec::Vec<f64> = std::env::var("FPGA_SWEEP_DI")
-        .ok()
-        .map(|v| v.split(',').filter_map(|x| x.parse().ok()).collect())
-        .unwrap_or(std::vec![0.06, 0.1, 0.15, 0.2]);
-    let ls: std::vec::Vec<u32> = std::env::var("FPGA_SWEEP_L")
-        .ok()
-        .map(|v| v.split(',').filter_map(|x| x.parse().ok()).collect())
-        .unwrap_or(std::vec![8, 16, 32]);
-    let pcs: std::vec::Vec<f64> = std::env::var("FPGA_SWEEP_P")
-        .ok()
-        .map(|v| v.split(',').filter_map(|x| x.parse().ok()).collect())
-        .unwrap_or(std::vec![0.0, P_PAPER, 1.0, fpga::p_taylor(&base.machine)]);
-    for &di in &dis {
-        let mut p = base;
-        p.controller.delta_i_pu = di;
-        let mut r = Reference::new(&p).unwrap();
-        let rr = closed_loop::run(&p, &cfg, &mut r, None, &mut |_| {}).unwrap();
-        let mut pn = p;
-        pn.controller.delta_i_pu = di * (1.0 + 1e-4);
-        let mut r2 = Reference::new(&pn).unwrap();
-        let rn = closed_loop::run(&pn, &cfg, &mut r2, None, &mut |_| {}).unwrap();
-        println!(
-            "delta_i {di}: reference fsw {:.1} Hz THD {:.2} %; noise floor fsw {:+.1} % THD {:+.1} %",
-            rr.fsw_hz,
-            rr.thd_percent,
-            100.0 * (rn.fsw_hz / rr.fsw_hz - 1.0),
-            100.0 * (rn.thd_percent / rr.thd_percent - 1.0)
-        );
-        for &l in &ls {
-            for &pc in &pcs {
-                let mut q = p;
-                q.controller.extrapolation_steps = l;
-                let mut fc = if std::env::var("FPGA_SWEEP_CFG").as_deref() == Ok("paper") {
-                    FpgaConfig::paper(pc)
-                } else {
-                    FpgaConfig::with_p(pc)
-                };
-                if let Some(nn) = std::env::var("FPGA_SWEEP_NODES")
-                    .ok()
-                    .and_then(|v| v.parse().ok())
-                {
-                    fc.nodes = nn;
-                }
-                let mut f = FpgaMpdcc::new(&q, fc).unwrap();
-                let mut r = Reference::new(&q).unwrap();
-                let sh = closed_loop::run(&q, &cfg, &mut r, Some(&mut f), &mut |_| {}).unwrap();
-                let mut f = FpgaMpdcc::new(&q, fc).unwrap();
-                let rf = closed_loop::run(&q, &cfg, &mut f, None, &mut |_| {}).unwrap();
-                println!(
-                    "  L {l:2} p {pc:.3}: mismatch {:.2} % ({} of {} switching), fsw {:+.1} %, THD {:+.1} %",
-                    sh.mismatch_percent(),
-                    sh.shadow_mismatches,
-                    sh.switching_decisions,
-                    100.0 * (rf.fsw_hz / rr.fsw_hz - 1.0),
-                    100.0 * (rf.thd_percent / rr.thd_percent - 1.0),
                 );
             }
         }
@@ -763,7 +702,7 @@ fn diagnose_bound_excess() {
     if let Some(d) = std::env::var("FPGA_DI").ok().and_then(|v| v.parse().ok()) {
         p.controller.delta_i_pu = d;
     }
-    let mut f = FpgaMpdcc::new(&p, FpgaConfig::improved(&p.machine)).unwrap();
+    let mut f = FpgaMpdcc::new(&p, FpgaConfig::core(&p.machine)).unwrap();
     let cfg = LoopConfig {
         warmup_periods: 2,
         measure_periods: 10,
@@ -831,7 +770,7 @@ fn diagnose_endpoint_error_vs_l() {
         .map(|&l| {
             let mut q = p;
             q.controller.extrapolation_steps = l;
-            FpgaMpdcc::new(&q, FpgaConfig::improved(&q.machine)).unwrap()
+            FpgaMpdcc::new(&q, FpgaConfig::core(&q.machine)).unwrap()
         })
         .collect();
     let mut sum = [0.0f64; 4];

@@ -4,12 +4,19 @@
 //! `mpdtc_frontend` and `frontend_fixed::frontend` (plus the largest
 //! cos/sin error against libm, in COEF LSB). Exit status 1 on any mismatch,
 //! 2 on bad arguments.
+//! `rtl-check mpdcc-lane --seed S --vectors N`: the same for the MPDCC
+//! explorer's search lane (`mpdcc_lane` against `drive::mpdcc::fpga::lane`).
+//! `rtl-check mpdcc --seed S --vectors N [--explorers N]`: N decisions through
+//! `mpdcc_core` against `FpgaMpdcc::decide_raw` (decision, kind, `L*`,
+//! candidates, `J`, `J_dl`, cycle count).
+//! `rtl-check mpdcc-explorer --seed S --vectors N`: N decision states, every
+//! candidate through `mpdcc_explorer` against `drive::mpdcc::fpga::explore`.
 use std::process::ExitCode;
 use std::time::Instant;
 
 fn usage() -> ExitCode {
     eprintln!(
-        "usage: rtl-check mpdtc|frontend [--seed S] [--vectors N]   (defaults: seed 1, 100000 vectors)"
+        "usage: rtl-check mpdtc|frontend|mpdcc|mpdcc-lane|mpdcc-explorer [--seed S] [--vectors N] [--explorers N (mpdcc, 1..6, default 2)]   (defaults: seed 1, 100000 vectors)"
     );
     ExitCode::from(2)
 }
@@ -17,20 +24,32 @@ fn usage() -> ExitCode {
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let core = match args.first().map(String::as_str) {
-        Some(c @ ("mpdtc" | "frontend")) => c.to_string(),
+        Some(c @ ("mpdtc" | "frontend" | "mpdcc" | "mpdcc-lane" | "mpdcc-explorer")) => {
+            c.to_string()
+        }
         _ => return usage(),
     };
-    let (mut seed, mut vectors) = (1u64, 100_000u64);
+    let (mut seed, mut vectors, mut explorers) = (1u64, 100_000u64, 2u64);
     let mut it = args[1..].iter();
     while let Some(a) = it.next() {
         let val = it.next().and_then(|v| v.parse::<u64>().ok());
         match (a.as_str(), val) {
             ("--seed", Some(v)) => seed = v,
             ("--vectors", Some(v)) if v > 0 => vectors = v,
+            ("--explorers", Some(v)) if core == "mpdcc" && (1..=6).contains(&v) => explorers = v,
             _ => return usage(),
         }
     }
     let t0 = Instant::now();
+    if core == "mpdcc" {
+        return mpdcc(seed, vectors, explorers as u32, t0);
+    }
+    if core == "mpdcc-lane" {
+        return mpdcc_lane(seed, vectors, t0);
+    }
+    if core == "mpdcc-explorer" {
+        return mpdcc_explorer(seed, vectors, t0);
+    }
     if core == "frontend" {
         let s = rtl_sim::mpdtc_frontend::check(seed, vectors);
         let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
@@ -65,6 +84,77 @@ fn main() -> ExitCode {
         t0.elapsed().as_secs_f64()
     );
     if s.mismatches == 0 && s.latency_cycles.is_some() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
+fn mpdcc_lane(seed: u64, vectors: u64, t0: Instant) -> ExitCode {
+    let s = rtl_sim::mpdcc_vectors::check_lane(seed, vectors);
+    let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
+    println!(
+        "{{\"core\":\"mpdcc_lane\",\"seed\":{seed},\"vectors\":{},\"mismatches\":{},\"latency_cycles\":{},\
+         \"initiation_interval_cycles\":1,\"first_mismatch\":{},\"lj_zero\":{},\"lj_finite\":{},\"lj_horizon\":{},\"seconds\":{:.2}}}",
+        s.vectors,
+        s.mismatches,
+        opt(s.latency_cycles.map(u64::from)),
+        opt(s.first_mismatch),
+        s.classes[0],
+        s.classes[1],
+        s.classes[2],
+        t0.elapsed().as_secs_f64()
+    );
+    if s.mismatches == 0 && s.latency_cycles.is_some() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
+fn mpdcc_explorer(seed: u64, vectors: u64, t0: Instant) -> ExitCode {
+    let s = rtl_sim::mpdcc_vectors::check_explorer(seed, vectors);
+    let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
+    println!(
+        "{{\"core\":\"mpdcc_explorer\",\"seed\":{seed},\"vectors\":{},\"candidates\":{},\"mismatches\":{},\
+         \"latency_cycles\":{},\"initiation_interval_cycles\":1,\"first_mismatch\":{},\"l_star_zero\":{},\
+         \"l_star_finite\":{},\"l_star_horizon\":{},\"seconds\":{:.2}}}",
+        s.states,
+        s.candidates,
+        s.mismatches,
+        opt(s.latency_cycles.map(u64::from)),
+        opt(s.first_mismatch),
+        s.classes[0],
+        s.classes[1],
+        s.classes[2],
+        t0.elapsed().as_secs_f64()
+    );
+    if s.mismatches == 0 && s.latency_cycles.is_some() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
+fn mpdcc(seed: u64, vectors: u64, explorers: u32, t0: Instant) -> ExitCode {
+    let s = rtl_sim::mpdcc_vectors::check_core(seed, vectors, explorers);
+    let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
+    println!(
+        "{{\"core\":\"mpdcc\",\"seed\":{seed},\"vectors\":{},\"mismatches\":{},\"explorers\":{},\
+         \"worst_case_cycles\":{},\"mean_cycles\":{:.1},\"first_mismatch\":{},\"kept\":{},\"optimal\":{},\
+         \"deadlock\":{},\"seconds\":{:.2}}}",
+        s.vectors,
+        s.mismatches,
+        s.explorers,
+        s.worst_case_cycles,
+        s.mean_cycles,
+        opt(s.first_mismatch),
+        s.kinds[0],
+        s.kinds[1],
+        s.kinds[2],
+        t0.elapsed().as_secs_f64()
+    );
+    if s.mismatches == 0 {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)

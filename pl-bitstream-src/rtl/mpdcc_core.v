@@ -1,0 +1,297 @@
+// mpdcc_core: the MPDCC core of paper 001 (Algorithm 1) with a central
+// scheduler and N pipelined explorers, bit-exact with the decision of
+// drive::mpdcc::fpga (FpgaMpdcc::decide_raw, frozen core Structure::CORE).
+//
+// Inputs are the state registers (drive::mpdcc::fpga::Inputs, already
+// quantized) and the design constants (Coeffs), held stable from start_i to
+// done_o. On start_i the scheduler computes the common terms (mpdcc_common,
+// eq. 14, 16 cycles) and then enumerates S(s(k-1)): per phase the positions
+// within one level of s(k-1), a contiguous code range [lo, hi] because the
+// level is monotonic in the code; candidates in ascending code order
+// (a outer, c inner), n_use_i (1..N) of them per clock, candidate i of a
+// clock to explorer i. Each explorer (mpdcc_explorer) takes one candidate per
+// clock and returns it LAT = 41 cycles later, so the results of one clock
+// arrive together and in enumeration order. The scheduler compares them as
+// they arrive (strict "<" in enumeration order: the first of equal ones
+// wins, as the model's select()):
+//   best  = min J over L* > 0,  best_dl = min J_dl (eqs. 15-16)
+// and takes the lazy check from the result of s(k-1) itself: "all seven
+// |e(k+1)| <= bnd with s(k-1)" is exactly J_dl(s(k-1)) <= 0.
+// Decision: kept (lazy check passes: s(k-1), no candidates), optimal (best),
+// or deadlock (best_dl). done_o is high for one cycle with the decision;
+// cycles_o counts the clock edges from the start_i cycle to the done_o cycle:
+//   16 + ceil(|S| / n_use) + 41 + 1   (drive::mpdcc::cycles::pipelined_core_cycles)
+// The search always runs (a kept decision takes as long): the lazy check
+// costs no separate pass.
+`default_nettype none
+
+module mpdcc_core #(
+    parameter integer N = 2  // explorer units (1..6)
+) (
+    input  wire               clk_i,
+    input  wire               rst_i,
+    input  wire               start_i,
+    output wire               busy_o,
+    input  wire        [2:0]  n_use_i,    // explorers used, 1..N (clamped)
+    input  wire        [8:0]  s_prev_i,   // {c, b, a}
+    // state registers (raw, drive::mpdcc::fpga::Inputs)
+    input  wire signed [15:0] i_a_i,
+    input  wire signed [15:0] i_b_i,
+    input  wire signed [15:0] psi_a_i,
+    input  wire signed [15:0] psi_b_i,
+    input  wire signed [15:0] v_n_i,
+    input  wire        [47:0] v_ph_i,
+    input  wire signed [15:0] ir_a_i,
+    input  wire signed [15:0] ir_b_i,
+    input  wire signed [15:0] omega_r_i,
+    input  wire signed [15:0] omega_s_i,
+    // design constants (drive::mpdcc::fpga::Coeffs)
+    input  wire signed [15:0] c_tau_i,
+    input  wire signed [15:0] c_r_i,
+    input  wire signed [15:0] c_w_i,
+    input  wire signed [15:0] c_p_i,
+    input  wire signed [15:0] c_s_i,
+    input  wire signed [15:0] c_3_i,
+    input  wire signed [15:0] c_d_i,
+    input  wire signed [15:0] c_n_i,
+    input  wire signed [15:0] c_ph_i,
+    input  wire signed [15:0] s3h_i,
+    input  wire signed [15:0] v_ph_ref_i,
+    input  wire signed [15:0] c_tau1_i,
+    input  wire signed [15:0] c_r1_i,
+    input  wire signed [15:0] c_w1_i,
+    input  wire signed [15:0] c_s1_i,
+    input  wire signed [15:0] vdc_half_i,
+    input  wire signed [15:0] g3_i,
+    input  wire signed [15:0] gd_i,
+    input  wire signed [15:0] g3_1_i,
+    input  wire        [111:0] bnd_i,
+    input  wire        [15:0] lambda_n_i,
+    output reg                done_o,
+    output reg         [8:0]  s_o,
+    output reg         [1:0]  kind_o,      // 0 kept, 1 optimal, 2 deadlock
+    output reg         [7:0]  l_star_o,    // horizon of an optimal decision, else 0
+    output reg         [31:0] cost_o,      // J of the chosen candidate (kept: 0)
+    output reg  signed [31:0] j_dl_o,      // J_dl of the chosen candidate (kept: 0)
+    output reg         [7:0]  candidates_o,
+    output reg         [15:0] cycles_o
+);
+    // latency of mpdcc_common: the candidates start this many cycles after
+    // the start strobe's edge
+    localparam integer COMMON_LATENCY = 16;
+
+    // ------------------------------------------------ admissible ranges
+    function automatic [2:0] lo_of(input [2:0] f);
+        case (f)
+            3'd0, 3'd1, 3'd2: lo_of = 3'd0;
+            3'd3, 3'd4:       lo_of = 3'd1;
+            3'd5, 3'd6:       lo_of = 3'd3;
+            default:          lo_of = 3'd5;
+        endcase
+    endfunction
+    function automatic [2:0] hi_of(input [2:0] f);
+        case (f)
+            3'd0:             hi_of = 3'd2;
+            3'd1, 3'd2:       hi_of = 3'd4;
+            3'd3, 3'd4:       hi_of = 3'd6;
+            default:          hi_of = 3'd7;
+        endcase
+    endfunction
+
+    reg  [5:0] lo_q;         // {c, b} (a starts at its lo and stops at hi)
+    reg  [8:0] hi_q;         // {c, b, a}
+    reg  [8:0] cur_q;
+    reg        gen_q;        // enumerating
+    reg  [4:0] pre_q;        // cycles left until the common terms are valid
+    reg        busy_q;
+    reg  [2:0] nuse_q;
+    reg  [15:0] cyc_q;
+    reg  [7:0] issued_q, received_q;
+    assign busy_o = busy_q;
+
+    // next candidate in ascending code order within the ranges
+    // (a never passes its hi: the caller stops at the set's last candidate)
+    function automatic [8:0] inc(input [8:0] x, input [5:0] lo, input [5:0] hi);
+        reg [2:0] a, b, c;
+        begin
+            a = x[2:0];
+            b = x[5:3];
+            c = x[8:6];
+            if (c != hi[5:3]) c = c + 3'd1;
+            else begin
+                c = lo[5:3];
+                if (b != hi[2:0]) b = b + 3'd1;
+                else begin
+                    b = lo[2:0];
+                    a = a + 3'd1;
+                end
+            end
+            inc = {c, b, a};
+        end
+    endfunction
+
+    // this clock's candidates: successive increments from cur_q
+    reg [8:0]   cand [0:N-1];
+    reg [N-1:0] cv;
+    integer j;
+    always @(*) begin
+        cand[0] = cur_q;
+        cv[0] = gen_q;
+        for (j = 1; j < N; j = j + 1) begin
+            cand[j] = inc(cand[j-1], lo_q, hi_q[8:3]);
+            cv[j] = cv[j-1] && (cand[j-1] != hi_q) && (j < {29'd0, nuse_q});
+        end
+    end
+    genvar gi;
+    // the last candidate of the set is issued this clock
+    wire [N-1:0] is_last;
+    generate
+        for (gi = 0; gi < N; gi = gi + 1) begin : g_last
+            assign is_last[gi] = (cand[gi] == hi_q);
+        end
+    endgenerate
+    wire last_now = |(cv & is_last);
+    reg [8:0] nxt;
+    reg [7:0] nissue;
+    integer i, k;
+    always @(*) begin
+        nxt = cur_q;
+        nissue = 8'd0;
+        for (i = 0; i < N; i = i + 1) begin
+            if (cv[i]) begin
+                nxt = inc(cand[i], lo_q, hi_q[8:3]);
+                nissue = nissue + 8'd1;
+            end
+        end
+    end
+
+    // ---------------------------------------------------- common terms
+    wire [111:0] e0_w;
+    wire [191:0] dn_w;
+    wire [47:0]  dn1_w;
+    wire [95:0]  pn_w, pph_w;
+    mpdcc_common u_common (
+        .clk_i(clk_i), .rst_i(rst_i),
+        .i_a_i(i_a_i), .i_b_i(i_b_i), .psi_a_i(psi_a_i), .psi_b_i(psi_b_i),
+        .v_n_i(v_n_i), .v_ph_i(v_ph_i), .ir_a_i(ir_a_i), .ir_b_i(ir_b_i),
+        .omega_r_i(omega_r_i), .omega_s_i(omega_s_i),
+        .c_tau_i(c_tau_i), .c_r_i(c_r_i), .c_w_i(c_w_i), .c_p_i(c_p_i), .c_s_i(c_s_i),
+        .c_3_i(c_3_i), .c_d_i(c_d_i), .c_n_i(c_n_i), .c_ph_i(c_ph_i), .s3h_i(s3h_i),
+        .v_ph_ref_i(v_ph_ref_i), .c_tau1_i(c_tau1_i), .c_r1_i(c_r1_i), .c_w1_i(c_w1_i),
+        .c_s1_i(c_s1_i),
+        .e0_o(e0_w), .dn_o(dn_w), .dn1_o(dn1_w), .pn_o(pn_w), .pph_o(pph_w));
+
+    // ------------------------------------------------------ explorers
+    wire [N-1:0] rv;
+    wire [8:0]  rs [0:N-1];
+    wire [7:0]  rl [0:N-1];
+    wire [31:0] rc [0:N-1];
+    wire signed [31:0] rj [0:N-1];
+    generate
+        for (gi = 0; gi < N; gi = gi + 1) begin : g_exp
+            /* verilator lint_off PINCONNECTEMPTY */
+            mpdcc_explorer u_exp (
+                .clk_i(clk_i), .rst_i(rst_i),
+                .in_valid_i(cv[gi]), .s_i(cand[gi]),
+                .s_prev_i(s_prev_i), .e0_i(e0_w), .dn_i(dn_w), .dn1_i(dn1_w),
+                .pn_i(pn_w), .pph_i(pph_w), .v_n_i(v_n_i), .v_ph_i(v_ph_i),
+                .vdc_half_i(vdc_half_i), .g3_i(g3_i), .gd_i(gd_i), .g3_1_i(g3_1_i),
+                .bnd_i(bnd_i), .lambda_n_i(lambda_n_i),
+                .out_valid_o(rv[gi]), .s_o(rs[gi]), .l_star_o(rl[gi]), .cost_o(rc[gi]),
+                .j_dl_o(rj[gi]), .fs_o(), .d0_o());
+            /* verilator lint_on PINCONNECTEMPTY */
+        end
+    endgenerate
+
+    // --------------------------------------------- arg-min as results arrive
+    reg        hb_q, hd_q, lazy_q;
+    reg [8:0]  bs_q, ds_q;
+    reg [7:0]  bl_q;
+    reg [31:0] bc_q, dc_q;
+    reg signed [31:0] bj_q, dj_q;
+    reg        hb, hd, lz;
+    reg [8:0]  bs, ds;
+    reg [7:0]  bl;
+    reg [31:0] bc, dc;
+    reg signed [31:0] bj, dj;
+    reg [7:0]  nrecv;
+    always @(*) begin
+        hb = hb_q; hd = hd_q; lz = lazy_q;
+        bs = bs_q; ds = ds_q; bl = bl_q; bc = bc_q; dc = dc_q; bj = bj_q; dj = dj_q;
+        nrecv = 8'd0;
+        for (k = 0; k < N; k = k + 1) begin
+            if (rv[k]) begin
+                nrecv = nrecv + 8'd1;
+                if (rl[k] != 8'd0 && (!hb || rc[k] < bc)) begin
+                    hb = 1'b1; bs = rs[k]; bl = rl[k]; bc = rc[k]; bj = rj[k];
+                end
+                if (!hd || rj[k] < dj) begin
+                    hd = 1'b1; ds = rs[k]; dc = rc[k]; dj = rj[k];
+                end
+                if (rs[k] == s_prev_i && rj[k] <= 0) lz = 1'b1;
+            end
+        end
+    end
+    wire all_in = !gen_q && busy_q && (pre_q == 5'd0) && (received_q + nrecv == issued_q)
+                  && (nrecv != 8'd0);
+
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            lo_q <= 6'd0; hi_q <= 9'd0; cur_q <= 9'd0;
+            gen_q <= 1'b0; busy_q <= 1'b0; nuse_q <= 3'd1; pre_q <= 5'd0;
+            cyc_q <= 16'd0; issued_q <= 8'd0; received_q <= 8'd0;
+            hb_q <= 1'b0; hd_q <= 1'b0; lazy_q <= 1'b0;
+            bs_q <= 9'd0; ds_q <= 9'd0; bl_q <= 8'd0; bc_q <= 32'd0; dc_q <= 32'd0;
+            bj_q <= 32'sd0; dj_q <= 32'sd0;
+            done_o <= 1'b0; s_o <= 9'd0; kind_o <= 2'd0; l_star_o <= 8'd0;
+            cost_o <= 32'd0; j_dl_o <= 32'sd0; candidates_o <= 8'd0; cycles_o <= 16'd0;
+        end else begin
+            done_o <= 1'b0;
+            if (start_i && !busy_q) begin
+                lo_q <= {lo_of(s_prev_i[8:6]), lo_of(s_prev_i[5:3])};
+                hi_q <= {hi_of(s_prev_i[8:6]), hi_of(s_prev_i[5:3]), hi_of(s_prev_i[2:0])};
+                cur_q <= {lo_of(s_prev_i[8:6]), lo_of(s_prev_i[5:3]), lo_of(s_prev_i[2:0])};
+                nuse_q <= (n_use_i == 3'd0) ? 3'd1 : (n_use_i > N[2:0]) ? N[2:0] : n_use_i;
+                gen_q <= 1'b0;
+                pre_q <= COMMON_LATENCY[4:0];
+                busy_q <= 1'b1;
+                cyc_q <= 16'd1;
+                issued_q <= 8'd0;
+                received_q <= 8'd0;
+                hb_q <= 1'b0; hd_q <= 1'b0; lazy_q <= 1'b0;
+            end else if (busy_q) begin
+                cyc_q <= cyc_q + 16'd1;
+                if (pre_q != 5'd0) begin
+                    pre_q <= pre_q - 5'd1;
+                    if (pre_q == 5'd1) gen_q <= 1'b1;
+                end
+                if (gen_q) begin
+                    cur_q <= nxt;
+                    issued_q <= issued_q + nissue;
+                    if (last_now) gen_q <= 1'b0;
+                end
+                received_q <= received_q + nrecv;
+                hb_q <= hb; hd_q <= hd; lazy_q <= lz;
+                bs_q <= bs; ds_q <= ds; bl_q <= bl; bc_q <= bc; dc_q <= dc;
+                bj_q <= bj; dj_q <= dj;
+                if (all_in) begin
+                    busy_q <= 1'b0;
+                    done_o <= 1'b1;
+                    cycles_o <= cyc_q + 16'd1;
+                    if (lz) begin
+                        s_o <= s_prev_i; kind_o <= 2'd0; l_star_o <= 8'd0;
+                        cost_o <= 32'd0; j_dl_o <= 32'sd0; candidates_o <= 8'd0;
+                    end else if (hb) begin
+                        s_o <= bs; kind_o <= 2'd1; l_star_o <= bl;
+                        cost_o <= bc; j_dl_o <= bj; candidates_o <= issued_q;
+                    end else begin
+                        s_o <= ds; kind_o <= 2'd2; l_star_o <= 8'd0;
+                        cost_o <= dc; j_dl_o <= dj; candidates_o <= issued_q;
+                    end
+                end
+            end
+        end
+    end
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,108 @@
+//! `drivectl explore mpdcc`: design exploration of the FPGA MPDCC model
+//! (a research tool, not a test): for each current bound `delta_i`, the
+//! reference run and its noise floor (the reference against itself with
+//! `delta_i` scaled by 1 + 1e-4), then for each `L` and `p` the FPGA model's
+//! decision mismatch against the reference (shadow run) and the f_sw / THD
+//! of an FPGA-driven run relative to the reference. Uses the datapath
+//! structures of `drive`'s `mpdcc-research` feature (docs/mpdcc-fpga.md).
+use anyhow::{anyhow, Result};
+use clap::{Args as ClapArgs, ValueEnum};
+use drive::mpdcc::closed_loop::{self, LoopConfig};
+use drive::mpdcc::fpga::{self, FpgaConfig, FpgaMpdcc, Structure, P_PAPER};
+use drive::mpdcc::params::DriveParams;
+use drive::mpdcc::reference::Reference;
+
+/// Datapath structure of the explored core.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum Which {
+    /// The frozen core (what the Verilog implements).
+    Core,
+    /// The paper's structure (one chord, no accuracy options).
+    Paper,
+}
+
+/// Arguments of `drivectl explore mpdcc`.
+#[derive(ClapArgs, Debug)]
+pub struct Args {
+    /// Measured fundamental periods (after one warm-up period).
+    #[arg(long, default_value_t = 40)]
+    pub periods: u32,
+    /// Current bounds `delta_i`, pu (comma-separated).
+    #[arg(long, value_delimiter = ',', default_values_t = [0.06, 0.1, 0.15, 0.2])]
+    pub delta_i: Vec<f64>,
+    /// Extrapolation steps `L` (comma-separated powers of two).
+    #[arg(long = "l", value_delimiter = ',', default_values_t = [8, 16, 32])]
+    pub l: Vec<u32>,
+    /// Correction factors `p` (comma-separated; default: 0, the paper's,
+    /// 1 and X_m/(2D)).
+    #[arg(long, value_delimiter = ',')]
+    pub p: Vec<f64>,
+    /// Datapath structure.
+    #[arg(long, value_enum, default_value_t = Which::Core)]
+    pub structure: Which,
+    /// Interpolation nodes (1..=4), overriding the structure's.
+    #[arg(long)]
+    pub nodes: Option<u32>,
+}
+
+/// Runs the sweep and prints one line per design.
+pub fn mpdcc(a: Args) -> Result<()> {
+    let base = DriveParams::default();
+    let cfg = LoopConfig {
+        warmup_periods: 1,
+        measure_periods: a.periods,
+    };
+    let pcs = if a.p.is_empty() {
+        vec![0.0, P_PAPER, 1.0, fpga::p_taylor(&base.machine)]
+    } else {
+        a.p.clone()
+    };
+    let mut st = match a.structure {
+        Which::Core => Structure::CORE,
+        Which::Paper => Structure::PAPER,
+    };
+    if let Some(n) = a.nodes {
+        st.nodes = n;
+    }
+    let run = |p: &DriveParams, ctrl: &mut dyn drive::mpdcc::controller::MpdccController| {
+        closed_loop::run(p, &cfg, ctrl, None, &mut |_| {}).map_err(|e| anyhow!("{e:?}"))
+    };
+    for &di in &a.delta_i {
+        let mut p = base;
+        p.controller.delta_i_pu = di;
+        let rr = run(&p, &mut Reference::new(&p).map_err(|e| anyhow!("{e:?}"))?)?;
+        let mut pn = p;
+        pn.controller.delta_i_pu = di * (1.0 + 1e-4);
+        let rn = run(&pn, &mut Reference::new(&pn).map_err(|e| anyhow!("{e:?}"))?)?;
+        println!(
+            "delta_i {di}: reference fsw {:.1} Hz THD {:.2} %; noise floor fsw {:+.1} % THD {:+.1} %",
+            rr.fsw_hz,
+            rr.thd_percent,
+            100.0 * (rn.fsw_hz / rr.fsw_hz - 1.0),
+            100.0 * (rn.thd_percent / rr.thd_percent - 1.0)
+        );
+        for &l in &a.l {
+            for &pc in &pcs {
+                let mut q = p;
+                q.controller.extrapolation_steps = l;
+                let fc = FpgaConfig::with_p(pc);
+                let mk =
+                    || FpgaMpdcc::research(&q, fc, st).map_err(|e| anyhow!("L {l} p {pc}: {e}"));
+                let mut f = mk()?;
+                let mut r = Reference::new(&q).map_err(|e| anyhow!("{e:?}"))?;
+                let sh = closed_loop::run(&q, &cfg, &mut r, Some(&mut f), &mut |_| {})
+                    .map_err(|e| anyhow!("{e:?}"))?;
+                let rf = run(&q, &mut mk()?)?;
+                println!(
+                    "  L {l:2} p {pc:.3}: mismatch {:.2} % ({} of {} switching), fsw {:+.1} %, THD {:+.1} %",
+                    sh.mismatch_percent(),
+                    sh.shadow_mismatches,
+                    sh.switching_decisions,
+                    100.0 * (rf.fsw_hz / rr.fsw_hz - 1.0),
+                    100.0 * (rf.thd_percent / rr.thd_percent - 1.0),
+                );
+            }
+        }
+    }
+    Ok(())
+}
