@@ -3,16 +3,22 @@
 //! (`drive::pmsm::sim`, the paper-000 experiments' plant), within 10 %:
 //! the -3 dB torque bandwidth of a 0.3 N m sine reference (firmware's
 //! `sweep` vs the host run), MPDTC and FOC; the settling time of a
-//! 0 -> 0.4 N m MPDTC step (PL capture vs the host run). The FOC step does
-//! not agree to 10 % yet (QEMU 0.193 ms, host 0.220 ms with the default
-//! FOC parameters, not the firmware's measurement lag), so it is not here.
+//! 0 -> 0.4 N m MPDTC step (PL capture vs the host run). The FOC step from
+//! the PL capture does not agree to 10 % with `drive::pmsm::sim` (QEMU
+//! 0.193 ms, host 0.220 ms: the capture samples once per 62.56 us FOC
+//! period and lags the PS by one period, and `sim` has the default FOC
+//! parameters, not the firmware's measurement chain); the FOC step is
+//! compared instead through `step` with the host run of the same servo on
+//! the same simulated PL (`drive::servo` on `drive::simpl`, without QEMU).
+use drive::pl::top::Mode;
 use drive::pmsm::foc::{Foc, FocParams};
 use drive::pmsm::mpdtc_ctrl::MpdtcRef;
 use drive::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
 use drive::pmsm::params::{DriveParams, MotorParams};
 use drive::pmsm::plant::{MechanicalMode, Plant};
 use drive::pmsm::sim::{self, Controller};
-use drive::servo::{bandwidth_hz, tone_response, SweepPoint};
+use drive::servo::{bandwidth_hz, tone_response, Servo, ServoConfig, SweepPoint};
+use drive::simpl::{SimConfig, SimDrive};
 use drivectl::link::Final;
 use std::f64::consts::PI;
 use std::time::Duration;
@@ -193,4 +199,52 @@ fn step_agrees<C: Controller>(mode: &str, mut ctrl: C) {
 fn mpdtc_step_settling_agrees_with_the_host_simulation() {
     let cfg = MpdtcConfig::new(MotorParams::default(), MpdtcParams::default()).unwrap();
     step_agrees("mpdtc", MpdtcRef::new(cfg));
+}
+
+/// Settling time, ms, of a 0 -> 0.4 N m `step` on the host: the firmware's
+/// servo on the simulated PL, one control step per control-period boundary
+/// (as the firmware's control interrupt runs it), after 2 ms at rest.
+fn host_servo_step_ms(mode: Mode) -> f64 {
+    let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+    let mut s = Servo::new(&ServoConfig::for_simulated(sim.config())).unwrap();
+    s.init(&mut sim).unwrap();
+    s.set_mode(&mut sim, mode).unwrap();
+    s.enable(&mut sim).unwrap();
+    let period = |s: &mut Servo, sim: &mut SimDrive| {
+        assert!(sim.advance_to_boundary(20_000).control_periods >= 1);
+        s.control_step(sim).unwrap();
+    };
+    for _ in 0..(2e-3 * s.control_rate_hz()) as u32 {
+        period(&mut s, &mut sim);
+    }
+    s.begin_step(&mut sim, 0.4, 2e-3).unwrap();
+    for _ in 0..10_000 {
+        if !s.step_pending() {
+            break;
+        }
+        period(&mut s, &mut sim);
+    }
+    s.step_result()
+        .and_then(|r| r.settling_s)
+        .expect("host step settles")
+        * 1e3
+}
+
+#[test]
+fn foc_step_agrees_with_the_host_servo_on_the_simulated_pl() {
+    let host = host_servo_step_ms(Mode::Foc);
+    let mut q = boot();
+    for l in ["mode foc", "enable"] {
+        assert!(cmd(&mut q, l).is_ok(), "{l}");
+    }
+    let r = cmd(&mut q, "step 0.4");
+    assert!(r.is_ok(), "{r:?}");
+    let qemu: f64 = system_tests::field(&r, "settling_time")
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("no settling_time in {r:?}"));
+    println!("FOC 0 -> 0.4 N m settling (step): QEMU {qemu:.4} ms, host {host:.4} ms");
+    assert!(
+        (qemu / host - 1.0).abs() <= 0.10,
+        "QEMU {qemu} ms, host {host} ms"
+    );
 }
