@@ -29,12 +29,12 @@ use drive::bus::{BusError, RegisterBus};
 use drive::config::spi_nor::SpiNor;
 use drive::config::{store, Config};
 use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
-use drive::pl::capture::{CapSample, CapStatus, Trigger};
+use drive::pl::capture::{CapSample, CapState, CapStatus, Trigger};
 use drive::pl::fault::Faults;
 use drive::pl::presence::Presence;
 use drive::pl::top::Mode;
 use drive::servo::faults::FaultRecord;
-use drive::servo::{Servo, ServoConfig, ServoError, StepResult, SweepPoint};
+use drive::servo::{record_response, Servo, ServoConfig, ServoError, StepResult, SweepPoint};
 use drive::simpl::{SimConfig, SimDrive};
 
 /// Software-generated interrupt of the control step.
@@ -508,9 +508,10 @@ impl DriveOps for FwDrive {
             s.servo.capture_arm(&mut s.bus, Trigger::Manual, 0)?;
             s.servo.capture_trigger(&mut s.bus)
         })?;
-        loop {
-            if let Some(p) = run(|s| s.servo.record_response(&mut s.bus, f_hz))? {
-                return Ok(p);
+        let count = loop {
+            let st = run(|s| s.servo.capture_status(&mut s.bus))?;
+            if st.state == CapState::Done {
+                break st.count;
             }
             if !alive() {
                 return Err(DriveError::Servo(ServoError::GatesOff));
@@ -519,7 +520,15 @@ impl DriveOps for FwDrive {
                 return Err(DriveError::Timeout);
             }
             wait();
-        }
+        };
+        // One sample per critical section: the PL keeps running while the
+        // record is read, and the control interrupt must not wait for all
+        // of it (that would be a control overrun).
+        let ts = with(|s| s.servo.capture_period_s()).ok_or(DriveError::Absent)?;
+        let p = record_response(count, f_hz, ts, |i| {
+            run(|s| s.servo.capture_sample(&mut s.bus, i))
+        })?;
+        p.ok_or(DriveError::Servo(ServoError::BadFrequency(f_hz)))
     }
     fn sweep_end(&mut self) {
         with(|s| s.servo.sine_stop());

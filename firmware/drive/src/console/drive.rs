@@ -243,7 +243,10 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
         DriveError::Servo(ServoError::BadFrequency(f)) => write_err(
             out,
             ErrorCode::BadArgs,
-            format_args!("{cmd}: {f} Hz is outside (0, control rate / 4]"),
+            format_args!(
+                "{cmd}: {f} Hz is outside (0, control rate / 4] or below one period per \
+                 capture record"
+            ),
         ),
         DriveError::Servo(ServoError::Bus(b)) => write_err(
             out,

@@ -38,7 +38,7 @@ mod step;
 use faults::{FaultHistory, FaultRecord, Sample, Snapshot};
 pub use step::{StepRecorder, StepResult, STEP_SAMPLES_MAX};
 mod sweep;
-pub use sweep::{bandwidth_hz, tone_response, Sine, SweepPoint};
+pub use sweep::{bandwidth_hz, record_response, tone_response, Sine, SweepPoint};
 
 /// Control periods without a new ADC result that latch `ADC_STUCK`: one
 /// (a control period holds one averaged result in MPDTC and off, four in
@@ -155,7 +155,8 @@ pub enum ServoError {
     GatesOn,
     /// A configuration the controllers refuse.
     BadConfig(ParamError),
-    /// A sine frequency outside (0, control rate / 4], Hz.
+    /// A sine frequency outside (0, control rate / 4], or too low for one
+    /// period in a capture record, Hz.
     BadFrequency(f64),
 }
 

@@ -194,25 +194,12 @@ impl Servo {
         bus: &mut B,
         f_hz: f64,
     ) -> Result<Option<SweepPoint>, ServoError> {
-        const N: usize = crate::pl::capture::DEPTH as usize;
         let st = self.capture_status(bus)?;
         if st.state != crate::pl::capture::CapState::Done {
             return Ok(None);
         }
-        let n = (st.count as usize).min(N);
-        let mut r = [0.0; N];
-        let mut o = [0.0; N];
-        for i in 0..n {
-            let x = self.capture_sample(bus, i as u32)?;
-            r[i] = x.torque_ref_nm;
-            o[i] = x.torque_nm;
-        }
-        Ok(tone_response(
-            &r[..n],
-            &o[..n],
-            f_hz,
-            self.capture_period_s(),
-        ))
+        let ts = self.capture_period_s();
+        record_response(st.count, f_hz, ts, |i| self.capture_sample(bus, i))
     }
 
     /// PL time to let a new sine settle before its capture, s: two of its
@@ -220,6 +207,29 @@ impl Servo {
     pub fn sine_settle_s(f_hz: f64) -> f64 {
         (2.0 / f_hz).max(1e-3)
     }
+}
+
+/// Gain and phase at `f_hz` of the torque against the reference over the
+/// first `count` samples (at most the ring's depth) of a complete capture
+/// record, one sample every `ts_s`, read one at a time by `sample` (so that
+/// the firmware can let the control interrupt run between two reads: the
+/// PL keeps running while a record is read).
+pub fn record_response<E>(
+    count: u32,
+    f_hz: f64,
+    ts_s: f64,
+    mut sample: impl FnMut(u32) -> Result<crate::pl::capture::CapSample, E>,
+) -> Result<Option<SweepPoint>, E> {
+    const N: usize = crate::pl::capture::DEPTH as usize;
+    let n = (count as usize).min(N);
+    let mut r = [0.0; N];
+    let mut o = [0.0; N];
+    for i in 0..n {
+        let x = sample(i as u32)?;
+        r[i] = x.torque_ref_nm;
+        o[i] = x.torque_nm;
+    }
+    Ok(tone_response(&r[..n], &o[..n], f_hz, ts_s))
 }
 
 #[cfg(test)]
