@@ -206,7 +206,14 @@ pub fn on_pl_tick() {
             // Up to the next control-period boundary (at most two periods).
             Backend::Sim(sim) => {
                 let period = period_cycles(&s.servo);
-                let mut n = sim.advance_to_boundary(2 * period).control_periods;
+                // A boundary that the console's register accesses crossed is
+                // served now (on a board the control interrupt is taken as
+                // soon as the access ends), not one period later.
+                let mut n = if sim.boundaries_crossed() > 0 {
+                    sim.advance(0).control_periods
+                } else {
+                    sim.advance_to_boundary(2 * period).control_periods
+                };
                 // `debug fault overrun`: more boundaries before the step.
                 for _ in 0..core::mem::take(&mut s.skip_boundaries) {
                     n += sim.advance_to_boundary(2 * period).control_periods;

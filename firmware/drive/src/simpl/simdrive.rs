@@ -321,6 +321,12 @@ impl<P: PlModel> SimDrive<P> {
         }
     }
 
+    /// Control-period boundaries that register accesses crossed since the
+    /// last advance (reported by the next one).
+    pub fn boundaries_crossed(&self) -> u32 {
+        self.carried.control_periods
+    }
+
     /// Advances `cycles` PL cycles, event by event.
     pub fn advance(&mut self, cycles: u64) -> Advance {
         self.run(cycles, false)
@@ -334,13 +340,6 @@ impl<P: PlModel> SimDrive<P> {
 
     fn run(&mut self, max: u64, to_boundary: bool) -> Advance {
         let mut adv = core::mem::take(&mut self.carried);
-        if to_boundary && adv.control_periods > 0 {
-            // Register accesses since the last advance crossed a boundary:
-            // its control step is due now (on a board the control interrupt
-            // is taken as soon as the access ends), not one period later.
-            self.flush();
-            return adv;
-        }
         let mut left = max;
         while left > 0 {
             let enc = self.cycles_to_next_count();
