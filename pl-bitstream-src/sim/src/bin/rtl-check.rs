@@ -52,69 +52,53 @@ fn main() -> ExitCode {
     }
     if core == "frontend" {
         let s = rtl_sim::mpdtc_frontend::check(seed, vectors);
-        let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
         println!(
             "{{\"core\":\"frontend\",\"seed\":{seed},\"vectors\":{},\"mismatches\":{},\"latency_cycles\":{},\
              \"first_mismatch\":{},\"max_trig_err_lsb\":{:.3},\"seconds\":{:.2}}}",
             s.vectors,
             s.mismatches,
-            opt(s.latency_cycles.map(u64::from)),
-            opt(s.first_mismatch),
+            json_opt(s.latency_cycles.map(u64::from)),
+            json_opt(s.first_mismatch),
             s.max_trig_err_lsb,
             t0.elapsed().as_secs_f64()
         );
-        return if s.mismatches == 0 && s.latency_cycles.is_some() {
-            ExitCode::SUCCESS
-        } else {
-            ExitCode::from(1)
-        };
+        return verdict(s.mismatches == 0 && s.latency_cycles.is_some());
     }
     let s = rtl_sim::mpdtc_vectors::check(seed, vectors);
-    let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
     println!(
         "{{\"core\":\"mpdtc\",\"seed\":{seed},\"vectors\":{},\"mismatches\":{},\"latency_cycles\":{},\
          \"initiation_interval_cycles\":{},\"first_mismatch\":{},\"in_band_decisions\":{},\"ties\":{},\"seconds\":{:.2}}}",
         s.vectors,
         s.mismatches,
-        opt(s.latency_cycles.map(u64::from)),
-        opt(s.latency_cycles.map(u64::from)),
-        opt(s.first_mismatch),
+        json_opt(s.latency_cycles.map(u64::from)),
+        json_opt(s.latency_cycles.map(u64::from)),
+        json_opt(s.first_mismatch),
         s.in_band_decisions,
         s.ties,
         t0.elapsed().as_secs_f64()
     );
-    if s.mismatches == 0 && s.latency_cycles.is_some() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    }
+    verdict(s.mismatches == 0 && s.latency_cycles.is_some())
 }
 
 fn mpdcc_lane(seed: u64, vectors: u64, t0: Instant) -> ExitCode {
     let s = rtl_sim::mpdcc_vectors::check_lane(seed, vectors);
-    let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
     println!(
         "{{\"core\":\"mpdcc_lane\",\"seed\":{seed},\"vectors\":{},\"mismatches\":{},\"latency_cycles\":{},\
          \"initiation_interval_cycles\":1,\"first_mismatch\":{},\"lj_zero\":{},\"lj_finite\":{},\"lj_horizon\":{},\"seconds\":{:.2}}}",
         s.vectors,
         s.mismatches,
-        opt(s.latency_cycles.map(u64::from)),
-        opt(s.first_mismatch),
+        json_opt(s.latency_cycles.map(u64::from)),
+        json_opt(s.first_mismatch),
         s.classes[0],
         s.classes[1],
         s.classes[2],
         t0.elapsed().as_secs_f64()
     );
-    if s.mismatches == 0 && s.latency_cycles.is_some() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    }
+    verdict(s.mismatches == 0 && s.latency_cycles.is_some())
 }
 
 fn mpdcc_explorer(seed: u64, vectors: u64, t0: Instant) -> ExitCode {
     let s = rtl_sim::mpdcc_vectors::check_explorer(seed, vectors);
-    let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
     println!(
         "{{\"core\":\"mpdcc_explorer\",\"seed\":{seed},\"vectors\":{},\"candidates\":{},\"mismatches\":{},\
          \"latency_cycles\":{},\"initiation_interval_cycles\":1,\"first_mismatch\":{},\"l_star_zero\":{},\
@@ -122,23 +106,18 @@ fn mpdcc_explorer(seed: u64, vectors: u64, t0: Instant) -> ExitCode {
         s.states,
         s.candidates,
         s.mismatches,
-        opt(s.latency_cycles.map(u64::from)),
-        opt(s.first_mismatch),
+        json_opt(s.latency_cycles.map(u64::from)),
+        json_opt(s.first_mismatch),
         s.classes[0],
         s.classes[1],
         s.classes[2],
         t0.elapsed().as_secs_f64()
     );
-    if s.mismatches == 0 && s.latency_cycles.is_some() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    }
+    verdict(s.mismatches == 0 && s.latency_cycles.is_some())
 }
 
 fn mpdcc(seed: u64, vectors: u64, explorers: u32, t0: Instant) -> ExitCode {
     let s = rtl_sim::mpdcc_vectors::check_core(seed, vectors, explorers);
-    let opt = |x: Option<u64>| x.map_or("null".to_string(), |v| v.to_string());
     println!(
         "{{\"core\":\"mpdcc\",\"seed\":{seed},\"vectors\":{},\"mismatches\":{},\"explorers\":{},\
          \"worst_case_cycles\":{},\"mean_cycles\":{:.1},\"first_mismatch\":{},\"kept\":{},\"optimal\":{},\
@@ -148,13 +127,23 @@ fn mpdcc(seed: u64, vectors: u64, explorers: u32, t0: Instant) -> ExitCode {
         s.explorers,
         s.worst_case_cycles,
         s.mean_cycles,
-        opt(s.first_mismatch),
+        json_opt(s.first_mismatch),
         s.kinds[0],
         s.kinds[1],
         s.kinds[2],
         t0.elapsed().as_secs_f64()
     );
-    if s.mismatches == 0 {
+    verdict(s.mismatches == 0)
+}
+
+/// A JSON number, or `null`.
+fn json_opt(x: Option<u64>) -> String {
+    x.map_or("null".to_string(), |v| v.to_string())
+}
+
+/// Exit status of a check: success only when it passed.
+fn verdict(passed: bool) -> ExitCode {
+    if passed {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
