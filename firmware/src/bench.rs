@@ -37,7 +37,7 @@ fn total(f: &mut impl FnMut()) -> u64 {
 
 /// Mean instructions of `f` over [`RUNS`] calls, IRQs masked.
 fn count(mut f: impl FnMut()) -> u32 {
-    cortex_ar::interrupt::free(|| {
+    crate::irq::free(|| {
         let empty = total(&mut || core::hint::black_box(()));
         let full = total(&mut f);
         (full.saturating_sub(empty) * INSNS_PER_COUNT / u64::from(RUNS)) as u32

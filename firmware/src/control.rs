@@ -34,7 +34,9 @@ use drive::pl::fault::Faults;
 use drive::pl::presence::Presence;
 use drive::pl::top::Mode;
 use drive::servo::faults::FaultRecord;
-use drive::servo::{record_response, Servo, ServoConfig, ServoError, StepResult, SweepPoint};
+use drive::servo::{
+    record_response, Servo, ServoConfig, ServoError, StepRecorder, StepResult, SweepPoint,
+};
 use drive::simpl::{SimConfig, SimDrive};
 
 /// Software-generated interrupt of the control step.
@@ -95,12 +97,44 @@ struct State {
 
 /// The drive state, touched only with IRQs masked (one core).
 struct Shared(RefCell<Option<State>>);
-// SAFETY: single core; every access is inside `cortex_ar::interrupt::free`.
+// SAFETY: single core; every access is inside `crate::irq::free`.
 unsafe impl Sync for Shared {}
 static STATE: Shared = Shared(RefCell::new(None));
 
 fn with<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
-    cortex_ar::interrupt::free(|| STATE.0.try_borrow_mut().ok()?.as_mut().map(f))
+    crate::irq::free(|| STATE.0.try_borrow_mut().ok()?.as_mut().map(f))
+}
+
+/// `with` for the console. In co-simulation its register accesses run the
+/// PL to the guest time: they may cross a control-period boundary (served
+/// at once, as the bitstream's interrupt is taken when the access ends) or
+/// change the period (the next tick was planned with the old one), so the
+/// PL is synced and the next tick planned again.
+fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
+    let (r, raise) = crate::irq::free(|| {
+        let mut st = STATE.0.try_borrow_mut().ok()?;
+        let s = st.as_mut()?;
+        let before = match &s.bus {
+            Backend::Cosim(c) => Some(c.last.pl_cycles),
+            _ => None,
+        };
+        let r = f(s);
+        let mut raise = false;
+        if let (Some(before), Backend::Cosim(c)) = (before, &s.bus) {
+            if c.last.pl_cycles != before {
+                let n = s.cosim_sync(timer::global_count());
+                raise = s.serve(n);
+                if !raise {
+                    timer::set_compare(s.next_tick);
+                }
+            }
+        }
+        Some((r, raise))
+    })?;
+    if raise {
+        gic::send_sgi_self(SGI_CONTROL);
+    }
+    Some(r)
 }
 
 /// What the PL check found, for the banner: `pl: ...` and devcfg's word.
@@ -161,7 +195,7 @@ pub fn init() -> Boot {
                 // The boundaries crossed during the set-up are no overruns.
                 let _ = c.sync();
             }
-            cortex_ar::interrupt::free(|| {
+            crate::irq::free(|| {
                 *STATE.0.borrow_mut() = Some(State {
                     servo,
                     bus,
@@ -228,34 +262,9 @@ pub fn on_pl_tick() {
             Backend::Gp0(_) => 1,
             // The PL runs to now; the next tick comes just after the next
             // boundary (one global-timer count per PL cycle under QEMU).
-            Backend::Cosim(c) => {
-                let period = period_cycles(&s.servo);
-                let (mut n, since) = match c.sync() {
-                    Ok(r) => (r.boundaries, u64::from(r.since_boundary)),
-                    Err(_) => (0, u64::MAX),
-                };
-                if s.next_tick == 0 {
-                    // The first tick (IRQs were off during the boot): no
-                    // control step was due before it.
-                    n = n.min(1);
-                }
-                s.next_tick = if since < period {
-                    now - since + period + COSIM_TICK_LAG
-                } else {
-                    now + period
-                };
-                n
-            }
+            Backend::Cosim(_) => s.cosim_sync(now),
         };
-        if boundaries == 0 {
-            return false;
-        }
-        // Boundaries the control step did not see: the previous one still
-        // pending, or more than one crossed in this tick.
-        let missed = u64::from(s.control_pending) + u64::from(boundaries - 1);
-        s.servo.note_overruns(missed);
-        s.control_pending = true;
-        true
+        s.serve(boundaries)
     })
     .unwrap_or(false);
     if raise {
@@ -303,6 +312,42 @@ pub fn on_control() {
 }
 
 impl State {
+    /// Co-simulation: runs the PL to `now` (a global-timer count), plans
+    /// the next tick just after the next boundary with the period now set,
+    /// and returns the boundaries crossed since the previous sync.
+    fn cosim_sync(&mut self, now: u64) -> u32 {
+        let period = period_cycles(&self.servo);
+        let Backend::Cosim(c) = &mut self.bus else {
+            return 0;
+        };
+        let (mut n, since) = match c.sync() {
+            Ok(r) => (r.boundaries, u64::from(r.since_boundary)),
+            Err(_) => (0, u64::MAX),
+        };
+        if self.next_tick == 0 {
+            // The first tick (IRQs were off during the boot): no control
+            // step was due before it.
+            n = n.min(1);
+        }
+        self.next_tick = if since < period {
+            now - since + period + COSIM_TICK_LAG
+        } else {
+            now + period
+        };
+        n
+    }
+    /// Marks a control step due for `boundaries` crossed; false if none.
+    fn serve(&mut self, boundaries: u32) -> bool {
+        if boundaries == 0 {
+            return false;
+        }
+        // Boundaries the control step did not see: the previous one still
+        // pending, or more than one crossed at once.
+        let missed = u64::from(self.control_pending) + u64::from(boundaries - 1);
+        self.servo.note_overruns(missed);
+        self.control_pending = true;
+        true
+    }
     /// PL time now: cycles of the simulated PL, or uptime in us.
     fn pl_now(&self) -> u64 {
         match &self.bus {
@@ -329,7 +374,7 @@ impl State {
 pub struct FwDrive;
 
 fn run<T>(f: impl FnOnce(&mut State) -> Result<T, ServoError>) -> Result<T, DriveError> {
-    match with(f) {
+    match console(f) {
         Some(r) => Ok(r?),
         None => Err(DriveError::Absent),
     }
@@ -343,7 +388,7 @@ fn wait() {
 
 impl DriveOps for FwDrive {
     fn mode(&mut self) -> Mode {
-        with(|s| s.servo.mode()).unwrap_or(Mode::Off)
+        console(|s| s.servo.mode()).unwrap_or(Mode::Off)
     }
     fn set_mode(&mut self, m: Mode) -> Result<(), DriveError> {
         run(|s| s.servo.set_mode(&mut s.bus, m))
@@ -355,19 +400,29 @@ impl DriveOps for FwDrive {
         run(|s| s.servo.disable(&mut s.bus))
     }
     fn torque_ref(&mut self) -> f64 {
-        with(|s| s.servo.torque_ref_nm()).unwrap_or(0.0)
+        console(|s| s.servo.torque_ref_nm()).unwrap_or(0.0)
     }
     fn set_torque_ref(&mut self, nm: f64) -> Result<(), DriveError> {
         run(|s| s.servo.set_torque_ref(nm))
     }
     fn step(&mut self, nm: f64, window_s: f64) -> Result<StepResult, DriveError> {
         run(|s| s.servo.begin_step(&mut s.bus, nm, window_s))?;
+        let mut copy = StepRecorder::new();
         // Generous: alignment plus the window, at any sim_time_scale seen.
         let deadline = timer::uptime_us() + 60_000_000;
         loop {
-            let (result, pending) = with(|s| (s.servo.step_result(), s.servo.step_pending()))
-                .ok_or(DriveError::Absent)?;
-            if let Some(r) = result {
+            // The metrics of the full recording take longer than a control
+            // period: they are computed from a copy with the loop running.
+            let (done, pending, period_s) = console(|s| {
+                let done = s.servo.step_recording().map(|r| copy.copy_from(r));
+                (
+                    done.is_some(),
+                    s.servo.step_pending(),
+                    s.servo.control_period_s(),
+                )
+            })
+            .ok_or(DriveError::Absent)?;
+            if let Some(r) = copy.result(period_s).filter(|_| done) {
                 return Ok(r);
             }
             if !pending {
@@ -391,13 +446,13 @@ impl DriveOps for FwDrive {
             s.stall_until = s.pl_after_ms(ms);
             Ok(())
         })?;
-        while with(|s| s.stalled()).unwrap_or(false) {
+        while console(|s| s.stalled()).unwrap_or(false) {
             wait();
         }
         Ok(())
     }
     fn status(&mut self) -> DriveStatus {
-        with(|s| DriveStatus {
+        console(|s| DriveStatus {
             mode: s.servo.mode(),
             gates_on: s.servo.gates_on(&mut s.bus).unwrap_or(false),
             faults: s.servo.faults(&mut s.bus).unwrap_or_default(),
@@ -442,7 +497,7 @@ impl DriveOps for FwDrive {
     fn inject(&mut self, f: Injection) -> Result<(), DriveError> {
         match f {
             Injection::AdcStuck => run(|s| Ok(drive::pl::adc::Adc(&mut s.bus).set_enabled(false)?)),
-            Injection::External => with(|s| match &mut s.bus {
+            Injection::External => console(|s| match &mut s.bus {
                 Backend::Sim(sim) => {
                     // 10 us at the pin; a boundary crossed here is the
                     // next tick's.
@@ -454,7 +509,7 @@ impl DriveOps for FwDrive {
                 Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
             })
             .unwrap_or(Err(DriveError::Absent)),
-            Injection::Overrun => with(|s| match &s.bus {
+            Injection::Overrun => console(|s| match &s.bus {
                 Backend::Sim(_) => {
                     s.skip_boundaries = 2;
                     Ok(())
@@ -475,7 +530,7 @@ impl DriveOps for FwDrive {
         let slot = store::save(&mut flash, &Config::from_servo(&sc), &sc)
             .map_err(|_| DriveError::Flash)?;
         let l = store::load(&mut flash, &sc).map_err(|_| DriveError::Flash)?;
-        with(|s| {
+        console(|s| {
             s.store.slots = l.slots;
             s.store.loaded = Some(slot);
         });
@@ -497,15 +552,15 @@ impl DriveOps for FwDrive {
         run(|s| s.servo.capture_sample(&mut s.bus, i))
     }
     fn capture_period_s(&mut self) -> f64 {
-        with(|s| s.servo.capture_period_s()).unwrap_or(0.0)
+        console(|s| s.servo.capture_period_s()).unwrap_or(0.0)
     }
     fn sweep_point(&mut self, f_hz: f64, amp_nm: f64) -> Result<SweepPoint, DriveError> {
         run(|s| s.servo.sine_start(&mut s.bus, f_hz, amp_nm))?;
         let settle_ms = (Servo::sine_settle_s(f_hz) * 1e3) as u32 + 1;
-        let until = with(|s| s.pl_after_ms(settle_ms)).ok_or(DriveError::Absent)?;
+        let until = console(|s| s.pl_after_ms(settle_ms)).ok_or(DriveError::Absent)?;
         let deadline = timer::uptime_us() + 60_000_000;
-        let alive = || with(|s| s.servo.sine_running()).unwrap_or(false);
-        while with(|s| s.pl_now() < until).unwrap_or(false) {
+        let alive = || console(|s| s.servo.sine_running()).unwrap_or(false);
+        while console(|s| s.pl_now() < until).unwrap_or(false) {
             if !alive() {
                 return Err(DriveError::Servo(ServoError::GatesOff));
             }
@@ -531,13 +586,13 @@ impl DriveOps for FwDrive {
         // One sample per critical section: the PL keeps running while the
         // record is read, and the control interrupt must not wait for all
         // of it (that would be a control overrun).
-        let ts = with(|s| s.servo.capture_period_s()).ok_or(DriveError::Absent)?;
+        let ts = console(|s| s.servo.capture_period_s()).ok_or(DriveError::Absent)?;
         let p = record_response(count, f_hz, ts, |i| {
             run(|s| s.servo.capture_sample(&mut s.bus, i))
         })?;
         p.ok_or(DriveError::Servo(ServoError::BadFrequency(f_hz)))
     }
     fn sweep_end(&mut self) {
-        with(|s| s.servo.sine_stop());
+        console(|s| s.servo.sine_stop());
     }
 }

@@ -10,13 +10,6 @@ static mut ENCODER: defmt::Encoder = defmt::Encoder::new();
 
 defmt::timestamp!("{=u64:us}", timer::uptime_us());
 
-fn irqs_enabled() -> bool {
-    let cpsr: u32;
-    // SAFETY: reading CPSR has no side effect.
-    unsafe { core::arch::asm!("mrs {}, cpsr", out(reg) cpsr, options(nomem, nostack)) };
-    cpsr & (1 << 7) == 0
-}
-
 fn write(bytes: &[u8]) {
     UART0.write_bytes(bytes);
 }
@@ -28,7 +21,7 @@ struct Logger;
 // the encoder is never used re-entrantly; a nested acquire panics.
 unsafe impl defmt::Logger for Logger {
     fn acquire() {
-        let was_on = irqs_enabled();
+        let was_on = crate::irq::enabled();
         cortex_ar::interrupt::disable();
         if TAKEN.swap(true, Ordering::Acquire) {
             panic!("defmt logger taken re-entrantly");

@@ -18,6 +18,8 @@ mod control;
 #[cfg(target_os = "none")]
 mod cosim;
 #[cfg(target_os = "none")]
+mod irq;
+#[cfg(target_os = "none")]
 mod log;
 #[cfg(target_os = "none")]
 mod panic;

@@ -51,9 +51,6 @@ fn mpdtc_step(s: &mut Session) -> Reply {
 }
 
 #[test]
-#[ignore = "fails since the PS fault checks: on the co-simulated RTL the burst \
-            `mode mpdtc`, `enable`, `step 0.4` sometimes latches ADC_STUCK or counts \
-            one overrun (the bridge's tick timing); run with --ignored"]
 fn mpdtc_step_on_the_rtl_settles_within_5_percent_of_the_simulated_pl() {
     let mut rtl = boot_rtl();
     let st = cmd(&mut rtl, "status");

@@ -40,10 +40,13 @@ pub use step::{StepRecorder, StepResult, STEP_SAMPLES_MAX};
 mod sweep;
 pub use sweep::{bandwidth_hz, record_response, tone_response, Sine, SweepPoint};
 
-/// Control periods without a new ADC result that latch `ADC_STUCK`: one
-/// (a control period holds one averaged result in MPDTC and off, four in
-/// FOC, `Config::check` keeps it so).
-pub const ADC_STALE_STEPS: u32 = 1;
+/// Control periods without a new ADC result that latch `ADC_STUCK`: two.
+/// A control period holds at least one averaged result (`Config::check`
+/// keeps it so), but a step served late (its interrupt held off by the
+/// console, or a step that ran past the boundary) can read the result the
+/// next step would have read: one stale step is tolerated, as one missed
+/// period is for `CONTROL_OVERRUN`.
+pub const ADC_STALE_STEPS: u32 = 2;
 /// Control periods missed in a row (between two control steps) that latch
 /// `CONTROL_OVERRUN`: one late step is tolerated, the PL holds its outputs.
 pub const OVERRUN_PERIODS: u64 = 2;
@@ -359,7 +362,8 @@ impl Servo {
     pub fn control_rate_hz(&self) -> f64 {
         1.0 / self.control_period_s()
     }
-    fn control_period_s(&self) -> f64 {
+    /// The control period of the active mode, s.
+    pub fn control_period_s(&self) -> f64 {
         match self.mode {
             Mode::Foc => self.foc_params.period_s,
             _ => self.mpdtc.params.control_period_s,
@@ -587,6 +591,13 @@ impl Servo {
         self.rec.result(self.control_period_s())
     }
 
+    /// The step's recording once its window is full. The metrics take
+    /// longer than a control period on the PS: the console computes them
+    /// from a copy, outside the control loop's critical section.
+    pub fn step_recording(&self) -> Option<&StepRecorder> {
+        self.rec.done().then_some(&self.rec)
+    }
+
     /// Whether an armed step is still waiting or recording.
     pub fn step_pending(&self) -> bool {
         self.rec.pending()
@@ -612,6 +623,10 @@ impl Servo {
         self.beat = self.beat.wrapping_add(1);
         Top(&mut *bus).heartbeat(self.beat)?;
         self.periods += 1;
+        // The result count first: a late step can run past the next
+        // boundary, and a count read after it would make the step that
+        // serves that boundary see no new result.
+        let adc_count = Adc(&mut *bus).count()?;
         let i_abc = Adc(&mut *bus).currents_a(&self.cfg.adc)?;
         let enc = Encoder(&mut *bus).read()?;
         let pp = self.cfg.motor.pole_pairs;
@@ -655,7 +670,6 @@ impl Servo {
             measured: self.measured,
             torque_ref_nm: self.torque_ref_nm,
         });
-        let adc_count = Adc(&mut *bus).count()?;
         let ps = self.ps_checks(adc_count, enc.pos, enc.cpr);
         let pl = Fault(&mut *bus).latched()?.0;
         if ps & !self.ps_faults != 0 {

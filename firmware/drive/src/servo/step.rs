@@ -95,6 +95,23 @@ impl StepRecorder {
             self.state = State::Idle;
         }
     }
+    /// Copies `other`'s state and recorded samples (only those, not the
+    /// whole buffer: a copy under a critical section stays short).
+    pub fn copy_from(&mut self, other: &Self) {
+        self.state = other.state;
+        self.from_nm = other.from_nm;
+        self.to_nm = other.to_nm;
+        self.n = other.n;
+        self.len = other.len;
+        self.waited = other.waited;
+        self.torque[..other.len].copy_from_slice(&other.torque[..other.len]);
+        self.transitions_start = other.transitions_start;
+        self.transitions_end = other.transitions_end;
+    }
+    /// The window is full: [`StepRecorder::result`] has its metrics.
+    pub fn done(&self) -> bool {
+        self.state == State::Done
+    }
     /// Armed or recording.
     pub fn pending(&self) -> bool {
         matches!(self.state, State::Armed | State::Recording)
