@@ -1,0 +1,194 @@
+//! `mpdcc_core` on the MPDCC page as `pl_top` wires it: an `MPDCC_START`
+//! write while idle snapshots the page's input and constant words; the
+//! decision is [`fpga::decide`] on that snapshot (the bit-exact model of the
+//! core, not a copy of its arithmetic), and the core's busy time is
+//! [`cycles::pipelined_core_cycles`] for the candidate set of `s(k-1)`,
+//! plus the cycle of the snapshot. Timing, with the START write in cycle
+//! `t` and the core's count `C`: `BUSY` reads 1 from `t + 1`, the result
+//! registers change in `t + C + 1`, `BUSY` falls and `DONE` and the
+//! counters change in `t + C + 2`.
+
+use super::NEVER;
+use crate::mpdcc::controller::{candidates, DecisionKind};
+use crate::mpdcc::cycles;
+use crate::mpdcc::fpga::{self, Coeffs, Inputs};
+use crate::regmap::{self as rm, mpdcc_kind};
+
+/// The page's input and constant words at a START (register values).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Words {
+    /// `MPDCC_N_USE` (1..=6).
+    pub n_use: u32,
+    /// `MPDCC_S_PREV` (`{c, b, a}`, 3 bits each).
+    pub s_prev: u32,
+    /// `MPDCC_I_A` .. `MPDCC_OMEGA_S`, in page order.
+    pub state: [u16; 12],
+    /// `MPDCC_C_TAU` .. `MPDCC_LAMBDA_N`, in page order.
+    pub consts: [u16; 27],
+}
+
+/// The result registers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Outputs {
+    /// `MPDCC_DECISION`.
+    pub decision: u32,
+    /// `MPDCC_COST`.
+    pub cost: u32,
+    /// `MPDCC_J_DL`.
+    pub j_dl: u32,
+    /// `MPDCC_CYCLES`.
+    pub cycles: u32,
+}
+
+/// The core, its snapshot and the page's counters.
+#[derive(Debug, Clone)]
+pub struct MpdccBlock {
+    k: Coeffs,
+    left: u32,
+    busy: bool,
+    done: bool,
+    count: u16,
+    deadlocks: u16,
+    pending: Outputs,
+    /// The result registers.
+    pub out: Outputs,
+}
+
+impl Default for MpdccBlock {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The words of a register (two's complement in 16 bits).
+fn w(v: u16) -> i16 {
+    v as i16
+}
+
+impl MpdccBlock {
+    /// After reset, with the default build's constants (`regmap::MPDCC_*`).
+    pub fn new() -> Self {
+        let k = match Coeffs::core_shape(rm::MPDCC_LAMBDA, rm::MPDCC_M_BITS, rm::MPDCC_NODES) {
+            Ok(k) => k,
+            Err(_) => panic!("the register map's MPDCC build constants are a valid core"),
+        };
+        Self {
+            k,
+            left: 0,
+            busy: false,
+            done: false,
+            count: 0,
+            deadlocks: 0,
+            pending: Outputs::default(),
+            out: Outputs::default(),
+        }
+    }
+
+    /// `MPDCC_STATUS`.
+    pub fn status(&self) -> u32 {
+        (u32::from(self.count) << 16) | (u32::from(self.done) << 1) | u32::from(self.busy)
+    }
+
+    /// `MPDCC_DEADLOCKS`.
+    pub fn deadlocks(&self) -> u32 {
+        u32::from(self.deadlocks)
+    }
+
+    /// The core's decision on `words` (what the result registers will show).
+    pub fn evaluate(&mut self, words: &Words) -> Outputs {
+        let c = &words.consts;
+        let k = &mut self.k;
+        k.c_tau = w(c[0]);
+        k.c_r = w(c[1]);
+        k.c_w = w(c[2]);
+        k.c_p = w(c[3]);
+        k.c_s = w(c[4]);
+        k.c_3 = w(c[5]);
+        k.c_d = w(c[6]);
+        k.c_n = w(c[7]);
+        k.c_ph = w(c[8]);
+        k.s3h = w(c[9]);
+        k.v_ph_ref = w(c[10]);
+        k.c_tau1 = w(c[11]);
+        k.c_r1 = w(c[12]);
+        k.c_w1 = w(c[13]);
+        k.c_s1 = w(c[14]);
+        k.v_dc_half = w(c[15]);
+        k.g3 = w(c[16]);
+        k.gd = w(c[17]);
+        k.g3_1 = w(c[18]);
+        for j in 0..7 {
+            k.bnd[j] = w(c[19 + j]);
+        }
+        k.lambda_n = c[26];
+        let s = &words.state;
+        let s_prev = [0, 3, 6].map(|sh| ((words.s_prev >> sh) & 7) as u8);
+        let x = Inputs {
+            i_ab: [w(s[0]), w(s[1])],
+            psi_ab: [w(s[2]), w(s[3])],
+            v_n: w(s[4]),
+            v_ph: [w(s[5]), w(s[6]), w(s[7])],
+            i_ref_ab: [w(s[8]), w(s[9])],
+            omega_r: w(s[10]),
+            omega_s: w(s[11]),
+            s_prev,
+            saturated: false,
+        };
+        let n = words.n_use.clamp(1, rm::MPDCC_EXPLORERS);
+        let out = fpga::decide(&self.k, &x, n);
+        let d = out.decision;
+        let (kind, cost, j_dl) = match (d.kind, out.results.iter().find(|r| r.s == d.s)) {
+            (DecisionKind::Optimal, Some(r)) => (mpdcc_kind::OPTIMAL, r.cost, r.j_dl),
+            (DecisionKind::Deadlock, Some(r)) => (mpdcc_kind::DEADLOCK, r.cost, r.j_dl),
+            _ => (mpdcc_kind::KEPT, 0, 0),
+        };
+        let core_cycles = cycles::pipelined_core_cycles(n, candidates(s_prev).len() as u32);
+        Outputs {
+            decision: u32::from(d.s[0])
+                | (u32::from(d.s[1]) << 3)
+                | (u32::from(d.s[2]) << 6)
+                | (kind << 12)
+                | ((d.horizon_steps & 0xFF) << 16),
+            cost,
+            j_dl: j_dl as u32,
+            cycles: (core_cycles & 0xFFFF) | ((d.candidates & 0xFF) << 16),
+        }
+    }
+
+    /// One clock edge: `start` = an `MPDCC_START` write in this cycle, with
+    /// the page's words as they are in it.
+    pub fn step(&mut self, start: Option<&Words>) {
+        if self.left > 0 {
+            self.left -= 1;
+            if self.left == 1 {
+                self.out = self.pending;
+            } else if self.left == 0 {
+                self.busy = false;
+                self.done = true;
+                self.count = self.count.wrapping_add(1);
+                if (self.out.decision >> 12) & 3 == mpdcc_kind::DEADLOCK {
+                    self.deadlocks = self.deadlocks.wrapping_add(1);
+                }
+            }
+        } else if let Some(words) = start {
+            self.pending = self.evaluate(words);
+            self.left = (self.pending.cycles & 0xFFFF) + rm::MPDCC_START_DELAY;
+            self.busy = true;
+            self.done = false;
+        }
+    }
+
+    /// Cycles from now in which only the busy count runs.
+    pub fn quiet(&self) -> u64 {
+        if self.left == 0 {
+            NEVER
+        } else {
+            u64::from(self.left.saturating_sub(2))
+        }
+    }
+
+    /// Applies `k` quiet cycles.
+    pub fn skip(&mut self, k: u64) {
+        self.left -= k.min(u64::from(self.left)) as u32;
+    }
+}
