@@ -192,3 +192,140 @@ impl MpdccBlock {
         self.left -= k.min(u64::from(self.left)) as u32;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bus::{BusError, RegisterBus};
+    use crate::mpdcc::controller::CtrlState;
+    use crate::mpdcc::fpga::{FpgaConfig, FpgaMpdcc};
+    use crate::mpdcc::params::DriveParams;
+    use crate::pl::fake::FakePl;
+    use crate::pl::mpdcc::Mpdcc;
+    use crate::regmap::MPDCC;
+    use crate::simpl::pl::SimPl;
+
+    struct Bus(SimPl);
+
+    impl RegisterBus for Bus {
+        fn read(&mut self, addr: usize) -> core::result::Result<u32, BusError> {
+            self.0.read(addr).0
+        }
+        fn write(&mut self, addr: usize, value: u32) -> core::result::Result<(), BusError> {
+            self.0.write(addr, value).0
+        }
+    }
+
+    fn core() -> FpgaMpdcc {
+        let p = DriveParams::default();
+        FpgaMpdcc::new(&p, FpgaConfig::core(&p.machine)).unwrap()
+    }
+
+    /// A state off the reference (the lazy check fails) from `s(k-1)`.
+    fn state(s_prev: [u8; 3]) -> Inputs {
+        let p = DriveParams::default();
+        let st = CtrlState {
+            x_m: [0.6, -0.2, 0.9, 0.3],
+            v_n_pu: 0.01,
+            v_ph_pu: [p.inverter.v_ph_ref_pu(); 3],
+            omega_r_pu: p.operating_point.omega_r_pu,
+            omega_s_pu: p.operating_point.omega_s_pu,
+            i_ref_ab_pu: [0.8, 0.1],
+            s_prev,
+        };
+        Inputs::quantize(&st).unwrap()
+    }
+
+    /// The words the driver writes give back the model's constants and its
+    /// decision (the page adds nothing to the arithmetic).
+    #[test]
+    fn page_words_are_the_model_constants_and_decision() {
+        let f = core();
+        let x = state([4, 4, 3]);
+        let mut pl = FakePl::new();
+        Mpdcc(&mut pl).load_coeffs(f.coeffs()).unwrap();
+        Mpdcc(&mut pl).write_inputs(&x).unwrap();
+        let g = |r: usize| pl.get(MPDCC.addr(MPDCC.registers[r])) as u16;
+        let words = Words {
+            n_use: u32::from(g(2)),
+            s_prev: u32::from(g(4)),
+            state: core::array::from_fn(|i| g(5 + i)),
+            consts: core::array::from_fn(|i| g(17 + i)),
+        };
+        let mut b = MpdccBlock::new();
+        let out = b.evaluate(&words);
+        assert_eq!(&b.k, f.coeffs());
+        let want = f.decide_raw(&x).decision;
+        let kind = match want.kind {
+            DecisionKind::Kept => mpdcc_kind::KEPT,
+            DecisionKind::Optimal => mpdcc_kind::OPTIMAL,
+            DecisionKind::Deadlock => mpdcc_kind::DEADLOCK,
+        };
+        assert_ne!(want.kind, DecisionKind::Kept, "a state that searches");
+        let s = want.s;
+        assert_eq!(
+            out.decision,
+            u32::from(s[0])
+                | u32::from(s[1]) << 3
+                | u32::from(s[2]) << 6
+                | kind << 12
+                | want.horizon_steps << 16
+        );
+        // The search time of the core: common terms, ceil(|S| / 2) issue
+        // cycles at N = 2, the explorer latency, the last comparison.
+        let n = candidates(x.s_prev).len() as u32;
+        assert_eq!(out.cycles & 0xFFFF, 16 + n.div_ceil(2) + 41 + 1);
+        assert_eq!(out.cycles >> 16, want.candidates);
+    }
+
+    /// Timing of one decision through the simulated PL: BUSY from the cycle
+    /// after the START write, the result after C + 1 cycles, DONE and the
+    /// count one cycle later; a START while busy is ignored.
+    #[test]
+    fn start_busy_result_done_timing() {
+        let f = core();
+        let x = state([4, 4, 3]);
+        let mut m = Mpdcc(Bus(SimPl::new(10)));
+        m.load_coeffs(f.coeffs()).unwrap();
+        m.write_inputs(&x).unwrap();
+        let c = u64::from(cycles::pipelined_core_cycles(
+            2,
+            candidates(x.s_prev).len() as u32,
+        ));
+        let a_status = MPDCC.addr(&rm::MPDCC_STATUS);
+        let a_dec = MPDCC.addr(&rm::MPDCC_DECISION);
+        assert_eq!(m.0 .0.peek(a_status), Some(0));
+        m.start().unwrap();
+        let t = m.0 .0.cycles(); // the START write was cycle t - 1
+        let mut busy_from = None;
+        let mut result_at = None;
+        let mut done_at = None;
+        for _ in 0..400 {
+            let now = m.0 .0.cycles();
+            let st = m.0 .0.peek(a_status).unwrap();
+            if st & 1 == 1 && busy_from.is_none() {
+                busy_from = Some(now);
+            }
+            if m.0 .0.peek(a_dec).unwrap() != 0 && result_at.is_none() {
+                result_at = Some(now);
+            }
+            if st == (1 << 16) | 2 {
+                done_at = Some(now);
+                break;
+            }
+            if now == t + 5 {
+                // ignored while busy
+                m.start().unwrap();
+            } else {
+                m.0 .0.run_cycle_by_cycle(1);
+            }
+        }
+        assert_eq!(busy_from, Some(t));
+        assert_eq!(result_at, Some(t + c));
+        assert_eq!(done_at, Some(t + c + 1));
+        let d = m.read_decision().unwrap();
+        assert_eq!(d.decision, f.decide_raw(&x).decision);
+        assert_eq!(u64::from(d.cycles), c);
+        assert!(!m.status().unwrap().busy, "the second START was ignored");
+    }
+}
