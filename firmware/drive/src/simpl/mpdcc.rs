@@ -40,10 +40,11 @@ pub struct Outputs {
     pub cycles: u32,
 }
 
-/// The core, its snapshot and the page's counters.
+/// The core's control state and the page's counters (the constants are
+/// rebuilt from the words at each START: the ROM of `1/l` alone is 4 KiB,
+/// more than the simulated PL may keep).
 #[derive(Debug, Clone)]
 pub struct MpdccBlock {
-    k: Coeffs,
     left: u32,
     busy: bool,
     done: bool,
@@ -65,15 +66,44 @@ fn w(v: u16) -> i16 {
     v as i16
 }
 
+/// The constants of the default build (`regmap::MPDCC_*`: `L`, `N_bar`,
+/// nodes) with the page's constant words.
+pub fn coeffs(words: &Words) -> Coeffs {
+    let mut k = match Coeffs::core_shape(rm::MPDCC_LAMBDA, rm::MPDCC_M_BITS, rm::MPDCC_NODES) {
+        Ok(k) => k,
+        Err(_) => panic!("the register map's MPDCC build constants are a valid core"),
+    };
+    let c = &words.consts;
+    k.c_tau = w(c[0]);
+    k.c_r = w(c[1]);
+    k.c_w = w(c[2]);
+    k.c_p = w(c[3]);
+    k.c_s = w(c[4]);
+    k.c_3 = w(c[5]);
+    k.c_d = w(c[6]);
+    k.c_n = w(c[7]);
+    k.c_ph = w(c[8]);
+    k.s3h = w(c[9]);
+    k.v_ph_ref = w(c[10]);
+    k.c_tau1 = w(c[11]);
+    k.c_r1 = w(c[12]);
+    k.c_w1 = w(c[13]);
+    k.c_s1 = w(c[14]);
+    k.v_dc_half = w(c[15]);
+    k.g3 = w(c[16]);
+    k.gd = w(c[17]);
+    k.g3_1 = w(c[18]);
+    for j in 0..7 {
+        k.bnd[j] = w(c[19 + j]);
+    }
+    k.lambda_n = c[26];
+    k
+}
+
 impl MpdccBlock {
-    /// After reset, with the default build's constants (`regmap::MPDCC_*`).
+    /// After reset.
     pub fn new() -> Self {
-        let k = match Coeffs::core_shape(rm::MPDCC_LAMBDA, rm::MPDCC_M_BITS, rm::MPDCC_NODES) {
-            Ok(k) => k,
-            Err(_) => panic!("the register map's MPDCC build constants are a valid core"),
-        };
         Self {
-            k,
             left: 0,
             busy: false,
             done: false,
@@ -95,32 +125,8 @@ impl MpdccBlock {
     }
 
     /// The core's decision on `words` (what the result registers will show).
-    pub fn evaluate(&mut self, words: &Words) -> Outputs {
-        let c = &words.consts;
-        let k = &mut self.k;
-        k.c_tau = w(c[0]);
-        k.c_r = w(c[1]);
-        k.c_w = w(c[2]);
-        k.c_p = w(c[3]);
-        k.c_s = w(c[4]);
-        k.c_3 = w(c[5]);
-        k.c_d = w(c[6]);
-        k.c_n = w(c[7]);
-        k.c_ph = w(c[8]);
-        k.s3h = w(c[9]);
-        k.v_ph_ref = w(c[10]);
-        k.c_tau1 = w(c[11]);
-        k.c_r1 = w(c[12]);
-        k.c_w1 = w(c[13]);
-        k.c_s1 = w(c[14]);
-        k.v_dc_half = w(c[15]);
-        k.g3 = w(c[16]);
-        k.gd = w(c[17]);
-        k.g3_1 = w(c[18]);
-        for j in 0..7 {
-            k.bnd[j] = w(c[19 + j]);
-        }
-        k.lambda_n = c[26];
+    pub fn evaluate(&self, words: &Words) -> Outputs {
+        let k = coeffs(words);
         let s = &words.state;
         let s_prev = [0, 3, 6].map(|sh| ((words.s_prev >> sh) & 7) as u8);
         let x = Inputs {
@@ -135,7 +141,7 @@ impl MpdccBlock {
             saturated: false,
         };
         let n = words.n_use.clamp(1, rm::MPDCC_EXPLORERS);
-        let out = fpga::decide(&self.k, &x, n);
+        let out = fpga::decide(&k, &x, n);
         let d = out.decision;
         let (kind, cost, j_dl) = match (d.kind, out.results.iter().find(|r| r.s == d.s)) {
             (DecisionKind::Optimal, Some(r)) => (mpdcc_kind::OPTIMAL, r.cost, r.j_dl),
@@ -252,9 +258,8 @@ mod tests {
             state: core::array::from_fn(|i| g(5 + i)),
             consts: core::array::from_fn(|i| g(17 + i)),
         };
-        let mut b = MpdccBlock::new();
-        let out = b.evaluate(&words);
-        assert_eq!(&b.k, f.coeffs());
+        let out = MpdccBlock::new().evaluate(&words);
+        assert_eq!(&coeffs(&words), f.coeffs());
         let want = f.decide_raw(&x).decision;
         let kind = match want.kind {
             DecisionKind::Kept => mpdcc_kind::KEPT,
