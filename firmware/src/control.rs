@@ -550,6 +550,13 @@ impl DriveOps for FwDrive {
         if !(1..=hil::MAX_PERIODS).contains(&periods) {
             return Err(DriveError::Unsupported);
         }
+        // The run's bus accesses take PL time the control step does not get
+        // (overruns, the PS's fault checks): never while the gates are on.
+        run(|s| match s.servo.gates_on(&mut s.bus) {
+            Ok(false) => Ok(()),
+            Ok(true) => Err(ServoError::GatesOn),
+            Err(b) => Err(ServoError::Bus(b)),
+        })?;
         let (p, f) = hil::default_core().map_err(|_| DriveError::Unsupported)?;
         with(|s| Mpdcc(&mut s.bus).load_coeffs(f.coeffs()))
             .ok_or(DriveError::Absent)?

@@ -2,7 +2,9 @@
 //! simulated PL (the plant on the PS, the core's model behind the MPDCC
 //! page) must give the numbers of the host's FPGA-model loop
 //! (`drive::mpdcc::closed_loop` with `FpgaMpdcc`): decision counts by kind,
-//! the worst core cycle count, f_sw and THD. Also the command's errors.
+//! the worst core cycle count, f_sw and THD, without faults or overruns of
+//! the PMSM drive's loop. Also the command's errors (bad arguments, gates
+//! on).
 use std::time::{Duration, Instant};
 
 use drive::mpdcc::closed_loop::{self, LoopConfig};
@@ -91,5 +93,19 @@ fn mpdcc_run_on_the_simulated_pl_is_the_host_model_loop() {
             "{bad}: {e:?}"
         );
     }
+    assert_eq!(cmd(&mut s, "mpdcc").lines, r.lines);
+    // The run left the PMSM drive's loop alone (simulated PL).
+    let st = cmd(&mut s, "status");
+    assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+    assert_eq!(field(&st, "overruns"), Some("0"), "{st:?}");
+    // Refused while the gates are on, and nothing runs.
+    assert!(cmd(&mut s, "mode foc").is_ok());
+    assert!(cmd(&mut s, "enable").is_ok());
+    let e = cmd(&mut s, "mpdcc run 1");
+    assert!(
+        matches!(&e.fin, Final::Err { code, .. } if code == "gates-on"),
+        "{e:?}"
+    );
+    assert!(cmd(&mut s, "disable").is_ok());
     assert_eq!(cmd(&mut s, "mpdcc").lines, r.lines);
 }
