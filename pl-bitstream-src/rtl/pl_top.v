@@ -198,6 +198,7 @@ module pl_top #(
     // 0..38 in page order, then s(k-1) and n_use), its snapshot, the results.
     localparam integer MC_WORDS = 39;
     localparam integer MC_W = 16 * MC_WORDS + 9 + 3;
+    localparam [31:0] MC_CONFIG = RM_MPDCC_CONFIG_RESET;
     wire [MC_W-1:0] mc_in;
     reg  [MC_W-1:0] mc_snap_q;
     wire        mc_start_we;
@@ -294,9 +295,11 @@ module pl_top #(
         .mpdcc_status_count_i       (mc_count_q),
         .mpdcc_n_use_o              (mc_in[MC_W-1 -: 3]),
         .mpdcc_config_explorers_i   (MPDCC_N[3:0]),
-        .mpdcc_config_lambda_i      (4'd3),
-        .mpdcc_config_m_bits_i      (4'd7),
-        .mpdcc_config_nodes_i       (4'd4),
+        // L, N_bar and the nodes are fixed in the explorer RTL; the table
+        // states them (its reset value of MPDCC_CONFIG).
+        .mpdcc_config_lambda_i      (MC_CONFIG[RM_MPDCC_CONFIG_LAMBDA_LSB +: 4]),
+        .mpdcc_config_m_bits_i      (MC_CONFIG[RM_MPDCC_CONFIG_M_BITS_LSB +: 4]),
+        .mpdcc_config_nodes_i       (MC_CONFIG[RM_MPDCC_CONFIG_NODES_LSB +: 4]),
         .mpdcc_s_prev_a_o           (mc_in[16*MC_WORDS +: 3]),
         .mpdcc_s_prev_b_o           (mc_in[16*MC_WORDS+3 +: 3]),
         .mpdcc_s_prev_c_o           (mc_in[16*MC_WORDS+6 +: 3]),
