@@ -29,8 +29,11 @@ use drive::bus::{BusError, RegisterBus};
 use drive::config::spi_nor::SpiNor;
 use drive::config::{store, Config};
 use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
+use drive::mpdcc::fpga::Inputs;
+use drive::mpdcc::hil::{self, HilError, HilReport};
 use drive::pl::capture::{CapSample, CapState, CapStatus, Trigger};
 use drive::pl::fault::Faults;
+use drive::pl::mpdcc::{Mpdcc, MpdccError};
 use drive::pl::presence::Presence;
 use drive::pl::top::Mode;
 use drive::servo::faults::FaultRecord;
@@ -93,6 +96,8 @@ struct State {
     /// Control-period boundaries the next PL tick crosses without a
     /// control step (`debug fault overrun`, simulated PL).
     skip_boundaries: u32,
+    /// The last `mpdcc run`.
+    mpdcc_last: Option<HilReport>,
 }
 
 /// The drive state, touched only with IRQs masked (one core).
@@ -206,6 +211,7 @@ pub fn init() -> Boot {
                     sim_start_us: timer::uptime_us(),
                     next_tick: 0,
                     skip_boundaries: 0,
+                    mpdcc_last: None,
                     store,
                 });
             });
@@ -594,5 +600,50 @@ impl DriveOps for FwDrive {
     }
     fn sweep_end(&mut self) {
         console(|s| s.servo.sine_stop());
+    }
+    fn mpdcc_run(&mut self, periods: u32) -> Result<HilReport, DriveError> {
+        if !(1..=hil::MAX_PERIODS).contains(&periods) {
+            return Err(DriveError::Unsupported);
+        }
+        // The run's bus accesses take PL time the control step does not get
+        // (overruns, the PS's fault checks): never while the gates are on.
+        run(|s| match s.servo.gates_on(&mut s.bus) {
+            Ok(false) => Ok(()),
+            Ok(true) => Err(ServoError::GatesOn),
+            Err(b) => Err(ServoError::Bus(b)),
+        })?;
+        let (p, f) = hil::default_core().map_err(|_| DriveError::Unsupported)?;
+        with(|s| Mpdcc(&mut s.bus).load_coeffs(f.coeffs()))
+            .ok_or(DriveError::Absent)?
+            .map_err(page_error)?;
+        // One decision per critical section: the control interrupt and the
+        // PL tick run in between; the plant runs here, outside.
+        let mut decide = |x: &Inputs| {
+            with(|s| Mpdcc(&mut s.bus).decide(x, MPDCC_POLLS))
+                .unwrap_or(Err(MpdccError::Bus(BusError::Absent)))
+        };
+        let r = hil::run(&p, periods, &mut decide).map_err(|e| match e {
+            HilError::Page(e) => page_error(e),
+            _ => DriveError::Unsupported,
+        })?;
+        with(|s| s.mpdcc_last = Some(r));
+        Ok(r)
+    }
+    fn mpdcc_report(&mut self) -> Option<HilReport> {
+        with(|s| s.mpdcc_last).flatten()
+    }
+}
+
+/// Status polls per MPDCC decision: one PL cycle each on the simulated PL,
+/// more on the others; a decision takes at most 168 cycles at N = 2.
+const MPDCC_POLLS: u32 = 1000;
+
+/// The console's error for a failed MPDCC page access.
+fn page_error(e: MpdccError) -> DriveError {
+    match e {
+        MpdccError::Bus(BusError::Absent) => DriveError::Absent,
+        MpdccError::Bus(b) => DriveError::Servo(ServoError::Bus(b)),
+        MpdccError::Timeout => DriveError::Timeout,
+        MpdccError::Format(_) | MpdccError::Config(_) => DriveError::Unsupported,
     }
 }

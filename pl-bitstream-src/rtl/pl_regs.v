@@ -86,6 +86,68 @@ module pl_regs (
     output wire  [15:0] mpdtc_align_on_o,
     output wire  [31:0] mpdtc_align_time_o,
     input  wire  [15:0] mpdtc_align_pos_i,
+    // block MPDCC
+    output wire         mpdcc_start_we_o,
+    input  wire         mpdcc_status_busy_i,
+    input  wire         mpdcc_status_done_i,
+    input  wire  [15:0] mpdcc_status_count_i,
+    output wire   [2:0] mpdcc_n_use_o,
+    input  wire   [3:0] mpdcc_config_explorers_i,
+    input  wire   [3:0] mpdcc_config_lambda_i,
+    input  wire   [3:0] mpdcc_config_m_bits_i,
+    input  wire   [3:0] mpdcc_config_nodes_i,
+    output wire   [2:0] mpdcc_s_prev_a_o,
+    output wire   [2:0] mpdcc_s_prev_b_o,
+    output wire   [2:0] mpdcc_s_prev_c_o,
+    output wire  [15:0] mpdcc_i_a_o,
+    output wire  [15:0] mpdcc_i_b_o,
+    output wire  [15:0] mpdcc_psi_a_o,
+    output wire  [15:0] mpdcc_psi_b_o,
+    output wire  [15:0] mpdcc_v_n_o,
+    output wire  [15:0] mpdcc_v_ph_a_o,
+    output wire  [15:0] mpdcc_v_ph_b_o,
+    output wire  [15:0] mpdcc_v_ph_c_o,
+    output wire  [15:0] mpdcc_iref_a_o,
+    output wire  [15:0] mpdcc_iref_b_o,
+    output wire  [15:0] mpdcc_omega_r_o,
+    output wire  [15:0] mpdcc_omega_s_o,
+    output wire  [15:0] mpdcc_c_tau_o,
+    output wire  [15:0] mpdcc_c_r_o,
+    output wire  [15:0] mpdcc_c_w_o,
+    output wire  [15:0] mpdcc_c_p_o,
+    output wire  [15:0] mpdcc_c_s_o,
+    output wire  [15:0] mpdcc_c_3_o,
+    output wire  [15:0] mpdcc_c_d_o,
+    output wire  [15:0] mpdcc_c_n_o,
+    output wire  [15:0] mpdcc_c_ph_o,
+    output wire  [15:0] mpdcc_s3h_o,
+    output wire  [15:0] mpdcc_v_ph_ref_o,
+    output wire  [15:0] mpdcc_c_tau1_o,
+    output wire  [15:0] mpdcc_c_r1_o,
+    output wire  [15:0] mpdcc_c_w1_o,
+    output wire  [15:0] mpdcc_c_s1_o,
+    output wire  [15:0] mpdcc_vdc_half_o,
+    output wire  [15:0] mpdcc_g3_o,
+    output wire  [15:0] mpdcc_gd_o,
+    output wire  [15:0] mpdcc_g3_1_o,
+    output wire  [15:0] mpdcc_bnd_ia_o,
+    output wire  [15:0] mpdcc_bnd_ib_o,
+    output wire  [15:0] mpdcc_bnd_ic_o,
+    output wire  [15:0] mpdcc_bnd_vn_o,
+    output wire  [15:0] mpdcc_bnd_vpa_o,
+    output wire  [15:0] mpdcc_bnd_vpb_o,
+    output wire  [15:0] mpdcc_bnd_vpc_o,
+    output wire  [15:0] mpdcc_lambda_n_o,
+    input  wire   [2:0] mpdcc_decision_s_a_i,
+    input  wire   [2:0] mpdcc_decision_s_b_i,
+    input  wire   [2:0] mpdcc_decision_s_c_i,
+    input  wire   [1:0] mpdcc_decision_kind_i,
+    input  wire   [7:0] mpdcc_decision_l_star_i,
+    input  wire  [31:0] mpdcc_cost_i,
+    input  wire  [31:0] mpdcc_j_dl_i,
+    input  wire  [15:0] mpdcc_cycles_cycles_i,
+    input  wire   [7:0] mpdcc_cycles_candidates_i,
+    input  wire  [15:0] mpdcc_deadlocks_i,
     // block PWM
     output wire         gate_ctrl_gate_en_o,
     input  wire         gate_ctrl_hw_clr_i,
@@ -207,6 +269,48 @@ module pl_regs (
     reg  [15:0] mpdtc_align_period_q;
     reg  [15:0] mpdtc_align_on_q;
     reg  [31:0] mpdtc_align_time_q;
+    reg         mpdcc_start_q;
+    reg   [2:0] mpdcc_n_use_q;
+    reg   [8:0] mpdcc_s_prev_q;
+    reg  [15:0] mpdcc_i_a_q;
+    reg  [15:0] mpdcc_i_b_q;
+    reg  [15:0] mpdcc_psi_a_q;
+    reg  [15:0] mpdcc_psi_b_q;
+    reg  [15:0] mpdcc_v_n_q;
+    reg  [15:0] mpdcc_v_ph_a_q;
+    reg  [15:0] mpdcc_v_ph_b_q;
+    reg  [15:0] mpdcc_v_ph_c_q;
+    reg  [15:0] mpdcc_iref_a_q;
+    reg  [15:0] mpdcc_iref_b_q;
+    reg  [15:0] mpdcc_omega_r_q;
+    reg  [15:0] mpdcc_omega_s_q;
+    reg  [15:0] mpdcc_c_tau_q;
+    reg  [15:0] mpdcc_c_r_q;
+    reg  [15:0] mpdcc_c_w_q;
+    reg  [15:0] mpdcc_c_p_q;
+    reg  [15:0] mpdcc_c_s_q;
+    reg  [15:0] mpdcc_c_3_q;
+    reg  [15:0] mpdcc_c_d_q;
+    reg  [15:0] mpdcc_c_n_q;
+    reg  [15:0] mpdcc_c_ph_q;
+    reg  [15:0] mpdcc_s3h_q;
+    reg  [15:0] mpdcc_v_ph_ref_q;
+    reg  [15:0] mpdcc_c_tau1_q;
+    reg  [15:0] mpdcc_c_r1_q;
+    reg  [15:0] mpdcc_c_w1_q;
+    reg  [15:0] mpdcc_c_s1_q;
+    reg  [15:0] mpdcc_vdc_half_q;
+    reg  [15:0] mpdcc_g3_q;
+    reg  [15:0] mpdcc_gd_q;
+    reg  [15:0] mpdcc_g3_1_q;
+    reg  [15:0] mpdcc_bnd_ia_q;
+    reg  [15:0] mpdcc_bnd_ib_q;
+    reg  [15:0] mpdcc_bnd_ic_q;
+    reg  [15:0] mpdcc_bnd_vn_q;
+    reg  [15:0] mpdcc_bnd_vpa_q;
+    reg  [15:0] mpdcc_bnd_vpb_q;
+    reg  [15:0] mpdcc_bnd_vpc_q;
+    reg  [15:0] mpdcc_lambda_n_q;
     reg         gate_ctrl_q;
     reg   [9:0] dead_time_q;
     reg  [15:0] pwm_period_q;
@@ -314,6 +418,97 @@ module pl_regs (
     wire [31:0] n_mpdtc_align_on = clamp(merge({16'd0, mpdtc_align_on_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h00007fff);
     wire w_mpdtc_align_time = wr_i && wr_addr_i == 15'h10b0;
     wire [31:0] n_mpdtc_align_time = clamp(merge(mpdtc_align_time_q, wr_data_i, wr_strb_i), 32'h00000001, 32'hffffffff);
+    wire w_mpdcc_start = wr_i && wr_addr_i == 15'h2000;
+    wire [31:0] n_mpdcc_start = merge({31'd0, mpdcc_start_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_n_use = wr_i && wr_addr_i == 15'h2008;
+    wire [31:0] n_mpdcc_n_use = clamp(merge({29'd0, mpdcc_n_use_q}, wr_data_i, wr_strb_i), 32'h00000001, 32'h00000006);
+    wire w_mpdcc_s_prev = wr_i && wr_addr_i == 15'h2010;
+    wire [31:0] n_mpdcc_s_prev = merge({23'd0, mpdcc_s_prev_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_i_a = wr_i && wr_addr_i == 15'h2014;
+    wire [31:0] n_mpdcc_i_a = merge({16'd0, mpdcc_i_a_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_i_b = wr_i && wr_addr_i == 15'h2018;
+    wire [31:0] n_mpdcc_i_b = merge({16'd0, mpdcc_i_b_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_psi_a = wr_i && wr_addr_i == 15'h201c;
+    wire [31:0] n_mpdcc_psi_a = merge({16'd0, mpdcc_psi_a_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_psi_b = wr_i && wr_addr_i == 15'h2020;
+    wire [31:0] n_mpdcc_psi_b = merge({16'd0, mpdcc_psi_b_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_v_n = wr_i && wr_addr_i == 15'h2024;
+    wire [31:0] n_mpdcc_v_n = merge({16'd0, mpdcc_v_n_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_v_ph_a = wr_i && wr_addr_i == 15'h2028;
+    wire [31:0] n_mpdcc_v_ph_a = merge({16'd0, mpdcc_v_ph_a_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_v_ph_b = wr_i && wr_addr_i == 15'h202c;
+    wire [31:0] n_mpdcc_v_ph_b = merge({16'd0, mpdcc_v_ph_b_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_v_ph_c = wr_i && wr_addr_i == 15'h2030;
+    wire [31:0] n_mpdcc_v_ph_c = merge({16'd0, mpdcc_v_ph_c_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_iref_a = wr_i && wr_addr_i == 15'h2034;
+    wire [31:0] n_mpdcc_iref_a = merge({16'd0, mpdcc_iref_a_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_iref_b = wr_i && wr_addr_i == 15'h2038;
+    wire [31:0] n_mpdcc_iref_b = merge({16'd0, mpdcc_iref_b_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_omega_r = wr_i && wr_addr_i == 15'h203c;
+    wire [31:0] n_mpdcc_omega_r = merge({16'd0, mpdcc_omega_r_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_omega_s = wr_i && wr_addr_i == 15'h2040;
+    wire [31:0] n_mpdcc_omega_s = merge({16'd0, mpdcc_omega_s_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_tau = wr_i && wr_addr_i == 15'h2080;
+    wire [31:0] n_mpdcc_c_tau = merge({16'd0, mpdcc_c_tau_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_r = wr_i && wr_addr_i == 15'h2084;
+    wire [31:0] n_mpdcc_c_r = merge({16'd0, mpdcc_c_r_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_w = wr_i && wr_addr_i == 15'h2088;
+    wire [31:0] n_mpdcc_c_w = merge({16'd0, mpdcc_c_w_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_p = wr_i && wr_addr_i == 15'h208c;
+    wire [31:0] n_mpdcc_c_p = merge({16'd0, mpdcc_c_p_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_s = wr_i && wr_addr_i == 15'h2090;
+    wire [31:0] n_mpdcc_c_s = merge({16'd0, mpdcc_c_s_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_3 = wr_i && wr_addr_i == 15'h2094;
+    wire [31:0] n_mpdcc_c_3 = merge({16'd0, mpdcc_c_3_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_d = wr_i && wr_addr_i == 15'h2098;
+    wire [31:0] n_mpdcc_c_d = merge({16'd0, mpdcc_c_d_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_n = wr_i && wr_addr_i == 15'h209c;
+    wire [31:0] n_mpdcc_c_n = merge({16'd0, mpdcc_c_n_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_ph = wr_i && wr_addr_i == 15'h20a0;
+    wire [31:0] n_mpdcc_c_ph = merge({16'd0, mpdcc_c_ph_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_s3h = wr_i && wr_addr_i == 15'h20a4;
+    wire [31:0] n_mpdcc_s3h = merge({16'd0, mpdcc_s3h_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_v_ph_ref = wr_i && wr_addr_i == 15'h20a8;
+    wire [31:0] n_mpdcc_v_ph_ref = merge({16'd0, mpdcc_v_ph_ref_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_tau1 = wr_i && wr_addr_i == 15'h20ac;
+    wire [31:0] n_mpdcc_c_tau1 = merge({16'd0, mpdcc_c_tau1_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_r1 = wr_i && wr_addr_i == 15'h20b0;
+    wire [31:0] n_mpdcc_c_r1 = merge({16'd0, mpdcc_c_r1_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_w1 = wr_i && wr_addr_i == 15'h20b4;
+    wire [31:0] n_mpdcc_c_w1 = merge({16'd0, mpdcc_c_w1_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_c_s1 = wr_i && wr_addr_i == 15'h20b8;
+    wire [31:0] n_mpdcc_c_s1 = merge({16'd0, mpdcc_c_s1_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_vdc_half = wr_i && wr_addr_i == 15'h20bc;
+    wire [31:0] n_mpdcc_vdc_half = merge({16'd0, mpdcc_vdc_half_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_g3 = wr_i && wr_addr_i == 15'h20c0;
+    wire [31:0] n_mpdcc_g3 = merge({16'd0, mpdcc_g3_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_gd = wr_i && wr_addr_i == 15'h20c4;
+    wire [31:0] n_mpdcc_gd = merge({16'd0, mpdcc_gd_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_g3_1 = wr_i && wr_addr_i == 15'h20c8;
+    wire [31:0] n_mpdcc_g3_1 = merge({16'd0, mpdcc_g3_1_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_bnd_ia = wr_i && wr_addr_i == 15'h20cc;
+    wire [31:0] n_mpdcc_bnd_ia = merge({16'd0, mpdcc_bnd_ia_q}, wr_data_i, wr_strb_i);
+    wire bad_mpdcc_bnd_ia = n_mpdcc_bnd_ia > 32'h00007fff;
+    wire w_mpdcc_bnd_ib = wr_i && wr_addr_i == 15'h20d0;
+    wire [31:0] n_mpdcc_bnd_ib = merge({16'd0, mpdcc_bnd_ib_q}, wr_data_i, wr_strb_i);
+    wire bad_mpdcc_bnd_ib = n_mpdcc_bnd_ib > 32'h00007fff;
+    wire w_mpdcc_bnd_ic = wr_i && wr_addr_i == 15'h20d4;
+    wire [31:0] n_mpdcc_bnd_ic = merge({16'd0, mpdcc_bnd_ic_q}, wr_data_i, wr_strb_i);
+    wire bad_mpdcc_bnd_ic = n_mpdcc_bnd_ic > 32'h00007fff;
+    wire w_mpdcc_bnd_vn = wr_i && wr_addr_i == 15'h20d8;
+    wire [31:0] n_mpdcc_bnd_vn = merge({16'd0, mpdcc_bnd_vn_q}, wr_data_i, wr_strb_i);
+    wire bad_mpdcc_bnd_vn = n_mpdcc_bnd_vn > 32'h00007fff;
+    wire w_mpdcc_bnd_vpa = wr_i && wr_addr_i == 15'h20dc;
+    wire [31:0] n_mpdcc_bnd_vpa = merge({16'd0, mpdcc_bnd_vpa_q}, wr_data_i, wr_strb_i);
+    wire bad_mpdcc_bnd_vpa = n_mpdcc_bnd_vpa > 32'h00007fff;
+    wire w_mpdcc_bnd_vpb = wr_i && wr_addr_i == 15'h20e0;
+    wire [31:0] n_mpdcc_bnd_vpb = merge({16'd0, mpdcc_bnd_vpb_q}, wr_data_i, wr_strb_i);
+    wire bad_mpdcc_bnd_vpb = n_mpdcc_bnd_vpb > 32'h00007fff;
+    wire w_mpdcc_bnd_vpc = wr_i && wr_addr_i == 15'h20e4;
+    wire [31:0] n_mpdcc_bnd_vpc = merge({16'd0, mpdcc_bnd_vpc_q}, wr_data_i, wr_strb_i);
+    wire bad_mpdcc_bnd_vpc = n_mpdcc_bnd_vpc > 32'h00007fff;
+    wire w_mpdcc_lambda_n = wr_i && wr_addr_i == 15'h20e8;
+    wire [31:0] n_mpdcc_lambda_n = merge({16'd0, mpdcc_lambda_n_q}, wr_data_i, wr_strb_i);
     wire w_gate_ctrl = wr_i && wr_addr_i == 15'h3000;
     wire [31:0] n_gate_ctrl = merge({31'd0, gate_ctrl_q}, wr_data_i, wr_strb_i);
     wire w_dead_time = wr_i && wr_addr_i == 15'h3004;
@@ -381,15 +576,23 @@ module pl_regs (
         | w_mpdtc_p_u0_h | w_mpdtc_p_psi_l | w_mpdtc_p_kinv_t | w_mpdtc_p_tol | w_mpdtc_p_k_int
         | w_mpdtc_p_int_lim | w_mpdtc_p_int_cond | w_mpdtc_p_kp_o | w_mpdtc_p_ki_o | w_mpdtc_p_eta_lim
         | w_mpdtc_p_w2_0 | w_mpdtc_p_w2_1 | w_mpdtc_p_w2_2 | w_mpdtc_p_w2_3 | w_mpdtc_align_vec
-        | w_mpdtc_align_period | w_mpdtc_align_on | w_mpdtc_align_time | w_gate_ctrl | w_dead_time
-        | w_pwm_period | w_duty_a | w_duty_b | w_duty_c | w_sw_state
-        | w_adc_ctrl | w_adc_period | w_enc_cpr | w_enc_window | w_fault_status
-        | w_oc_limit | w_wdg_timeout | w_cap_source | w_cap_pre | w_cap_decim
-        | w_cap_step | w_cap_thr_ch | w_cap_thr_level | w_cap_thr_edge | w_cap_sel
-        | w_cap_arm | w_cap_trig | w_cap_in_id | w_cap_in_iq | w_cap_in_torque
-        | w_cap_in_tref | w_cap_rd_index;
+        | w_mpdtc_align_period | w_mpdtc_align_on | w_mpdtc_align_time | w_mpdcc_start | w_mpdcc_n_use
+        | w_mpdcc_s_prev | w_mpdcc_i_a | w_mpdcc_i_b | w_mpdcc_psi_a | w_mpdcc_psi_b
+        | w_mpdcc_v_n | w_mpdcc_v_ph_a | w_mpdcc_v_ph_b | w_mpdcc_v_ph_c | w_mpdcc_iref_a
+        | w_mpdcc_iref_b | w_mpdcc_omega_r | w_mpdcc_omega_s | w_mpdcc_c_tau | w_mpdcc_c_r
+        | w_mpdcc_c_w | w_mpdcc_c_p | w_mpdcc_c_s | w_mpdcc_c_3 | w_mpdcc_c_d
+        | w_mpdcc_c_n | w_mpdcc_c_ph | w_mpdcc_s3h | w_mpdcc_v_ph_ref | w_mpdcc_c_tau1
+        | w_mpdcc_c_r1 | w_mpdcc_c_w1 | w_mpdcc_c_s1 | w_mpdcc_vdc_half | w_mpdcc_g3
+        | w_mpdcc_gd | w_mpdcc_g3_1 | w_mpdcc_bnd_ia | w_mpdcc_bnd_ib | w_mpdcc_bnd_ic
+        | w_mpdcc_bnd_vn | w_mpdcc_bnd_vpa | w_mpdcc_bnd_vpb | w_mpdcc_bnd_vpc | w_mpdcc_lambda_n
+        | w_gate_ctrl | w_dead_time | w_pwm_period | w_duty_a | w_duty_b
+        | w_duty_c | w_sw_state | w_adc_ctrl | w_adc_period | w_enc_cpr
+        | w_enc_window | w_fault_status | w_oc_limit | w_wdg_timeout | w_cap_source
+        | w_cap_pre | w_cap_decim | w_cap_step | w_cap_thr_ch | w_cap_thr_level
+        | w_cap_thr_edge | w_cap_sel | w_cap_arm | w_cap_trig | w_cap_in_id
+        | w_cap_in_iq | w_cap_in_torque | w_cap_in_tref | w_cap_rd_index;
     // Access errors of this cycle (set ERR).
-    wire bad_value = (w_ctrl && bad_ctrl) || (w_cap_thr_ch && bad_cap_thr_ch) || (w_cap_sel && bad_cap_sel);
+    wire bad_value = (w_ctrl && bad_ctrl) || (w_mpdcc_bnd_ia && bad_mpdcc_bnd_ia) || (w_mpdcc_bnd_ib && bad_mpdcc_bnd_ib) || (w_mpdcc_bnd_ic && bad_mpdcc_bnd_ic) || (w_mpdcc_bnd_vn && bad_mpdcc_bnd_vn) || (w_mpdcc_bnd_vpa && bad_mpdcc_bnd_vpa) || (w_mpdcc_bnd_vpb && bad_mpdcc_bnd_vpb) || (w_mpdcc_bnd_vpc && bad_mpdcc_bnd_vpc) || (w_cap_thr_ch && bad_cap_thr_ch) || (w_cap_sel && bad_cap_sel);
     wire bad_addr = (wr_i && !w_any_ok) || (rd_i && rd_err_o);
 
     assign wr_err_o = wr_i && !w_any_ok;
@@ -434,6 +637,48 @@ module pl_regs (
             mpdtc_align_period_q <= 16'h1388;
             mpdtc_align_on_q <= 16'hfa;
             mpdtc_align_time_q <= 32'h2faf080;
+            mpdcc_start_q <= 1'h0;
+            mpdcc_n_use_q <= 3'h2;
+            mpdcc_s_prev_q <= 9'h0;
+            mpdcc_i_a_q <= 16'h0;
+            mpdcc_i_b_q <= 16'h0;
+            mpdcc_psi_a_q <= 16'h0;
+            mpdcc_psi_b_q <= 16'h0;
+            mpdcc_v_n_q <= 16'h0;
+            mpdcc_v_ph_a_q <= 16'h0;
+            mpdcc_v_ph_b_q <= 16'h0;
+            mpdcc_v_ph_c_q <= 16'h0;
+            mpdcc_iref_a_q <= 16'h0;
+            mpdcc_iref_b_q <= 16'h0;
+            mpdcc_omega_r_q <= 16'h0;
+            mpdcc_omega_s_q <= 16'h0;
+            mpdcc_c_tau_q <= 16'h0;
+            mpdcc_c_r_q <= 16'h0;
+            mpdcc_c_w_q <= 16'h0;
+            mpdcc_c_p_q <= 16'h0;
+            mpdcc_c_s_q <= 16'h0;
+            mpdcc_c_3_q <= 16'h0;
+            mpdcc_c_d_q <= 16'h0;
+            mpdcc_c_n_q <= 16'h0;
+            mpdcc_c_ph_q <= 16'h0;
+            mpdcc_s3h_q <= 16'h0;
+            mpdcc_v_ph_ref_q <= 16'h0;
+            mpdcc_c_tau1_q <= 16'h0;
+            mpdcc_c_r1_q <= 16'h0;
+            mpdcc_c_w1_q <= 16'h0;
+            mpdcc_c_s1_q <= 16'h0;
+            mpdcc_vdc_half_q <= 16'h0;
+            mpdcc_g3_q <= 16'h0;
+            mpdcc_gd_q <= 16'h0;
+            mpdcc_g3_1_q <= 16'h0;
+            mpdcc_bnd_ia_q <= 16'h0;
+            mpdcc_bnd_ib_q <= 16'h0;
+            mpdcc_bnd_ic_q <= 16'h0;
+            mpdcc_bnd_vn_q <= 16'h0;
+            mpdcc_bnd_vpa_q <= 16'h0;
+            mpdcc_bnd_vpb_q <= 16'h0;
+            mpdcc_bnd_vpc_q <= 16'h0;
+            mpdcc_lambda_n_q <= 16'h0;
             gate_ctrl_q <= 1'h0;
             dead_time_q <= 10'h32;
             pwm_period_q <= 16'h9c4;
@@ -502,6 +747,48 @@ module pl_regs (
             if (w_mpdtc_align_period) mpdtc_align_period_q <= n_mpdtc_align_period[15:0];
             if (w_mpdtc_align_on) mpdtc_align_on_q <= n_mpdtc_align_on[15:0];
             if (w_mpdtc_align_time) mpdtc_align_time_q <= n_mpdtc_align_time[31:0];
+            if (w_mpdcc_start) mpdcc_start_q <= n_mpdcc_start[0:0];
+            if (w_mpdcc_n_use) mpdcc_n_use_q <= n_mpdcc_n_use[2:0];
+            if (w_mpdcc_s_prev) mpdcc_s_prev_q <= n_mpdcc_s_prev[8:0];
+            if (w_mpdcc_i_a) mpdcc_i_a_q <= n_mpdcc_i_a[15:0];
+            if (w_mpdcc_i_b) mpdcc_i_b_q <= n_mpdcc_i_b[15:0];
+            if (w_mpdcc_psi_a) mpdcc_psi_a_q <= n_mpdcc_psi_a[15:0];
+            if (w_mpdcc_psi_b) mpdcc_psi_b_q <= n_mpdcc_psi_b[15:0];
+            if (w_mpdcc_v_n) mpdcc_v_n_q <= n_mpdcc_v_n[15:0];
+            if (w_mpdcc_v_ph_a) mpdcc_v_ph_a_q <= n_mpdcc_v_ph_a[15:0];
+            if (w_mpdcc_v_ph_b) mpdcc_v_ph_b_q <= n_mpdcc_v_ph_b[15:0];
+            if (w_mpdcc_v_ph_c) mpdcc_v_ph_c_q <= n_mpdcc_v_ph_c[15:0];
+            if (w_mpdcc_iref_a) mpdcc_iref_a_q <= n_mpdcc_iref_a[15:0];
+            if (w_mpdcc_iref_b) mpdcc_iref_b_q <= n_mpdcc_iref_b[15:0];
+            if (w_mpdcc_omega_r) mpdcc_omega_r_q <= n_mpdcc_omega_r[15:0];
+            if (w_mpdcc_omega_s) mpdcc_omega_s_q <= n_mpdcc_omega_s[15:0];
+            if (w_mpdcc_c_tau) mpdcc_c_tau_q <= n_mpdcc_c_tau[15:0];
+            if (w_mpdcc_c_r) mpdcc_c_r_q <= n_mpdcc_c_r[15:0];
+            if (w_mpdcc_c_w) mpdcc_c_w_q <= n_mpdcc_c_w[15:0];
+            if (w_mpdcc_c_p) mpdcc_c_p_q <= n_mpdcc_c_p[15:0];
+            if (w_mpdcc_c_s) mpdcc_c_s_q <= n_mpdcc_c_s[15:0];
+            if (w_mpdcc_c_3) mpdcc_c_3_q <= n_mpdcc_c_3[15:0];
+            if (w_mpdcc_c_d) mpdcc_c_d_q <= n_mpdcc_c_d[15:0];
+            if (w_mpdcc_c_n) mpdcc_c_n_q <= n_mpdcc_c_n[15:0];
+            if (w_mpdcc_c_ph) mpdcc_c_ph_q <= n_mpdcc_c_ph[15:0];
+            if (w_mpdcc_s3h) mpdcc_s3h_q <= n_mpdcc_s3h[15:0];
+            if (w_mpdcc_v_ph_ref) mpdcc_v_ph_ref_q <= n_mpdcc_v_ph_ref[15:0];
+            if (w_mpdcc_c_tau1) mpdcc_c_tau1_q <= n_mpdcc_c_tau1[15:0];
+            if (w_mpdcc_c_r1) mpdcc_c_r1_q <= n_mpdcc_c_r1[15:0];
+            if (w_mpdcc_c_w1) mpdcc_c_w1_q <= n_mpdcc_c_w1[15:0];
+            if (w_mpdcc_c_s1) mpdcc_c_s1_q <= n_mpdcc_c_s1[15:0];
+            if (w_mpdcc_vdc_half) mpdcc_vdc_half_q <= n_mpdcc_vdc_half[15:0];
+            if (w_mpdcc_g3) mpdcc_g3_q <= n_mpdcc_g3[15:0];
+            if (w_mpdcc_gd) mpdcc_gd_q <= n_mpdcc_gd[15:0];
+            if (w_mpdcc_g3_1) mpdcc_g3_1_q <= n_mpdcc_g3_1[15:0];
+            if (w_mpdcc_bnd_ia && !bad_mpdcc_bnd_ia) mpdcc_bnd_ia_q <= n_mpdcc_bnd_ia[15:0];
+            if (w_mpdcc_bnd_ib && !bad_mpdcc_bnd_ib) mpdcc_bnd_ib_q <= n_mpdcc_bnd_ib[15:0];
+            if (w_mpdcc_bnd_ic && !bad_mpdcc_bnd_ic) mpdcc_bnd_ic_q <= n_mpdcc_bnd_ic[15:0];
+            if (w_mpdcc_bnd_vn && !bad_mpdcc_bnd_vn) mpdcc_bnd_vn_q <= n_mpdcc_bnd_vn[15:0];
+            if (w_mpdcc_bnd_vpa && !bad_mpdcc_bnd_vpa) mpdcc_bnd_vpa_q <= n_mpdcc_bnd_vpa[15:0];
+            if (w_mpdcc_bnd_vpb && !bad_mpdcc_bnd_vpb) mpdcc_bnd_vpb_q <= n_mpdcc_bnd_vpb[15:0];
+            if (w_mpdcc_bnd_vpc && !bad_mpdcc_bnd_vpc) mpdcc_bnd_vpc_q <= n_mpdcc_bnd_vpc[15:0];
+            if (w_mpdcc_lambda_n) mpdcc_lambda_n_q <= n_mpdcc_lambda_n[15:0];
             if (gate_ctrl_hw_clr_i) gate_ctrl_q <= 1'd0;
             else if (w_gate_ctrl) gate_ctrl_q <= n_gate_ctrl[0:0];
             if (w_dead_time) dead_time_q <= n_dead_time[9:0];
@@ -585,6 +872,55 @@ module pl_regs (
             15'h10ac: rd_data_o = {16'd0, mpdtc_align_on_q};  // MPDTC_ALIGN_ON
             15'h10b0: rd_data_o = mpdtc_align_time_q;  // MPDTC_ALIGN_TIME
             15'h10b4: rd_data_o = {16'd0, mpdtc_align_pos_i};  // MPDTC_ALIGN_POS
+            15'h2000: rd_data_o = {31'd0, mpdcc_start_q};  // MPDCC_START
+            15'h2004: rd_data_o = {mpdcc_status_count_i, 14'd0, mpdcc_status_done_i, mpdcc_status_busy_i};  // MPDCC_STATUS
+            15'h2008: rd_data_o = {29'd0, mpdcc_n_use_q};  // MPDCC_N_USE
+            15'h200c: rd_data_o = {16'd0, mpdcc_config_nodes_i, mpdcc_config_m_bits_i, mpdcc_config_lambda_i, mpdcc_config_explorers_i};  // MPDCC_CONFIG
+            15'h2010: rd_data_o = {23'd0, mpdcc_s_prev_q};  // MPDCC_S_PREV
+            15'h2014: rd_data_o = {16'd0, mpdcc_i_a_q};  // MPDCC_I_A
+            15'h2018: rd_data_o = {16'd0, mpdcc_i_b_q};  // MPDCC_I_B
+            15'h201c: rd_data_o = {16'd0, mpdcc_psi_a_q};  // MPDCC_PSI_A
+            15'h2020: rd_data_o = {16'd0, mpdcc_psi_b_q};  // MPDCC_PSI_B
+            15'h2024: rd_data_o = {16'd0, mpdcc_v_n_q};  // MPDCC_V_N
+            15'h2028: rd_data_o = {16'd0, mpdcc_v_ph_a_q};  // MPDCC_V_PH_A
+            15'h202c: rd_data_o = {16'd0, mpdcc_v_ph_b_q};  // MPDCC_V_PH_B
+            15'h2030: rd_data_o = {16'd0, mpdcc_v_ph_c_q};  // MPDCC_V_PH_C
+            15'h2034: rd_data_o = {16'd0, mpdcc_iref_a_q};  // MPDCC_IREF_A
+            15'h2038: rd_data_o = {16'd0, mpdcc_iref_b_q};  // MPDCC_IREF_B
+            15'h203c: rd_data_o = {16'd0, mpdcc_omega_r_q};  // MPDCC_OMEGA_R
+            15'h2040: rd_data_o = {16'd0, mpdcc_omega_s_q};  // MPDCC_OMEGA_S
+            15'h2080: rd_data_o = {16'd0, mpdcc_c_tau_q};  // MPDCC_C_TAU
+            15'h2084: rd_data_o = {16'd0, mpdcc_c_r_q};  // MPDCC_C_R
+            15'h2088: rd_data_o = {16'd0, mpdcc_c_w_q};  // MPDCC_C_W
+            15'h208c: rd_data_o = {16'd0, mpdcc_c_p_q};  // MPDCC_C_P
+            15'h2090: rd_data_o = {16'd0, mpdcc_c_s_q};  // MPDCC_C_S
+            15'h2094: rd_data_o = {16'd0, mpdcc_c_3_q};  // MPDCC_C_3
+            15'h2098: rd_data_o = {16'd0, mpdcc_c_d_q};  // MPDCC_C_D
+            15'h209c: rd_data_o = {16'd0, mpdcc_c_n_q};  // MPDCC_C_N
+            15'h20a0: rd_data_o = {16'd0, mpdcc_c_ph_q};  // MPDCC_C_PH
+            15'h20a4: rd_data_o = {16'd0, mpdcc_s3h_q};  // MPDCC_S3H
+            15'h20a8: rd_data_o = {16'd0, mpdcc_v_ph_ref_q};  // MPDCC_V_PH_REF
+            15'h20ac: rd_data_o = {16'd0, mpdcc_c_tau1_q};  // MPDCC_C_TAU1
+            15'h20b0: rd_data_o = {16'd0, mpdcc_c_r1_q};  // MPDCC_C_R1
+            15'h20b4: rd_data_o = {16'd0, mpdcc_c_w1_q};  // MPDCC_C_W1
+            15'h20b8: rd_data_o = {16'd0, mpdcc_c_s1_q};  // MPDCC_C_S1
+            15'h20bc: rd_data_o = {16'd0, mpdcc_vdc_half_q};  // MPDCC_VDC_HALF
+            15'h20c0: rd_data_o = {16'd0, mpdcc_g3_q};  // MPDCC_G3
+            15'h20c4: rd_data_o = {16'd0, mpdcc_gd_q};  // MPDCC_GD
+            15'h20c8: rd_data_o = {16'd0, mpdcc_g3_1_q};  // MPDCC_G3_1
+            15'h20cc: rd_data_o = {16'd0, mpdcc_bnd_ia_q};  // MPDCC_BND_IA
+            15'h20d0: rd_data_o = {16'd0, mpdcc_bnd_ib_q};  // MPDCC_BND_IB
+            15'h20d4: rd_data_o = {16'd0, mpdcc_bnd_ic_q};  // MPDCC_BND_IC
+            15'h20d8: rd_data_o = {16'd0, mpdcc_bnd_vn_q};  // MPDCC_BND_VN
+            15'h20dc: rd_data_o = {16'd0, mpdcc_bnd_vpa_q};  // MPDCC_BND_VPA
+            15'h20e0: rd_data_o = {16'd0, mpdcc_bnd_vpb_q};  // MPDCC_BND_VPB
+            15'h20e4: rd_data_o = {16'd0, mpdcc_bnd_vpc_q};  // MPDCC_BND_VPC
+            15'h20e8: rd_data_o = {16'd0, mpdcc_lambda_n_q};  // MPDCC_LAMBDA_N
+            15'h2100: rd_data_o = {8'd0, mpdcc_decision_l_star_i, 2'd0, mpdcc_decision_kind_i, 3'd0, mpdcc_decision_s_c_i, mpdcc_decision_s_b_i, mpdcc_decision_s_a_i};  // MPDCC_DECISION
+            15'h2104: rd_data_o = mpdcc_cost_i;  // MPDCC_COST
+            15'h2108: rd_data_o = mpdcc_j_dl_i;  // MPDCC_J_DL
+            15'h210c: rd_data_o = {8'd0, mpdcc_cycles_candidates_i, mpdcc_cycles_cycles_i};  // MPDCC_CYCLES
+            15'h2110: rd_data_o = {16'd0, mpdcc_deadlocks_i};  // MPDCC_DEADLOCKS
             15'h3000: rd_data_o = {31'd0, gate_ctrl_q};  // GATE_CTRL
             15'h3004: rd_data_o = {22'd0, dead_time_q};  // DEAD_TIME
             15'h3008: rd_data_o = {16'd0, pwm_period_q};  // PWM_PERIOD
@@ -672,6 +1008,50 @@ module pl_regs (
     assign mpdtc_align_period_o = mpdtc_align_period_q;
     assign mpdtc_align_on_o = mpdtc_align_on_q;
     assign mpdtc_align_time_o = mpdtc_align_time_q;
+    assign mpdcc_start_we_o = w_mpdcc_start;
+    assign mpdcc_n_use_o = mpdcc_n_use_q;
+    assign mpdcc_s_prev_a_o = mpdcc_s_prev_q[2:0];
+    assign mpdcc_s_prev_b_o = mpdcc_s_prev_q[5:3];
+    assign mpdcc_s_prev_c_o = mpdcc_s_prev_q[8:6];
+    assign mpdcc_i_a_o = mpdcc_i_a_q;
+    assign mpdcc_i_b_o = mpdcc_i_b_q;
+    assign mpdcc_psi_a_o = mpdcc_psi_a_q;
+    assign mpdcc_psi_b_o = mpdcc_psi_b_q;
+    assign mpdcc_v_n_o = mpdcc_v_n_q;
+    assign mpdcc_v_ph_a_o = mpdcc_v_ph_a_q;
+    assign mpdcc_v_ph_b_o = mpdcc_v_ph_b_q;
+    assign mpdcc_v_ph_c_o = mpdcc_v_ph_c_q;
+    assign mpdcc_iref_a_o = mpdcc_iref_a_q;
+    assign mpdcc_iref_b_o = mpdcc_iref_b_q;
+    assign mpdcc_omega_r_o = mpdcc_omega_r_q;
+    assign mpdcc_omega_s_o = mpdcc_omega_s_q;
+    assign mpdcc_c_tau_o = mpdcc_c_tau_q;
+    assign mpdcc_c_r_o = mpdcc_c_r_q;
+    assign mpdcc_c_w_o = mpdcc_c_w_q;
+    assign mpdcc_c_p_o = mpdcc_c_p_q;
+    assign mpdcc_c_s_o = mpdcc_c_s_q;
+    assign mpdcc_c_3_o = mpdcc_c_3_q;
+    assign mpdcc_c_d_o = mpdcc_c_d_q;
+    assign mpdcc_c_n_o = mpdcc_c_n_q;
+    assign mpdcc_c_ph_o = mpdcc_c_ph_q;
+    assign mpdcc_s3h_o = mpdcc_s3h_q;
+    assign mpdcc_v_ph_ref_o = mpdcc_v_ph_ref_q;
+    assign mpdcc_c_tau1_o = mpdcc_c_tau1_q;
+    assign mpdcc_c_r1_o = mpdcc_c_r1_q;
+    assign mpdcc_c_w1_o = mpdcc_c_w1_q;
+    assign mpdcc_c_s1_o = mpdcc_c_s1_q;
+    assign mpdcc_vdc_half_o = mpdcc_vdc_half_q;
+    assign mpdcc_g3_o = mpdcc_g3_q;
+    assign mpdcc_gd_o = mpdcc_gd_q;
+    assign mpdcc_g3_1_o = mpdcc_g3_1_q;
+    assign mpdcc_bnd_ia_o = mpdcc_bnd_ia_q;
+    assign mpdcc_bnd_ib_o = mpdcc_bnd_ib_q;
+    assign mpdcc_bnd_ic_o = mpdcc_bnd_ic_q;
+    assign mpdcc_bnd_vn_o = mpdcc_bnd_vn_q;
+    assign mpdcc_bnd_vpa_o = mpdcc_bnd_vpa_q;
+    assign mpdcc_bnd_vpb_o = mpdcc_bnd_vpb_q;
+    assign mpdcc_bnd_vpc_o = mpdcc_bnd_vpc_q;
+    assign mpdcc_lambda_n_o = mpdcc_lambda_n_q;
     assign gate_ctrl_gate_en_o = gate_ctrl_q;
     assign dead_time_o = dead_time_q;
     assign pwm_period_o = pwm_period_q;
@@ -800,6 +1180,106 @@ module pl_regs (
             if ($past(!w_mpdtc_align_time)) assert (mpdtc_align_time_q == $past(mpdtc_align_time_q));
             // MPDTC_ALIGN_TIME: always inside its clamp range.
             assert (mpdtc_align_time_q >= 32'h00000001);
+            // MPDCC_START: changed only by a write.
+            if ($past(!w_mpdcc_start)) assert (mpdcc_start_q == $past(mpdcc_start_q));
+            // MPDCC_N_USE: changed only by a write.
+            if ($past(!w_mpdcc_n_use)) assert (mpdcc_n_use_q == $past(mpdcc_n_use_q));
+            // MPDCC_N_USE: always inside its clamp range.
+            assert ({29'd0, mpdcc_n_use_q} >= 32'h00000001 && {29'd0, mpdcc_n_use_q} <= 32'h00000006);
+            // MPDCC_S_PREV: changed only by a write.
+            if ($past(!w_mpdcc_s_prev)) assert (mpdcc_s_prev_q == $past(mpdcc_s_prev_q));
+            // MPDCC_I_A: changed only by a write.
+            if ($past(!w_mpdcc_i_a)) assert (mpdcc_i_a_q == $past(mpdcc_i_a_q));
+            // MPDCC_I_B: changed only by a write.
+            if ($past(!w_mpdcc_i_b)) assert (mpdcc_i_b_q == $past(mpdcc_i_b_q));
+            // MPDCC_PSI_A: changed only by a write.
+            if ($past(!w_mpdcc_psi_a)) assert (mpdcc_psi_a_q == $past(mpdcc_psi_a_q));
+            // MPDCC_PSI_B: changed only by a write.
+            if ($past(!w_mpdcc_psi_b)) assert (mpdcc_psi_b_q == $past(mpdcc_psi_b_q));
+            // MPDCC_V_N: changed only by a write.
+            if ($past(!w_mpdcc_v_n)) assert (mpdcc_v_n_q == $past(mpdcc_v_n_q));
+            // MPDCC_V_PH_A: changed only by a write.
+            if ($past(!w_mpdcc_v_ph_a)) assert (mpdcc_v_ph_a_q == $past(mpdcc_v_ph_a_q));
+            // MPDCC_V_PH_B: changed only by a write.
+            if ($past(!w_mpdcc_v_ph_b)) assert (mpdcc_v_ph_b_q == $past(mpdcc_v_ph_b_q));
+            // MPDCC_V_PH_C: changed only by a write.
+            if ($past(!w_mpdcc_v_ph_c)) assert (mpdcc_v_ph_c_q == $past(mpdcc_v_ph_c_q));
+            // MPDCC_IREF_A: changed only by a write.
+            if ($past(!w_mpdcc_iref_a)) assert (mpdcc_iref_a_q == $past(mpdcc_iref_a_q));
+            // MPDCC_IREF_B: changed only by a write.
+            if ($past(!w_mpdcc_iref_b)) assert (mpdcc_iref_b_q == $past(mpdcc_iref_b_q));
+            // MPDCC_OMEGA_R: changed only by a write.
+            if ($past(!w_mpdcc_omega_r)) assert (mpdcc_omega_r_q == $past(mpdcc_omega_r_q));
+            // MPDCC_OMEGA_S: changed only by a write.
+            if ($past(!w_mpdcc_omega_s)) assert (mpdcc_omega_s_q == $past(mpdcc_omega_s_q));
+            // MPDCC_C_TAU: changed only by a write.
+            if ($past(!w_mpdcc_c_tau)) assert (mpdcc_c_tau_q == $past(mpdcc_c_tau_q));
+            // MPDCC_C_R: changed only by a write.
+            if ($past(!w_mpdcc_c_r)) assert (mpdcc_c_r_q == $past(mpdcc_c_r_q));
+            // MPDCC_C_W: changed only by a write.
+            if ($past(!w_mpdcc_c_w)) assert (mpdcc_c_w_q == $past(mpdcc_c_w_q));
+            // MPDCC_C_P: changed only by a write.
+            if ($past(!w_mpdcc_c_p)) assert (mpdcc_c_p_q == $past(mpdcc_c_p_q));
+            // MPDCC_C_S: changed only by a write.
+            if ($past(!w_mpdcc_c_s)) assert (mpdcc_c_s_q == $past(mpdcc_c_s_q));
+            // MPDCC_C_3: changed only by a write.
+            if ($past(!w_mpdcc_c_3)) assert (mpdcc_c_3_q == $past(mpdcc_c_3_q));
+            // MPDCC_C_D: changed only by a write.
+            if ($past(!w_mpdcc_c_d)) assert (mpdcc_c_d_q == $past(mpdcc_c_d_q));
+            // MPDCC_C_N: changed only by a write.
+            if ($past(!w_mpdcc_c_n)) assert (mpdcc_c_n_q == $past(mpdcc_c_n_q));
+            // MPDCC_C_PH: changed only by a write.
+            if ($past(!w_mpdcc_c_ph)) assert (mpdcc_c_ph_q == $past(mpdcc_c_ph_q));
+            // MPDCC_S3H: changed only by a write.
+            if ($past(!w_mpdcc_s3h)) assert (mpdcc_s3h_q == $past(mpdcc_s3h_q));
+            // MPDCC_V_PH_REF: changed only by a write.
+            if ($past(!w_mpdcc_v_ph_ref)) assert (mpdcc_v_ph_ref_q == $past(mpdcc_v_ph_ref_q));
+            // MPDCC_C_TAU1: changed only by a write.
+            if ($past(!w_mpdcc_c_tau1)) assert (mpdcc_c_tau1_q == $past(mpdcc_c_tau1_q));
+            // MPDCC_C_R1: changed only by a write.
+            if ($past(!w_mpdcc_c_r1)) assert (mpdcc_c_r1_q == $past(mpdcc_c_r1_q));
+            // MPDCC_C_W1: changed only by a write.
+            if ($past(!w_mpdcc_c_w1)) assert (mpdcc_c_w1_q == $past(mpdcc_c_w1_q));
+            // MPDCC_C_S1: changed only by a write.
+            if ($past(!w_mpdcc_c_s1)) assert (mpdcc_c_s1_q == $past(mpdcc_c_s1_q));
+            // MPDCC_VDC_HALF: changed only by a write.
+            if ($past(!w_mpdcc_vdc_half)) assert (mpdcc_vdc_half_q == $past(mpdcc_vdc_half_q));
+            // MPDCC_G3: changed only by a write.
+            if ($past(!w_mpdcc_g3)) assert (mpdcc_g3_q == $past(mpdcc_g3_q));
+            // MPDCC_GD: changed only by a write.
+            if ($past(!w_mpdcc_gd)) assert (mpdcc_gd_q == $past(mpdcc_gd_q));
+            // MPDCC_G3_1: changed only by a write.
+            if ($past(!w_mpdcc_g3_1)) assert (mpdcc_g3_1_q == $past(mpdcc_g3_1_q));
+            // MPDCC_BND_IA: changed only by a write.
+            if ($past(!w_mpdcc_bnd_ia)) assert (mpdcc_bnd_ia_q == $past(mpdcc_bnd_ia_q));
+            // MPDCC_BND_IA: a rejected value is never stored.
+            assert ({16'd0, mpdcc_bnd_ia_q} <= 32'h00007fff);
+            // MPDCC_BND_IB: changed only by a write.
+            if ($past(!w_mpdcc_bnd_ib)) assert (mpdcc_bnd_ib_q == $past(mpdcc_bnd_ib_q));
+            // MPDCC_BND_IB: a rejected value is never stored.
+            assert ({16'd0, mpdcc_bnd_ib_q} <= 32'h00007fff);
+            // MPDCC_BND_IC: changed only by a write.
+            if ($past(!w_mpdcc_bnd_ic)) assert (mpdcc_bnd_ic_q == $past(mpdcc_bnd_ic_q));
+            // MPDCC_BND_IC: a rejected value is never stored.
+            assert ({16'd0, mpdcc_bnd_ic_q} <= 32'h00007fff);
+            // MPDCC_BND_VN: changed only by a write.
+            if ($past(!w_mpdcc_bnd_vn)) assert (mpdcc_bnd_vn_q == $past(mpdcc_bnd_vn_q));
+            // MPDCC_BND_VN: a rejected value is never stored.
+            assert ({16'd0, mpdcc_bnd_vn_q} <= 32'h00007fff);
+            // MPDCC_BND_VPA: changed only by a write.
+            if ($past(!w_mpdcc_bnd_vpa)) assert (mpdcc_bnd_vpa_q == $past(mpdcc_bnd_vpa_q));
+            // MPDCC_BND_VPA: a rejected value is never stored.
+            assert ({16'd0, mpdcc_bnd_vpa_q} <= 32'h00007fff);
+            // MPDCC_BND_VPB: changed only by a write.
+            if ($past(!w_mpdcc_bnd_vpb)) assert (mpdcc_bnd_vpb_q == $past(mpdcc_bnd_vpb_q));
+            // MPDCC_BND_VPB: a rejected value is never stored.
+            assert ({16'd0, mpdcc_bnd_vpb_q} <= 32'h00007fff);
+            // MPDCC_BND_VPC: changed only by a write.
+            if ($past(!w_mpdcc_bnd_vpc)) assert (mpdcc_bnd_vpc_q == $past(mpdcc_bnd_vpc_q));
+            // MPDCC_BND_VPC: a rejected value is never stored.
+            assert ({16'd0, mpdcc_bnd_vpc_q} <= 32'h00007fff);
+            // MPDCC_LAMBDA_N: changed only by a write.
+            if ($past(!w_mpdcc_lambda_n)) assert (mpdcc_lambda_n_q == $past(mpdcc_lambda_n_q));
             // GATE_CTRL: held at 0 by the hardware, else changed only by a write.
             if ($past(gate_ctrl_hw_clr_i)) assert (gate_ctrl_q == 1'd0);
             if ($past(!gate_ctrl_hw_clr_i && !w_gate_ctrl)) assert (gate_ctrl_q == $past(gate_ctrl_q));

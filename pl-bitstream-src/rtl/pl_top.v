@@ -15,6 +15,11 @@
 //                    page; started by the sequence, or by MPDTC_START while
 //                    the sequence is IDLE); PWM.SW_STATE drives the gates
 //                    instead when MPDTC_CTRL.MANUAL = 1 (reset)
+//   mpdcc_core    -> one MPDCC decision per MPDCC_START write, on a snapshot
+//                    of the MPDCC page's inputs and constants (MPDCC_N
+//                    explorers); result, cycle count, decision and deadlock
+//                    counters back to the page (observes only: nothing of it
+//                    reaches the gates)
 //   capture_buf   <- PS-written i_d, i_q, torque, torque reference, the
 //                    selected switching state and a selectable channel, one
 //                    sample per CAP_DECIM + 1 averaged ADC results (CAPTURE
@@ -31,7 +36,9 @@
 // of its synchroniser.
 `default_nettype none
 
-module pl_top (
+module pl_top #(
+    parameter integer MPDCC_N = 2  // explorer units of mpdcc_core (1..6)
+) (
     input  wire        clk_i,
     input  wire        s_axi_aresetn_i,
     input  wire [14:0] s_axi_awaddr_i,
@@ -187,6 +194,23 @@ module pl_top (
     wire [82:0] cap_rd;
     reg  [15:0] cap_sel_ch;
 
+    // MPDCC page: the inputs and constants as one word vector (16-bit words
+    // 0..38 in page order, then s(k-1) and n_use), its snapshot, the results.
+    localparam integer MC_WORDS = 39;
+    localparam integer MC_W = 16 * MC_WORDS + 9 + 3;
+    localparam [31:0] MC_CONFIG = RM_MPDCC_CONFIG_RESET;
+    wire [MC_W-1:0] mc_in;
+    reg  [MC_W-1:0] mc_snap_q;
+    wire        mc_start_we;
+    wire        mc_core_busy, mc_done;
+    reg         mc_go_q, mc_busy_q, mc_done_q;
+    reg  [15:0] mc_count_q, mc_deadlocks_q;
+    wire [ 8:0] mc_s;
+    wire [ 1:0] mc_kind;
+    wire [ 7:0] mc_l_star, mc_candidates;
+    wire [31:0] mc_cost, mc_j_dl;
+    wire [15:0] mc_cycles;
+
     // Switching-state source by mode (CTRL.MODE).
     wire sel_pwm = {30'd0, ctrl_mode} == RM_MODE_FOC_PWM;
     wire sel_state = {30'd0, ctrl_mode} == RM_MODE_MPDTC;
@@ -264,6 +288,70 @@ module pl_top (
         .mpdtc_align_on_o           (align_on),
         .mpdtc_align_time_o         (align_time),
         .mpdtc_align_pos_i          (seq_align_pos),
+        // MPDCC
+        .mpdcc_start_we_o           (mc_start_we),
+        .mpdcc_status_busy_i        (mc_busy_q),
+        .mpdcc_status_done_i        (mc_done_q),
+        .mpdcc_status_count_i       (mc_count_q),
+        .mpdcc_n_use_o              (mc_in[MC_W-1 -: 3]),
+        .mpdcc_config_explorers_i   (MPDCC_N[3:0]),
+        // L, N_bar and the nodes are fixed in the explorer RTL; the table
+        // states them (its reset value of MPDCC_CONFIG).
+        .mpdcc_config_lambda_i      (MC_CONFIG[RM_MPDCC_CONFIG_LAMBDA_LSB +: 4]),
+        .mpdcc_config_m_bits_i      (MC_CONFIG[RM_MPDCC_CONFIG_M_BITS_LSB +: 4]),
+        .mpdcc_config_nodes_i       (MC_CONFIG[RM_MPDCC_CONFIG_NODES_LSB +: 4]),
+        .mpdcc_s_prev_a_o           (mc_in[16*MC_WORDS +: 3]),
+        .mpdcc_s_prev_b_o           (mc_in[16*MC_WORDS+3 +: 3]),
+        .mpdcc_s_prev_c_o           (mc_in[16*MC_WORDS+6 +: 3]),
+        .mpdcc_i_a_o                (mc_in[0 +: 16]),
+        .mpdcc_i_b_o                (mc_in[16 +: 16]),
+        .mpdcc_psi_a_o              (mc_in[32 +: 16]),
+        .mpdcc_psi_b_o              (mc_in[48 +: 16]),
+        .mpdcc_v_n_o                (mc_in[64 +: 16]),
+        .mpdcc_v_ph_a_o             (mc_in[80 +: 16]),
+        .mpdcc_v_ph_b_o             (mc_in[96 +: 16]),
+        .mpdcc_v_ph_c_o             (mc_in[112 +: 16]),
+        .mpdcc_iref_a_o             (mc_in[128 +: 16]),
+        .mpdcc_iref_b_o             (mc_in[144 +: 16]),
+        .mpdcc_omega_r_o            (mc_in[160 +: 16]),
+        .mpdcc_omega_s_o            (mc_in[176 +: 16]),
+        .mpdcc_c_tau_o              (mc_in[192 +: 16]),
+        .mpdcc_c_r_o                (mc_in[208 +: 16]),
+        .mpdcc_c_w_o                (mc_in[224 +: 16]),
+        .mpdcc_c_p_o                (mc_in[240 +: 16]),
+        .mpdcc_c_s_o                (mc_in[256 +: 16]),
+        .mpdcc_c_3_o                (mc_in[272 +: 16]),
+        .mpdcc_c_d_o                (mc_in[288 +: 16]),
+        .mpdcc_c_n_o                (mc_in[304 +: 16]),
+        .mpdcc_c_ph_o               (mc_in[320 +: 16]),
+        .mpdcc_s3h_o                (mc_in[336 +: 16]),
+        .mpdcc_v_ph_ref_o           (mc_in[352 +: 16]),
+        .mpdcc_c_tau1_o             (mc_in[368 +: 16]),
+        .mpdcc_c_r1_o               (mc_in[384 +: 16]),
+        .mpdcc_c_w1_o               (mc_in[400 +: 16]),
+        .mpdcc_c_s1_o               (mc_in[416 +: 16]),
+        .mpdcc_vdc_half_o           (mc_in[432 +: 16]),
+        .mpdcc_g3_o                 (mc_in[448 +: 16]),
+        .mpdcc_gd_o                 (mc_in[464 +: 16]),
+        .mpdcc_g3_1_o               (mc_in[480 +: 16]),
+        .mpdcc_bnd_ia_o             (mc_in[496 +: 16]),
+        .mpdcc_bnd_ib_o             (mc_in[512 +: 16]),
+        .mpdcc_bnd_ic_o             (mc_in[528 +: 16]),
+        .mpdcc_bnd_vn_o             (mc_in[544 +: 16]),
+        .mpdcc_bnd_vpa_o            (mc_in[560 +: 16]),
+        .mpdcc_bnd_vpb_o            (mc_in[576 +: 16]),
+        .mpdcc_bnd_vpc_o            (mc_in[592 +: 16]),
+        .mpdcc_lambda_n_o           (mc_in[608 +: 16]),
+        .mpdcc_decision_s_a_i       (mc_s[2:0]),
+        .mpdcc_decision_s_b_i       (mc_s[5:3]),
+        .mpdcc_decision_s_c_i       (mc_s[8:6]),
+        .mpdcc_decision_kind_i      (mc_kind),
+        .mpdcc_decision_l_star_i    (mc_l_star),
+        .mpdcc_cost_i               (mc_cost),
+        .mpdcc_j_dl_i               (mc_j_dl),
+        .mpdcc_cycles_cycles_i      (mc_cycles),
+        .mpdcc_cycles_candidates_i  (mc_candidates),
+        .mpdcc_deadlocks_i          (mc_deadlocks_q),
         // PWM
         .gate_ctrl_gate_en_o        (gate_en),
         .gate_ctrl_hw_clr_i         (fault_any),
@@ -489,6 +577,86 @@ module pl_top (
         if (rst) core_done_q <= 16'd0;
         else if (core_valid) core_done_q <= core_done_q + 16'd1;
     end
+
+    // The MPDCC core (paper 001). An MPDCC_START write while idle takes the
+    // snapshot at its edge and starts the core the next cycle, so the PS may
+    // write the next inputs during a decision; the core's inputs must hold
+    // from its start to its done strobe. BUSY covers the start cycle and the
+    // done cycle; DONE and the counters change with BUSY's fall.
+    always @(posedge clk_i) begin
+        if (rst) begin
+            mc_snap_q <= {MC_W{1'b0}};
+            mc_go_q <= 1'b0;
+            mc_busy_q <= 1'b0;
+            mc_done_q <= 1'b0;
+            mc_count_q <= 16'd0;
+            mc_deadlocks_q <= 16'd0;
+        end else begin
+            mc_go_q <= 1'b0;
+            if (mc_start_we && !mc_busy_q) begin
+                mc_snap_q <= mc_in;
+                mc_go_q <= 1'b1;
+                mc_busy_q <= 1'b1;
+                mc_done_q <= 1'b0;
+            end else if (mc_done) begin
+                mc_busy_q <= 1'b0;
+                mc_done_q <= 1'b1;
+                mc_count_q <= mc_count_q + 16'd1;
+                if (mc_kind == 2'd2) mc_deadlocks_q <= mc_deadlocks_q + 16'd1;
+            end
+        end
+    end
+
+    mpdcc_core #(
+        .N(MPDCC_N)
+    ) u_mpdcc (
+        .clk_i       (clk_i),
+        .rst_i       (rst),
+        .start_i     (mc_go_q),
+        .busy_o      (mc_core_busy),
+        .n_use_i     (mc_snap_q[MC_W-1 -: 3]),
+        .s_prev_i    (mc_snap_q[16*MC_WORDS +: 9]),
+        .i_a_i       (mc_snap_q[0 +: 16]),
+        .i_b_i       (mc_snap_q[16 +: 16]),
+        .psi_a_i     (mc_snap_q[32 +: 16]),
+        .psi_b_i     (mc_snap_q[48 +: 16]),
+        .v_n_i       (mc_snap_q[64 +: 16]),
+        .v_ph_i      (mc_snap_q[80 +: 48]),
+        .ir_a_i      (mc_snap_q[128 +: 16]),
+        .ir_b_i      (mc_snap_q[144 +: 16]),
+        .omega_r_i   (mc_snap_q[160 +: 16]),
+        .omega_s_i   (mc_snap_q[176 +: 16]),
+        .c_tau_i     (mc_snap_q[192 +: 16]),
+        .c_r_i       (mc_snap_q[208 +: 16]),
+        .c_w_i       (mc_snap_q[224 +: 16]),
+        .c_p_i       (mc_snap_q[240 +: 16]),
+        .c_s_i       (mc_snap_q[256 +: 16]),
+        .c_3_i       (mc_snap_q[272 +: 16]),
+        .c_d_i       (mc_snap_q[288 +: 16]),
+        .c_n_i       (mc_snap_q[304 +: 16]),
+        .c_ph_i      (mc_snap_q[320 +: 16]),
+        .s3h_i       (mc_snap_q[336 +: 16]),
+        .v_ph_ref_i  (mc_snap_q[352 +: 16]),
+        .c_tau1_i    (mc_snap_q[368 +: 16]),
+        .c_r1_i      (mc_snap_q[384 +: 16]),
+        .c_w1_i      (mc_snap_q[400 +: 16]),
+        .c_s1_i      (mc_snap_q[416 +: 16]),
+        .vdc_half_i  (mc_snap_q[432 +: 16]),
+        .g3_i        (mc_snap_q[448 +: 16]),
+        .gd_i        (mc_snap_q[464 +: 16]),
+        .g3_1_i      (mc_snap_q[480 +: 16]),
+        .bnd_i       (mc_snap_q[496 +: 112]),
+        .lambda_n_i  (mc_snap_q[608 +: 16]),
+        .done_o      (mc_done),
+        .s_o         (mc_s),
+        .kind_o      (mc_kind),
+        .l_star_o    (mc_l_star),
+        .cost_o      (mc_cost),
+        .j_dl_o      (mc_j_dl),
+        .candidates_o(mc_candidates),
+        .cycles_o    (mc_cycles)
+    );
+    wire unused_mc = mc_core_busy;
 
     sync2 #(.RESET_VAL(1'b0)) u_sync_a (.clk_i(clk_i), .rst_i(rst), .d_i(enc_a_i), .q_o(enc_a));
     sync2 #(.RESET_VAL(1'b0)) u_sync_b (.clk_i(clk_i), .rst_i(rst), .d_i(enc_b_i), .q_o(enc_b));

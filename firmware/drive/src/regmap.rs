@@ -24,6 +24,9 @@
 //!
 //! PL clock: 100 MHz (FCLK0), so one cycle = 10 ns.
 
+mod mpdcc_page;
+pub use mpdcc_page::*;
+
 /// Base of the PL register window on GP0.
 pub const BASE_ADDR: usize = 0x43C0_0000;
 /// Size of one block's page.
@@ -1176,12 +1179,63 @@ pub const MPDTC: Block = Block {
         &MPDTC_ALIGN_POS,
     ],
 };
-/// Block 2 (registers defined with the MPDCC core).
+/// Block 2 (registers defined in [`mpdcc_page`]).
 pub const MPDCC: Block = Block {
     name: "MPDCC",
     index: 2,
-    doc: "Reserved for the MPDCC core (not implemented yet): every access is SLVERR.",
-    registers: &[],
+    doc: "mpdcc_core (paper 001): s(k-1), state, constants and bounds (formats: \
+          docs/mpdcc-fpga.md), start, status, the decision and its cost in cycles.",
+    registers: &[
+        &MPDCC_START,
+        &MPDCC_STATUS,
+        &MPDCC_N_USE,
+        &MPDCC_CONFIG,
+        &MPDCC_S_PREV,
+        &MPDCC_I_A,
+        &MPDCC_I_B,
+        &MPDCC_PSI_A,
+        &MPDCC_PSI_B,
+        &MPDCC_V_N,
+        &MPDCC_V_PH_A,
+        &MPDCC_V_PH_B,
+        &MPDCC_V_PH_C,
+        &MPDCC_IREF_A,
+        &MPDCC_IREF_B,
+        &MPDCC_OMEGA_R,
+        &MPDCC_OMEGA_S,
+        &MPDCC_C_TAU,
+        &MPDCC_C_R,
+        &MPDCC_C_W,
+        &MPDCC_C_P,
+        &MPDCC_C_S,
+        &MPDCC_C_3,
+        &MPDCC_C_D,
+        &MPDCC_C_N,
+        &MPDCC_C_PH,
+        &MPDCC_S3H,
+        &MPDCC_V_PH_REF,
+        &MPDCC_C_TAU1,
+        &MPDCC_C_R1,
+        &MPDCC_C_W1,
+        &MPDCC_C_S1,
+        &MPDCC_VDC_HALF,
+        &MPDCC_G3,
+        &MPDCC_GD,
+        &MPDCC_G3_1,
+        &MPDCC_BND_IA,
+        &MPDCC_BND_IB,
+        &MPDCC_BND_IC,
+        &MPDCC_BND_VN,
+        &MPDCC_BND_VPA,
+        &MPDCC_BND_VPB,
+        &MPDCC_BND_VPC,
+        &MPDCC_LAMBDA_N,
+        &MPDCC_DECISION,
+        &MPDCC_COST,
+        &MPDCC_J_DL,
+        &MPDCC_CYCLES,
+        &MPDCC_DEADLOCKS,
+    ],
 };
 /// Block 3.
 pub const PWM: Block = Block {
@@ -1846,7 +1900,11 @@ mod tests {
             Some(("FAULT", "OC_LIMIT"))
         );
         assert_eq!(lookup(0x43C0_1000).map(|(_, r)| r.name), Some("MPDTC_CTRL"));
-        assert_eq!(lookup(0x43C0_2000), None);
+        assert_eq!(
+            lookup(0x43C0_2100).map(|(b, r)| (b.name, r.name)),
+            Some(("MPDCC", "MPDCC_DECISION"))
+        );
+        assert_eq!(lookup(0x43C0_2044), None);
         assert_eq!(lookup(0x43C0_3002), None);
         assert_eq!(lookup(0x43C0_8000), None);
         assert_eq!(lookup(0x1000), None);

@@ -3577,11 +3577,3851 @@ pub mod mpdtc {
     }
 }
 
-/// Block 2 `MPDCC` at `0x43C02000`: Reserved for the MPDCC core (not implemented yet): every access is SLVERR.
+/// Block 2 `MPDCC` at `0x43C02000`: mpdcc_core (paper 001): s(k-1), state, constants and bounds (formats: docs/mpdcc-fpga.md), start, status, the decision and its cost in cycles.
 pub mod mpdcc {
+    use super::*;
 
     /// Absolute address of the block.
     pub const BASE: usize = 0x43C02000;
+
+    /// `MPDCC.MPDCC_START` at `0x43C02000` (RW, 1 bits, reset `0x0`): A write while MPDCC_STATUS.BUSY = 0 snapshots the input and constant registers and starts one decision (ignored while busy). Reads back the last value.
+    ///
+    /// Format: any value. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccStart;
+
+    impl MpdccStart {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02000;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_START;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccStartValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccStartValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccStartValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccStartValue) -> MpdccStartValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccStart`]; bits above bit 0 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccStartValue(u32);
+
+    impl MpdccStartValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bit 0): The whole register (any value).
+        pub const fn value(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `VALUE` (bit 0).
+        pub const fn with_value(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+    }
+
+    impl Default for MpdccStartValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_STATUS` at `0x43C02004` (RO, 32 bits, reset `0x0`): State of the core; poll until BUSY = 0 and DONE = 1.
+    ///
+    /// Format: bits and a counter. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccStatus;
+
+    impl MpdccStatus {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02004;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_STATUS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccStatusValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccStatusValue)
+        }
+    }
+
+    /// A value of [`MpdccStatus`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccStatusValue(u32);
+
+    impl MpdccStatusValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `BUSY` (bit 0): a decision runs (from the cycle after the START write)
+        pub const fn busy(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `BUSY` (bit 0).
+        pub const fn with_busy(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+
+        /// `DONE` (bit 1): the result registers hold the decision of the last START (0 from the START write until BUSY falls, and after reset)
+        pub const fn done(self) -> bool {
+            (self.0 >> 1) & 1 != 0
+        }
+
+        /// Sets `DONE` (bit 1).
+        pub const fn with_done(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 1)) | ((v as u32) << 1))
+        }
+
+        /// `COUNT` (bits 31:16, 16 bits): decisions completed since reset (wraps)
+        pub const fn count(self) -> u32 {
+            (self.0 >> 16) & 0xFFFF
+        }
+
+        /// Sets `COUNT` (bits 31:16, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_count(self, v: u32) -> Self {
+            Self((self.0 & !(0xFFFF << 16)) | ((v & 0xFFFF) << 16))
+        }
+    }
+
+    impl Default for MpdccStatusValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_N_USE` at `0x43C02008` (RW, 3 bits, reset `0x2`): Explorers the next decision uses (n_use); the core takes at most MPDCC_CONFIG.EXPLORERS of them. Only the cycle count depends on it.
+    ///
+    /// Format: unsigned, explorer units. Writes: the hardware clamps the written word to 1..=6 (so a value wider than the field is clamped, not wrapped).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccNUse;
+
+    impl MpdccNUse {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02008;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_N_USE;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccNUseValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccNUseValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccNUseValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccNUseValue) -> MpdccNUseValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccNUse`]; bits above bit 2 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccNUseValue(u32);
+
+    impl MpdccNUseValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x2);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 2:0, 3 bits): The whole register (unsigned, explorer units).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x7
+        }
+
+        /// Sets `VALUE` (bits 2:0, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x7) | (v & 0x7))
+        }
+    }
+
+    impl Default for MpdccNUseValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_CONFIG` at `0x43C0200C` (RO, 16 bits, reset `0x4732`): The constants the core is built with (reset: the default build); Coeffs must agree (lambda, m_bits, nodes).
+    ///
+    /// Format: four unsigned fields. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccConfig;
+
+    impl MpdccConfig {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0200C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_CONFIG;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccConfigValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccConfigValue)
+        }
+    }
+
+    /// A value of [`MpdccConfig`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccConfigValue(u32);
+
+    impl MpdccConfigValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x4732);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `EXPLORERS` (bits 3:0, 4 bits): explorer units instantiated (N)
+        pub const fn explorers(self) -> u32 {
+            self.0 & 0xF
+        }
+
+        /// Sets `EXPLORERS` (bits 3:0, 4 bits) to the low 4 bits of `v` (higher bits are dropped).
+        pub const fn with_explorers(self, v: u32) -> Self {
+            Self((self.0 & !0xF) | (v & 0xF))
+        }
+
+        /// `LAMBDA` (bits 7:4, 4 bits): lambda = log2 L, extrapolation steps
+        pub const fn lambda(self) -> u32 {
+            (self.0 >> 4) & 0xF
+        }
+
+        /// Sets `LAMBDA` (bits 7:4, 4 bits) to the low 4 bits of `v` (higher bits are dropped).
+        pub const fn with_lambda(self, v: u32) -> Self {
+            Self((self.0 & !(0xF << 4)) | ((v & 0xF) << 4))
+        }
+
+        /// `M_BITS` (bits 11:8, 4 bits): M = log2 N_bar, search bits
+        pub const fn m_bits(self) -> u32 {
+            (self.0 >> 8) & 0xF
+        }
+
+        /// Sets `M_BITS` (bits 11:8, 4 bits) to the low 4 bits of `v` (higher bits are dropped).
+        pub const fn with_m_bits(self, v: u32) -> Self {
+            Self((self.0 & !(0xF << 8)) | ((v & 0xF) << 8))
+        }
+
+        /// `NODES` (bits 15:12, 4 bits): interpolation nodes
+        pub const fn nodes(self) -> u32 {
+            (self.0 >> 12) & 0xF
+        }
+
+        /// Sets `NODES` (bits 15:12, 4 bits) to the low 4 bits of `v` (higher bits are dropped).
+        pub const fn with_nodes(self, v: u32) -> Self {
+            Self((self.0 & !(0xF << 12)) | ((v & 0xF) << 12))
+        }
+    }
+
+    impl Default for MpdccConfigValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_S_PREV` at `0x43C02010` (RW, 9 bits, reset `0x0`): Switch positions applied in the previous period, s(k-1).
+    ///
+    /// Format: three unsigned 3-bit switch positions 0..7. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccSPrev;
+
+    impl MpdccSPrev {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02010;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_S_PREV;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccSPrevValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccSPrevValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccSPrevValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccSPrevValue) -> MpdccSPrevValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccSPrev`]; bits above bit 8 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccSPrevValue(u32);
+
+    impl MpdccSPrevValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `A` (bits 2:0, 3 bits): phase a position
+        pub const fn a(self) -> u32 {
+            self.0 & 0x7
+        }
+
+        /// Sets `A` (bits 2:0, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_a(self, v: u32) -> Self {
+            Self((self.0 & !0x7) | (v & 0x7))
+        }
+
+        /// `B` (bits 5:3, 3 bits): phase b position
+        pub const fn b(self) -> u32 {
+            (self.0 >> 3) & 0x7
+        }
+
+        /// Sets `B` (bits 5:3, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_b(self, v: u32) -> Self {
+            Self((self.0 & !(0x7 << 3)) | ((v & 0x7) << 3))
+        }
+
+        /// `C` (bits 8:6, 3 bits): phase c position
+        pub const fn c(self) -> u32 {
+            (self.0 >> 6) & 0x7
+        }
+
+        /// Sets `C` (bits 8:6, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_c(self, v: u32) -> Self {
+            Self((self.0 & !(0x7 << 6)) | ((v & 0x7) << 6))
+        }
+    }
+
+    impl Default for MpdccSPrevValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_I_A` at `0x43C02014` (RW, 16 bits, reset `0x0`): Stator current i_s,alpha.
+    ///
+    /// Format: Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccIA;
+
+    impl MpdccIA {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02014;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_I_A;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccIAValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccIAValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccIAValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccIAValue) -> MpdccIAValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccIA`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccIAValue(u32);
+
+    impl MpdccIAValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccIAValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_I_B` at `0x43C02018` (RW, 16 bits, reset `0x0`): Stator current i_s,beta.
+    ///
+    /// Format: Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccIB;
+
+    impl MpdccIB {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02018;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_I_B;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccIBValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccIBValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccIBValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccIBValue) -> MpdccIBValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccIB`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccIBValue(u32);
+
+    impl MpdccIBValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccIBValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_PSI_A` at `0x43C0201C` (RW, 16 bits, reset `0x0`): Rotor flux psi_r,alpha, pu.
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccPsiA;
+
+    impl MpdccPsiA {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0201C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_PSI_A;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccPsiAValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccPsiAValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccPsiAValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccPsiAValue) -> MpdccPsiAValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccPsiA`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccPsiAValue(u32);
+
+    impl MpdccPsiAValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccPsiAValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_PSI_B` at `0x43C02020` (RW, 16 bits, reset `0x0`): Rotor flux psi_r,beta, pu.
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccPsiB;
+
+    impl MpdccPsiB {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02020;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_PSI_B;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccPsiBValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccPsiBValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccPsiBValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccPsiBValue) -> MpdccPsiBValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccPsiB`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccPsiBValue(u32);
+
+    impl MpdccPsiBValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccPsiBValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_V_N` at `0x43C02024` (RW, 16 bits, reset `0x0`): Neutral-point voltage v_n.
+    ///
+    /// Format: Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccVN;
+
+    impl MpdccVN {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02024;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_V_N;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccVNValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccVNValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccVNValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccVNValue) -> MpdccVNValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccVN`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccVNValue(u32);
+
+    impl MpdccVNValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccVNValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_V_PH_A` at `0x43C02028` (RW, 16 bits, reset `0x0`): Phase capacitor voltage, a.
+    ///
+    /// Format: Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccVPhA;
+
+    impl MpdccVPhA {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02028;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_V_PH_A;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccVPhAValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccVPhAValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccVPhAValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccVPhAValue) -> MpdccVPhAValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccVPhA`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccVPhAValue(u32);
+
+    impl MpdccVPhAValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccVPhAValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_V_PH_B` at `0x43C0202C` (RW, 16 bits, reset `0x0`): Phase capacitor voltage, b.
+    ///
+    /// Format: Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccVPhB;
+
+    impl MpdccVPhB {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0202C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_V_PH_B;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccVPhBValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccVPhBValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccVPhBValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccVPhBValue) -> MpdccVPhBValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccVPhB`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccVPhBValue(u32);
+
+    impl MpdccVPhBValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccVPhBValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_V_PH_C` at `0x43C02030` (RW, 16 bits, reset `0x0`): Phase capacitor voltage, c.
+    ///
+    /// Format: Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccVPhC;
+
+    impl MpdccVPhC {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02030;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_V_PH_C;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccVPhCValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccVPhCValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccVPhCValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccVPhCValue) -> MpdccVPhCValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccVPhC`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccVPhCValue(u32);
+
+    impl MpdccVPhCValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccVPhCValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_IREF_A` at `0x43C02034` (RW, 16 bits, reset `0x0`): Current reference i_s*,alpha(k).
+    ///
+    /// Format: Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccIrefA;
+
+    impl MpdccIrefA {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02034;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_IREF_A;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccIrefAValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccIrefAValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccIrefAValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccIrefAValue) -> MpdccIrefAValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccIrefA`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccIrefAValue(u32);
+
+    impl MpdccIrefAValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccIrefAValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_IREF_B` at `0x43C02038` (RW, 16 bits, reset `0x0`): Current reference i_s*,beta(k).
+    ///
+    /// Format: Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccIrefB;
+
+    impl MpdccIrefB {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02038;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_IREF_B;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccIrefBValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccIrefBValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccIrefBValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccIrefBValue) -> MpdccIrefBValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccIrefB`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccIrefBValue(u32);
+
+    impl MpdccIrefBValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccIrefBValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_OMEGA_R` at `0x43C0203C` (RW, 16 bits, reset `0x0`): Rotor speed omega_r.
+    ///
+    /// Format: Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccOmegaR;
+
+    impl MpdccOmegaR {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0203C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_OMEGA_R;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccOmegaRValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccOmegaRValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccOmegaRValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccOmegaRValue) -> MpdccOmegaRValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccOmegaR`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccOmegaRValue(u32);
+
+    impl MpdccOmegaRValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccOmegaRValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_OMEGA_S` at `0x43C02040` (RW, 16 bits, reset `0x0`): Stator (reference) frequency omega_s.
+    ///
+    /// Format: Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccOmegaS;
+
+    impl MpdccOmegaS {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02040;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_OMEGA_S;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccOmegaSValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccOmegaSValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccOmegaSValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccOmegaSValue) -> MpdccOmegaSValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccOmegaS`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccOmegaSValue(u32);
+
+    impl MpdccOmegaSValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccOmegaSValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_TAU` at `0x43C02080` (RW, 16 bits, reset `0x0`): L T / tau_s.
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCTau;
+
+    impl MpdccCTau {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02080;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_TAU;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCTauValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccCTauValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccCTauValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccCTauValue) -> MpdccCTauValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccCTau`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCTauValue(u32);
+
+    impl MpdccCTauValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccCTauValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_R` at `0x43C02084` (RW, 16 bits, reset `0x0`): L T X_m / (D tau_r).
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCR;
+
+    impl MpdccCR {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02084;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_R;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCRValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccCRValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccCRValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccCRValue) -> MpdccCRValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccCR`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCRValue(u32);
+
+    impl MpdccCRValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccCRValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_W` at `0x43C02088` (RW, 16 bits, reset `0x0`): L T X_m / D (times omega_r).
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCW;
+
+    impl MpdccCW {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02088;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_W;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCWValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccCWValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccCWValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccCWValue) -> MpdccCWValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccCW`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCWValue(u32);
+
+    impl MpdccCWValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccCWValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_P` at `0x43C0208C` (RW, 16 bits, reset `0x0`): p (L T)^2 (times omega_r^2).
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCP;
+
+    impl MpdccCP {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0208C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_P;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCPValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccCPValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccCPValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccCPValue) -> MpdccCPValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccCP`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCPValue(u32);
+
+    impl MpdccCPValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccCPValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_S` at `0x43C02090` (RW, 16 bits, reset `0x0`): L T (times omega_s).
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCS;
+
+    impl MpdccCS {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02090;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_S;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCSValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccCSValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccCSValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccCSValue) -> MpdccCSValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccCS`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCSValue(u32);
+
+    impl MpdccCSValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccCSValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_3` at `0x43C02094` (RW, 16 bits, reset `0x0`): (L T)^2 / 6 (third-order rotation).
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccC3;
+
+    impl MpdccC3 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02094;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_3;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccC3Value, BusError> {
+            bus.read(Self::ADDR).map(MpdccC3Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccC3Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccC3Value) -> MpdccC3Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccC3`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccC3Value(u32);
+
+    impl MpdccC3Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccC3Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_D` at `0x43C02098` (RW, 16 bits, reset `0x0`): Stator damping L T / (2 tau_s).
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCD;
+
+    impl MpdccCD {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02098;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_D;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCDValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccCDValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccCDValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccCDValue) -> MpdccCDValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccCD`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCDValue(u32);
+
+    impl MpdccCDValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccCDValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_N` at `0x43C0209C` (RW, 16 bits, reset `0x0`): L T / (2 C_dc) (times i_x).
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCN;
+
+    impl MpdccCN {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0209C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_N;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCNValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccCNValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccCNValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccCNValue) -> MpdccCNValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccCN`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCNValue(u32);
+
+    impl MpdccCNValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccCNValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_PH` at `0x43C020A0` (RW, 16 bits, reset `0x0`): L T / C_ph (times i_x).
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCPh;
+
+    impl MpdccCPh {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020A0;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_PH;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCPhValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccCPhValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccCPhValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccCPhValue) -> MpdccCPhValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccCPh`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCPhValue(u32);
+
+    impl MpdccCPhValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccCPhValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_S3H` at `0x43C020A4` (RW, 16 bits, reset `0x0`): sqrt(3) / 2.
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccS3h;
+
+    impl MpdccS3h {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020A4;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_S3H;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccS3hValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccS3hValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccS3hValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccS3hValue) -> MpdccS3hValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccS3h`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccS3hValue(u32);
+
+    impl MpdccS3hValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccS3hValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_V_PH_REF` at `0x43C020A8` (RW, 16 bits, reset `0x0`): Phase capacitor reference V_dc / 4.
+    ///
+    /// Format: Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccVPhRef;
+
+    impl MpdccVPhRef {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020A8;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_V_PH_REF;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccVPhRefValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccVPhRefValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccVPhRefValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccVPhRefValue) -> MpdccVPhRefValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccVPhRef`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccVPhRefValue(u32);
+
+    impl MpdccVPhRefValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccVPhRefValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_TAU1` at `0x43C020AC` (RW, 16 bits, reset `0x0`): One step: T / tau_s.
+    ///
+    /// Format: signed 16-bit two's complement, 17 fractional bits (range +-0.25, LSB 7.6e-6). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCTau1;
+
+    impl MpdccCTau1 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020AC;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_TAU1;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCTau1Value, BusError> {
+            bus.read(Self::ADDR).map(MpdccCTau1Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccCTau1Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccCTau1Value) -> MpdccCTau1Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccCTau1`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCTau1Value(u32);
+
+    impl MpdccCTau1Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, 17 fractional bits (range +-0.25, LSB 7.6e-6)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccCTau1Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_R1` at `0x43C020B0` (RW, 16 bits, reset `0x0`): One step: T X_m / (D tau_r).
+    ///
+    /// Format: signed 16-bit two's complement, 17 fractional bits (range +-0.25, LSB 7.6e-6). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCR1;
+
+    impl MpdccCR1 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020B0;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_R1;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCR1Value, BusError> {
+            bus.read(Self::ADDR).map(MpdccCR1Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccCR1Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccCR1Value) -> MpdccCR1Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccCR1`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCR1Value(u32);
+
+    impl MpdccCR1Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, 17 fractional bits (range +-0.25, LSB 7.6e-6)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccCR1Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_W1` at `0x43C020B4` (RW, 16 bits, reset `0x0`): One step: T X_m / D.
+    ///
+    /// Format: signed 16-bit two's complement, 17 fractional bits (range +-0.25, LSB 7.6e-6). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCW1;
+
+    impl MpdccCW1 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020B4;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_W1;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCW1Value, BusError> {
+            bus.read(Self::ADDR).map(MpdccCW1Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccCW1Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccCW1Value) -> MpdccCW1Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccCW1`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCW1Value(u32);
+
+    impl MpdccCW1Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, 17 fractional bits (range +-0.25, LSB 7.6e-6)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccCW1Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_C_S1` at `0x43C020B8` (RW, 16 bits, reset `0x0`): One step: T.
+    ///
+    /// Format: signed 16-bit two's complement, 17 fractional bits (range +-0.25, LSB 7.6e-6). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCS1;
+
+    impl MpdccCS1 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020B8;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_C_S1;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCS1Value, BusError> {
+            bus.read(Self::ADDR).map(MpdccCS1Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccCS1Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccCS1Value) -> MpdccCS1Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccCS1`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCS1Value(u32);
+
+    impl MpdccCS1Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, 17 fractional bits (range +-0.25, LSB 7.6e-6)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccCS1Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_VDC_HALF` at `0x43C020BC` (RW, 16 bits, reset `0x0`): V_dc / 2.
+    ///
+    /// Format: Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccVdcHalf;
+
+    impl MpdccVdcHalf {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020BC;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_VDC_HALF;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccVdcHalfValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccVdcHalfValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccVdcHalfValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccVdcHalfValue) -> MpdccVdcHalfValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccVdcHalf`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccVdcHalfValue(u32);
+
+    impl MpdccVdcHalfValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13 signed 16-bit two's complement, pu (range +-4, LSB 1.22e-4)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccVdcHalfValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_G3` at `0x43C020C0` (RW, 16 bits, reset `0x0`): L T X_r / (3 D).
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccG3;
+
+    impl MpdccG3 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020C0;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_G3;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccG3Value, BusError> {
+            bus.read(Self::ADDR).map(MpdccG3Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccG3Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccG3Value) -> MpdccG3Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccG3`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccG3Value(u32);
+
+    impl MpdccG3Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccG3Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_GD` at `0x43C020C4` (RW, 16 bits, reset `0x0`): g3 c_d.
+    ///
+    /// Format: Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccGd;
+
+    impl MpdccGd {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020C4;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_GD;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccGdValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccGdValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccGdValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccGdValue) -> MpdccGdValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccGd`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccGdValue(u32);
+
+    impl MpdccGdValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q1.14 signed 16-bit two's complement (range +-2, LSB 6.10e-5)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccGdValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_G3_1` at `0x43C020C8` (RW, 16 bits, reset `0x0`): One step: T X_r / (3 D).
+    ///
+    /// Format: signed 16-bit two's complement, 17 fractional bits (range +-0.25, LSB 7.6e-6). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccG31;
+
+    impl MpdccG31 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020C8;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_G3_1;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccG31Value, BusError> {
+            bus.read(Self::ADDR).map(MpdccG31Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccG31Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccG31Value) -> MpdccG31Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccG31`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccG31Value(u32);
+
+    impl MpdccG31Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, 17 fractional bits (range +-0.25, LSB 7.6e-6)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccG31Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_BND_IA` at `0x43C020CC` (RW, 16 bits, reset `0x0`): Bound delta_i, phase a current.
+    ///
+    /// Format: Q2.13, 0..32767 (0..4 pu). Writes: the hardware rejects a word above 32767: the register keeps its value and `ERR.BAD_VALUE` is set.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndIa;
+
+    impl MpdccBndIa {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020CC;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_BND_IA;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccBndIaValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccBndIaValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccBndIaValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccBndIaValue) -> MpdccBndIaValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccBndIa`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndIaValue(u32);
+
+    impl MpdccBndIaValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13, 0..32767 (0..4 pu)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccBndIaValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_BND_IB` at `0x43C020D0` (RW, 16 bits, reset `0x0`): Bound delta_i, phase b current.
+    ///
+    /// Format: Q2.13, 0..32767 (0..4 pu). Writes: the hardware rejects a word above 32767: the register keeps its value and `ERR.BAD_VALUE` is set.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndIb;
+
+    impl MpdccBndIb {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020D0;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_BND_IB;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccBndIbValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccBndIbValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccBndIbValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccBndIbValue) -> MpdccBndIbValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccBndIb`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndIbValue(u32);
+
+    impl MpdccBndIbValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13, 0..32767 (0..4 pu)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccBndIbValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_BND_IC` at `0x43C020D4` (RW, 16 bits, reset `0x0`): Bound delta_i, phase c current.
+    ///
+    /// Format: Q2.13, 0..32767 (0..4 pu). Writes: the hardware rejects a word above 32767: the register keeps its value and `ERR.BAD_VALUE` is set.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndIc;
+
+    impl MpdccBndIc {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020D4;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_BND_IC;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccBndIcValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccBndIcValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccBndIcValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccBndIcValue) -> MpdccBndIcValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccBndIc`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndIcValue(u32);
+
+    impl MpdccBndIcValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13, 0..32767 (0..4 pu)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccBndIcValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_BND_VN` at `0x43C020D8` (RW, 16 bits, reset `0x0`): Bound on |v_n|.
+    ///
+    /// Format: Q2.13, 0..32767 (0..4 pu). Writes: the hardware rejects a word above 32767: the register keeps its value and `ERR.BAD_VALUE` is set.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndVn;
+
+    impl MpdccBndVn {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020D8;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_BND_VN;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccBndVnValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccBndVnValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccBndVnValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccBndVnValue) -> MpdccBndVnValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccBndVn`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndVnValue(u32);
+
+    impl MpdccBndVnValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13, 0..32767 (0..4 pu)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccBndVnValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_BND_VPA` at `0x43C020DC` (RW, 16 bits, reset `0x0`): Bound on |v_ph,a - V_dc/4|.
+    ///
+    /// Format: Q2.13, 0..32767 (0..4 pu). Writes: the hardware rejects a word above 32767: the register keeps its value and `ERR.BAD_VALUE` is set.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndVpa;
+
+    impl MpdccBndVpa {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020DC;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_BND_VPA;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccBndVpaValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccBndVpaValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccBndVpaValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccBndVpaValue) -> MpdccBndVpaValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccBndVpa`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndVpaValue(u32);
+
+    impl MpdccBndVpaValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13, 0..32767 (0..4 pu)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccBndVpaValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_BND_VPB` at `0x43C020E0` (RW, 16 bits, reset `0x0`): Bound on |v_ph,b - V_dc/4|.
+    ///
+    /// Format: Q2.13, 0..32767 (0..4 pu). Writes: the hardware rejects a word above 32767: the register keeps its value and `ERR.BAD_VALUE` is set.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndVpb;
+
+    impl MpdccBndVpb {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020E0;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_BND_VPB;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccBndVpbValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccBndVpbValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccBndVpbValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccBndVpbValue) -> MpdccBndVpbValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccBndVpb`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndVpbValue(u32);
+
+    impl MpdccBndVpbValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13, 0..32767 (0..4 pu)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccBndVpbValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_BND_VPC` at `0x43C020E4` (RW, 16 bits, reset `0x0`): Bound on |v_ph,c - V_dc/4|.
+    ///
+    /// Format: Q2.13, 0..32767 (0..4 pu). Writes: the hardware rejects a word above 32767: the register keeps its value and `ERR.BAD_VALUE` is set.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndVpc;
+
+    impl MpdccBndVpc {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020E4;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_BND_VPC;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccBndVpcValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccBndVpcValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccBndVpcValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccBndVpcValue) -> MpdccBndVpcValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccBndVpc`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccBndVpcValue(u32);
+
+    impl MpdccBndVpcValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (Q2.13, 0..32767 (0..4 pu)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccBndVpcValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_LAMBDA_N` at `0x43C020E8` (RW, 16 bits, reset `0x0`): Weight lambda_n of the terminal v_n^2 term of J.
+    ///
+    /// Format: UQ8.8 unsigned 16-bit (0..256, LSB 3.9e-3). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccLambdaN;
+
+    impl MpdccLambdaN {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C020E8;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_LAMBDA_N;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccLambdaNValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccLambdaNValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdccLambdaNValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdccLambdaNValue) -> MpdccLambdaNValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdccLambdaN`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccLambdaNValue(u32);
+
+    impl MpdccLambdaNValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (UQ8.8 unsigned 16-bit (0..256, LSB 3.9e-3)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccLambdaNValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_DECISION` at `0x43C02100` (RO, 24 bits, reset `0x0`): The last decision.
+    ///
+    /// Format: three 3-bit positions, an enum, an unsigned step count. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccDecision;
+
+    impl MpdccDecision {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02100;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_DECISION;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccDecisionValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccDecisionValue)
+        }
+    }
+
+    /// A value of [`MpdccDecision`]; bits above bit 23 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccDecisionValue(u32);
+
+    impl MpdccDecisionValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `S_A` (bits 2:0, 3 bits): phase a position s(k)
+        pub const fn s_a(self) -> u32 {
+            self.0 & 0x7
+        }
+
+        /// Sets `S_A` (bits 2:0, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_s_a(self, v: u32) -> Self {
+            Self((self.0 & !0x7) | (v & 0x7))
+        }
+
+        /// `S_B` (bits 5:3, 3 bits): phase b position
+        pub const fn s_b(self) -> u32 {
+            (self.0 >> 3) & 0x7
+        }
+
+        /// Sets `S_B` (bits 5:3, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_s_b(self, v: u32) -> Self {
+            Self((self.0 & !(0x7 << 3)) | ((v & 0x7) << 3))
+        }
+
+        /// `S_C` (bits 8:6, 3 bits): phase c position
+        pub const fn s_c(self) -> u32 {
+            (self.0 >> 6) & 0x7
+        }
+
+        /// Sets `S_C` (bits 8:6, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        pub const fn with_s_c(self, v: u32) -> Self {
+            Self((self.0 & !(0x7 << 6)) | ((v & 0x7) << 6))
+        }
+
+        /// `KIND` (bits 13:12, 2 bits): 0 kept, 1 optimal, 2 deadlock (regmap::mpdcc_kind)
+        pub const fn kind(self) -> u32 {
+            (self.0 >> 12) & 0x3
+        }
+
+        /// Sets `KIND` (bits 13:12, 2 bits) to the low 2 bits of `v` (higher bits are dropped).
+        pub const fn with_kind(self, v: u32) -> Self {
+            Self((self.0 & !(0x3 << 12)) | ((v & 0x3) << 12))
+        }
+
+        /// `L_STAR` (bits 23:16, 8 bits): L*, steps, of an optimal decision (else 0)
+        pub const fn l_star(self) -> u32 {
+            (self.0 >> 16) & 0xFF
+        }
+
+        /// Sets `L_STAR` (bits 23:16, 8 bits) to the low 8 bits of `v` (higher bits are dropped).
+        pub const fn with_l_star(self, v: u32) -> Self {
+            Self((self.0 & !(0xFF << 16)) | ((v & 0xFF) << 16))
+        }
+    }
+
+    impl Default for MpdccDecisionValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_COST` at `0x43C02104` (RO, 32 bits, reset `0x0`): J of the chosen candidate (kept: 0).
+    ///
+    /// Format: UQ15.17 unsigned, transitions per step (0xFFFFFFFF = +inf). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCost;
+
+    impl MpdccCost {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02104;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_COST;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCostValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccCostValue)
+        }
+    }
+
+    /// A value of [`MpdccCost`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCostValue(u32);
+
+    impl MpdccCostValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (UQ15.17 unsigned, transitions per step (0xFFFFFFFF = +inf)).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for MpdccCostValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_J_DL` at `0x43C02108` (RO, 32 bits, reset `0x0`): J_dl (eq. 15) of the chosen candidate (kept: 0).
+    ///
+    /// Format: signed 32-bit two's complement, Q2.13 pu. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccJDl;
+
+    impl MpdccJDl {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02108;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_J_DL;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccJDlValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccJDlValue)
+        }
+    }
+
+    /// A value of [`MpdccJDl`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccJDlValue(u32);
+
+    impl MpdccJDlValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (signed 32-bit two's complement, Q2.13 pu).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for MpdccJDlValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_CYCLES` at `0x43C0210C` (RO, 24 bits, reset `0x0`): Cost in time of the last decision.
+    ///
+    /// Format: unsigned PL clock cycles and an unsigned count. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCycles;
+
+    impl MpdccCycles {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0210C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_CYCLES;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccCyclesValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccCyclesValue)
+        }
+    }
+
+    /// A value of [`MpdccCycles`]; bits above bit 23 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccCyclesValue(u32);
+
+    impl MpdccCyclesValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `CYCLES` (bits 15:0, 16 bits): clock edges from the core's start strobe to its done strobe
+        pub const fn cycles(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `CYCLES` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_cycles(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `CANDIDATES` (bits 23:16, 8 bits): candidates evaluated (kept: 0; the search runs anyway)
+        pub const fn candidates(self) -> u32 {
+            (self.0 >> 16) & 0xFF
+        }
+
+        /// Sets `CANDIDATES` (bits 23:16, 8 bits) to the low 8 bits of `v` (higher bits are dropped).
+        pub const fn with_candidates(self, v: u32) -> Self {
+            Self((self.0 & !(0xFF << 16)) | ((v & 0xFF) << 16))
+        }
+    }
+
+    impl Default for MpdccCyclesValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDCC.MPDCC_DEADLOCKS` at `0x43C02110` (RO, 16 bits, reset `0x0`): Deadlock decisions (KIND = 2) since reset.
+    ///
+    /// Format: unsigned, wraps. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccDeadlocks;
+
+    impl MpdccDeadlocks {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C02110;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDCC_DEADLOCKS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdccDeadlocksValue, BusError> {
+            bus.read(Self::ADDR).map(MpdccDeadlocksValue)
+        }
+    }
+
+    /// A value of [`MpdccDeadlocks`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdccDeadlocksValue(u32);
+
+    impl MpdccDeadlocksValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, wraps).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdccDeadlocksValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
 }
 
 /// Block 3 `PWM` at `0x43C03000`: Gate enable, dead time, centre-aligned PWM, switching state.

@@ -7,8 +7,13 @@ use drive::regmap::{PortDir, PL_TOP_PORTS};
 
 /// (name, direction, width) of every port in the ANSI header of `module`.
 fn ports_of(verilog: &str, module: &str) -> Vec<(String, PortDir, u8)> {
+    // A parameter list `#( ... )` before the ports is skipped.
     let start = verilog
         .find(&format!("module {module} ("))
+        .or_else(|| {
+            let p = verilog.find(&format!("module {module} #("))?;
+            Some(p + verilog[p..].find(") (")?)
+        })
         .expect("module header");
     let header = &verilog[start..start + verilog[start..].find(");").expect("end of header")];
     let mut out = Vec::new();

@@ -190,3 +190,30 @@ impl Drop for PlTopSim {
 pub fn axi_addr(block: &drive::regmap::Block, reg: &drive::regmap::Register) -> u16 {
     (block.addr(reg) - drive::regmap::BASE_ADDR) as u16
 }
+
+/// The Verilated `pl_top` as the drivers' register bus (absolute GP0
+/// addresses; one AXI access each, `SLVERR` as [`BusError::SlaveError`]).
+impl drive::bus::RegisterBus for PlTopSim {
+    fn read(&mut self, addr: usize) -> Result<u32, drive::bus::BusError> {
+        let rel = axi_rel(addr)?;
+        match PlTopSim::read(self, rel) {
+            (d, OKAY) => Ok(d),
+            _ => Err(drive::bus::BusError::SlaveError),
+        }
+    }
+    fn write(&mut self, addr: usize, value: u32) -> Result<(), drive::bus::BusError> {
+        let rel = axi_rel(addr)?;
+        match PlTopSim::write(self, rel, value) {
+            OKAY => Ok(()),
+            _ => Err(drive::bus::BusError::SlaveError),
+        }
+    }
+}
+
+/// The AXI address of an absolute one (outside the window: `SlaveError`).
+fn axi_rel(addr: usize) -> Result<u16, drive::bus::BusError> {
+    addr.checked_sub(drive::regmap::BASE_ADDR)
+        .filter(|r| *r < 1 << drive::regmap::AXI_ADDR_BITS)
+        .map(|r| r as u16)
+        .ok_or(drive::bus::BusError::SlaveError)
+}

@@ -11,6 +11,9 @@
 //! the register-bus strobe in the first; a `SimPl` access is that strobe
 //! cycle, followed here by one idle cycle. The Verilated model leaves reset
 //! at cycle 4; `SimPl` counts from 0 there.
+use drive::bus::{BusError, RegisterBus};
+use drive::mpdcc::fpga::{self, Coeffs, Inputs};
+use drive::pl::mpdcc::Mpdcc;
 use drive::regmap::{self as rm, Access, Register, BASE_ADDR, BLOCKS};
 use drive::simpl::adc::adc_word;
 use drive::simpl::pl::{Events, SimPl};
@@ -44,6 +47,11 @@ struct Pair {
     cap_data: u64,
     /// Reads of CAP_STATUS in state DONE.
     cap_done: u64,
+    /// The simulated PL's answer to the last read.
+    last_read: Result<u32, BusError>,
+    /// MPDCC decisions read through the driver, by kind (kept, optimal,
+    /// deadlock).
+    mc_kinds: [u64; 3],
 }
 
 impl Pair {
@@ -63,6 +71,8 @@ impl Pair {
             log: Vec::new(),
             cap_data: 0,
             cap_done: 0,
+            last_read: Ok(0),
+            mc_kinds: [0; 3],
         }
     }
 
@@ -128,6 +138,7 @@ impl Pair {
         let o2 = self.rtl_step();
         assert_eq!(o2.rvalid, 1);
         let (got, ev) = self.sim.read(BASE_ADDR + rel as usize);
+        self.last_read = got;
         self.sim_event(&ev);
         self.sim_idle(1);
         let want = if o2.rresp == OKAY {
@@ -242,6 +253,72 @@ impl Pair {
     }
 }
 
+/// The pair as a register bus (both models see every access; the value is
+/// the simulated PL's, equal to the RTL's or the test has failed).
+struct PairBus<'a>(&'a mut Pair);
+
+impl RegisterBus for PairBus<'_> {
+    fn read(&mut self, addr: usize) -> Result<u32, BusError> {
+        self.0.read((addr - BASE_ADDR) as u16);
+        self.0.last_read
+    }
+    fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
+        self.0.write((addr - BASE_ADDR) as u16, value);
+        Ok(())
+    }
+}
+
+/// One MPDCC-page operation (own random stream): arbitrary words to a page
+/// register, the core's constants, or a decision through the driver on a
+/// closed-loop state (its `s(k-1)` sometimes replaced), whose result must
+/// also be the model's (`fpga::decide`).
+fn mpdcc_op(p: &mut Pair, rng: &mut Rng, states: &[Inputs], k: &Coeffs) {
+    match rng.next_u64() % 8 {
+        0 => {
+            let regs = rm::MPDCC.registers;
+            let r = regs[(rng.next_u64() % regs.len() as u64) as usize];
+            let v = value_for(rng, r);
+            p.write(rel(&rm::MPDCC, r), v);
+        }
+        1 => Mpdcc(PairBus(p)).load_coeffs(k).expect("load constants"),
+        _ => {
+            let mut x = states[(rng.next_u64() % states.len() as u64) as usize];
+            if rng.next_u64() % 3 == 0 {
+                x.s_prev = core::array::from_fn(|_| (rng.next_u64() % 8) as u8);
+            }
+            if rng.next_u64() % 4 == 0 {
+                let n = 1 + (rng.next_u64() % 6) as u32;
+                Mpdcc(PairBus(p)).set_explorers(n).expect("n_use");
+            }
+            let mut m = Mpdcc(PairBus(p));
+            // The constants again (arbitrary words may have changed them),
+            // and no decision of an earlier arbitrary START in flight.
+            m.load_coeffs(k).expect("load constants");
+            for _ in 0..400 {
+                if !m.status().expect("status").busy {
+                    break;
+                }
+            }
+            m.write_inputs(&x).expect("inputs");
+            m.start().expect("start");
+            // Either poll at once or after a random pause.
+            let pause = rng.next_u64() % 200;
+            m.0 .0.idle(pause);
+            let (got, _) = m.wait(400).expect("MPDCC decision");
+            let _ = m.deadlocks();
+            let _ = m.config();
+            let idx = match got.decision.kind {
+                drive::mpdcc::controller::DecisionKind::Kept => 0,
+                drive::mpdcc::controller::DecisionKind::Optimal => 1,
+                drive::mpdcc::controller::DecisionKind::Deadlock => 2,
+            };
+            let want = fpga::decide(k, &x, 2).decision;
+            assert_eq!(got.decision, want, "MPDCC page vs model on {x:?}");
+            p.mc_kinds[idx] += 1;
+        }
+    }
+}
+
 fn name(rel: u16) -> &'static str {
     rm::lookup(BASE_ADDR + rel as usize).map_or("unmapped", |(_, r)| r.name)
 }
@@ -322,7 +399,14 @@ fn adc_data(rng: &mut Rng) -> u64 {
 fn run(seed: u64, ops: usize) -> Pair {
     let mut rng = Rng(seed);
     let mut p = Pair::new();
-    let regs = all_registers();
+    // The MPDCC page has its own operation and random stream (below).
+    let mut mc_rng = Rng(seed ^ 0x4D50_4443);
+    let mc_states = rtl_sim::mpdcc_vectors::closed_loop_states();
+    let mc_k = rtl_sim::mpdcc_vectors::core().coeffs().clone();
+    let regs: Vec<_> = all_registers()
+        .into_iter()
+        .filter(|(b, _)| b.name != rm::MPDCC.name)
+        .collect();
     let control: Vec<_> = regs
         .iter()
         .copied()
@@ -349,7 +433,10 @@ fn run(seed: u64, ops: usize) -> Pair {
     ] {
         p.write(rel(b, r), v);
     }
-    for _ in 0..ops {
+    for op in 0..ops {
+        if op % 16 == 0 {
+            mpdcc_op(&mut p, &mut mc_rng, &mc_states, &mc_k);
+        }
         match rng.next_u64() % 100 {
             0..=29 => {
                 let (b, r) = control[(rng.next_u64() % control.len() as u64) as usize];
@@ -514,4 +601,10 @@ fn simulated_pl_equals_verilated_pl_top() {
         p.cap_done,
         p.cap_data
     );
+    // MPDCC decisions of every kind went through the page.
+    println!(
+        "MPDCC decisions (kept, optimal, deadlock): {:?}",
+        p.mc_kinds
+    );
+    assert!(p.mc_kinds.iter().all(|&n| n > 5), "{:?}", p.mc_kinds);
 }

@@ -104,6 +104,15 @@ pub const COMMANDS: &[Spec] = &[
                captured torque against the captured reference, one `f_hz gain_db phase_deg` \
                line each, then the -3 dB bandwidth [Hz]; gates on, f_stop <= control rate / 4",
     },
+    Spec {
+        name: "mpdcc",
+        args: "[run [<periods>]]",
+        help: "paper 001's hardware-in-the-loop run: the induction machine and 5L-ANPC plant \
+               on the PS feed the PL's MPDCC core each T_s through its register page; `run` \
+               one warm-up and <periods> (default 1, 1..=20) measured fundamental periods, \
+               without arguments the last run: decisions (kept, optimal, deadlock), core \
+               cycles mean/worst [PL cycles], f_sw [Hz], THD [%], max current error [pu]",
+    },
 ];
 
 /// A parsed command line.
@@ -170,6 +179,8 @@ pub enum Command<'a> {
         /// Number of frequencies.
         points: u32,
     },
+    /// `mpdcc` (the last report) or `mpdcc run [periods]`.
+    Mpdcc(Option<u32>),
 }
 
 /// Default pre-trigger length of `capture arm`, samples.
@@ -465,6 +476,23 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
         },
         "capture" => parse_capture(args.as_slice()),
         "sweep" => parse_sweep(args.as_slice()),
+        "mpdcc" => match args.as_slice() {
+            [] => Ok(Command::Mpdcc(None)),
+            ["run"] => Ok(Command::Mpdcc(Some(1))),
+            ["run", n] => match n.parse::<u32>() {
+                Ok(n) if (1..=crate::mpdcc::hil::MAX_PERIODS).contains(&n) => {
+                    Ok(Command::Mpdcc(Some(n)))
+                }
+                _ => Err(ParseError::BadArgs(
+                    "mpdcc",
+                    "periods must be a whole number in 1..=20",
+                )),
+            },
+            _ => Err(ParseError::BadArgs(
+                "mpdcc",
+                "expected `mpdcc` or `mpdcc run [<periods>]`",
+            )),
+        },
         _ => Err(ParseError::Unknown(name)),
     }
 }
@@ -783,6 +811,20 @@ pub fn execute<W: Write>(
                 )?,
             }
         }
+        Command::Mpdcc(run) => {
+            let r = match run {
+                Some(n) => try_drive!("mpdcc", drv.mpdcc_run(n)),
+                None => match drv.mpdcc_report() {
+                    Some(r) => r,
+                    None => {
+                        out.write_str("mpdcc: no run yet (`mpdcc run [<periods>]`)\r\n")?;
+                        out.write_str("OK\r\n")?;
+                        return Ok(Action::None);
+                    }
+                },
+            };
+            drive::write_mpdcc(out, &r)?;
+        }
     }
     out.write_str("OK\r\n")?;
     Ok(Action::None)
@@ -853,6 +895,45 @@ mod tests {
         assert_eq!(
             reply("help nothing"),
             "ERR bad-args help: no command `nothing`\r\n"
+        );
+    }
+
+    #[test]
+    fn mpdcc_command() {
+        assert_eq!(
+            reply("mpdcc"),
+            "mpdcc: no run yet (`mpdcc run [<periods>]`)\r\nOK\r\n"
+        );
+        // The test drive has no MPDCC page.
+        assert_eq!(
+            reply("mpdcc run"),
+            "ERR unsupported mpdcc: not available here\r\n"
+        );
+        for bad in ["mpdcc run 0", "mpdcc run 21", "mpdcc run x", "mpdcc go"] {
+            assert!(reply(bad).starts_with("ERR bad-args mpdcc: "), "{bad}");
+        }
+        assert_eq!(parse("mpdcc run 20"), Ok(Command::Mpdcc(Some(20))));
+        let r = crate::mpdcc::hil::HilReport {
+            periods: 2,
+            decisions: 2400,
+            kinds: [2300, 96, 4],
+            mean_cycles: 91.96,
+            worst_cycles: 166,
+            fsw_hz: 116.72,
+            thd_percent: 7.791,
+            max_i_err_pu: 0.12345,
+        };
+        let mut out = String::new();
+        drive::write_mpdcc(&mut out, &r).unwrap();
+        assert_eq!(
+            out,
+            "mpdcc: 2 measured fundamental periods after 1 warm-up (plant on the PS, core on \
+             the PL page)\r\n\
+             decisions: 2400 (kept 2300, optimal 96, deadlock 4)\r\n\
+             core_cycles: mean 92.0, worst 166 (PL clock cycles)\r\n\
+             f_sw: 116.7 Hz\r\n\
+             thd: 7.79 %\r\n\
+             i_err_max: 0.1235 pu\r\n"
         );
     }
 
@@ -954,6 +1035,7 @@ mod tests {
                 .replace("<f_stop_hz>", "1000")
                 .replace("<amplitude_nm>", "0.1")
                 .replace("<points>", "4")
+                .replace("<periods>", "2")
                 .replace(['[', ']'], "");
             for alt in args.split('|') {
                 let line = std::format!("{} {}", s.name, alt);

@@ -2,6 +2,7 @@
 //! ([`DriveOps`]) and how replies and errors are written.
 use super::{write_err, ErrorCode};
 use crate::config::store::SlotState;
+use crate::mpdcc::hil::HilReport;
 use crate::pl::capture::{CapSample, CapStatus, Trigger};
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
@@ -191,6 +192,16 @@ pub trait DriveOps {
     }
     /// Ends a sweep: the sine stops, the reference returns to 0 N m.
     fn sweep_end(&mut self) {}
+    /// `mpdcc run`: paper 001's hardware-in-the-loop run on the PL's MPDCC
+    /// page ([`crate::mpdcc::hil`]), one warm-up and `periods` measured
+    /// fundamental periods.
+    fn mpdcc_run(&mut self, _periods: u32) -> Result<HilReport, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// The last `mpdcc run`'s report.
+    fn mpdcc_report(&mut self) -> Option<HilReport> {
+        None
+    }
 }
 
 /// Writes the final `ERR` line of a failed drive command.
@@ -274,6 +285,29 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
             format_args!("{cmd}: the configuration flash failed (nothing loaded or changed)"),
         ),
     }
+}
+
+/// The report of an `mpdcc run`, one `key: value unit` per line.
+pub fn write_mpdcc<W: Write>(out: &mut W, r: &HilReport) -> fmt::Result {
+    write!(
+        out,
+        "mpdcc: {} measured fundamental periods after 1 warm-up (plant on the PS, core on \
+         the PL page)\r\n",
+        r.periods
+    )?;
+    write!(
+        out,
+        "decisions: {} (kept {}, optimal {}, deadlock {})\r\n",
+        r.decisions, r.kinds[0], r.kinds[1], r.kinds[2]
+    )?;
+    write!(
+        out,
+        "core_cycles: mean {:.1}, worst {} (PL clock cycles)\r\n",
+        r.mean_cycles, r.worst_cycles
+    )?;
+    write!(out, "f_sw: {:.1} Hz\r\n", r.fsw_hz)?;
+    write!(out, "thd: {:.2} %\r\n", r.thd_percent)?;
+    write!(out, "i_err_max: {:.4} pu\r\n", r.max_i_err_pu)
 }
 
 /// The drive's `status` lines.

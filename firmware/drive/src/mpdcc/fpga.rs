@@ -325,14 +325,7 @@ impl Coeffs {
             }
         };
         let n_bar = c.horizon_max_steps;
-        let mut recip = heapless::Vec::new();
-        for l in 0..=n_bar {
-            // Entry 0 is unused (L* = 0 costs +inf).
-            let r = ((1u32 << F_RECIP) + l / 2).checked_div(l).unwrap_or(0);
-            recip
-                .push(r)
-                .map_err(|_| FpgaError::CoefficientRange("recip"))?;
-        }
+        let recip = recip_rom(n_bar)?;
         let lam = libm::round(c.lambda_n * (1u32 << F_LAMBDA) as f64);
         if lam > u16::MAX as f64 {
             return Err(FpgaError::CoefficientRange("lambda_n"));
@@ -386,6 +379,80 @@ impl Coeffs {
             g3_1: q("g3_1", t * m.x_r_pu() / (3.0 * d), F_SMALL)?,
         })
     }
+}
+
+impl Coeffs {
+    /// The frozen core's constants ([`Structure::CORE`]) for `L = 2^lambda`,
+    /// `N_bar = 2^m_bits` steps and `nodes` interpolation nodes, every
+    /// register word zero: the constants of a core whose words come from its
+    /// register page (the simulated PL fills them in).
+    pub fn core_shape(lambda: u32, m_bits: u32, nodes: u32) -> Result<Self, FpgaError> {
+        let st = Structure::CORE;
+        if !(1..=MAX_NODES as u32).contains(&nodes) {
+            return Err(FpgaError::Nodes);
+        }
+        if lambda > m_bits || m_bits > 10 {
+            return Err(FpgaError::CoefficientRange("recip"));
+        }
+        let n_bar = 1u32 << m_bits;
+        Ok(Self {
+            lambda,
+            m_bits,
+            n_bar,
+            c_tau: 0,
+            c_r: 0,
+            c_w: 0,
+            c_p: 0,
+            c_s: 0,
+            g3: 0,
+            c_n: 0,
+            c_ph: 0,
+            s3h: 0,
+            v_dc_half: 0,
+            v_ph_ref: 0,
+            bnd: [0; 7],
+            lambda_n: 0,
+            recip: recip_rom(n_bar)?,
+            ref_second_order: st.ref_second_order,
+            exact_first_step: st.exact_first_step,
+            third_order: st.third_order,
+            c_3: 0,
+            capacitor_drift: st.capacitor_drift,
+            current_midpoint: st.current_midpoint,
+            nodes,
+            c_d: 0,
+            gd: 0,
+            c_tau1: 0,
+            c_r1: 0,
+            c_w1: 0,
+            c_s1: 0,
+            g3_1: 0,
+        })
+    }
+
+    /// The datapath is the frozen core's ([`Structure::CORE`]): the
+    /// structure flags a Verilog `mpdcc_core` implements.
+    pub fn is_core_structure(&self) -> bool {
+        let st = Structure::CORE;
+        self.ref_second_order == st.ref_second_order
+            && self.exact_first_step == st.exact_first_step
+            && self.third_order == st.third_order
+            && self.capacitor_drift == st.capacitor_drift
+            && self.current_midpoint == st.current_midpoint
+    }
+}
+
+/// `round(2^17 / l)` for `l = 0..=n_bar` (entry 0 unused: `L* = 0` costs
+/// `+inf`), UQ1.17.
+fn recip_rom(n_bar: u32) -> Result<heapless::Vec<u32, 1025>, FpgaError> {
+    let mut recip = heapless::Vec::new();
+    for l in 0..=n_bar {
+        let r = ((1u32 << F_RECIP) + l / 2).checked_div(l).unwrap_or(0);
+        recip
+            .push(r)
+            .map_err(|_| FpgaError::CoefficientRange("recip"))?;
+    }
+    Ok(recip)
 }
 
 /// The sampled state in its interface registers (Alg. 1's "writes it into
@@ -953,21 +1020,28 @@ impl FpgaMpdcc {
     /// One decision from already-quantized inputs (the bit-exact entry point
     /// a Verilog test bench drives).
     pub fn decide_raw(&self, x: &Inputs) -> scheduler::Outcome {
-        let c = common_terms(&self.coeffs, x);
-        let lazy = lazy_ok(&self.coeffs, &c, x.s_prev);
-        let mut units = Units {
-            k: &self.coeffs,
-            c: &c,
-            s_prev: x.s_prev,
-        };
-        // Cycle model of the configured explorer structure.
-        let model = if self.coeffs.nodes == 1 && !self.coeffs.exact_first_step {
-            super::cycles::CycleModel::paper()
-        } else {
-            super::cycles::CycleModel::default()
-        };
-        scheduler::run(x.s_prev, lazy, self.cfg.explorers, &model, &mut units)
+        decide(&self.coeffs, x, self.cfg.explorers)
     }
+}
+
+/// One decision of a core with constants `k` and `n` explorers from
+/// already-quantized inputs: [`FpgaMpdcc::decide_raw`] for constants that
+/// come from elsewhere (the register page of the simulated PL).
+pub fn decide(k: &Coeffs, x: &Inputs, n: u32) -> scheduler::Outcome {
+    let c = common_terms(k, x);
+    let lazy = lazy_ok(k, &c, x.s_prev);
+    let mut units = Units {
+        k,
+        c: &c,
+        s_prev: x.s_prev,
+    };
+    // Cycle model of the configured explorer structure.
+    let model = if k.nodes == 1 && !k.exact_first_step {
+        super::cycles::CycleModel::paper()
+    } else {
+        super::cycles::CycleModel::default()
+    };
+    scheduler::run(x.s_prev, lazy, n, &model, &mut units)
 }
 
 impl MpdccController for FpgaMpdcc {

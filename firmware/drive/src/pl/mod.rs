@@ -12,6 +12,8 @@
 //! - [`enc`]: encoder position and speed, converted to the electrical angle.
 //! - [`fault`]: latched faults, over-current limit, watchdog timeout.
 //! - [`capture`]: the triggered capture buffer (arm, channels, read-back).
+//! - [`mpdcc`]: constants, per-period state, start and decision of the
+//!   MPDCC core.
 //! - [`mpdtc`]: parameters, per-period inputs and status of the MPDTC core
 //!   and its control sequence.
 //!
@@ -23,6 +25,7 @@ pub mod adc;
 pub mod capture;
 pub mod enc;
 pub mod fault;
+pub mod mpdcc;
 pub mod mpdtc;
 pub mod presence;
 pub mod pwm;

@@ -8,6 +8,7 @@ pub mod core;
 pub mod enc;
 pub mod fault;
 pub mod inverter;
+pub mod mpdcc;
 pub mod pl;
 pub mod pwm;
 pub mod regs;

@@ -23,6 +23,7 @@ use super::capture::{CapIn, Capture, Sample};
 use super::core::{sext, Core};
 use super::enc::{Encoder, Sync2};
 use super::fault::{Fault, FaultIn};
+use super::mpdcc::{MpdccBlock, Words};
 use super::pwm::Pwm;
 use super::regs::{slot, slot_of, Regs, WriteResult};
 use super::seq::{Seq, SeqIn};
@@ -30,7 +31,7 @@ use super::NEVER;
 use crate::bus::BusError;
 use crate::gates::{DeadTime, GateDriver, GateInputs, GateOutputs, DEAD_TIME_MAX_CYCLES};
 use crate::pmsm::mpdtc_fixed::{FixedInputs, FixedParams};
-use crate::regmap::{self as rm, mode, ADC, CAPTURE, ENC, FAULT, MPDTC, PWM, TOP};
+use crate::regmap::{self as rm, mode, ADC, CAPTURE, ENC, FAULT, MPDCC, MPDTC, PWM, TOP};
 
 const S_CTRL: usize = slot_of(&TOP, &rm::CTRL);
 const S_ERR: usize = slot_of(&TOP, &rm::ERR);
@@ -73,6 +74,24 @@ const S_CAP_IN_TORQUE: usize = slot_of(&CAPTURE, &rm::CAP_IN_TORQUE);
 const S_CAP_IN_TREF: usize = slot_of(&CAPTURE, &rm::CAP_IN_TREF);
 const S_CAP_RD_INDEX: usize = slot_of(&CAPTURE, &rm::CAP_RD_INDEX);
 
+const S_MPDCC_START: usize = slot_of(&MPDCC, &rm::MPDCC_START);
+const S_MPDCC_N_USE: usize = slot_of(&MPDCC, &rm::MPDCC_N_USE);
+const S_MPDCC_S_PREV: usize = slot_of(&MPDCC, &rm::MPDCC_S_PREV);
+/// Slots of `n` MPDCC-page words from register `first` of the page on.
+const fn mc_slots<const N: usize>(first: usize) -> [usize; N] {
+    let mut out = [0; N];
+    let mut i = 0;
+    while i < N {
+        out[i] = slot_of(&MPDCC, MPDCC.registers[first + i]);
+        i += 1;
+    }
+    out
+}
+/// `MPDCC_I_A` .. `MPDCC_OMEGA_S` (the page's registers 5..17).
+const S_MPDCC_STATE: [usize; 12] = mc_slots(5);
+/// `MPDCC_C_TAU` .. `MPDCC_LAMBDA_N` (the page's registers 17..44).
+const S_MPDCC_CONSTS: [usize; 27] = mc_slots(17);
+
 const A_ID: usize = TOP.addr(&rm::ID);
 const A_VERSION: usize = TOP.addr(&rm::VERSION);
 const A_STATUS: usize = TOP.addr(&rm::STATUS);
@@ -92,6 +111,13 @@ const A_MPDTC_LATENCY: usize = MPDTC.addr(&rm::MPDTC_LATENCY);
 const A_MPDTC_IQ_REF: usize = MPDTC.addr(&rm::MPDTC_IQ_REF);
 const A_SEQ_STATUS: usize = MPDTC.addr(&rm::MPDTC_SEQ_STATUS);
 const A_ALIGN_POS: usize = MPDTC.addr(&rm::MPDTC_ALIGN_POS);
+const A_MPDCC_STATUS: usize = MPDCC.addr(&rm::MPDCC_STATUS);
+const A_MPDCC_CONFIG: usize = MPDCC.addr(&rm::MPDCC_CONFIG);
+const A_MPDCC_DECISION: usize = MPDCC.addr(&rm::MPDCC_DECISION);
+const A_MPDCC_COST: usize = MPDCC.addr(&rm::MPDCC_COST);
+const A_MPDCC_J_DL: usize = MPDCC.addr(&rm::MPDCC_J_DL);
+const A_MPDCC_CYCLES: usize = MPDCC.addr(&rm::MPDCC_CYCLES);
+const A_MPDCC_DEADLOCKS: usize = MPDCC.addr(&rm::MPDCC_DEADLOCKS);
 const A_CAP_STATUS: usize = CAPTURE.addr(&rm::CAP_STATUS);
 const A_CAP_DATA0: usize = CAPTURE.addr(&rm::CAP_DATA0);
 const A_CAP_DATA1: usize = CAPTURE.addr(&rm::CAP_DATA1);
@@ -217,6 +243,7 @@ pub struct SimPl {
     core_iq_ref: i32,
     core_done: u16,
     cap: Capture,
+    mpdcc: MpdccBlock,
     cycles: u64,
     /// Pin levels applied from the next cycle on.
     pub pins: Pins,
@@ -246,6 +273,7 @@ impl SimPl {
             core_iq_ref: 0,
             core_done: 0,
             cap: Capture::default(),
+            mpdcc: MpdccBlock::new(),
             cycles: 0,
             pins: Pins::default(),
             stepped: 0,
@@ -408,6 +436,16 @@ impl SimPl {
         (inp, p)
     }
 
+    /// The MPDCC page's words as the registers hold them now.
+    fn mpdcc_words(&self) -> Words {
+        Words {
+            n_use: self.r(S_MPDCC_N_USE),
+            s_prev: self.r(S_MPDCC_S_PREV),
+            state: S_MPDCC_STATE.map(|s| self.r(s) as u16),
+            consts: S_MPDCC_CONSTS.map(|s| self.r(s) as u16),
+        }
+    }
+
     /// One full clock cycle with a bus strobe; returns its events.
     fn step(&mut self, strobe: Strobe) -> Events {
         let w = |s: usize| matches!(strobe, Strobe::Write(WriteResult::Stored { slot, .. }) if slot == s);
@@ -488,6 +526,12 @@ impl SimPl {
             self.core_done = self.core_done.wrapping_add(1);
         }
         self.cap.step(&cap_in);
+        if w(S_MPDCC_START) {
+            let words = self.mpdcc_words();
+            self.mpdcc.step(Some(&words));
+        } else {
+            self.mpdcc.step(None);
+        }
         // Register file.
         let mut err_set = 0;
         match strobe {
@@ -546,6 +590,7 @@ impl SimPl {
             .min(self.fault.quiet(&c.fault_in))
             .min(self.seq.quiet(&c.seq_in))
             .min(self.core.quiet(c.core_load))
+            .min(self.mpdcc.quiet())
     }
 
     fn skip(&mut self, k: u64) {
@@ -561,6 +606,7 @@ impl SimPl {
         self.fault.skip(k);
         self.seq.skip(k);
         self.core.skip(k);
+        self.mpdcc.skip(k);
         self.cap.skip(self.r(S_CAP_RD_INDEX));
         self.cycles += k;
         self.skips += 1;
@@ -634,6 +680,13 @@ impl SimPl {
             A_MPDTC_IQ_REF => (self.core_iq_ref as u32) & rm::MPDTC_IQ_REF.mask(),
             A_SEQ_STATUS => self.seq.status(),
             A_ALIGN_POS => u32::from(self.seq.align_pos),
+            A_MPDCC_STATUS => self.mpdcc.status(),
+            A_MPDCC_CONFIG => rm::MPDCC_CONFIG_VALUE,
+            A_MPDCC_DECISION => self.mpdcc.out.decision,
+            A_MPDCC_COST => self.mpdcc.out.cost,
+            A_MPDCC_J_DL => self.mpdcc.out.j_dl,
+            A_MPDCC_CYCLES => self.mpdcc.out.cycles,
+            A_MPDCC_DEADLOCKS => self.mpdcc.deadlocks(),
             A_CAP_STATUS => self.cap.status(),
             A_CAP_DATA0 => (u32::from(self.cap.rd.i_q) << 16) | u32::from(self.cap.rd.i_d),
             A_CAP_DATA1 => (u32::from(self.cap.rd.tref) << 16) | u32::from(self.cap.rd.torque),

@@ -160,7 +160,7 @@ fn register_rules_mask_clamp_reject_w1c_slverr() {
     // W1C: ERR bits clear on a written one.
     w(&mut pl, &rm::TOP, &rm::ERR, 1);
     assert_eq!(peek(&pl, &rm::TOP, &rm::ERR), 2);
-    assert_eq!(pl.read(rm::BASE_ADDR + 0x2000).0, Err(BusError::SlaveError));
+    assert_eq!(pl.read(rm::BASE_ADDR + 0x2044).0, Err(BusError::SlaveError));
     assert_eq!(pl.read(rm::BASE_ADDR + 0x3002).0, Err(BusError::SlaveError));
     w(&mut pl, &rm::TOP, &rm::ERR, 2);
     assert_eq!(peek(&pl, &rm::TOP, &rm::ERR), 0);
