@@ -613,24 +613,24 @@ impl DriveOps for FwDrive {
             Err(b) => Err(ServoError::Bus(b)),
         })?;
         let (p, f) = hil::default_core().map_err(|_| DriveError::Unsupported)?;
-        with(|s| Mpdcc(&mut s.bus).load_coeffs(f.coeffs()))
+        console(|s| Mpdcc(&mut s.bus).load_coeffs(f.coeffs()))
             .ok_or(DriveError::Absent)?
             .map_err(page_error)?;
         // One decision per critical section: the control interrupt and the
         // PL tick run in between; the plant runs here, outside.
         let mut decide = |x: &Inputs| {
-            with(|s| Mpdcc(&mut s.bus).decide(x, MPDCC_POLLS))
+            console(|s| Mpdcc(&mut s.bus).decide(x, MPDCC_POLLS))
                 .unwrap_or(Err(MpdccError::Bus(BusError::Absent)))
         };
         let r = hil::run(&p, periods, &mut decide).map_err(|e| match e {
             HilError::Page(e) => page_error(e),
             _ => DriveError::Unsupported,
         })?;
-        with(|s| s.mpdcc_last = Some(r));
+        console(|s| s.mpdcc_last = Some(r));
         Ok(r)
     }
     fn mpdcc_report(&mut self) -> Option<HilReport> {
-        with(|s| s.mpdcc_last).flatten()
+        console(|s| s.mpdcc_last).flatten()
     }
 }
 
