@@ -742,9 +742,17 @@ impl Servo {
         Ok(())
     }
 
-    /// Counts the gate transitions of the decision applied at this boundary.
-    fn note_decision<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
-        let s = Mpdtc(&mut *bus).last_decision()?;
+    /// Counts the gate transitions of the decision applied at this boundary:
+    /// the gate driver's state (`GATE_STATUS`) in the autonomous loop, whose
+    /// next decision may already be in `MPDTC_STATUS` 21 cycles after the
+    /// boundary; the last decision on the PS-fed path (the core waits for
+    /// `MPDTC_START`).
+    fn note_decision<B: RegisterBus>(&mut self, bus: &mut B, auto: bool) -> Result<(), BusError> {
+        let s = if auto {
+            Pwm(&mut *bus).gate_status()?.2
+        } else {
+            Mpdtc(&mut *bus).last_decision()?
+        };
         if s != self.last_state {
             for (leg, t) in self.transitions.iter_mut().enumerate() {
                 *t += u64::from((s ^ self.last_state) >> (2 - leg) & 1);
@@ -757,12 +765,12 @@ impl Servo {
     /// The autonomous loop's period: the torque reference is the only write
     /// (the PL's front end takes it with the next averaged sample).
     fn mpdtc_auto_step<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
-        self.note_decision(bus)?;
+        self.note_decision(bus, true)?;
         Mpdtc(&mut *bus).write_torque_ref(torque_ref_word(self.torque_ref_nm))
     }
 
     fn mpdtc_step<B: RegisterBus>(&mut self, bus: &mut B, m: &Measurement) -> Result<(), BusError> {
-        self.note_decision(bus)?;
+        self.note_decision(bus, false)?;
         let mut core = Mpdtc(&mut *bus);
         let seq = core.seq_status()?;
         if seq.state != seq_state::SAMPLE {
