@@ -460,6 +460,7 @@ impl DriveOps for FwDrive {
     fn status(&mut self) -> DriveStatus {
         console(|s| DriveStatus {
             mode: s.servo.mode(),
+            mpdtc_autonomous: !s.servo.config().mpdtc_ps_fed,
             gates_on: s.servo.gates_on(&mut s.bus).unwrap_or(false),
             faults: s.servo.faults(&mut s.bus).unwrap_or_default(),
             measured: s.servo.measured(),
@@ -479,6 +480,7 @@ impl DriveOps for FwDrive {
         })
         .unwrap_or(DriveStatus {
             mode: Mode::Off,
+            mpdtc_autonomous: true,
             gates_on: false,
             faults: Faults::default(),
             measured: Default::default(),

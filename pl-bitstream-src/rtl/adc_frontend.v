@@ -13,9 +13,11 @@
 //   sample_*     the raw sample, registered one cycle after adc_drdy_i,
 //                with the one-cycle strobe sample_valid_o (to the fault
 //                block: over-current is judged on every raw sample)
-//   avg_*        floor((s0 + s1 + s2 + s3) / 4) of 4 consecutive samples
-//                (arithmetic shift of the 14-bit sum), sign-extended to 16
-//                bits, updated with the strobe avg_valid_o at f_s / 4
+//   avg_*        floor((s0 + .. + s(n-1)) / n) of n = 2^avg_log2_i
+//                consecutive samples (n = 1, 2 or 4: arithmetic shift of the
+//                14-bit sum), sign-extended to 16 bits, updated with the
+//                strobe avg_valid_o at f_s / n. A smaller n takes effect at
+//                once (a sum already past it ends with the next sample)
 //   avg_count_o  number of averages since reset (wraps)
 `default_nettype none
 
@@ -24,6 +26,7 @@ module adc_frontend (
     input  wire        rst_i,
     input  wire        en_i,
     input  wire [15:0] period_i,
+    input  wire [ 1:0] avg_log2_i,       // 0, 1, 2 (the register rejects 3)
     output wire        adc_cnv_o,
     input  wire        adc_drdy_i,
     input  wire [35:0] adc_data_i,
@@ -47,10 +50,21 @@ module adc_frontend (
     reg [11:0] avg_a_q, avg_b_q, avg_c_q;
     reg [31:0] count_q;
 
+    // Index of the last sample of an average: n - 1.
+    wire [ 1:0] last = (avg_log2_i == 2'd0) ? 2'd0 : (avg_log2_i == 2'd1) ? 2'd1 : 2'd3;
     // 14-bit sums including the current sample (sign-extended).
     wire [13:0] sum_a = acc_a_q + {{2{s_a_q[11]}}, s_a_q};
     wire [13:0] sum_b = acc_b_q + {{2{s_b_q[11]}}, s_b_q};
     wire [13:0] sum_c = acc_c_q + {{2{s_c_q[11]}}, s_c_q};
+
+    // floor(sum / n): the 12 bits above the shift (the rest is the sign).
+    function automatic [11:0] avg_of(input [13:0] sum);
+        case (avg_log2_i)
+            2'd0: avg_of = sum[11:0];
+            2'd1: avg_of = sum[12:1];
+            default: avg_of = sum[13:2];
+        endcase
+    endfunction
 
     always @(posedge clk_i) begin
         if (rst_i) begin
@@ -79,24 +93,25 @@ module adc_frontend (
             end
             // Capture.
             sv_q <= adc_drdy_i;
-            // Average of 4.
+            // Average of n = 2^avg_log2_i.
             av_q <= 1'b0;
             if (sv_q) begin
-                if (n_q == 2'd3) begin
-                    avg_a_q <= sum_a[13:2];
-                    avg_b_q <= sum_b[13:2];
-                    avg_c_q <= sum_c[13:2];
+                if (n_q >= last) begin
+                    avg_a_q <= avg_of(sum_a);
+                    avg_b_q <= avg_of(sum_b);
+                    avg_c_q <= avg_of(sum_c);
                     acc_a_q <= 14'd0;
                     acc_b_q <= 14'd0;
                     acc_c_q <= 14'd0;
                     av_q    <= 1'b1;
                     count_q <= count_q + 32'd1;
+                    n_q     <= 2'd0;
                 end else begin
                     acc_a_q <= sum_a;
                     acc_b_q <= sum_b;
                     acc_c_q <= sum_c;
+                    n_q     <= n_q + 2'd1;
                 end
-                n_q <= n_q + 2'd1;
             end
         end
     end

@@ -8,8 +8,9 @@
 // cycle t (combinational), so the gates are off at the edge ending t.
 //
 // States (encoding = MPDTC_SEQ_STATUS.STATE) and what each waits for:
-//   0 IDLE     gates off (drive_o = 0). Waits for run_i. MPDTC_START writes
-//              pass straight to the core here (PS-paced use, as before).
+//   0 IDLE     gates off (drive_o = 0). Waits for run_i. With auto_i = 0,
+//              MPDTC_START writes pass straight to the core here (PS-paced
+//              use); with auto_i = 1 nothing starts the core in IDLE.
 //   1 INITIAL  rotor alignment. Requests align_vec_i (reset 100: phase a
 //              upper, b and c lower = voltage vector on the a axis = d axis
 //              at angle 0) while chop_q < min(align_on_i, align_period_i / 2)
@@ -26,13 +27,20 @@
 //              with the applied state 000 (the core's cleared S[k]).
 //   2 SAMPLE   applies S[k]. Waits for (a) the averaged ADC sample of this
 //              control period (sample_i = adc_avg_valid, the control-period
-//              boundary, 4 ADC periods) and (b) the PS's hand-shake: the PS
-//              reads ADC_IA..IC and ENC_POS, writes the dq currents and
-//              cos/sin (MPDTC_IN_*; there is no PL Park transform) and then
-//              writes MPDTC_START (start_i). With both and the core ready it
-//              starts the core (core_start_o, one cycle) and goes to MPDTC.
-//              A start before the sample is ignored; a second boundary in
-//              SAMPLE (the PS was late) counts an overrun and S[k] stays.
+//              boundary, 2^ADC_AVG_LOG2 ADC periods) and (b) start_i, the core's
+//              inputs of this period are ready:
+//              - auto_i = 1 (MPDTC_CTRL.AUTO, the autonomous loop): start_i
+//                is the out_valid of mpdtc_frontend, which pl_top starts with
+//                every averaged sample (encoder angle, speed, sin/cos,
+//                Clarke/Park in the PL), MPDTC_FE_LATENCY_CYCLES = 9 cycles
+//                after the boundary; no PS access in the period.
+//              - auto_i = 0 (PS-fed debug path): start_i is the MPDTC_START
+//                write after the PS read ADC_IA..IC and ENC_POS and wrote the
+//                dq currents and cos/sin (MPDTC_IN_*).
+//              With both and the core ready it starts the core (core_start_o,
+//              one cycle) and goes to MPDTC. A start before the sample is
+//              ignored; a second boundary in SAMPLE (the inputs were late)
+//              counts an overrun and S[k] stays.
 //   3 MPDTC    waits for the core's out_valid (11 cycles), latches S[k+1]
 //              (pending), goes to PWM. A boundary here counts an overrun.
 //   4 PWM      waits for the next boundary (sample_i): then S[k+1] becomes
@@ -42,7 +50,9 @@
 //              that boundary's sample already taken.
 // This is the timeline of drive::pmsm::sim (measurement at t_k, decision
 // applied during [t_k+1, t_k+2), 000 before the first decision).
-// MPDTC_START writes in INITIAL, MPDTC and PWM are ignored.
+// start_i in INITIAL, MPDTC and PWM is ignored. In the autonomous loop a
+// period takes 9 (front end) + 1 + 11 (core) cycles from the boundary to
+// S[k+1] pending, so control periods down to 100 cycles (1 us) leave margin.
 `default_nettype none
 
 module mpdtc_seq (
@@ -50,7 +60,8 @@ module mpdtc_seq (
     input  wire        rst_i,
     input  wire        run_i,            // may drive: see header
     input  wire        sample_i,         // averaged ADC sample strobe (boundary)
-    input  wire        start_i,          // MPDTC_START write strobe
+    input  wire        auto_i,           // MPDTC_CTRL.AUTO: start_i = front end
+    input  wire        start_i,          // inputs ready: MPDTC_START write or front end
     input  wire        core_ready_i,
     input  wire        core_valid_i,
     input  wire [ 2:0] core_s_i,         // S[k+1], valid with core_valid_i
@@ -158,7 +169,7 @@ module mpdtc_seq (
         end
     end
 
-    assign core_start_o = (state_q == IDLE) ? start_i : go;
+    assign core_start_o = (state_q == IDLE) ? (start_i && !auto_i) : go;
     assign core_clr_o   = state_q == INITIAL;
     assign drive_o      = run_i && (state_q != IDLE);
     assign s_o          = (state_q == INITIAL) ? (align_on ? align_vec_i : 3'd0) : s_apply_q;
@@ -199,6 +210,8 @@ module mpdtc_seq (
         // The core is started by the sequence only from SAMPLE with the
         // period's sample and a ready core.
         if (state_q != IDLE && core_start_o) assert (state_q == SAMPLE && sampled_q && core_ready_i);
+        // In the autonomous loop nothing starts the core in IDLE.
+        if (auto_i && state_q == IDLE) assert (!core_start_o);
         // The core's state is cleared only during the alignment.
         assert (core_clr_o == (state_q == INITIAL));
     end

@@ -43,6 +43,7 @@ module pl_regs (
     // block MPDTC
     output wire         mpdtc_ctrl_manual_o,
     output wire         mpdtc_ctrl_state_clr_o,
+    output wire         mpdtc_ctrl_auto_o,
     output wire         mpdtc_start_we_o,
     input  wire         mpdtc_status_busy_i,
     input  wire   [2:0] mpdtc_status_s_next_i,
@@ -86,6 +87,19 @@ module pl_regs (
     output wire  [15:0] mpdtc_align_on_o,
     output wire  [31:0] mpdtc_align_time_o,
     input  wire  [15:0] mpdtc_align_pos_i,
+    output wire  [31:0] mpdtc_fe_ang_scale_o,
+    output wire  [31:0] mpdtc_fe_spd_scale_o,
+    output wire  [17:0] mpdtc_fe_age0_o,
+    output wire  [17:0] mpdtc_fe_age1_o,
+    output wire  [17:0] mpdtc_fe_age2_o,
+    output wire  [15:0] mpdtc_fe_off_a_o,
+    output wire  [15:0] mpdtc_fe_off_b_o,
+    output wire  [15:0] mpdtc_fe_off_c_o,
+    output wire  [17:0] mpdtc_fe_gain_a_o,
+    output wire  [17:0] mpdtc_fe_gain_b_o,
+    output wire  [17:0] mpdtc_fe_gain_c_o,
+    input  wire  [24:0] mpdtc_fe_id_i,
+    input  wire  [24:0] mpdtc_fe_iq_i,
     // block MPDCC
     output wire         mpdcc_start_we_o,
     input  wire         mpdcc_status_busy_i,
@@ -169,6 +183,7 @@ module pl_regs (
     input  wire  [15:0] adc_ib_i,
     input  wire  [15:0] adc_ic_i,
     input  wire  [31:0] adc_count_i,
+    output wire   [1:0] adc_avg_log2_o,
     // block ENC
     output wire  [15:0] enc_cpr_o,
     input  wire  [15:0] enc_pos_i,
@@ -235,7 +250,7 @@ module pl_regs (
     reg   [1:0] err_q;
     reg  [31:0] heartbeat_q;
     reg  [31:0] scratch_q;
-    reg   [1:0] mpdtc_ctrl_q;
+    reg   [2:0] mpdtc_ctrl_q;
     reg  [31:0] mpdtc_start_q;
     reg  [24:0] mpdtc_in_id_q;
     reg  [24:0] mpdtc_in_iq_q;
@@ -269,6 +284,17 @@ module pl_regs (
     reg  [15:0] mpdtc_align_period_q;
     reg  [15:0] mpdtc_align_on_q;
     reg  [31:0] mpdtc_align_time_q;
+    reg  [31:0] mpdtc_fe_ang_scale_q;
+    reg  [31:0] mpdtc_fe_spd_scale_q;
+    reg  [17:0] mpdtc_fe_age0_q;
+    reg  [17:0] mpdtc_fe_age1_q;
+    reg  [17:0] mpdtc_fe_age2_q;
+    reg  [15:0] mpdtc_fe_off_a_q;
+    reg  [15:0] mpdtc_fe_off_b_q;
+    reg  [15:0] mpdtc_fe_off_c_q;
+    reg  [17:0] mpdtc_fe_gain_a_q;
+    reg  [17:0] mpdtc_fe_gain_b_q;
+    reg  [17:0] mpdtc_fe_gain_c_q;
     reg         mpdcc_start_q;
     reg   [2:0] mpdcc_n_use_q;
     reg   [8:0] mpdcc_s_prev_q;
@@ -320,6 +346,7 @@ module pl_regs (
     reg   [2:0] sw_state_q;
     reg         adc_ctrl_q;
     reg  [15:0] adc_period_q;
+    reg   [1:0] adc_avg_log2_q;
     reg  [15:0] enc_cpr_q;
     reg  [23:0] enc_window_q;
     reg  [10:0] oc_limit_q;
@@ -351,7 +378,7 @@ module pl_regs (
     wire w_scratch = wr_i && wr_addr_i == 15'h0018;
     wire [31:0] n_scratch = merge(scratch_q, wr_data_i, wr_strb_i);
     wire w_mpdtc_ctrl = wr_i && wr_addr_i == 15'h1000;
-    wire [31:0] n_mpdtc_ctrl = merge({30'd0, mpdtc_ctrl_q}, wr_data_i, wr_strb_i);
+    wire [31:0] n_mpdtc_ctrl = merge({29'd0, mpdtc_ctrl_q}, wr_data_i, wr_strb_i);
     wire w_mpdtc_start = wr_i && wr_addr_i == 15'h1004;
     wire [31:0] n_mpdtc_start = merge(mpdtc_start_q, wr_data_i, wr_strb_i);
     wire w_mpdtc_in_id = wr_i && wr_addr_i == 15'h1010;
@@ -418,6 +445,28 @@ module pl_regs (
     wire [31:0] n_mpdtc_align_on = clamp(merge({16'd0, mpdtc_align_on_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h00007fff);
     wire w_mpdtc_align_time = wr_i && wr_addr_i == 15'h10b0;
     wire [31:0] n_mpdtc_align_time = clamp(merge(mpdtc_align_time_q, wr_data_i, wr_strb_i), 32'h00000001, 32'hffffffff);
+    wire w_mpdtc_fe_ang_scale = wr_i && wr_addr_i == 15'h10b8;
+    wire [31:0] n_mpdtc_fe_ang_scale = merge(mpdtc_fe_ang_scale_q, wr_data_i, wr_strb_i);
+    wire w_mpdtc_fe_spd_scale = wr_i && wr_addr_i == 15'h10bc;
+    wire [31:0] n_mpdtc_fe_spd_scale = merge(mpdtc_fe_spd_scale_q, wr_data_i, wr_strb_i);
+    wire w_mpdtc_fe_age0 = wr_i && wr_addr_i == 15'h10c0;
+    wire [31:0] n_mpdtc_fe_age0 = merge({14'd0, mpdtc_fe_age0_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_fe_age1 = wr_i && wr_addr_i == 15'h10c4;
+    wire [31:0] n_mpdtc_fe_age1 = merge({14'd0, mpdtc_fe_age1_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_fe_age2 = wr_i && wr_addr_i == 15'h10c8;
+    wire [31:0] n_mpdtc_fe_age2 = merge({14'd0, mpdtc_fe_age2_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_fe_off_a = wr_i && wr_addr_i == 15'h10cc;
+    wire [31:0] n_mpdtc_fe_off_a = merge({16'd0, mpdtc_fe_off_a_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_fe_off_b = wr_i && wr_addr_i == 15'h10d0;
+    wire [31:0] n_mpdtc_fe_off_b = merge({16'd0, mpdtc_fe_off_b_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_fe_off_c = wr_i && wr_addr_i == 15'h10d4;
+    wire [31:0] n_mpdtc_fe_off_c = merge({16'd0, mpdtc_fe_off_c_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_fe_gain_a = wr_i && wr_addr_i == 15'h10d8;
+    wire [31:0] n_mpdtc_fe_gain_a = merge({14'd0, mpdtc_fe_gain_a_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_fe_gain_b = wr_i && wr_addr_i == 15'h10dc;
+    wire [31:0] n_mpdtc_fe_gain_b = merge({14'd0, mpdtc_fe_gain_b_q}, wr_data_i, wr_strb_i);
+    wire w_mpdtc_fe_gain_c = wr_i && wr_addr_i == 15'h10e0;
+    wire [31:0] n_mpdtc_fe_gain_c = merge({14'd0, mpdtc_fe_gain_c_q}, wr_data_i, wr_strb_i);
     wire w_mpdcc_start = wr_i && wr_addr_i == 15'h2000;
     wire [31:0] n_mpdcc_start = merge({31'd0, mpdcc_start_q}, wr_data_i, wr_strb_i);
     wire w_mpdcc_n_use = wr_i && wr_addr_i == 15'h2008;
@@ -527,6 +576,9 @@ module pl_regs (
     wire [31:0] n_adc_ctrl = merge({31'd0, adc_ctrl_q}, wr_data_i, wr_strb_i);
     wire w_adc_period = wr_i && wr_addr_i == 15'h4004;
     wire [31:0] n_adc_period = clamp(merge({16'd0, adc_period_q}, wr_data_i, wr_strb_i), 32'h00000010, 32'h0000ffff);
+    wire w_adc_avg_log2 = wr_i && wr_addr_i == 15'h4018;
+    wire [31:0] n_adc_avg_log2 = merge({30'd0, adc_avg_log2_q}, wr_data_i, wr_strb_i);
+    wire bad_adc_avg_log2 = n_adc_avg_log2 > 32'h00000002;
     wire w_enc_cpr = wr_i && wr_addr_i == 15'h5000;
     wire [31:0] n_enc_cpr = clamp(merge({16'd0, enc_cpr_q}, wr_data_i, wr_strb_i), 32'h00000004, 32'h0000ffff);
     wire w_enc_window = wr_i && wr_addr_i == 15'h500c;
@@ -576,23 +628,26 @@ module pl_regs (
         | w_mpdtc_p_u0_h | w_mpdtc_p_psi_l | w_mpdtc_p_kinv_t | w_mpdtc_p_tol | w_mpdtc_p_k_int
         | w_mpdtc_p_int_lim | w_mpdtc_p_int_cond | w_mpdtc_p_kp_o | w_mpdtc_p_ki_o | w_mpdtc_p_eta_lim
         | w_mpdtc_p_w2_0 | w_mpdtc_p_w2_1 | w_mpdtc_p_w2_2 | w_mpdtc_p_w2_3 | w_mpdtc_align_vec
-        | w_mpdtc_align_period | w_mpdtc_align_on | w_mpdtc_align_time | w_mpdcc_start | w_mpdcc_n_use
-        | w_mpdcc_s_prev | w_mpdcc_i_a | w_mpdcc_i_b | w_mpdcc_psi_a | w_mpdcc_psi_b
-        | w_mpdcc_v_n | w_mpdcc_v_ph_a | w_mpdcc_v_ph_b | w_mpdcc_v_ph_c | w_mpdcc_iref_a
-        | w_mpdcc_iref_b | w_mpdcc_omega_r | w_mpdcc_omega_s | w_mpdcc_c_tau | w_mpdcc_c_r
-        | w_mpdcc_c_w | w_mpdcc_c_p | w_mpdcc_c_s | w_mpdcc_c_3 | w_mpdcc_c_d
-        | w_mpdcc_c_n | w_mpdcc_c_ph | w_mpdcc_s3h | w_mpdcc_v_ph_ref | w_mpdcc_c_tau1
-        | w_mpdcc_c_r1 | w_mpdcc_c_w1 | w_mpdcc_c_s1 | w_mpdcc_vdc_half | w_mpdcc_g3
-        | w_mpdcc_gd | w_mpdcc_g3_1 | w_mpdcc_bnd_ia | w_mpdcc_bnd_ib | w_mpdcc_bnd_ic
-        | w_mpdcc_bnd_vn | w_mpdcc_bnd_vpa | w_mpdcc_bnd_vpb | w_mpdcc_bnd_vpc | w_mpdcc_lambda_n
-        | w_gate_ctrl | w_dead_time | w_pwm_period | w_duty_a | w_duty_b
-        | w_duty_c | w_sw_state | w_adc_ctrl | w_adc_period | w_enc_cpr
-        | w_enc_window | w_fault_status | w_oc_limit | w_wdg_timeout | w_cap_source
-        | w_cap_pre | w_cap_decim | w_cap_step | w_cap_thr_ch | w_cap_thr_level
-        | w_cap_thr_edge | w_cap_sel | w_cap_arm | w_cap_trig | w_cap_in_id
-        | w_cap_in_iq | w_cap_in_torque | w_cap_in_tref | w_cap_rd_index;
+        | w_mpdtc_align_period | w_mpdtc_align_on | w_mpdtc_align_time | w_mpdtc_fe_ang_scale | w_mpdtc_fe_spd_scale
+        | w_mpdtc_fe_age0 | w_mpdtc_fe_age1 | w_mpdtc_fe_age2 | w_mpdtc_fe_off_a | w_mpdtc_fe_off_b
+        | w_mpdtc_fe_off_c | w_mpdtc_fe_gain_a | w_mpdtc_fe_gain_b | w_mpdtc_fe_gain_c | w_mpdcc_start
+        | w_mpdcc_n_use | w_mpdcc_s_prev | w_mpdcc_i_a | w_mpdcc_i_b | w_mpdcc_psi_a
+        | w_mpdcc_psi_b | w_mpdcc_v_n | w_mpdcc_v_ph_a | w_mpdcc_v_ph_b | w_mpdcc_v_ph_c
+        | w_mpdcc_iref_a | w_mpdcc_iref_b | w_mpdcc_omega_r | w_mpdcc_omega_s | w_mpdcc_c_tau
+        | w_mpdcc_c_r | w_mpdcc_c_w | w_mpdcc_c_p | w_mpdcc_c_s | w_mpdcc_c_3
+        | w_mpdcc_c_d | w_mpdcc_c_n | w_mpdcc_c_ph | w_mpdcc_s3h | w_mpdcc_v_ph_ref
+        | w_mpdcc_c_tau1 | w_mpdcc_c_r1 | w_mpdcc_c_w1 | w_mpdcc_c_s1 | w_mpdcc_vdc_half
+        | w_mpdcc_g3 | w_mpdcc_gd | w_mpdcc_g3_1 | w_mpdcc_bnd_ia | w_mpdcc_bnd_ib
+        | w_mpdcc_bnd_ic | w_mpdcc_bnd_vn | w_mpdcc_bnd_vpa | w_mpdcc_bnd_vpb | w_mpdcc_bnd_vpc
+        | w_mpdcc_lambda_n | w_gate_ctrl | w_dead_time | w_pwm_period | w_duty_a
+        | w_duty_b | w_duty_c | w_sw_state | w_adc_ctrl | w_adc_period
+        | w_adc_avg_log2 | w_enc_cpr | w_enc_window | w_fault_status | w_oc_limit
+        | w_wdg_timeout | w_cap_source | w_cap_pre | w_cap_decim | w_cap_step
+        | w_cap_thr_ch | w_cap_thr_level | w_cap_thr_edge | w_cap_sel | w_cap_arm
+        | w_cap_trig | w_cap_in_id | w_cap_in_iq | w_cap_in_torque | w_cap_in_tref
+        | w_cap_rd_index;
     // Access errors of this cycle (set ERR).
-    wire bad_value = (w_ctrl && bad_ctrl) || (w_mpdcc_bnd_ia && bad_mpdcc_bnd_ia) || (w_mpdcc_bnd_ib && bad_mpdcc_bnd_ib) || (w_mpdcc_bnd_ic && bad_mpdcc_bnd_ic) || (w_mpdcc_bnd_vn && bad_mpdcc_bnd_vn) || (w_mpdcc_bnd_vpa && bad_mpdcc_bnd_vpa) || (w_mpdcc_bnd_vpb && bad_mpdcc_bnd_vpb) || (w_mpdcc_bnd_vpc && bad_mpdcc_bnd_vpc) || (w_cap_thr_ch && bad_cap_thr_ch) || (w_cap_sel && bad_cap_sel);
+    wire bad_value = (w_ctrl && bad_ctrl) || (w_mpdcc_bnd_ia && bad_mpdcc_bnd_ia) || (w_mpdcc_bnd_ib && bad_mpdcc_bnd_ib) || (w_mpdcc_bnd_ic && bad_mpdcc_bnd_ic) || (w_mpdcc_bnd_vn && bad_mpdcc_bnd_vn) || (w_mpdcc_bnd_vpa && bad_mpdcc_bnd_vpa) || (w_mpdcc_bnd_vpb && bad_mpdcc_bnd_vpb) || (w_mpdcc_bnd_vpc && bad_mpdcc_bnd_vpc) || (w_adc_avg_log2 && bad_adc_avg_log2) || (w_cap_thr_ch && bad_cap_thr_ch) || (w_cap_sel && bad_cap_sel);
     wire bad_addr = (wr_i && !w_any_ok) || (rd_i && rd_err_o);
 
     assign wr_err_o = wr_i && !w_any_ok;
@@ -603,7 +658,7 @@ module pl_regs (
             err_q <= 2'h0;
             heartbeat_q <= 32'h0;
             scratch_q <= 32'h0;
-            mpdtc_ctrl_q <= 2'h3;
+            mpdtc_ctrl_q <= 3'h3;
             mpdtc_start_q <= 32'h0;
             mpdtc_in_id_q <= 25'h0;
             mpdtc_in_iq_q <= 25'h0;
@@ -637,6 +692,17 @@ module pl_regs (
             mpdtc_align_period_q <= 16'h1388;
             mpdtc_align_on_q <= 16'hfa;
             mpdtc_align_time_q <= 32'h2faf080;
+            mpdtc_fe_ang_scale_q <= 32'h700000;
+            mpdtc_fe_spd_scale_q <= 32'h1c06e1a;
+            mpdtc_fe_age0_q <= 18'h3e000;
+            mpdtc_fe_age1_q <= 18'he000;
+            mpdtc_fe_age2_q <= 18'h1e000;
+            mpdtc_fe_off_a_q <= 16'h0;
+            mpdtc_fe_off_b_q <= 16'h0;
+            mpdtc_fe_off_c_q <= 16'h0;
+            mpdtc_fe_gain_a_q <= 18'h0;
+            mpdtc_fe_gain_b_q <= 18'h0;
+            mpdtc_fe_gain_c_q <= 18'h0;
             mpdcc_start_q <= 1'h0;
             mpdcc_n_use_q <= 3'h2;
             mpdcc_s_prev_q <= 9'h0;
@@ -688,6 +754,7 @@ module pl_regs (
             sw_state_q <= 3'h0;
             adc_ctrl_q <= 1'h1;
             adc_period_q <= 16'h187;
+            adc_avg_log2_q <= 2'h2;
             enc_cpr_q <= 16'h1000;
             enc_window_q <= 24'h186a0;
             oc_limit_q <= 11'h708;
@@ -713,7 +780,7 @@ module pl_regs (
             err_q <= (err_q & ~(w_err ? n_err[1:0] : 2'd0)) | {bad_addr, bad_value};
             if (w_heartbeat) heartbeat_q <= n_heartbeat[31:0];
             if (w_scratch) scratch_q <= n_scratch[31:0];
-            if (w_mpdtc_ctrl) mpdtc_ctrl_q <= n_mpdtc_ctrl[1:0];
+            if (w_mpdtc_ctrl) mpdtc_ctrl_q <= n_mpdtc_ctrl[2:0];
             if (w_mpdtc_start) mpdtc_start_q <= n_mpdtc_start[31:0];
             if (w_mpdtc_in_id) mpdtc_in_id_q <= n_mpdtc_in_id[24:0];
             if (w_mpdtc_in_iq) mpdtc_in_iq_q <= n_mpdtc_in_iq[24:0];
@@ -747,6 +814,17 @@ module pl_regs (
             if (w_mpdtc_align_period) mpdtc_align_period_q <= n_mpdtc_align_period[15:0];
             if (w_mpdtc_align_on) mpdtc_align_on_q <= n_mpdtc_align_on[15:0];
             if (w_mpdtc_align_time) mpdtc_align_time_q <= n_mpdtc_align_time[31:0];
+            if (w_mpdtc_fe_ang_scale) mpdtc_fe_ang_scale_q <= n_mpdtc_fe_ang_scale[31:0];
+            if (w_mpdtc_fe_spd_scale) mpdtc_fe_spd_scale_q <= n_mpdtc_fe_spd_scale[31:0];
+            if (w_mpdtc_fe_age0) mpdtc_fe_age0_q <= n_mpdtc_fe_age0[17:0];
+            if (w_mpdtc_fe_age1) mpdtc_fe_age1_q <= n_mpdtc_fe_age1[17:0];
+            if (w_mpdtc_fe_age2) mpdtc_fe_age2_q <= n_mpdtc_fe_age2[17:0];
+            if (w_mpdtc_fe_off_a) mpdtc_fe_off_a_q <= n_mpdtc_fe_off_a[15:0];
+            if (w_mpdtc_fe_off_b) mpdtc_fe_off_b_q <= n_mpdtc_fe_off_b[15:0];
+            if (w_mpdtc_fe_off_c) mpdtc_fe_off_c_q <= n_mpdtc_fe_off_c[15:0];
+            if (w_mpdtc_fe_gain_a) mpdtc_fe_gain_a_q <= n_mpdtc_fe_gain_a[17:0];
+            if (w_mpdtc_fe_gain_b) mpdtc_fe_gain_b_q <= n_mpdtc_fe_gain_b[17:0];
+            if (w_mpdtc_fe_gain_c) mpdtc_fe_gain_c_q <= n_mpdtc_fe_gain_c[17:0];
             if (w_mpdcc_start) mpdcc_start_q <= n_mpdcc_start[0:0];
             if (w_mpdcc_n_use) mpdcc_n_use_q <= n_mpdcc_n_use[2:0];
             if (w_mpdcc_s_prev) mpdcc_s_prev_q <= n_mpdcc_s_prev[8:0];
@@ -799,6 +877,7 @@ module pl_regs (
             if (w_sw_state) sw_state_q <= n_sw_state[2:0];
             if (w_adc_ctrl) adc_ctrl_q <= n_adc_ctrl[0:0];
             if (w_adc_period) adc_period_q <= n_adc_period[15:0];
+            if (w_adc_avg_log2 && !bad_adc_avg_log2) adc_avg_log2_q <= n_adc_avg_log2[1:0];
             if (w_enc_cpr) enc_cpr_q <= n_enc_cpr[15:0];
             if (w_enc_window) enc_window_q <= n_enc_window[23:0];
             if (w_oc_limit) oc_limit_q <= n_oc_limit[10:0];
@@ -833,7 +912,7 @@ module pl_regs (
             15'h0010: rd_data_o = {30'd0, err_q};  // ERR
             15'h0014: rd_data_o = heartbeat_q;  // HEARTBEAT
             15'h0018: rd_data_o = scratch_q;  // SCRATCH
-            15'h1000: rd_data_o = {30'd0, mpdtc_ctrl_q};  // MPDTC_CTRL
+            15'h1000: rd_data_o = {29'd0, mpdtc_ctrl_q};  // MPDTC_CTRL
             15'h1004: rd_data_o = mpdtc_start_q;  // MPDTC_START
             15'h1008: rd_data_o = {mpdtc_status_done_count_i, 12'd0, mpdtc_status_s_next_i, mpdtc_status_busy_i};  // MPDTC_STATUS
             15'h100c: rd_data_o = 32'h0000000b;  // MPDTC_LATENCY
@@ -872,6 +951,19 @@ module pl_regs (
             15'h10ac: rd_data_o = {16'd0, mpdtc_align_on_q};  // MPDTC_ALIGN_ON
             15'h10b0: rd_data_o = mpdtc_align_time_q;  // MPDTC_ALIGN_TIME
             15'h10b4: rd_data_o = {16'd0, mpdtc_align_pos_i};  // MPDTC_ALIGN_POS
+            15'h10b8: rd_data_o = mpdtc_fe_ang_scale_q;  // MPDTC_FE_ANG_SCALE
+            15'h10bc: rd_data_o = mpdtc_fe_spd_scale_q;  // MPDTC_FE_SPD_SCALE
+            15'h10c0: rd_data_o = {14'd0, mpdtc_fe_age0_q};  // MPDTC_FE_AGE0
+            15'h10c4: rd_data_o = {14'd0, mpdtc_fe_age1_q};  // MPDTC_FE_AGE1
+            15'h10c8: rd_data_o = {14'd0, mpdtc_fe_age2_q};  // MPDTC_FE_AGE2
+            15'h10cc: rd_data_o = {16'd0, mpdtc_fe_off_a_q};  // MPDTC_FE_OFF_A
+            15'h10d0: rd_data_o = {16'd0, mpdtc_fe_off_b_q};  // MPDTC_FE_OFF_B
+            15'h10d4: rd_data_o = {16'd0, mpdtc_fe_off_c_q};  // MPDTC_FE_OFF_C
+            15'h10d8: rd_data_o = {14'd0, mpdtc_fe_gain_a_q};  // MPDTC_FE_GAIN_A
+            15'h10dc: rd_data_o = {14'd0, mpdtc_fe_gain_b_q};  // MPDTC_FE_GAIN_B
+            15'h10e0: rd_data_o = {14'd0, mpdtc_fe_gain_c_q};  // MPDTC_FE_GAIN_C
+            15'h10e4: rd_data_o = {7'd0, mpdtc_fe_id_i};  // MPDTC_FE_ID
+            15'h10e8: rd_data_o = {7'd0, mpdtc_fe_iq_i};  // MPDTC_FE_IQ
             15'h2000: rd_data_o = {31'd0, mpdcc_start_q};  // MPDCC_START
             15'h2004: rd_data_o = {mpdcc_status_count_i, 14'd0, mpdcc_status_done_i, mpdcc_status_busy_i};  // MPDCC_STATUS
             15'h2008: rd_data_o = {29'd0, mpdcc_n_use_q};  // MPDCC_N_USE
@@ -936,6 +1028,7 @@ module pl_regs (
             15'h400c: rd_data_o = {16'd0, adc_ib_i};  // ADC_IB
             15'h4010: rd_data_o = {16'd0, adc_ic_i};  // ADC_IC
             15'h4014: rd_data_o = adc_count_i;  // ADC_COUNT
+            15'h4018: rd_data_o = {30'd0, adc_avg_log2_q};  // ADC_AVG_LOG2
             15'h5000: rd_data_o = {16'd0, enc_cpr_q};  // ENC_CPR
             15'h5004: rd_data_o = {16'd0, enc_pos_i};  // ENC_POS
             15'h5008: rd_data_o = {16'd0, enc_speed_i};  // ENC_SPEED
@@ -975,6 +1068,7 @@ module pl_regs (
     assign scratch_o = scratch_q;
     assign mpdtc_ctrl_manual_o = mpdtc_ctrl_q[0];
     assign mpdtc_ctrl_state_clr_o = mpdtc_ctrl_q[1];
+    assign mpdtc_ctrl_auto_o = mpdtc_ctrl_q[2];
     assign mpdtc_start_we_o = w_mpdtc_start;
     assign mpdtc_in_id_o = mpdtc_in_id_q;
     assign mpdtc_in_iq_o = mpdtc_in_iq_q;
@@ -1008,6 +1102,17 @@ module pl_regs (
     assign mpdtc_align_period_o = mpdtc_align_period_q;
     assign mpdtc_align_on_o = mpdtc_align_on_q;
     assign mpdtc_align_time_o = mpdtc_align_time_q;
+    assign mpdtc_fe_ang_scale_o = mpdtc_fe_ang_scale_q;
+    assign mpdtc_fe_spd_scale_o = mpdtc_fe_spd_scale_q;
+    assign mpdtc_fe_age0_o = mpdtc_fe_age0_q;
+    assign mpdtc_fe_age1_o = mpdtc_fe_age1_q;
+    assign mpdtc_fe_age2_o = mpdtc_fe_age2_q;
+    assign mpdtc_fe_off_a_o = mpdtc_fe_off_a_q;
+    assign mpdtc_fe_off_b_o = mpdtc_fe_off_b_q;
+    assign mpdtc_fe_off_c_o = mpdtc_fe_off_c_q;
+    assign mpdtc_fe_gain_a_o = mpdtc_fe_gain_a_q;
+    assign mpdtc_fe_gain_b_o = mpdtc_fe_gain_b_q;
+    assign mpdtc_fe_gain_c_o = mpdtc_fe_gain_c_q;
     assign mpdcc_start_we_o = w_mpdcc_start;
     assign mpdcc_n_use_o = mpdcc_n_use_q;
     assign mpdcc_s_prev_a_o = mpdcc_s_prev_q[2:0];
@@ -1061,6 +1166,7 @@ module pl_regs (
     assign sw_state_o = sw_state_q;
     assign adc_ctrl_enable_o = adc_ctrl_q;
     assign adc_period_o = adc_period_q;
+    assign adc_avg_log2_o = adc_avg_log2_q;
     assign enc_cpr_o = enc_cpr_q;
     assign enc_window_o = enc_window_q;
     assign fault_status_overcurrent_clr_o = w_fault_status ? n_fault_status[0] : 1'd0;
@@ -1180,6 +1286,28 @@ module pl_regs (
             if ($past(!w_mpdtc_align_time)) assert (mpdtc_align_time_q == $past(mpdtc_align_time_q));
             // MPDTC_ALIGN_TIME: always inside its clamp range.
             assert (mpdtc_align_time_q >= 32'h00000001);
+            // MPDTC_FE_ANG_SCALE: changed only by a write.
+            if ($past(!w_mpdtc_fe_ang_scale)) assert (mpdtc_fe_ang_scale_q == $past(mpdtc_fe_ang_scale_q));
+            // MPDTC_FE_SPD_SCALE: changed only by a write.
+            if ($past(!w_mpdtc_fe_spd_scale)) assert (mpdtc_fe_spd_scale_q == $past(mpdtc_fe_spd_scale_q));
+            // MPDTC_FE_AGE0: changed only by a write.
+            if ($past(!w_mpdtc_fe_age0)) assert (mpdtc_fe_age0_q == $past(mpdtc_fe_age0_q));
+            // MPDTC_FE_AGE1: changed only by a write.
+            if ($past(!w_mpdtc_fe_age1)) assert (mpdtc_fe_age1_q == $past(mpdtc_fe_age1_q));
+            // MPDTC_FE_AGE2: changed only by a write.
+            if ($past(!w_mpdtc_fe_age2)) assert (mpdtc_fe_age2_q == $past(mpdtc_fe_age2_q));
+            // MPDTC_FE_OFF_A: changed only by a write.
+            if ($past(!w_mpdtc_fe_off_a)) assert (mpdtc_fe_off_a_q == $past(mpdtc_fe_off_a_q));
+            // MPDTC_FE_OFF_B: changed only by a write.
+            if ($past(!w_mpdtc_fe_off_b)) assert (mpdtc_fe_off_b_q == $past(mpdtc_fe_off_b_q));
+            // MPDTC_FE_OFF_C: changed only by a write.
+            if ($past(!w_mpdtc_fe_off_c)) assert (mpdtc_fe_off_c_q == $past(mpdtc_fe_off_c_q));
+            // MPDTC_FE_GAIN_A: changed only by a write.
+            if ($past(!w_mpdtc_fe_gain_a)) assert (mpdtc_fe_gain_a_q == $past(mpdtc_fe_gain_a_q));
+            // MPDTC_FE_GAIN_B: changed only by a write.
+            if ($past(!w_mpdtc_fe_gain_b)) assert (mpdtc_fe_gain_b_q == $past(mpdtc_fe_gain_b_q));
+            // MPDTC_FE_GAIN_C: changed only by a write.
+            if ($past(!w_mpdtc_fe_gain_c)) assert (mpdtc_fe_gain_c_q == $past(mpdtc_fe_gain_c_q));
             // MPDCC_START: changed only by a write.
             if ($past(!w_mpdcc_start)) assert (mpdcc_start_q == $past(mpdcc_start_q));
             // MPDCC_N_USE: changed only by a write.
@@ -1303,6 +1431,10 @@ module pl_regs (
             if ($past(!w_adc_period)) assert (adc_period_q == $past(adc_period_q));
             // ADC_PERIOD: always inside its clamp range.
             assert ({16'd0, adc_period_q} >= 32'h00000010);
+            // ADC_AVG_LOG2: changed only by a write.
+            if ($past(!w_adc_avg_log2)) assert (adc_avg_log2_q == $past(adc_avg_log2_q));
+            // ADC_AVG_LOG2: a rejected value is never stored.
+            assert ({30'd0, adc_avg_log2_q} <= 32'h00000002);
             // ENC_CPR: changed only by a write.
             if ($past(!w_enc_cpr)) assert (enc_cpr_q == $past(enc_cpr_q));
             // ENC_CPR: always inside its clamp range.

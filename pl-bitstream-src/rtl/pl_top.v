@@ -20,6 +20,16 @@
 //                    explorers); result, cycle count, decision and deadlock
 //                    counters back to the page (observes only: nothing of it
 //                    reaches the gates)
+//   mpdtc_frontend-> with MPDTC_CTRL.AUTO = 1, at every averaged ADC sample:
+//                    encoder angle and speed, sin/cos, ADC offset/gain,
+//                    Clarke/Park -> the core's inputs 9 cycles later, which
+//                    start the core in SAMPLE (the autonomous loop: the PS
+//                    writes only MPDTC_IN_T_REF); MPDTC_FE_* registers
+//   mpdtc_core    -> S[k+1] to mpdtc_seq (inputs from the front end with
+//                    AUTO = 1, else from MPDTC_IN_*; parameters MPDTC_P_*;
+//                    started by the sequence, or by MPDTC_START while the
+//                    sequence is IDLE and AUTO = 0); PWM.SW_STATE drives the
+//                    gates instead when MPDTC_CTRL.MANUAL = 1 (reset)
 //   capture_buf   <- PS-written i_d, i_q, torque, torque reference, the
 //                    selected switching state and a selectable channel, one
 //                    sample per CAP_DECIM + 1 averaged ADC results (CAPTURE
@@ -136,7 +146,7 @@ module pl_top #(
     wire [31:0] wdg_timeout;
     wire        heartbeat;
     wire [ 2:0] fault_clr;
-    wire        mp_manual, mp_clr, mp_start;
+    wire        mp_manual, mp_clr, mp_start, mp_auto;
     wire [24:0] mp_id, mp_iq, mp_u0, mp_u0_half, mp_u0_h, mp_psi_l, mp_kinv_t;
     // Non-negative CUR values: 24 register bits, the core's sign bit is 0.
     wire [23:0] mp_tol, mp_int_lim, mp_eta_lim;
@@ -147,6 +157,17 @@ module pl_top #(
     wire [ 2:0] align_vec;
     wire [15:0] align_period, align_on;
     wire [31:0] align_time;
+    // Front end: registers, results, and the core inputs of the active path.
+    wire [31:0] fe_ang_scale, fe_spd_scale;
+    wire [17:0] fe_age0, fe_age1, fe_age2, fe_gain_a, fe_gain_b, fe_gain_c;
+    wire [15:0] fe_off_a, fe_off_b, fe_off_c;
+    wire        fe_valid;
+    wire [24:0] fe_id, fe_iq;
+    wire [17:0] fe_cos0, fe_sin0, fe_cos1, fe_sin1, fe_cos2, fe_sin2, fe_w_ts, fe_t_ref;
+    reg  [ 3:0] fe_busy_q;
+    wire [24:0] in_id, in_iq;
+    wire [17:0] in_cos0, in_sin0, in_cos1, in_sin1, in_cos2, in_sin2, in_w_ts, in_t_ref;
+    wire [ 1:0] adc_avg;
     wire        seq_start, seq_clr, seq_drive, seq_sampled, seq_aligned;
     wire [ 2:0] seq_s, seq_state;
     wire [ 7:0] seq_overruns;
@@ -245,6 +266,7 @@ module pl_top #(
         // MPDTC
         .mpdtc_ctrl_manual_o        (mp_manual),
         .mpdtc_ctrl_state_clr_o     (mp_clr),
+        .mpdtc_ctrl_auto_o          (mp_auto),
         .mpdtc_start_we_o           (mp_start),
         .mpdtc_status_busy_i        (!core_ready),
         .mpdtc_status_s_next_i      (core_s_q),
@@ -352,6 +374,19 @@ module pl_top #(
         .mpdcc_cycles_cycles_i      (mc_cycles),
         .mpdcc_cycles_candidates_i  (mc_candidates),
         .mpdcc_deadlocks_i          (mc_deadlocks_q),
+        .mpdtc_fe_ang_scale_o       (fe_ang_scale),
+        .mpdtc_fe_spd_scale_o       (fe_spd_scale),
+        .mpdtc_fe_age0_o            (fe_age0),
+        .mpdtc_fe_age1_o            (fe_age1),
+        .mpdtc_fe_age2_o            (fe_age2),
+        .mpdtc_fe_off_a_o           (fe_off_a),
+        .mpdtc_fe_off_b_o           (fe_off_b),
+        .mpdtc_fe_off_c_o           (fe_off_c),
+        .mpdtc_fe_gain_a_o          (fe_gain_a),
+        .mpdtc_fe_gain_b_o          (fe_gain_b),
+        .mpdtc_fe_gain_c_o          (fe_gain_c),
+        .mpdtc_fe_id_i              (fe_id),
+        .mpdtc_fe_iq_i              (fe_iq),
         // PWM
         .gate_ctrl_gate_en_o        (gate_en),
         .gate_ctrl_hw_clr_i         (fault_any),
@@ -373,6 +408,7 @@ module pl_top #(
         .adc_ib_i                   (avg_b),
         .adc_ic_i                   (avg_c),
         .adc_count_i                (avg_count),
+        .adc_avg_log2_o                (adc_avg),
         // ENC
         .enc_cpr_o                  (enc_cpr),
         .enc_pos_i                  (enc_pos),
@@ -474,7 +510,8 @@ module pl_top #(
         .rst_i         (rst),
         .run_i         (seq_run),
         .sample_i      (adc_avg_valid_o),
-        .start_i       (mp_start),
+        .auto_i        (mp_auto),
+        .start_i       (mp_auto ? fe_valid : mp_start),
         .core_ready_i  (core_ready),
         .core_valid_i  (core_valid),
         .core_s_i      (core_s_next),
@@ -495,25 +532,92 @@ module pl_top #(
         .align_pos_o   (seq_align_pos)
     );
 
+    // The front end (MPDTC_CTRL.AUTO = 1): one run per averaged sample, at
+    // most one in flight (a sample that comes while it is busy, possible
+    // only right after an ADC restart, is skipped). Its inputs are captured
+    // at the strobe: ADC_IA..IC, ENC_POS/SPEED, MPDTC_IN_T_REF, the
+    // registers and the alignment position of this run.
+    // mpdtc_frontend's LATENCY (drive::regmap::MPDTC_FE_LATENCY_CYCLES).
+    localparam [3:0] FE_LAT = 4'd9;
+    wire fe_start = mp_auto && adc_avg_valid_o && fe_busy_q == 4'd0;
+    always @(posedge clk_i) begin
+        if (rst) fe_busy_q <= 4'd0;
+        else if (fe_start) fe_busy_q <= FE_LAT;
+        else if (fe_busy_q != 4'd0) fe_busy_q <= fe_busy_q - 4'd1;
+    end
+
+    mpdtc_frontend u_fe (
+        .clk_i      (clk_i),
+        .rst_i      (rst),
+        .in_valid_i (fe_start),
+        .pos_i      (enc_pos),
+        .speed_i    (enc_speed),
+        .adc_a_i    (avg_a),
+        .adc_b_i    (avg_b),
+        .adc_c_i    (avg_c),
+        .t_ref_i    (mp_t_ref),
+        .cpr_i      (enc_cpr),
+        .align_pos_i(seq_align_pos),
+        .ang_scale_i(fe_ang_scale),
+        .spd_scale_i(fe_spd_scale),
+        .age0_i     (fe_age0),
+        .age1_i     (fe_age1),
+        .age2_i     (fe_age2),
+        .off_a_i    (fe_off_a),
+        .off_b_i    (fe_off_b),
+        .off_c_i    (fe_off_c),
+        .gain_a_i   (fe_gain_a),
+        .gain_b_i   (fe_gain_b),
+        .gain_c_i   (fe_gain_c),
+        .out_valid_o(fe_valid),
+        .i_d_o      (fe_id),
+        .i_q_o      (fe_iq),
+        .cos0_o     (fe_cos0),
+        .sin0_o     (fe_sin0),
+        .cos1_o     (fe_cos1),
+        .sin1_o     (fe_sin1),
+        .cos2_o     (fe_cos2),
+        .sin2_o     (fe_sin2),
+        .w_ts_o     (fe_w_ts),
+        .t_ref_o    (fe_t_ref),
+        .phi_o      (),
+        .dphi_o     (),
+        .i_alpha_o  (),
+        .i_beta_o   ()
+    );
+
+    // Core inputs: the front end's (they hold until its next run) or the
+    // PS-written MPDTC_IN_* registers.
+    assign in_id   = mp_auto ? fe_id : mp_id;
+    assign in_iq   = mp_auto ? fe_iq : mp_iq;
+    assign in_cos0 = mp_auto ? fe_cos0 : mp_cos0;
+    assign in_sin0 = mp_auto ? fe_sin0 : mp_sin0;
+    assign in_cos1 = mp_auto ? fe_cos1 : mp_cos1;
+    assign in_sin1 = mp_auto ? fe_sin1 : mp_sin1;
+    assign in_cos2 = mp_auto ? fe_cos2 : mp_cos2;
+    assign in_sin2 = mp_auto ? fe_sin2 : mp_sin2;
+    assign in_w_ts = mp_auto ? fe_w_ts : mp_w_ts;
+    assign in_t_ref = mp_auto ? fe_t_ref : mp_t_ref;
+
     // The MPDTC core: started by the sequence (SAMPLE), or by an MPDTC_START
-    // write while the sequence is IDLE (ignored while busy or while
-    // MPDTC_CTRL.STATE_CLR holds the state at zero); the sequence's INITIAL
-    // also holds the state at zero.
+    // write while the sequence is IDLE and AUTO = 0 (ignored while busy or
+    // while MPDTC_CTRL.STATE_CLR holds the state at zero); the sequence's
+    // INITIAL also holds the state at zero.
     mpdtc_core u_mpdtc (
         .clk_i           (clk_i),
         .rst_i           (rst),
         .in_valid_i      (seq_start && !mp_clr),
         .in_ready_o      (core_ready),
-        .i_d_i           (mp_id),
-        .i_q_i           (mp_iq),
-        .cos0_i          (mp_cos0),
-        .sin0_i          (mp_sin0),
-        .cos1_i          (mp_cos1),
-        .sin1_i          (mp_sin1),
-        .cos2_i          (mp_cos2),
-        .sin2_i          (mp_sin2),
-        .w_ts_i          (mp_w_ts),
-        .t_ref_i         (mp_t_ref),
+        .i_d_i           (in_id),
+        .i_q_i           (in_iq),
+        .cos0_i          (in_cos0),
+        .sin0_i          (in_sin0),
+        .cos1_i          (in_cos1),
+        .sin1_i          (in_sin1),
+        .cos2_i          (in_cos2),
+        .sin2_i          (in_sin2),
+        .w_ts_i          (in_w_ts),
+        .t_ref_i         (in_t_ref),
         .p_a_i           (mp_a),
         .p_lambda_i      (mp_lambda),
         .p_u0_i          (mp_u0),
@@ -673,6 +777,7 @@ module pl_top #(
         .rst_i         (rst),
         .en_i          (adc_en),
         .period_i      (adc_period),
+        .avg_log2_i    (adc_avg),
         .adc_cnv_o     (adc_cnv_o),
         .adc_drdy_i    (adc_drdy_i),
         .adc_data_i    (adc_data_i),

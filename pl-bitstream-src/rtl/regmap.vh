@@ -52,12 +52,14 @@ localparam [31:0] RM_SCRATCH_RESET = 32'h00000000;
 // Block 1 MPDTC: mpdtc_core: inputs and parameter registers (formats: docs/mpdtc-fixed.md), start, status, telemetry.
 localparam [2:0] RM_BLK_MPDTC = 3'd1;
 localparam [14:0] RM_MPDTC_CTRL_ADDR = 15'h1000;
-localparam integer RM_MPDTC_CTRL_W = 2;
+localparam integer RM_MPDTC_CTRL_W = 3;
 localparam [31:0] RM_MPDTC_CTRL_RESET = 32'h00000003;
 localparam integer RM_MPDTC_CTRL_MANUAL_LSB = 0;
 localparam integer RM_MPDTC_CTRL_MANUAL_W = 1;
 localparam integer RM_MPDTC_CTRL_STATE_CLR_LSB = 1;
 localparam integer RM_MPDTC_CTRL_STATE_CLR_W = 1;
+localparam integer RM_MPDTC_CTRL_AUTO_LSB = 2;
+localparam integer RM_MPDTC_CTRL_AUTO_W = 1;
 localparam [14:0] RM_MPDTC_START_ADDR = 15'h1004;
 localparam integer RM_MPDTC_START_W = 32;
 localparam [31:0] RM_MPDTC_START_RESET = 32'h00000000;
@@ -194,6 +196,45 @@ localparam [31:0] RM_MPDTC_ALIGN_TIME_MAX = 32'hffffffff;
 localparam [14:0] RM_MPDTC_ALIGN_POS_ADDR = 15'h10b4;
 localparam integer RM_MPDTC_ALIGN_POS_W = 16;
 localparam [31:0] RM_MPDTC_ALIGN_POS_RESET = 32'h00000000;
+localparam [14:0] RM_MPDTC_FE_ANG_SCALE_ADDR = 15'h10b8;
+localparam integer RM_MPDTC_FE_ANG_SCALE_W = 32;
+localparam [31:0] RM_MPDTC_FE_ANG_SCALE_RESET = 32'h00700000;
+localparam [14:0] RM_MPDTC_FE_SPD_SCALE_ADDR = 15'h10bc;
+localparam integer RM_MPDTC_FE_SPD_SCALE_W = 32;
+localparam [31:0] RM_MPDTC_FE_SPD_SCALE_RESET = 32'h01c06e1a;
+localparam [14:0] RM_MPDTC_FE_AGE0_ADDR = 15'h10c0;
+localparam integer RM_MPDTC_FE_AGE0_W = 18;
+localparam [31:0] RM_MPDTC_FE_AGE0_RESET = 32'h0003e000;
+localparam [14:0] RM_MPDTC_FE_AGE1_ADDR = 15'h10c4;
+localparam integer RM_MPDTC_FE_AGE1_W = 18;
+localparam [31:0] RM_MPDTC_FE_AGE1_RESET = 32'h0000e000;
+localparam [14:0] RM_MPDTC_FE_AGE2_ADDR = 15'h10c8;
+localparam integer RM_MPDTC_FE_AGE2_W = 18;
+localparam [31:0] RM_MPDTC_FE_AGE2_RESET = 32'h0001e000;
+localparam [14:0] RM_MPDTC_FE_OFF_A_ADDR = 15'h10cc;
+localparam integer RM_MPDTC_FE_OFF_A_W = 16;
+localparam [31:0] RM_MPDTC_FE_OFF_A_RESET = 32'h00000000;
+localparam [14:0] RM_MPDTC_FE_OFF_B_ADDR = 15'h10d0;
+localparam integer RM_MPDTC_FE_OFF_B_W = 16;
+localparam [31:0] RM_MPDTC_FE_OFF_B_RESET = 32'h00000000;
+localparam [14:0] RM_MPDTC_FE_OFF_C_ADDR = 15'h10d4;
+localparam integer RM_MPDTC_FE_OFF_C_W = 16;
+localparam [31:0] RM_MPDTC_FE_OFF_C_RESET = 32'h00000000;
+localparam [14:0] RM_MPDTC_FE_GAIN_A_ADDR = 15'h10d8;
+localparam integer RM_MPDTC_FE_GAIN_A_W = 18;
+localparam [31:0] RM_MPDTC_FE_GAIN_A_RESET = 32'h00000000;
+localparam [14:0] RM_MPDTC_FE_GAIN_B_ADDR = 15'h10dc;
+localparam integer RM_MPDTC_FE_GAIN_B_W = 18;
+localparam [31:0] RM_MPDTC_FE_GAIN_B_RESET = 32'h00000000;
+localparam [14:0] RM_MPDTC_FE_GAIN_C_ADDR = 15'h10e0;
+localparam integer RM_MPDTC_FE_GAIN_C_W = 18;
+localparam [31:0] RM_MPDTC_FE_GAIN_C_RESET = 32'h00000000;
+localparam [14:0] RM_MPDTC_FE_ID_ADDR = 15'h10e4;
+localparam integer RM_MPDTC_FE_ID_W = 25;
+localparam [31:0] RM_MPDTC_FE_ID_RESET = 32'h00000000;
+localparam [14:0] RM_MPDTC_FE_IQ_ADDR = 15'h10e8;
+localparam integer RM_MPDTC_FE_IQ_W = 25;
+localparam [31:0] RM_MPDTC_FE_IQ_RESET = 32'h00000000;
 
 // Block 2 MPDCC: mpdcc_core (paper 001): s(k-1), state, constants and bounds (formats: docs/mpdcc-fpga.md), start, status, the decision and its cost in cycles.
 localparam [2:0] RM_BLK_MPDCC = 3'd2;
@@ -434,7 +475,7 @@ localparam integer RM_PWM_COUNT_COUNT_W = 16;
 localparam integer RM_PWM_COUNT_DOWN_LSB = 16;
 localparam integer RM_PWM_COUNT_DOWN_W = 1;
 
-// Block 4 ADC: ADC front end: 3 phase currents, sampled every ADC_PERIOD, averaged by 4.
+// Block 4 ADC: ADC front end: 3 phase currents, sampled every ADC_PERIOD, averaged by 2^ADC_AVG_LOG2.
 localparam [2:0] RM_BLK_ADC = 3'd4;
 localparam [14:0] RM_ADC_CTRL_ADDR = 15'h4000;
 localparam integer RM_ADC_CTRL_W = 1;
@@ -458,6 +499,10 @@ localparam [31:0] RM_ADC_IC_RESET = 32'h00000000;
 localparam [14:0] RM_ADC_COUNT_ADDR = 15'h4014;
 localparam integer RM_ADC_COUNT_W = 32;
 localparam [31:0] RM_ADC_COUNT_RESET = 32'h00000000;
+localparam [14:0] RM_ADC_AVG_LOG2_ADDR = 15'h4018;
+localparam integer RM_ADC_AVG_LOG2_W = 2;
+localparam [31:0] RM_ADC_AVG_LOG2_RESET = 32'h00000002;
+localparam [31:0] RM_ADC_AVG_LOG2_MAX = 32'h00000002;
 
 // Block 5 ENC: Incremental encoder (A/B quadrature + index).
 localparam [2:0] RM_BLK_ENC = 3'd5;

@@ -24,6 +24,8 @@ const TOPS: &[(&str, &[&str], &str)] = &[
             "pl_top.v",
             "mpdtc_core.v",
             "mpdtc_seq.v",
+            "mpdtc_frontend.v",
+            "sin_table.vh",
             "axil_slave.v",
             "pl_regs.v",
             "regmap.vh",

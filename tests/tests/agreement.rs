@@ -156,6 +156,12 @@ fn step_agrees<C: Controller>(mode: &str, mut ctrl: C) {
     let host = settling_interp_s(&host_y, 0.0, 0.4, ts).unwrap();
 
     let mut q = boot();
+    // The host run models the PS-fed MPDTC (the reference goes to the core
+    // with the period's inputs); the autonomous loop takes it one period
+    // later, with the next averaged sample.
+    if mode == "mpdtc" {
+        assert!(cmd(&mut q, "config set mpdtc_ps_fed 1").is_ok());
+    }
     for l in [
         &format!("mode {mode}"),
         "enable",

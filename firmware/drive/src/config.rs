@@ -115,7 +115,8 @@ mod ix {
     pub const TORQUE_LIMIT: usize = 20;
     pub const CURRENT_LIMIT: usize = 21;
     pub const WATCHDOG_TIMEOUT: usize = 22;
-    pub const N: usize = 23;
+    pub const MPDTC_PS_FED: usize = 23;
+    pub const N: usize = 24;
 }
 
 /// Number of parameters.
@@ -311,6 +312,16 @@ pub const PARAMS: [Param; N_PARAMS] = [
         200_000,
         "PL watchdog: PL cycles without a heartbeat before the gates go off (WDG_TIMEOUT)",
     ),
+    int(
+        "mpdtc_ps_fed",
+        "1",
+        0,
+        1,
+        0,
+        "MPDTC input path: 0 = autonomous (the PL's front end computes the core's inputs, \
+         the PS writes only the torque reference), 1 = PS-fed debug path (Park and angles \
+         on the PS, MPDTC_IN_* and MPDTC_START every period)",
+    ),
 ];
 
 /// The row of `name`, with its index.
@@ -462,6 +473,7 @@ impl Config {
         v[ix::TORQUE_LIMIT] = sc.torque_limit_nm;
         v[ix::CURRENT_LIMIT] = sc.current_limit_a;
         v[ix::WATCHDOG_TIMEOUT] = f64::from(sc.watchdog_cycles);
+        v[ix::MPDTC_PS_FED] = f64::from(u8::from(sc.mpdtc_ps_fed));
         Self { values: v }
     }
 
@@ -495,6 +507,7 @@ impl Config {
         sc.torque_limit_nm = v[ix::TORQUE_LIMIT];
         sc.current_limit_a = v[ix::CURRENT_LIMIT];
         sc.watchdog_cycles = u(ix::WATCHDOG_TIMEOUT);
+        sc.mpdtc_ps_fed = u(ix::MPDTC_PS_FED) != 0;
         sc
     }
 

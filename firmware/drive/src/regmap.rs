@@ -511,7 +511,8 @@ pub const ADC_PERIOD: Register = Register {
     hw: Hw::Plain,
     fields: &[],
     doc: "Cycles between conversion starts: 391 = 255.75 kHz (nearest to the \
-          paper's 256 kHz); 4 samples are averaged, so results come at 1/4 of it.",
+          paper's 256 kHz); 2^ADC_AVG_LOG2 samples are averaged (reset 4), so results come at \
+          1/2^ADC_AVG_LOG2 of it.",
 };
 const fn adc_result(name: &'static str, offset: u16) -> Register {
     Register {
@@ -521,11 +522,11 @@ const fn adc_result(name: &'static str, offset: u16) -> Register {
         width: 16,
         reset: 0,
         format: "signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); \
-                 floor(sum of 4 / 4)",
+                 floor(sum / 2^ADC_AVG_LOG2)",
         invalid: Invalid::AllValid,
         hw: Hw::Plain,
         fields: &[],
-        doc: "Latest average of 4 samples of this phase current.",
+        doc: "Latest average of 2^ADC_AVG_LOG2 samples of this phase current.",
     }
 }
 /// ADC: phase a current.
@@ -546,6 +547,23 @@ pub const ADC_COUNT: Register = Register {
     hw: Hw::Plain,
     fields: &[],
     doc: "Averaged results produced since reset.",
+};
+
+/// ADC: averaging.
+pub const ADC_AVG_LOG2: Register = Register {
+    name: "ADC_AVG_LOG2",
+    offset: 0x018,
+    access: Access::Rw,
+    width: 2,
+    reset: 2,
+    format: "unsigned, log2 of the samples averaged: 0 = 1, 1 = 2, 2 = 4 (3 is rejected)",
+    invalid: Invalid::Reject { max: 2 },
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Samples per averaged result (ADC_IA..IC, ADC_COUNT, the averaged-sample strobe = \
+          the MPDTC control-period boundary): control period = ADC_PERIOD x 2^ADC_AVG_LOG2 \
+          cycles. Reset 2 (4 samples, 1564 cycles = 63.94 kHz with ADC_PERIOD 391); 1 us = \
+          ADC_PERIOD 100 with 0, or 25 with 2.",
 };
 
 // ---------------------------------------------------------------- block 5
@@ -692,8 +710,8 @@ pub const MPDTC_CTRL: Register = Register {
     name: "MPDTC_CTRL",
     offset: 0x000,
     access: Access::Rw,
-    width: 2,
-    reset: 0b11,
+    width: 3,
+    reset: 0b011,
     format: "bits",
     invalid: Invalid::AllValid,
     hw: Hw::Plain,
@@ -712,8 +730,19 @@ pub const MPDTC_CTRL: Register = Register {
             1,
             "1 = hold the core's state (S[k], S[k-1], observer, integrator) at zero",
         ),
+        field(
+            "AUTO",
+            2,
+            1,
+            "1 = autonomous loop: every averaged ADC sample starts the PL front end \
+             (mpdtc_frontend: encoder angle, speed, sin/cos, ADC offset/gain, Clarke/Park \
+             from the MPDTC_FE_* registers), whose result starts the core in SAMPLE; the PS \
+             writes only MPDTC_IN_T_REF and MPDTC_START is ignored. 0 = the PS writes every \
+             MPDTC_IN_* and MPDTC_START each period (debug path)",
+        ),
     ],
-    doc: "Source of the MPDTC switching state and state reset (reset: manual, cleared).",
+    doc: "Source of the MPDTC switching state, state reset and core-input path (reset: \
+          manual, cleared, PS-fed).",
 };
 /// MPDTC: start.
 pub const MPDTC_START: Register = Register {
@@ -1124,6 +1153,168 @@ pub const MPDTC_ALIGN_POS: Register = Register {
           The encoder counter itself is not changed.",
 };
 
+/// Front end (`mpdtc_frontend`) latency, PL clock cycles: the averaged
+/// sample in, the core's inputs out.
+pub const MPDTC_FE_LATENCY_CYCLES: u32 = 9;
+const FE_OFF_FMT: &str = "signed 16-bit two's complement, ADC counts (range -32768..32767)";
+const FE_GAIN_FMT: &str =
+    "signed 18-bit two's complement in [17:0], 2^-20 A per ADC count (range +-0.125 A per count)";
+const FE_AGE_FMT: &str = "COEF sQ1.16, two's complement in [17:0], control periods (range -2..2)";
+const fn fe(
+    name: &'static str,
+    offset: u16,
+    width: u8,
+    reset: u32,
+    format: &'static str,
+    doc: &'static str,
+) -> Register {
+    Register {
+        name,
+        offset,
+        access: Access::Rw,
+        width,
+        reset,
+        format,
+        invalid: Invalid::AllValid,
+        hw: Hw::Plain,
+        fields: &[],
+        doc,
+    }
+}
+/// MPDTC front end: encoder count to electrical angle.
+pub const MPDTC_FE_ANG_SCALE: Register = fe(
+    "MPDTC_FE_ANG_SCALE",
+    0x0B8,
+    32,
+    7 << 20,
+    "unsigned 32-bit, 2^-32 electrical turn per encoder count (range 0..2^32-1)",
+    "round(pole_pairs 2^32 / ENC_CPR) mod 2^32: pole pairs and counts per revolution \
+     for the autonomous loop (the PL has no divider); theta_e = (ENC_POS - \
+     MPDTC_ALIGN_POS mod ENC_CPR) x this, mod one turn. Reset: 7 pole pairs, 4096 counts.",
+);
+/// MPDTC front end: speed to angle step.
+pub const MPDTC_FE_SPD_SCALE: Register = fe(
+    "MPDTC_FE_SPD_SCALE",
+    0x0BC,
+    32,
+    29_388_314,
+    "unsigned 32-bit, 2^-40 electrical turn per control period per (count per ENC_WINDOW) \
+     (range 0..2^32-1)",
+    "round(pole_pairs Ts 2^40 / (ENC_CPR T_window)): the angle step per control period \
+     from ENC_SPEED (w_e Ts). Reset: 7 pole pairs, Ts = 1564 cycles, 4096 counts, \
+     ENC_WINDOW 100,000 cycles.",
+);
+/// MPDTC front end: age of the first instant.
+pub const MPDTC_FE_AGE0: Register = fe(
+    "MPDTC_FE_AGE0",
+    0x0C0,
+    18,
+    0x3_E000,
+    FE_AGE_FMT,
+    "Instant of cos0/sin0 relative to the sample, periods: lambda - 1/2 (lambda = age of \
+     the averaged measurement). Reset -0.125.",
+);
+/// MPDTC front end: age of the second instant.
+pub const MPDTC_FE_AGE1: Register = fe(
+    "MPDTC_FE_AGE1",
+    0x0C4,
+    18,
+    57_344,
+    FE_AGE_FMT,
+    "Instant of cos1/sin1: lambda + 1/2 periods. Reset 0.875.",
+);
+/// MPDTC front end: age of the third instant.
+pub const MPDTC_FE_AGE2: Register = fe(
+    "MPDTC_FE_AGE2",
+    0x0C8,
+    18,
+    122_880,
+    FE_AGE_FMT,
+    "Instant of cos2/sin2: lambda + 3/2 periods. Reset 1.875.",
+);
+/// MPDTC front end: ADC offset, phase a.
+pub const MPDTC_FE_OFF_A: Register = fe(
+    "MPDTC_FE_OFF_A",
+    0x0CC,
+    16,
+    0,
+    FE_OFF_FMT,
+    "Subtracted from ADC_IA before the gain.",
+);
+/// MPDTC front end: ADC offset, phase b.
+pub const MPDTC_FE_OFF_B: Register = fe(
+    "MPDTC_FE_OFF_B",
+    0x0D0,
+    16,
+    0,
+    FE_OFF_FMT,
+    "Subtracted from ADC_IB before the gain.",
+);
+/// MPDTC front end: ADC offset, phase c.
+pub const MPDTC_FE_OFF_C: Register = fe(
+    "MPDTC_FE_OFF_C",
+    0x0D4,
+    16,
+    0,
+    FE_OFF_FMT,
+    "Subtracted from ADC_IC before the gain.",
+);
+/// MPDTC front end: ADC gain, phase a.
+pub const MPDTC_FE_GAIN_A: Register = fe(
+    "MPDTC_FE_GAIN_A",
+    0x0D8,
+    18,
+    0,
+    FE_GAIN_FMT,
+    "i_a = sat25(round((ADC_IA - OFF_A) GAIN_A / 2^4)), CUR. Reset 0 (no current until the \
+     PS sets the board's gain).",
+);
+/// MPDTC front end: ADC gain, phase b.
+pub const MPDTC_FE_GAIN_B: Register = fe(
+    "MPDTC_FE_GAIN_B",
+    0x0DC,
+    18,
+    0,
+    FE_GAIN_FMT,
+    "As MPDTC_FE_GAIN_A, phase b.",
+);
+/// MPDTC front end: ADC gain, phase c.
+pub const MPDTC_FE_GAIN_C: Register = fe(
+    "MPDTC_FE_GAIN_C",
+    0x0E0,
+    18,
+    0,
+    FE_GAIN_FMT,
+    "As MPDTC_FE_GAIN_A, phase c.",
+);
+/// MPDTC front end: measured i_d.
+pub const MPDTC_FE_ID: Register = Register {
+    name: "MPDTC_FE_ID",
+    offset: 0x0E4,
+    access: Access::Ro,
+    width: 25,
+    reset: 0,
+    format: CUR_FMT,
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "i_d of the front end's last result (MPDTC_CTRL.AUTO = 1; Park at the sample's \
+          angle), MPDTC_FE_LATENCY_CYCLES = 9 cycles after the averaged sample.",
+};
+/// MPDTC front end: measured i_q.
+pub const MPDTC_FE_IQ: Register = Register {
+    name: "MPDTC_FE_IQ",
+    offset: 0x0E8,
+    access: Access::Ro,
+    width: 25,
+    reset: 0,
+    format: CUR_FMT,
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "i_q of the front end's last result (as MPDTC_FE_ID).",
+};
+
 /// Block 0.
 pub const TOP: Block = Block {
     name: "TOP",
@@ -1177,6 +1368,19 @@ pub const MPDTC: Block = Block {
         &MPDTC_ALIGN_ON,
         &MPDTC_ALIGN_TIME,
         &MPDTC_ALIGN_POS,
+        &MPDTC_FE_ANG_SCALE,
+        &MPDTC_FE_SPD_SCALE,
+        &MPDTC_FE_AGE0,
+        &MPDTC_FE_AGE1,
+        &MPDTC_FE_AGE2,
+        &MPDTC_FE_OFF_A,
+        &MPDTC_FE_OFF_B,
+        &MPDTC_FE_OFF_C,
+        &MPDTC_FE_GAIN_A,
+        &MPDTC_FE_GAIN_B,
+        &MPDTC_FE_GAIN_C,
+        &MPDTC_FE_ID,
+        &MPDTC_FE_IQ,
     ],
 };
 /// Block 2 (registers defined in [`mpdcc_page`]).
@@ -1258,7 +1462,7 @@ pub const PWM: Block = Block {
 pub const ADC: Block = Block {
     name: "ADC",
     index: 4,
-    doc: "ADC front end: 3 phase currents, sampled every ADC_PERIOD, averaged by 4.",
+    doc: "ADC front end: 3 phase currents, sampled every ADC_PERIOD, averaged by 2^ADC_AVG_LOG2.",
     registers: &[
         &ADC_CTRL,
         &ADC_PERIOD,
@@ -1266,6 +1470,7 @@ pub const ADC: Block = Block {
         &ADC_IB,
         &ADC_IC,
         &ADC_COUNT,
+        &ADC_AVG_LOG2,
     ],
 };
 /// Block 5.

@@ -531,7 +531,7 @@ pub mod mpdtc {
     /// Absolute address of the block.
     pub const BASE: usize = 0x43C01000;
 
-    /// `MPDTC.MPDTC_CTRL` at `0x43C01000` (RW, 2 bits, reset `0x3`): Source of the MPDTC switching state and state reset (reset: manual, cleared).
+    /// `MPDTC.MPDTC_CTRL` at `0x43C01000` (RW, 3 bits, reset `0x3`): Source of the MPDTC switching state, state reset and core-input path (reset: manual, cleared, PS-fed).
     ///
     /// Format: bits. Writes: every value of the implemented bits is valid; bits above the width are dropped.
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -566,7 +566,7 @@ pub mod mpdtc {
         }
     }
 
-    /// A value of [`MpdtcCtrl`]; bits above bit 1 are 0 when read.
+    /// A value of [`MpdtcCtrl`]; bits above bit 2 are 0 when read.
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
     pub struct MpdtcCtrlValue(u32);
 
@@ -604,6 +604,16 @@ pub mod mpdtc {
         /// Sets `STATE_CLR` (bit 1).
         pub const fn with_state_clr(self, v: bool) -> Self {
             Self((self.0 & !(1 << 1)) | ((v as u32) << 1))
+        }
+
+        /// `AUTO` (bit 2): 1 = autonomous loop: every averaged ADC sample starts the PL front end (mpdtc_frontend: encoder angle, speed, sin/cos, ADC offset/gain, Clarke/Park from the MPDTC_FE_* registers), whose result starts the core in SAMPLE; the PS writes only MPDTC_IN_T_REF and MPDTC_START is ignored. 0 = the PS writes every MPDTC_IN_* and MPDTC_START each period (debug path)
+        pub const fn auto(self) -> bool {
+            (self.0 >> 2) & 1 != 0
+        }
+
+        /// Sets `AUTO` (bit 2).
+        pub const fn with_auto(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 2)) | ((v as u32) << 2))
         }
     }
 
@@ -3571,6 +3581,1022 @@ pub mod mpdtc {
     }
 
     impl Default for MpdtcAlignPosValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_ANG_SCALE` at `0x43C010B8` (RW, 32 bits, reset `0x700000`): round(pole_pairs 2^32 / ENC_CPR) mod 2^32: pole pairs and counts per revolution for the autonomous loop (the PL has no divider); theta_e = (ENC_POS - MPDTC_ALIGN_POS mod ENC_CPR) x this, mod one turn. Reset: 7 pole pairs, 4096 counts.
+    ///
+    /// Format: unsigned 32-bit, 2^-32 electrical turn per encoder count (range 0..2^32-1). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeAngScale;
+
+    impl MpdtcFeAngScale {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010B8;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_ANG_SCALE;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+        ) -> Result<MpdtcFeAngScaleValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeAngScaleValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcFeAngScaleValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcFeAngScaleValue) -> MpdtcFeAngScaleValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcFeAngScale`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeAngScaleValue(u32);
+
+    impl MpdtcFeAngScaleValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x700000);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (unsigned 32-bit, 2^-32 electrical turn per encoder count (range 0..2^32-1)).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for MpdtcFeAngScaleValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_SPD_SCALE` at `0x43C010BC` (RW, 32 bits, reset `0x1C06E1A`): round(pole_pairs Ts 2^40 / (ENC_CPR T_window)): the angle step per control period from ENC_SPEED (w_e Ts). Reset: 7 pole pairs, Ts = 1564 cycles, 4096 counts, ENC_WINDOW 100,000 cycles.
+    ///
+    /// Format: unsigned 32-bit, 2^-40 electrical turn per control period per (count per ENC_WINDOW) (range 0..2^32-1). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeSpdScale;
+
+    impl MpdtcFeSpdScale {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010BC;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_SPD_SCALE;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+        ) -> Result<MpdtcFeSpdScaleValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeSpdScaleValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcFeSpdScaleValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcFeSpdScaleValue) -> MpdtcFeSpdScaleValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcFeSpdScale`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeSpdScaleValue(u32);
+
+    impl MpdtcFeSpdScaleValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x1C06E1A);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (unsigned 32-bit, 2^-40 electrical turn per control period per (count per ENC_WINDOW) (range 0..2^32-1)).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for MpdtcFeSpdScaleValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_AGE0` at `0x43C010C0` (RW, 18 bits, reset `0x3E000`): Instant of cos0/sin0 relative to the sample, periods: lambda - 1/2 (lambda = age of the averaged measurement). Reset -0.125.
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0], control periods (range -2..2). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeAge0;
+
+    impl MpdtcFeAge0 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010C0;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_AGE0;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcFeAge0Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeAge0Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcFeAge0Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcFeAge0Value) -> MpdtcFeAge0Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcFeAge0`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeAge0Value(u32);
+
+    impl MpdtcFeAge0Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x3E000);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0], control periods (range -2..2)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcFeAge0Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_AGE1` at `0x43C010C4` (RW, 18 bits, reset `0xE000`): Instant of cos1/sin1: lambda + 1/2 periods. Reset 0.875.
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0], control periods (range -2..2). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeAge1;
+
+    impl MpdtcFeAge1 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010C4;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_AGE1;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcFeAge1Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeAge1Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcFeAge1Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcFeAge1Value) -> MpdtcFeAge1Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcFeAge1`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeAge1Value(u32);
+
+    impl MpdtcFeAge1Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0xE000);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0], control periods (range -2..2)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcFeAge1Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_AGE2` at `0x43C010C8` (RW, 18 bits, reset `0x1E000`): Instant of cos2/sin2: lambda + 3/2 periods. Reset 1.875.
+    ///
+    /// Format: COEF sQ1.16, two's complement in [17:0], control periods (range -2..2). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeAge2;
+
+    impl MpdtcFeAge2 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010C8;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_AGE2;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcFeAge2Value, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeAge2Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcFeAge2Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcFeAge2Value) -> MpdtcFeAge2Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcFeAge2`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeAge2Value(u32);
+
+    impl MpdtcFeAge2Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x1E000);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (COEF sQ1.16, two's complement in [17:0], control periods (range -2..2)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcFeAge2Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_OFF_A` at `0x43C010CC` (RW, 16 bits, reset `0x0`): Subtracted from ADC_IA before the gain.
+    ///
+    /// Format: signed 16-bit two's complement, ADC counts (range -32768..32767). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeOffA;
+
+    impl MpdtcFeOffA {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010CC;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_OFF_A;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcFeOffAValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeOffAValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcFeOffAValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcFeOffAValue) -> MpdtcFeOffAValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcFeOffA`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeOffAValue(u32);
+
+    impl MpdtcFeOffAValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, ADC counts (range -32768..32767)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdtcFeOffAValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_OFF_B` at `0x43C010D0` (RW, 16 bits, reset `0x0`): Subtracted from ADC_IB before the gain.
+    ///
+    /// Format: signed 16-bit two's complement, ADC counts (range -32768..32767). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeOffB;
+
+    impl MpdtcFeOffB {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010D0;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_OFF_B;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcFeOffBValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeOffBValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcFeOffBValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcFeOffBValue) -> MpdtcFeOffBValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcFeOffB`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeOffBValue(u32);
+
+    impl MpdtcFeOffBValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, ADC counts (range -32768..32767)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdtcFeOffBValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_OFF_C` at `0x43C010D4` (RW, 16 bits, reset `0x0`): Subtracted from ADC_IC before the gain.
+    ///
+    /// Format: signed 16-bit two's complement, ADC counts (range -32768..32767). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeOffC;
+
+    impl MpdtcFeOffC {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010D4;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_OFF_C;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcFeOffCValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeOffCValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcFeOffCValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcFeOffCValue) -> MpdtcFeOffCValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcFeOffC`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeOffCValue(u32);
+
+    impl MpdtcFeOffCValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 16-bit two's complement, ADC counts (range -32768..32767)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for MpdtcFeOffCValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_GAIN_A` at `0x43C010D8` (RW, 18 bits, reset `0x0`): i_a = sat25(round((ADC_IA - OFF_A) GAIN_A / 2^4)), CUR. Reset 0 (no current until the PS sets the board's gain).
+    ///
+    /// Format: signed 18-bit two's complement in [17:0], 2^-20 A per ADC count (range +-0.125 A per count). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeGainA;
+
+    impl MpdtcFeGainA {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010D8;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_GAIN_A;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcFeGainAValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeGainAValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcFeGainAValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcFeGainAValue) -> MpdtcFeGainAValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcFeGainA`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeGainAValue(u32);
+
+    impl MpdtcFeGainAValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (signed 18-bit two's complement in [17:0], 2^-20 A per ADC count (range +-0.125 A per count)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcFeGainAValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_GAIN_B` at `0x43C010DC` (RW, 18 bits, reset `0x0`): As MPDTC_FE_GAIN_A, phase b.
+    ///
+    /// Format: signed 18-bit two's complement in [17:0], 2^-20 A per ADC count (range +-0.125 A per count). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeGainB;
+
+    impl MpdtcFeGainB {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010DC;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_GAIN_B;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcFeGainBValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeGainBValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcFeGainBValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcFeGainBValue) -> MpdtcFeGainBValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcFeGainB`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeGainBValue(u32);
+
+    impl MpdtcFeGainBValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (signed 18-bit two's complement in [17:0], 2^-20 A per ADC count (range +-0.125 A per count)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcFeGainBValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_GAIN_C` at `0x43C010E0` (RW, 18 bits, reset `0x0`): As MPDTC_FE_GAIN_A, phase c.
+    ///
+    /// Format: signed 18-bit two's complement in [17:0], 2^-20 A per ADC count (range +-0.125 A per count). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeGainC;
+
+    impl MpdtcFeGainC {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010E0;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_GAIN_C;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcFeGainCValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeGainCValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: MpdtcFeGainCValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(MpdtcFeGainCValue) -> MpdtcFeGainCValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`MpdtcFeGainC`]; bits above bit 17 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeGainCValue(u32);
+
+    impl MpdtcFeGainCValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 17:0, 18 bits): The whole register (signed 18-bit two's complement in [17:0], 2^-20 A per ADC count (range +-0.125 A per count)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3FFFF
+        }
+
+        /// Sets `VALUE` (bits 17:0, 18 bits) to the low 18 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v & 0x3FFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 17 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 14) as i32) >> 14
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 18 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x3FFFF) | (v as u32 & 0x3FFFF))
+        }
+    }
+
+    impl Default for MpdtcFeGainCValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_ID` at `0x43C010E4` (RO, 25 bits, reset `0x0`): i_d of the front end's last result (MPDTC_CTRL.AUTO = 1; Park at the sample's angle), MPDTC_FE_LATENCY_CYCLES = 9 cycles after the averaged sample.
+    ///
+    /// Format: CUR sQ8.16, two's complement in [24:0], A. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeId;
+
+    impl MpdtcFeId {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010E4;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_ID;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcFeIdValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeIdValue)
+        }
+    }
+
+    /// A value of [`MpdtcFeId`]; bits above bit 24 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeIdValue(u32);
+
+    impl MpdtcFeIdValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 24:0, 25 bits): The whole register (CUR sQ8.16, two's complement in [24:0], A).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x1FFFFFF
+        }
+
+        /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
+        }
+    }
+
+    impl Default for MpdtcFeIdValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `MPDTC.MPDTC_FE_IQ` at `0x43C010E8` (RO, 25 bits, reset `0x0`): i_q of the front end's last result (as MPDTC_FE_ID).
+    ///
+    /// Format: CUR sQ8.16, two's complement in [24:0], A. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeIq;
+
+    impl MpdtcFeIq {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C010E8;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::MPDTC_FE_IQ;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<MpdtcFeIqValue, BusError> {
+            bus.read(Self::ADDR).map(MpdtcFeIqValue)
+        }
+    }
+
+    /// A value of [`MpdtcFeIq`]; bits above bit 24 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MpdtcFeIqValue(u32);
+
+    impl MpdtcFeIqValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 24:0, 25 bits): The whole register (CUR sQ8.16, two's complement in [24:0], A).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x1FFFFFF
+        }
+
+        /// Sets `VALUE` (bits 24:0, 25 bits) to the low 25 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v & 0x1FFFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 24 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 7) as i32) >> 7
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 25 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0x1FFFFFF) | (v as u32 & 0x1FFFFFF))
+        }
+    }
+
+    impl Default for MpdtcFeIqValue {
         fn default() -> Self {
             Self::RESET
         }
@@ -8076,7 +9102,7 @@ pub mod pwm {
     }
 }
 
-/// Block 4 `ADC` at `0x43C04000`: ADC front end: 3 phase currents, sampled every ADC_PERIOD, averaged by 4.
+/// Block 4 `ADC` at `0x43C04000`: ADC front end: 3 phase currents, sampled every ADC_PERIOD, averaged by 2^ADC_AVG_LOG2.
 pub mod adc {
     use super::*;
 
@@ -8155,7 +9181,7 @@ pub mod adc {
         }
     }
 
-    /// `ADC.ADC_PERIOD` at `0x43C04004` (RW, 16 bits, reset `0x187`): Cycles between conversion starts: 391 = 255.75 kHz (nearest to the paper's 256 kHz); 4 samples are averaged, so results come at 1/4 of it.
+    /// `ADC.ADC_PERIOD` at `0x43C04004` (RW, 16 bits, reset `0x187`): Cycles between conversion starts: 391 = 255.75 kHz (nearest to the paper's 256 kHz); 2^ADC_AVG_LOG2 samples are averaged (reset 4), so results come at 1/2^ADC_AVG_LOG2 of it.
     ///
     /// Format: unsigned, PL clock cycles. Writes: the hardware clamps the written word to 16..=65535 (so a value wider than the field is clamped, not wrapped).
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -8227,9 +9253,9 @@ pub mod adc {
         }
     }
 
-    /// `ADC.ADC_IA` at `0x43C04008` (RO, 16 bits, reset `0x0`): Latest average of 4 samples of this phase current.
+    /// `ADC.ADC_IA` at `0x43C04008` (RO, 16 bits, reset `0x0`): Latest average of 2^ADC_AVG_LOG2 samples of this phase current.
     ///
-    /// Format: signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum of 4 / 4). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    /// Format: signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum / 2^ADC_AVG_LOG2). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
     pub struct AdcIa;
 
@@ -8265,7 +9291,7 @@ pub mod adc {
             self.0
         }
 
-        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum of 4 / 4)).
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum / 2^ADC_AVG_LOG2)).
         pub const fn value(self) -> u32 {
             self.0 & 0xFFFF
         }
@@ -8292,9 +9318,9 @@ pub mod adc {
         }
     }
 
-    /// `ADC.ADC_IB` at `0x43C0400C` (RO, 16 bits, reset `0x0`): Latest average of 4 samples of this phase current.
+    /// `ADC.ADC_IB` at `0x43C0400C` (RO, 16 bits, reset `0x0`): Latest average of 2^ADC_AVG_LOG2 samples of this phase current.
     ///
-    /// Format: signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum of 4 / 4). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    /// Format: signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum / 2^ADC_AVG_LOG2). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
     pub struct AdcIb;
 
@@ -8330,7 +9356,7 @@ pub mod adc {
             self.0
         }
 
-        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum of 4 / 4)).
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum / 2^ADC_AVG_LOG2)).
         pub const fn value(self) -> u32 {
             self.0 & 0xFFFF
         }
@@ -8357,9 +9383,9 @@ pub mod adc {
         }
     }
 
-    /// `ADC.ADC_IC` at `0x43C04010` (RO, 16 bits, reset `0x0`): Latest average of 4 samples of this phase current.
+    /// `ADC.ADC_IC` at `0x43C04010` (RO, 16 bits, reset `0x0`): Latest average of 2^ADC_AVG_LOG2 samples of this phase current.
     ///
-    /// Format: signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum of 4 / 4). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    /// Format: signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum / 2^ADC_AVG_LOG2). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
     pub struct AdcIc;
 
@@ -8395,7 +9421,7 @@ pub mod adc {
             self.0
         }
 
-        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum of 4 / 4)).
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed 12-bit ADC counts sign-extended to 16 bits (Q11.0 of full scale); floor(sum / 2^ADC_AVG_LOG2)).
         pub const fn value(self) -> u32 {
             self.0 & 0xFFFF
         }
@@ -8472,6 +9498,78 @@ pub mod adc {
     }
 
     impl Default for AdcCountValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `ADC.ADC_AVG_LOG2` at `0x43C04018` (RW, 2 bits, reset `0x2`): Samples per averaged result (ADC_IA..IC, ADC_COUNT, the averaged-sample strobe = the MPDTC control-period boundary): control period = ADC_PERIOD x 2^ADC_AVG_LOG2 cycles. Reset 2 (4 samples, 1564 cycles = 63.94 kHz with ADC_PERIOD 391); 1 us = ADC_PERIOD 100 with 0, or 25 with 2.
+    ///
+    /// Format: unsigned, log2 of the samples averaged: 0 = 1, 1 = 2, 2 = 4 (3 is rejected). Writes: the hardware rejects a word above 2: the register keeps its value and `ERR.BAD_VALUE` is set.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcAvgLog2;
+
+    impl AdcAvgLog2 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C04018;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ADC_AVG_LOG2;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<AdcAvgLog2Value, BusError> {
+            bus.read(Self::ADDR).map(AdcAvgLog2Value)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: AdcAvgLog2Value,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(AdcAvgLog2Value) -> AdcAvgLog2Value,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`AdcAvgLog2`]; bits above bit 1 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct AdcAvgLog2Value(u32);
+
+    impl AdcAvgLog2Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x2);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 1:0, 2 bits): The whole register (unsigned, log2 of the samples averaged: 0 = 1, 1 = 2, 2 = 4 (3 is rejected)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0x3
+        }
+
+        /// Sets `VALUE` (bits 1:0, 2 bits) to the low 2 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0x3) | (v & 0x3))
+        }
+    }
+
+    impl Default for AdcAvgLog2Value {
         fn default() -> Self {
             Self::RESET
         }

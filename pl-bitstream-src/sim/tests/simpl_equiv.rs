@@ -52,6 +52,10 @@ struct Pair {
     /// MPDCC decisions read through the driver, by kind (kept, optimal,
     /// deadlock).
     mc_kinds: [u64; 3],
+    /// Idle cycles with MPDTC_CTRL.AUTO set and the sequence out of IDLE.
+    auto_cycles: u64,
+    /// Reads of MPDTC_FE_ID/IQ that returned a nonzero current.
+    fe_data: u64,
 }
 
 impl Pair {
@@ -73,6 +77,8 @@ impl Pair {
             cap_done: 0,
             last_read: Ok(0),
             mc_kinds: [0; 3],
+            auto_cycles: 0,
+            fe_data: 0,
         }
     }
 
@@ -121,6 +127,10 @@ impl Pair {
             .sim
             .peek(BASE_ADDR + rel(&rm::TOP, &rm::STATUS) as usize);
         self.hist[st.unwrap_or(0) as usize & 15] += n;
+        let peek = |r: &Register| self.sim.peek(rm::MPDTC.addr(r)).unwrap_or(0);
+        if peek(&rm::MPDTC_CTRL) & 4 != 0 && peek(&rm::MPDTC_SEQ_STATUS) & 7 != 0 {
+            self.auto_cycles += n;
+        }
         for _ in 0..n {
             self.rtl_step();
         }
@@ -155,6 +165,9 @@ impl Pair {
             }
             if n == "CAP_STATUS" && v & 3 == rm::cap_state::DONE {
                 self.cap_done += 1;
+            }
+            if n.starts_with("MPDTC_FE_I") && v != 0 {
+                self.fe_data += 1;
             }
         }
         if got != want {
@@ -341,7 +354,11 @@ fn value_for(rng: &mut Rng, r: &Register) -> u32 {
     let useful: &[u32] = match r.name {
         "CTRL" => &[0, 1, 2, 2, 2, 3],
         "GATE_CTRL" => &[1, 1, 1, 0],
-        "MPDTC_CTRL" => &[0, 0, 0, 1, 2, 3],
+        "MPDTC_CTRL" => &[0, 0, 0, 1, 2, 3, 4, 4, 4, 6],
+        "ADC_AVG_LOG2" => &[0, 1, 2, 2, 3],
+        "MPDTC_FE_ANG_SCALE" => &[7 << 20, 1 << 20, 0x1234_5678],
+        "MPDTC_FE_SPD_SCALE" => &[29_388_314, 1_000_000, 0],
+        "MPDTC_FE_GAIN_A" | "MPDTC_FE_GAIN_B" | "MPDTC_FE_GAIN_C" => &[8192, 8192, 0x3_E000],
         "DEAD_TIME" => &[0, 1, 2, 3, 5, 17, 1023, 5000],
         "PWM_PERIOD" => &[0, 1, 2, 3, 7, 40, 40, 150, 150, 400],
         "DUTY_A" | "DUTY_B" | "DUTY_C" => &[0, 1, 2, 5, 20, 75, 200, 0xFFFF],
@@ -520,7 +537,9 @@ fn run(seed: u64, ops: usize) -> Pair {
                 let m = [1, 2, 2][(rng.next_u64() % 3) as usize];
                 p.write(rel(&rm::TOP, &rm::CTRL), m);
                 if m == 2 && rng.next_u64() % 4 != 0 {
-                    p.write(rel(&rm::MPDTC, &rm::MPDTC_CTRL), 0);
+                    // The PS-fed path or the autonomous loop.
+                    let ctrl = [0, 0, 4][(rng.next_u64() % 3) as usize];
+                    p.write(rel(&rm::MPDTC, &rm::MPDTC_CTRL), ctrl);
                     if rng.next_u64() % 2 == 0 {
                         p.write(rel(&rm::MPDTC, &rm::MPDTC_ALIGN_TIME), 100);
                     }
@@ -607,4 +626,16 @@ fn simulated_pl_equals_verilated_pl_top() {
         p.mc_kinds
     );
     assert!(p.mc_kinds.iter().all(|&n| n > 5), "{:?}", p.mc_kinds);
+    // The autonomous loop ran (front end -> core -> gates) and its
+    // currents were read.
+    println!(
+        "autonomous loop: {} idle cycles with AUTO and the sequence running, {} nonzero MPDTC_FE_ID/IQ reads",
+        p.auto_cycles, p.fe_data
+    );
+    assert!(
+        p.auto_cycles > 100_000 && p.fe_data > 50,
+        "autonomous loop: {} cycles, {} front-end reads",
+        p.auto_cycles,
+        p.fe_data
+    );
 }

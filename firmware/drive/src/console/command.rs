@@ -1113,6 +1113,7 @@ mod tests {
         fn status(&mut self) -> DriveStatus {
             DriveStatus {
                 mode: self.servo.mode(),
+                mpdtc_autonomous: !self.servo.config().mpdtc_ps_fed,
                 gates_on: self.servo.gates_on(&mut self.pl).unwrap(),
                 faults: self.servo.faults(&mut self.pl).unwrap(),
                 measured: self.servo.measured(),
@@ -1158,6 +1159,7 @@ mod tests {
             "uptime: 12.000042 s",
             "ticks: 12000 (rate 1000 Hz)",
             "mode: off",
+            "mpdtc_path: autonomous (PL front end, PS writes the torque reference)",
             "gates: off (safe state)",
             "fault: none",
             "torque: 0.0000 Nm",

@@ -39,6 +39,8 @@ pub struct StoreStatus {
 pub struct DriveStatus {
     /// Active mode.
     pub mode: Mode,
+    /// MPDTC input path: the PL's front end (`true`) or the PS (`false`).
+    pub mpdtc_autonomous: bool,
     /// `GATE_EN` read back.
     pub gates_on: bool,
     /// Latched faults.
@@ -313,6 +315,12 @@ pub fn write_mpdcc<W: Write>(out: &mut W, r: &HilReport) -> fmt::Result {
 /// The drive's `status` lines.
 pub fn write_status<W: Write>(out: &mut W, s: &DriveStatus) -> fmt::Result {
     write!(out, "mode: {}\r\n", s.mode.name())?;
+    let path = if s.mpdtc_autonomous {
+        "autonomous (PL front end, PS writes the torque reference)"
+    } else {
+        "ps-fed (PS Park transform and MPDTC_START)"
+    };
+    write!(out, "mpdtc_path: {path}\r\n")?;
     let gates = if s.gates_on { "on" } else { "off (safe state)" };
     write!(out, "gates: {gates}\r\n")?;
     out.write_str("fault: ")?;

@@ -20,11 +20,12 @@ use crate::pl::adc::{Adc, AdcScale};
 use crate::pl::capture::Capture;
 use crate::pl::enc::Encoder;
 use crate::pl::fault::{Fault, Faults};
-use crate::pl::mpdtc::Mpdtc;
+use crate::pl::mpdtc::{frontend_params, torque_ref_word, FrontendSetup, Mpdtc};
 use crate::pl::pwm::{duty_cycles, Pwm};
 use crate::pl::top::{Mode, Top};
 use crate::pmsm::foc::{Foc, FocParams};
 use crate::pmsm::frames::{clarke, park};
+use crate::pmsm::frontend_fixed::FrontendParams;
 use crate::pmsm::mpdtc_ctrl::{fixed_inputs, inputs_from_measurement};
 use crate::pmsm::mpdtc_fixed::FixedParams;
 use crate::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
@@ -82,6 +83,11 @@ pub struct ServoConfig {
     pub foc: FocParams,
     /// MPDTC tuning; its control period follows from `adc_period_cycles`.
     pub mpdtc: MpdtcParams,
+    /// MPDTC input path: `false` = the autonomous loop (the PL's front end
+    /// computes the core's inputs every period, the PS writes only the
+    /// torque reference), `true` = the PS-fed debug path (Park transform and
+    /// angles on the PS, `MPDTC_IN_*` and `MPDTC_START` every period).
+    pub mpdtc_ps_fed: bool,
     /// Smallest `step` size, N m: its 10 % settling band must stand clear
     /// of the torque estimate's resolution (one ADC count, 10 mA, is about
     /// 1 mN m of q-axis torque) and ripple; a step of zero has no settling
@@ -111,6 +117,7 @@ impl Default for ServoConfig {
             current_limit_a: 14.0,
             foc: FocParams::default(),
             mpdtc: MpdtcParams::default(),
+            mpdtc_ps_fed: false,
             // Band 5 mN m: about 5 ADC counts of i_q.
             step_min_nm: 0.05,
         }
@@ -192,6 +199,8 @@ pub struct Servo {
     foc: Foc,
     mpdtc: MpdtcConfig,
     mpdtc_regs: FixedParams,
+    /// MPDTC front-end registers (the autonomous loop).
+    fe_regs: FrontendParams,
     /// MPDTC: the encoder zero latched by the alignment of this run.
     align_zero: Option<u32>,
     /// MPDTC: the decision applied at the last boundary (for transitions).
@@ -241,7 +250,23 @@ impl Servo {
             ..cfg.mpdtc
         };
         let mpdtc = MpdtcConfig::new(cfg.motor, mp)?;
+        let fe_regs = frontend_params(&FrontendSetup {
+            pole_pairs: cfg.motor.pole_pairs,
+            enc_cpr: cfg.enc_cpr,
+            period_cycles: 4 * cfg.adc_period_cycles,
+            window_cycles: regmap::ENC_WINDOW.reset,
+            meas_age_periods: cfg.mpdtc.meas_age_periods,
+            amps_per_count: cfg.adc.amps_per_count,
+            adc_offset: [0; 3],
+        });
+        // The PS-fed path does not use the front end: its limits do not apply.
+        let fe_regs = match (fe_regs, cfg.mpdtc_ps_fed) {
+            (Ok(f), _) => f,
+            (Err(_), true) => FrontendParams::default(),
+            (Err(e), false) => return Err(e),
+        };
         Ok(Self {
+            fe_regs,
             cfg: *cfg,
             mode: Mode::Off,
             gates: false,
@@ -295,8 +320,9 @@ impl Servo {
         pwm.set_duties([0.5; 3], self.cfg.foc_half_period_cycles)?;
         Fault(&mut *bus).set_watchdog_timeout(self.cfg.watchdog_cycles)?;
         let mut m = Mpdtc(&mut *bus);
-        m.set_ctrl(false, true)?;
+        m.set_ctrl_path(false, true, !self.cfg.mpdtc_ps_fed)?;
         m.load_params(&self.mpdtc_regs)?;
+        m.load_frontend(&self.fe_regs)?;
         m.set_align_time(self.cfg.align_cycles)
     }
 
@@ -329,6 +355,7 @@ impl Servo {
         self.foc = next.foc;
         self.mpdtc = next.mpdtc;
         self.mpdtc_regs = next.mpdtc_regs;
+        self.fe_regs = next.fe_regs;
         self.write_pl_config(bus)?;
         Ok(())
     }
@@ -399,7 +426,7 @@ impl Servo {
         Pwm(&mut *bus).set_duties([0.5; 3], half)?;
         if self.mode == Mode::Mpdtc {
             // The sequence aligns the rotor, then takes the decisions.
-            Mpdtc(&mut *bus).set_ctrl(false, false)?;
+            Mpdtc(&mut *bus).set_ctrl_path(false, false, !self.cfg.mpdtc_ps_fed)?;
         }
         Pwm(&mut *bus).set_gates(true)?;
         self.gates = true;
@@ -421,7 +448,10 @@ impl Servo {
         self.rec.cancel();
         self.sine = None;
         Pwm(&mut *bus).set_gates(false)?;
-        Mpdtc(&mut *bus).set_ctrl(false, true)?;
+        let mut m = Mpdtc(&mut *bus);
+        m.set_ctrl_path(false, true, !self.cfg.mpdtc_ps_fed)?;
+        // The next run starts from 0 N m in the PL too.
+        m.write_torque_ref(0)?;
         Ok(())
     }
 
@@ -627,6 +657,8 @@ impl Servo {
         // boundary, and a count read after it would make the step that
         // serves that boundary see no new result.
         let adc_count = Adc(&mut *bus).count()?;
+        // The autonomous loop: the PL computes the core's inputs itself.
+        let auto = self.mode == Mode::Mpdtc && !self.cfg.mpdtc_ps_fed;
         let i_abc = Adc(&mut *bus).currents_a(&self.cfg.adc)?;
         let enc = Encoder(&mut *bus).read()?;
         let pp = self.cfg.motor.pole_pairs;
@@ -657,6 +689,9 @@ impl Servo {
             theta_e_rad: enc.theta_e_rad(pp, zero),
             omega_e_rad_s: enc.omega_e_rad_s(pp),
         };
+        // The measurement for status, `step` and the capture: from the ADC
+        // averages on the PS in both MPDTC paths (the front end's own
+        // i_d, i_q are ready 9 cycles after the boundary, after this read).
         let (al, be) = clarke(i_abc);
         let (i_d, i_q) = park(al, be, m.theta_e_rad);
         self.measured = Measured {
@@ -694,6 +729,7 @@ impl Servo {
         }
         match (self.mode, running) {
             (Mode::Foc, true) => self.foc_step(bus, &m)?,
+            (Mode::Mpdtc, true) if auto => self.mpdtc_auto_step(bus)?,
             (Mode::Mpdtc, true) => self.mpdtc_step(bus, &m)?,
             _ => {}
         }
@@ -720,17 +756,37 @@ impl Servo {
         Ok(())
     }
 
-    fn mpdtc_step<B: RegisterBus>(&mut self, bus: &mut B, m: &Measurement) -> Result<(), BusError> {
-        let mut core = Mpdtc(&mut *bus);
-        let seq = core.seq_status()?;
-        // The decision of the last period was applied at this boundary.
-        let s = core.last_decision()?;
+    /// Counts the gate transitions of the decision applied at this boundary:
+    /// the gate driver's state (`GATE_STATUS`) in the autonomous loop, whose
+    /// next decision may already be in `MPDTC_STATUS` 21 cycles after the
+    /// boundary; the last decision on the PS-fed path (the core waits for
+    /// `MPDTC_START`).
+    fn note_decision<B: RegisterBus>(&mut self, bus: &mut B, auto: bool) -> Result<(), BusError> {
+        let s = if auto {
+            Pwm(&mut *bus).gate_status()?.2
+        } else {
+            Mpdtc(&mut *bus).last_decision()?
+        };
         if s != self.last_state {
             for (leg, t) in self.transitions.iter_mut().enumerate() {
                 *t += u64::from((s ^ self.last_state) >> (2 - leg) & 1);
             }
             self.last_state = s;
         }
+        Ok(())
+    }
+
+    /// The autonomous loop's period: the torque reference is the only write
+    /// (the PL's front end takes it with the next averaged sample).
+    fn mpdtc_auto_step<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
+        self.note_decision(bus, true)?;
+        Mpdtc(&mut *bus).write_torque_ref(torque_ref_word(self.torque_ref_nm))
+    }
+
+    fn mpdtc_step<B: RegisterBus>(&mut self, bus: &mut B, m: &Measurement) -> Result<(), BusError> {
+        self.note_decision(bus, false)?;
+        let mut core = Mpdtc(&mut *bus);
+        let seq = core.seq_status()?;
         if seq.state != seq_state::SAMPLE {
             return Ok(());
         }

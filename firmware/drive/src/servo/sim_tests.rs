@@ -6,8 +6,17 @@ use super::*;
 use crate::simpl::{SimConfig, SimDrive};
 
 fn setup(mode: Mode) -> (Servo, SimDrive) {
+    setup_path(mode, false)
+}
+
+/// `ps_fed`: the MPDTC's PS-fed debug path instead of the autonomous loop.
+fn setup_path(mode: Mode, ps_fed: bool) -> (Servo, SimDrive) {
     let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
-    let mut s = Servo::new(&ServoConfig::for_simulated(sim.config())).unwrap();
+    let cfg = ServoConfig {
+        mpdtc_ps_fed: ps_fed,
+        ..ServoConfig::for_simulated(sim.config())
+    };
+    let mut s = Servo::new(&cfg).unwrap();
     s.init(&mut sim).unwrap();
     s.set_mode(&mut sim, mode).unwrap();
     s.enable(&mut sim).unwrap();
@@ -31,7 +40,11 @@ fn run(s: &mut Servo, sim: &mut SimDrive, max: u32, mut done: impl FnMut(&Servo)
 /// MPDTC's torque-error integral is still settling, and its reversal then
 /// takes 0.33 ms).
 fn step_from(mode: Mode, from_nm: f64) -> (StepResult, f64, Servo, SimDrive) {
-    let (mut s, mut sim) = setup(mode);
+    step_from_path(mode, from_nm, false)
+}
+
+fn step_from_path(mode: Mode, from_nm: f64, ps_fed: bool) -> (StepResult, f64, Servo, SimDrive) {
+    let (mut s, mut sim) = setup_path(mode, ps_fed);
     // Let the drive run 2 ms (the MPDTC aligns the rotor for 2 ms first),
     // then 4 ms at the starting reference.
     let n = (2e-3 * s.control_rate_hz()) as u32;
@@ -81,10 +94,12 @@ fn mpdtc_step_on_the_simulated_pl() {
 /// The paper's Fig. 10 step is the reversal -0.4 -> 0.4 N m: host
 /// experiment (`drivectl paper mpdtc`) MPDTC 0.172 ms, FOC 0.245 ms; the
 /// limits are the paper's 0.19 and 0.27 ms.
+/// The MPDTC on its PS-fed path (Park and angles on the PS, the
+/// reference written with the period's inputs), as the figures above.
 #[test]
 fn reversal_steps_on_the_simulated_pl() {
     for (mode, limit_s) in [(Mode::Mpdtc, 0.19e-3), (Mode::Foc, 0.27e-3)] {
-        let (r, truth, s, _) = step_from(mode, -0.4);
+        let (r, truth, s, _) = step_from_path(mode, -0.4, true);
         let t = r.settling_s.expect("settled");
         assert!(t <= limit_s, "{mode:?} {r:?}");
         assert!((truth - 0.4).abs() < 0.05, "{mode:?} {truth}");
@@ -224,4 +239,17 @@ fn sweep_points_on_the_simulated_pl() {
         );
         assert!(pts[1].gain_db < -3.0 || pts[1].phase_deg < -90.0, "{pts:?}");
     }
+}
+
+/// The autonomous loop takes the reference with its averaged sample, before
+/// the PS writes the period's reference: one control period (15.64 us) more
+/// from the PS's reference change to the decision than the PS-fed path, so
+/// the reversal's limit is the paper's 0.19 ms plus that period.
+#[test]
+fn autonomous_reversal_on_the_simulated_pl() {
+    let (r, truth, s, _) = step_from_path(Mode::Mpdtc, -0.4, false);
+    let t = r.settling_s.expect("settled");
+    assert!(t <= 0.19e-3 + 1564e-8, "{r:?}");
+    assert!((truth - 0.4).abs() < 0.05, "{truth}");
+    assert_eq!(s.overruns(), 0);
 }

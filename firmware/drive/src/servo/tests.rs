@@ -18,8 +18,12 @@ fn init_programs_timing_and_watchdog_with_gates_off() {
     assert_eq!(pl.get(PWM.addr(&regmap::PWM_PERIOD)), 3128);
     assert_eq!(pl.get(regmap::ADC.addr(&regmap::ADC_PERIOD)), 391);
     assert_eq!(pl.get(regmap::FAULT.addr(&regmap::WDG_TIMEOUT)), 200_000);
-    // Core state held cleared until a run starts.
-    assert_eq!(pl.get(MPDTC.addr(&regmap::MPDTC_CTRL)), 0b10);
+    // Core state held cleared until a run starts; the autonomous path.
+    assert_eq!(pl.get(MPDTC.addr(&regmap::MPDTC_CTRL)), 0b110);
+    // The front end's registers: 7 pole pairs over 4096 counts, the ADC
+    // gain of 10 mA per count in 2^-20 A (10486).
+    assert_eq!(pl.get(MPDTC.addr(&regmap::MPDTC_FE_ANG_SCALE)), 7 << 20);
+    assert_eq!(pl.get(MPDTC.addr(&regmap::MPDTC_FE_GAIN_B)), 10_486);
 }
 
 #[test]
@@ -124,8 +128,44 @@ fn measured_torque_from_the_adc_currents() {
 }
 
 #[test]
-fn mpdtc_step_writes_inputs_and_starts_only_in_sample_after_alignment() {
+fn autonomous_mpdtc_period_writes_only_the_torque_reference() {
     let (mut s, mut pl) = setup();
+    s.set_mode(&mut pl, Mode::Mpdtc).unwrap();
+    s.enable(&mut pl).unwrap();
+    assert_eq!(
+        pl.get(MPDTC.addr(&regmap::MPDTC_CTRL)),
+        0b100,
+        "sequence, AUTO"
+    );
+    let seq = MPDTC.addr(&regmap::MPDTC_SEQ_STATUS);
+    pl.set(seq, seq_state::SAMPLE | 8 | 16);
+    s.set_torque_ref(0.4).unwrap();
+    pl.writes.clear();
+    s.control_step(&mut pl).unwrap();
+    // On the MPDTC page only T_REF; besides it the heartbeat and the
+    // capture channels.
+    let mpdtc: std::vec::Vec<usize> = pl
+        .writes
+        .iter()
+        .map(|(a, _)| *a)
+        .filter(|a| (MPDTC.base()..MPDTC.base() + 0x1000).contains(a))
+        .collect();
+    assert_eq!(mpdtc, [MPDTC.addr(&regmap::MPDTC_IN_T_REF)]);
+    assert_eq!(pl.get(MPDTC.addr(&regmap::MPDTC_IN_T_REF)), 6554);
+    // Gates off: the reference in the PL returns to 0.
+    s.disable(&mut pl).unwrap();
+    assert_eq!(pl.get(MPDTC.addr(&regmap::MPDTC_IN_T_REF)), 0);
+}
+
+#[test]
+fn mpdtc_step_writes_inputs_and_starts_only_in_sample_after_alignment() {
+    let mut s = Servo::new(&ServoConfig {
+        mpdtc_ps_fed: true,
+        ..ServoConfig::default()
+    })
+    .unwrap();
+    let mut pl = FakePl::new();
+    s.init(&mut pl).unwrap();
     s.set_mode(&mut pl, Mode::Mpdtc).unwrap();
     s.enable(&mut pl).unwrap();
     assert_eq!(pl.get(MPDTC.addr(&regmap::MPDTC_CTRL)), 0, "sequence runs");

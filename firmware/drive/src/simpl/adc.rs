@@ -1,11 +1,12 @@
-//! `adc_frontend` (sample-rate timer, raw sample register, average of 4)
+//! `adc_frontend` (sample-rate timer, raw sample register, average of 1, 2
+//! or 4 = 2^`ADC_AVG_LOG2`)
 //! and the converter behind it (a result `conv + 1` cycles after each
 //! convert pulse), with their closed form between events.
 //!
 //! Formats: raw samples are 12-bit two's complement ADC counts; the sum of
-//! 4 is kept in 14 bits (two's complement, wraps as the RTL's adder); the
-//! average is `sum[13:2]`, i.e. floor(sum / 4), 12 bits, read sign-extended
-//! to 16 bits.
+//! n = 2^`ADC_AVG_LOG2` samples is kept in 14 bits (two's complement, wraps as the
+//! RTL's adder); the average is `sum[11+k:k]` (k = `ADC_AVG_LOG2`), i.e.
+//! floor(sum / n), 12 bits, read sign-extended to 16 bits.
 
 use super::NEVER;
 
@@ -71,10 +72,11 @@ impl Adc {
         self.conv_left == Some(0)
     }
 
-    /// One clock edge: `en`, `period` from the registers, `word` the
-    /// converter's data (latched when `drdy`), `conv` its conversion time in
-    /// cycles. Returns `true` when the edge raises `adc_cnv_o`.
-    pub fn step(&mut self, en: bool, period: u16, word: u64, conv: u32) -> bool {
+    /// One clock edge: `en`, `period`, `avg_log2` (`ADC_AVG_LOG2`, 0..=2) from
+    /// the registers, `word` the converter's data (latched when `drdy`),
+    /// `conv` its conversion time in cycles. Returns `true` when the edge
+    /// raises `adc_cnv_o`.
+    pub fn step(&mut self, en: bool, period: u16, avg_log2: u32, word: u64, conv: u32) -> bool {
         let drdy = self.drdy();
         let cnv_now = self.cnv;
         // Sample-rate timer.
@@ -87,21 +89,25 @@ impl Adc {
         } else {
             self.tmr -= 1;
         }
-        // Average of 4 over the raw sample register.
+        // Average of n = 2^avg_log2 over the raw sample register; a sum
+        // already past a smaller n ends with this sample.
         let mut av = false;
         if self.sv {
             let sum = core::array::from_fn::<u16, 3, _>(|x| {
                 (self.acc[x].wrapping_add(sext14(self.sample[x]))) & 0x3FFF
             });
-            if self.n == 3 {
-                self.avg = sum.map(|s| s >> 2);
+            let k = avg_log2.min(2);
+            let last = (1u8 << k) - 1;
+            if self.n >= last {
+                self.avg = sum.map(|s| (s >> k) & 0xFFF);
                 self.acc = [0; 3];
                 av = true;
                 self.count = self.count.wrapping_add(1);
+                self.n = 0;
             } else {
                 self.acc = sum;
+                self.n += 1;
             }
-            self.n = (self.n + 1) & 3;
         }
         if drdy {
             self.sample = [field(word, 24), field(word, 12), field(word, 0)];

@@ -7,6 +7,7 @@ pub mod capture;
 pub mod core;
 pub mod enc;
 pub mod fault;
+pub mod frontend;
 pub mod inverter;
 pub mod mpdcc;
 pub mod pl;

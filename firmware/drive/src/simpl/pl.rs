@@ -24,12 +24,14 @@ use super::core::{sext, Core};
 use super::enc::{Encoder, Sync2};
 use super::fault::{Fault, FaultIn};
 use super::mpdcc::{MpdccBlock, Words};
+use super::frontend::Frontend;
 use super::pwm::Pwm;
 use super::regs::{slot, slot_of, Regs, WriteResult};
 use super::seq::{Seq, SeqIn};
 use super::NEVER;
 use crate::bus::BusError;
 use crate::gates::{DeadTime, GateDriver, GateInputs, GateOutputs, DEAD_TIME_MAX_CYCLES};
+use crate::pmsm::frontend_fixed::{FrontendInputs, FrontendParams};
 use crate::pmsm::mpdtc_fixed::{FixedInputs, FixedParams};
 use crate::regmap::{self as rm, mode, ADC, CAPTURE, ENC, FAULT, MPDCC, MPDTC, PWM, TOP};
 
@@ -47,6 +49,7 @@ const S_DUTY: [usize; 3] = [
 const S_SW_STATE: usize = slot_of(&PWM, &rm::SW_STATE);
 const S_ADC_CTRL: usize = slot_of(&ADC, &rm::ADC_CTRL);
 const S_ADC_PERIOD: usize = slot_of(&ADC, &rm::ADC_PERIOD);
+const S_ADC_AVG_LOG2: usize = slot_of(&ADC, &rm::ADC_AVG_LOG2);
 const S_ENC_CPR: usize = slot_of(&ENC, &rm::ENC_CPR);
 const S_ENC_WINDOW: usize = slot_of(&ENC, &rm::ENC_WINDOW);
 const S_FAULT_STATUS: usize = slot_of(&FAULT, &rm::FAULT_STATUS);
@@ -118,6 +121,8 @@ const A_MPDCC_COST: usize = MPDCC.addr(&rm::MPDCC_COST);
 const A_MPDCC_J_DL: usize = MPDCC.addr(&rm::MPDCC_J_DL);
 const A_MPDCC_CYCLES: usize = MPDCC.addr(&rm::MPDCC_CYCLES);
 const A_MPDCC_DEADLOCKS: usize = MPDCC.addr(&rm::MPDCC_DEADLOCKS);
+const A_FE_ID: usize = MPDTC.addr(&rm::MPDTC_FE_ID);
+const A_FE_IQ: usize = MPDTC.addr(&rm::MPDTC_FE_IQ);
 const A_CAP_STATUS: usize = CAPTURE.addr(&rm::CAP_STATUS);
 const A_CAP_DATA0: usize = CAPTURE.addr(&rm::CAP_DATA0);
 const A_CAP_DATA1: usize = CAPTURE.addr(&rm::CAP_DATA1);
@@ -223,6 +228,10 @@ struct Comb {
     drive_en: bool,
     core_in_valid: bool,
     core_load: bool,
+    /// MPDTC_CTRL.AUTO: the core's inputs come from the front end.
+    auto: bool,
+    /// The front end starts at this cycle's edge.
+    fe_start: bool,
 }
 
 /// `pl_top` without the plant.
@@ -238,6 +247,7 @@ pub struct SimPl {
     ext_sync: Sync2,
     fault: Fault,
     seq: Seq,
+    fe: Frontend,
     core: Core,
     core_s: u8,
     core_iq_ref: i32,
@@ -268,6 +278,7 @@ impl SimPl {
             ext_sync: Sync2::new(true),
             fault: Fault::default(),
             seq: Seq::default(),
+            fe: Frontend::default(),
             core: Core::default(),
             core_s: 0,
             core_iq_ref: 0,
@@ -308,6 +319,7 @@ impl SimPl {
         let mp_ctrl = self.r(S_MPDTC_CTRL);
         let manual = mp_ctrl & 1 != 0;
         let mp_clr = mp_ctrl & 2 != 0;
+        let auto = mp_ctrl & 4 != 0;
         let fault_in = FaultIn {
             sample_valid: self.adc.sv,
             sample: self.adc.sample,
@@ -322,7 +334,8 @@ impl SimPl {
         let seq_in = SeqIn {
             run,
             sample: self.adc.av,
-            start,
+            auto,
+            start: if auto { self.fe.valid() } else { start },
             core_ready: self.core.ready(),
             core_valid,
             core_s: self.core.pending.s_next,
@@ -351,6 +364,8 @@ impl SimPl {
             mp_clr,
             core_in_valid: self.seq.core_start(&seq_in) && !mp_clr,
             core_load: mp_clr || self.seq.core_clr(),
+            auto,
+            fe_start: auto && self.adc.av && self.fe.idle(),
             fault_in,
             trip,
             fault_any,
@@ -398,18 +413,54 @@ impl SimPl {
         DeadTime::new(self.r(S_DEAD_TIME) as u16).unwrap_or(DT_MAX)
     }
 
-    fn core_inputs(&self) -> (FixedInputs, FixedParams) {
+    /// The front end's inputs and registers in the present cycle (its
+    /// ports' widths are applied by the model).
+    fn fe_inputs(&self) -> (FrontendInputs, FrontendParams) {
+        let r = |reg: &rm::Register| self.r(mp(reg));
+        let inp = FrontendInputs {
+            pos: u32::from(self.enc.pos),
+            speed: i32::from(self.enc.speed),
+            adc: [0, 1, 2].map(|k| self.adc.avg_reg(k) as i32),
+            t_ref: r(&rm::MPDTC_IN_T_REF) as i32,
+        };
+        let p = FrontendParams {
+            cpr: self.r(S_ENC_CPR),
+            align_pos: u32::from(self.seq.align_pos),
+            ang_scale: r(&rm::MPDTC_FE_ANG_SCALE),
+            spd_scale: r(&rm::MPDTC_FE_SPD_SCALE),
+            age: [&rm::MPDTC_FE_AGE0, &rm::MPDTC_FE_AGE1, &rm::MPDTC_FE_AGE2].map(|x| r(x) as i32),
+            adc_off: [
+                &rm::MPDTC_FE_OFF_A,
+                &rm::MPDTC_FE_OFF_B,
+                &rm::MPDTC_FE_OFF_C,
+            ]
+            .map(|x| r(x) as i32),
+            adc_gain: [
+                &rm::MPDTC_FE_GAIN_A,
+                &rm::MPDTC_FE_GAIN_B,
+                &rm::MPDTC_FE_GAIN_C,
+            ]
+            .map(|x| r(x) as i32),
+        };
+        (inp, p)
+    }
+
+    fn core_inputs(&self, auto: bool) -> (FixedInputs, FixedParams) {
         let c = |reg: &rm::Register| sext(self.r(mp(reg)), 18);
         let w = |reg: &rm::Register| sext(self.r(mp(reg)), 25);
-        let inp = FixedInputs {
-            i_dq: (w(&rm::MPDTC_IN_ID), w(&rm::MPDTC_IN_IQ)),
-            trig: [
-                (c(&rm::MPDTC_IN_COS0), c(&rm::MPDTC_IN_SIN0)),
-                (c(&rm::MPDTC_IN_COS1), c(&rm::MPDTC_IN_SIN1)),
-                (c(&rm::MPDTC_IN_COS2), c(&rm::MPDTC_IN_SIN2)),
-            ],
-            w_ts: c(&rm::MPDTC_IN_W_TS),
-            t_ref: c(&rm::MPDTC_IN_T_REF),
+        let inp = if auto {
+            self.fe.out.core
+        } else {
+            FixedInputs {
+                i_dq: (w(&rm::MPDTC_IN_ID), w(&rm::MPDTC_IN_IQ)),
+                trig: [
+                    (c(&rm::MPDTC_IN_COS0), c(&rm::MPDTC_IN_SIN0)),
+                    (c(&rm::MPDTC_IN_COS1), c(&rm::MPDTC_IN_SIN1)),
+                    (c(&rm::MPDTC_IN_COS2), c(&rm::MPDTC_IN_SIN2)),
+                ],
+                w_ts: c(&rm::MPDTC_IN_W_TS),
+                t_ref: c(&rm::MPDTC_IN_T_REF),
+            }
         };
         let p = FixedParams {
             a: c(&rm::MPDTC_P_A),
@@ -453,6 +504,7 @@ impl SimPl {
         let start = w(S_MPDTC_START);
         let c = self.comb(start);
         let cap_in = self.cap_inputs(&c, w(S_CAP_ARM), w(S_CAP_TRIG));
+        let fe_in = c.fe_start.then(|| self.fe_inputs());
         let mut ev = Events {
             adc_average: self.adc.av,
             pwm_period: self.pwm.bottom(),
@@ -477,6 +529,7 @@ impl SimPl {
         ev.adc_convert = self.adc.step(
             self.r(S_ADC_CTRL) & 1 != 0,
             self.r(S_ADC_PERIOD) as u16,
+            self.r(S_ADC_AVG_LOG2),
             self.pins.adc_word,
             self.conv_cycles,
         );
@@ -505,7 +558,7 @@ impl SimPl {
         let valid = self.core.valid();
         let result = self.core.pending;
         if c.core_in_valid && self.core.ready() {
-            let (inp, p) = self.core_inputs();
+            let (inp, p) = self.core_inputs(c.auto);
             self.core.step(true, c.core_load, &inp, &p);
         } else {
             self.core.step(
@@ -515,6 +568,7 @@ impl SimPl {
                 &FixedParams::default(),
             );
         }
+        self.fe.step(fe_in.as_ref().map(|(i, p)| (i, p)));
         if c.mp_clr {
             self.core_s = 0;
             self.core_iq_ref = 0;
@@ -591,6 +645,7 @@ impl SimPl {
             .min(self.seq.quiet(&c.seq_in))
             .min(self.core.quiet(c.core_load))
             .min(self.mpdcc.quiet())
+            .min(self.fe.quiet())
     }
 
     fn skip(&mut self, k: u64) {
@@ -607,6 +662,7 @@ impl SimPl {
         self.seq.skip(k);
         self.core.skip(k);
         self.mpdcc.skip(k);
+        self.fe.skip(k);
         self.cap.skip(self.r(S_CAP_RD_INDEX));
         self.cycles += k;
         self.skips += 1;
@@ -687,6 +743,8 @@ impl SimPl {
             A_MPDCC_J_DL => self.mpdcc.out.j_dl,
             A_MPDCC_CYCLES => self.mpdcc.out.cycles,
             A_MPDCC_DEADLOCKS => self.mpdcc.deadlocks(),
+            A_FE_ID => (self.fe.out.core.i_dq.0 as u32) & rm::MPDTC_FE_ID.mask(),
+            A_FE_IQ => (self.fe.out.core.i_dq.1 as u32) & rm::MPDTC_FE_IQ.mask(),
             A_CAP_STATUS => self.cap.status(),
             A_CAP_DATA0 => (u32::from(self.cap.rd.i_q) << 16) | u32::from(self.cap.rd.i_d),
             A_CAP_DATA1 => (u32::from(self.cap.rd.tref) << 16) | u32::from(self.cap.rd.torque),

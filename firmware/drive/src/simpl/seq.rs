@@ -12,7 +12,9 @@ pub struct SeqIn {
     pub run: bool,
     /// Averaged-sample strobe (control-period boundary).
     pub sample: bool,
-    /// MPDTC_START write.
+    /// MPDTC_CTRL.AUTO: `start` is the front end's result.
+    pub auto: bool,
+    /// Inputs ready: MPDTC_START write, or the front end's `out_valid`.
     pub start: bool,
     /// Core ready.
     pub core_ready: bool,
@@ -65,7 +67,7 @@ impl Seq {
     /// Core start (`in_valid` before the STATE_CLR gate).
     pub fn core_start(&self, i: &SeqIn) -> bool {
         if self.state == IDLE {
-            i.start
+            i.start && !i.auto
         } else {
             self.go(i)
         }
