@@ -2,9 +2,12 @@
 // eq. 14), drive::mpdcc::fpga::common_terms of the frozen core bit for bit:
 // output errors at k, the switch-independent error changes at the nodes
 // k + 8, 16, 32, 64 and over one step, and the capacitor-current products.
-// A straight pipeline, fixed latency LATENCY = 16 cycles; the outputs follow
-// the inputs (held stable by the caller) with that delay.
-//
+// The inputs are held stable by the caller from the start_i cycle on. The
+// 51 products are computed once each on MULS shared multipliers (schedule
+// below); the stages listed here are the order of the datapath, which
+// recomputes every cycle from the products' hold registers: P_n, P_ph are
+// final PN_FINAL = 17 cycles after start_i, e0 at 6, dn and dn1 at
+// LATENCY = 33 (MULS = 4). The explorers may start at ISSUE_DELAY + 1 = 21.
 // Formats (docs/mpdcc-fpga.md): i_ab, i_ref_ab, v_n, v_ph, omega_r, omega_s,
 // v_ph_ref Q2.13; psi_ab and the L-step coefficients Q1.14; the one-step
 // coefficients c_tau1, c_r1, c_w1, c_s1 f17; wide sums exact (f28 L-step,
@@ -12,7 +15,8 @@
 // ((x >>> s) + x[s-1]), as drive::mpdcc::fixed::mul.
 //
 // Stages (at most one multiplier or one adder between registers; a
-// saturation is a compare and mux on a registered sum):
+// saturation is a compare and mux on a registered sum; a "product" is a
+// hold register loaded from a shared multiplier, see the schedule):
 //   1  products of the inputs; e_ab = i* - i; -v_n; v_ph_ref - v_ph; x_a/2
 //   2  rounding of kw, w2, ks, s2, kw1, ks1, s3h i_b; nat = -2 c_tau i + c_r psi
 //   3  kp, tr, ts, k2, kw psi, ks i*, kw1 psi, ks1 i*, s3h e_b (products);

@@ -4,23 +4,27 @@
 //
 // Inputs are the state registers (drive::mpdcc::fpga::Inputs, already
 // quantized) and the design constants (Coeffs), held stable from start_i to
-// done_o. On start_i the scheduler computes the common terms (mpdcc_common,
-// eq. 14, 16 cycles) and then enumerates S(s(k-1)): per phase the positions
-// within one level of s(k-1), a contiguous code range [lo, hi] because the
-// level is monotonic in the code; candidates in ascending code order
-// (a outer, c inner), n_use_i (1..N) of them per clock, candidate i of a
-// clock to explorer i. Each explorer (mpdcc_explorer) takes one candidate per
-// clock and returns it LAT = 41 cycles later, so the results of one clock
-// arrive together and in enumeration order. The scheduler compares them as
-// they arrive (strict "<" in enumeration order: the first of equal ones
-// wins, as the model's select()):
+// done_o. On start_i the scheduler starts the common terms (mpdcc_common,
+// eq. 14, on MULS shared multipliers) and, once the terms the explorers read
+// first are final (COMMON_LATENCY = mpdcc_common's ISSUE_DELAY = 20 cycles;
+// the rest is final before it is read), enumerates S(s(k-1)): per phase the
+// positions within one level of s(k-1), a contiguous code range [lo, hi]
+// because the level is monotonic in the code; candidates in ascending code
+// order (a outer, c inner), n_use_i (1..N) of them per clock, candidate i
+// of a clock to explorer i. Each explorer (mpdcc_explorer) takes one
+// candidate per clock and returns it LAT = 41 cycles later, so the results
+// of one clock arrive together and in enumeration order. A registered
+// arg-min tree (ARGMIN_LEVELS = 3 levels, one comparison each) reduces them
+// and the scheduler folds the tree's result into the decision's minimum
+// (strict "<" with the earlier candidate on the left: the first of equal
+// ones wins, as the model's select()):
 //   best  = min J over L* > 0,  best_dl = min J_dl (eqs. 15-16)
 // and takes the lazy check from the result of s(k-1) itself: "all seven
 // |e(k+1)| <= bnd with s(k-1)" is exactly J_dl(s(k-1)) <= 0.
 // Decision: kept (lazy check passes: s(k-1), no candidates), optimal (best),
 // or deadlock (best_dl). done_o is high for one cycle with the decision;
 // cycles_o counts the clock edges from the start_i cycle to the done_o cycle:
-//   16 + ceil(|S| / n_use) + 41 + 1   (drive::mpdcc::cycles::pipelined_core_cycles)
+//   20 + ceil(|S| / n_use) + 41 + 3 + 1   (drive::mpdcc::cycles::pipelined_core_cycles)
 // The search always runs (a kept decision takes as long): the lazy check
 // costs no separate pass.
 `default_nettype none

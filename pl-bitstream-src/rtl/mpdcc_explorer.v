@@ -28,23 +28,25 @@
 //   2  inv_n (+ np_c P_n,c); -inv_ph; v0_a + v0_b; 3 v0
 //   3  t = n inv_n + ph inv_ph; sum v0; inverter rows rounded
 //   4  dv = -t; u0 = 3 v0 - sum; inverter rows clamped
-//   5  vh = rnd(dv, 15), v1r = rnd(dv, 18); g3 u0, gd u0
-//   6  sum vh (1/2); 3 vh; v1 = v0 + v1r
-//   7  sum vh (2/2); sum v1 (1/2); 3 v1
-//   8  uh = 3 vh - sum; sum v1 (2/2)
-//   9  g3 uh; u1 = 3 v1 - sum
-//  10  Q = g3 uh - gd u0; g3_1 u1
-//  11  g_m = m g3 u0 + m^2 Q (shifts, m = 1, 2, 4, 8); rnd(g3_1 u1, 17)
-//  12  rnd(g_m, 14); sat16
-//  13  dn_m - rnd(g_m, 14); dn1 - ...
-//  14  node changes clamped, one-step changes saturated
-//  15..26  the seven lanes (mpdcc_lane); beside them e1 = e0 + d1, |e1|,
-//      |e1| - bnd, a 3-level max tree (J_dl), |e0| <= bnd (inside at k)
+//   5  vh = rnd(dv, 15), v1r = rnd(dv, 18); g3 u0, gd u0 (phases a, b)
+//   6  vh_a - vh_b, vh_a - vh_c, vh_b - vh_c; v1 = v0 + v1r; sums of a, b
+//   7  uh_a, uh_b; v1 differences; g3 u0_c = -(sum)
+//   8  g3 uh (a, b); u1_a, u1_b
+//   9  g3_1 u1 (a, b); -gd u0_c - g3 uh_a
+//  10  Q = g3 uh - gd u0 (Q_c: - g3 uh_b); sum of g3_1 u1
+//  11  g_m = m g3 u0 + m^2 Q (shifts, m = 1, 2, 4, 8); g3_1 u1_c = -(sum)
+//  12  rnd(g_m, 14); rnd(g3_1 u1, 17)
+//  13  dn_m - rnd(g_m, 14); sat16
+//  14  node changes clamped; dn1 - ...
+//  15  one-step changes saturated
+//  15..26  the seven lanes (mpdcc_lane); beside them e1 = e0 + d1 (16),
+//      |e1|, |e1| - bnd, a 3-level max tree (J_dl, 21), |e0| <= bnd
+//      (inside at k)
 //  27..29  3-level min tree of l_j
 //  30  L*
 //  31  recip ROM; piece of L*, L* - start, slope of v_n on it
-//  32  (L* - start) slope; f_s recip
-//  33  rnd(., ls)   34  + n_(i-1)   35  + e0_vn   36  sat16
+//  32  (L* - start) slope; f_s recip (shift and add, 1/2)
+//  33  rnd(., ls); f_s recip (2/2)   34  + n_(i-1)   35  + e0_vn   36  sat16
 //  37  square   38  x lambda_n   39  rnd(., 17)   40  + J_sw   41  J
 `default_nettype none
 

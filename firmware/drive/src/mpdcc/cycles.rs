@@ -1131,14 +1131,18 @@ pub const fn pipelined_common_latency(muls: u32) -> u32 {
 
 /// Cycles from the start strobe to the first candidate's issue, less one
 /// (`mpdcc_common` `ISSUE_DELAY`): the explorers read `P_n`, `P_ph` (the
-/// first six products of group 3, from their hold registers) in the issue
+/// first six products of the third group, from their hold registers) in the issue
 /// cycle and `dn` 12 cycles after it, so the first candidate issues when
 /// both are final when read, before the common terms are complete.
 pub const fn pipelined_issue_delay(muls: u32) -> u32 {
     let m = if muls == 0 { 1 } else { muls };
     let pn_final = common_group_starts(m)[2] + 5 / m + 2;
     let dn_read = pipelined_common_latency(m) - 12;
-    let first = if pn_final > dn_read { pn_final } else { dn_read };
+    let first = if pn_final > dn_read {
+        pn_final
+    } else {
+        dn_read
+    };
     first - 1
 }
 
@@ -1301,14 +1305,17 @@ mod tests {
         assert_eq!(pipelined_issue_delay(4), 33 - 12 - 1);
         assert_eq!(PIPELINED_COMMON_LATENCY, 20);
         // one multiplier: 15 + 13 + 14 + 4 + 5 issue cycles
-        assert_eq!(pipelined_common_latency(1), 1 + 15 + 2 + 13 + 3 + 14 + 2 + 4 + 7 + 5 - 1 + 4);
+        assert_eq!(
+            pipelined_common_latency(1),
+            1 + 15 + 2 + 13 + 3 + 14 + 2 + 4 + 7 + 5 - 1 + 4
+        );
         assert_eq!(pipelined_core_cycles(2, 216), 20 + 108 + 41 + 3 + 1);
         assert_eq!(pipelined_core_cycles(4, 216), 20 + 54 + 41 + 3 + 1);
         assert_eq!(pipelined_core_cycles(5, 216), 20 + 44 + 41 + 3 + 1);
         assert_eq!(pipelined_core_cycles(6, 5), 20 + 1 + 41 + 3 + 1);
         // Against the structural model of the iterative explorers: more
-        // than 20 times fewer cycles at every N for the full set (26x at
-        // N = 6, 44x at N = 2).
+        // than 20 times fewer cycles at every N for the full set (24x at
+        // N = 6, 42x at N = 2).
         let m = CycleModel::default();
         let lw = worst_lane_cycles(4, 3, 7);
         for n in 1..=6 {
