@@ -2,9 +2,12 @@
 // eq. 14), drive::mpdcc::fpga::common_terms of the frozen core bit for bit:
 // output errors at k, the switch-independent error changes at the nodes
 // k + 8, 16, 32, 64 and over one step, and the capacitor-current products.
-// A straight pipeline, fixed latency LATENCY = 16 cycles; the outputs follow
-// the inputs (held stable by the caller) with that delay.
-//
+// The inputs are held stable by the caller from the start_i cycle on. The
+// 51 products are computed once each on MULS shared multipliers (schedule
+// below); the stages listed here are the order of the datapath, which
+// recomputes every cycle from the products' hold registers: P_n, P_ph are
+// final PN_FINAL = 17 cycles after start_i, e0 at 6, dn and dn1 at
+// LATENCY = 33 (MULS = 4). The explorers may start at ISSUE_DELAY + 1 = 21.
 // Formats (docs/mpdcc-fpga.md): i_ab, i_ref_ab, v_n, v_ph, omega_r, omega_s,
 // v_ph_ref Q2.13; psi_ab and the L-step coefficients Q1.14; the one-step
 // coefficients c_tau1, c_r1, c_w1, c_s1 f17; wide sums exact (f28 L-step,
@@ -12,7 +15,8 @@
 // ((x >>> s) + x[s-1]), as drive::mpdcc::fixed::mul.
 //
 // Stages (at most one multiplier or one adder between registers; a
-// saturation is a compare and mux on a registered sum):
+// saturation is a compare and mux on a registered sum; a "product" is a
+// hold register loaded from a shared multiplier, see the schedule):
 //   1  products of the inputs; e_ab = i* - i; -v_n; v_ph_ref - v_ph; x_a/2
 //   2  rounding of kw, w2, ks, s2, kw1, ks1, s3h i_b; nat = -2 c_tau i + c_r psi
 //   3  kp, tr, ts, k2, kw psi, ks i*, kw1 psi, ks1 i*, s3h e_b (products);
@@ -33,9 +37,15 @@
 //  16  sat16
 `default_nettype none
 
-module mpdcc_common (
+module mpdcc_common #(
+    parameter integer MULS = 4,  // shared 16 x 16 multipliers (DSP48E1), 1..8
+    // the instantiating module's copy of ISSUE_DELAY: elaboration fails
+    // when the two differ (0: no check)
+    parameter integer EXPECT_ISSUE_DELAY = 0
+) (
     input  wire               clk_i,
     input  wire               rst_i,
+    input  wire               start_i,   // inputs valid from this cycle on
     // state registers (raw)
     input  wire signed [15:0] i_a_i,
     input  wire signed [15:0] i_b_i,
@@ -83,38 +93,144 @@ module mpdcc_common (
     function automatic signed [W-1:0] sx(input signed [15:0] x);
         sx = {{(W - 16) {x[15]}}, x};
     endfunction
-    function automatic signed [W-1:0] pr(input signed [W-1:0] a, input signed [W-1:0] b);
-        // 16 x 16 (both operands hold 16-bit values)
-        pr = $signed(a[15:0]) * $signed(b[15:0]);
+    function automatic signed [W-1:0] sx32(input signed [31:0] x);
+        sx32 = {{(W - 32) {x[31]}}, x};
     endfunction
 
+    // ------------------------------------------ shared multipliers
+    // The 51 products of a decision (16 x 16 signed, exact in 32 bits) are
+    // computed once each on MULS shared multipliers, in five groups: a
+    // group's products need only values of earlier groups (the numbers are
+    // the stages of the list above where the products were). Product j of a
+    // group issues at slot START + j / MULS on multiplier j % MULS: its
+    // operands are registered at the end of that cycle (DSP48E1 A/B
+    // registers), the product is registered one cycle later in its own hold
+    // register, valid from slot + 2. Everything else is the pipeline above,
+    // fed by the hold registers and by the inputs, which stay constant for
+    // the decision: a value is final once its sources are, and the outputs
+    // are final LATENCY cycles after the start strobe.
+    localparam integer NP = 51;
+    localparam integer B3 = 15, B5 = 28, B7 = 42, B14 = 46;  // group bases
+    localparam integer C1 = (B3 - 1) / MULS + 1, C3 = (B5 - B3 - 1) / MULS + 1;
+    localparam integer C5 = (B7 - B5 - 1) / MULS + 1, C7 = (B14 - B7 - 1) / MULS + 1;
+    localparam integer C14 = (NP - B14 - 1) / MULS + 1;
+    // group starts: operands final (last product of the group before
+    // + 2, + the pipeline stages between)
+    localparam integer S1 = 1;
+    localparam integer S3 = S1 + C1 + 2;         // s2 = rnd(stage-1 products)
+    localparam integer S5 = S3 + C3 + 3;         // s5_nq = rnd(s4_na), s4_na = s3 + kw psi
+    localparam integer S7 = S5 + C5 + 2;         // s6 = rnd(stage-5 products)
+    localparam integer S14 = S7 + C7 + 7;        // xb13: six stages after the stage-7 products
+    localparam integer LAST = S14 + C14 - 1;     // last slot
+    localparam integer LATENCY = LAST + 4;       // + product, r15, b16 (dn, dn1)
+    // P_n, P_ph: the first six products of group 5, read from their hold
+    // registers; e0 is final at stage 6.
+    localparam integer PN_FINAL = S5 + 5 / MULS + 2;
+    // The explorers read the outputs at different stages: P_n, P_ph, v_n,
+    // v_ph in the cycle a candidate is issued, dn DN_READ = 12 cycles later
+    // (mpdcc_explorer nd_13), dn1 13 (d1c_14), e0 at least 14 (the lanes).
+    // So the first candidate may issue in cycle ISSUE_DELAY + 1, before dn
+    // is final, as long as it is final when read.
+    localparam integer DN_READ = 12;
+    localparam integer ISSUE_DELAY = ((PN_FINAL > LATENCY - DN_READ) ? PN_FINAL : LATENCY - DN_READ) - 1;
+
+    generate
+        if (EXPECT_ISSUE_DELAY != 0 && EXPECT_ISSUE_DELAY != ISSUE_DELAY) begin : g_issue_delay_mismatch
+            mpdcc_common_issue_delay_mismatch u_stop ();
+        end
+    endgenerate
+
+    function automatic integer slot_of(input integer p);
+        if (p < B3) slot_of = S1 + p / MULS;
+        else if (p < B5) slot_of = S3 + (p - B3) / MULS;
+        else if (p < B7) slot_of = S5 + (p - B5) / MULS;
+        else if (p < B14) slot_of = S7 + (p - B7) / MULS;
+        else slot_of = S14 + (p - B14) / MULS;
+    endfunction
+    function automatic integer mul_of(input integer p);
+        if (p < B3) mul_of = p % MULS;
+        else if (p < B5) mul_of = (p - B3) % MULS;
+        else if (p < B7) mul_of = (p - B5) % MULS;
+        else if (p < B14) mul_of = (p - B7) % MULS;
+        else mul_of = (p - B14) % MULS;
+    endfunction
+
+    wire [16*NP-1:0] opa_w, opb_w;
+    wire [32*NP-1:0] prod_w;
+    // slot counter: 1 in the cycle after the start strobe, then up to LAST
+    reg [6:0] t_q;
+    always @(posedge clk_i) begin
+        if (rst_i) t_q <= 7'd0;
+        else if (start_i) t_q <= 7'd1;
+        else if (t_q == LAST[6:0]) t_q <= 7'd0;
+        else if (t_q != 7'd0) t_q <= t_q + 7'd1;
+    end
+    genvar g;
+    generate
+        for (g = 0; g < MULS; g = g + 1) begin : g_mul
+            reg signed [15:0] a_q, b_q;
+            reg        [5:0]  tag_q;  // product index
+            reg               hit_q;
+            reg        [15:0] a_d, b_d;
+            reg        [5:0]  tag_d;
+            reg               hit_d;
+            integer p;
+            always @(*) begin
+                a_d = 16'd0; b_d = 16'd0; tag_d = 6'd0; hit_d = 1'b0;
+                for (p = 0; p < NP; p = p + 1) begin
+                    if (mul_of(p) == g && {25'd0, t_q} == slot_of(p)) begin
+                        a_d = opa_w[16*p +: 16];
+                        b_d = opb_w[16*p +: 16];
+                        tag_d = p[5:0];
+                        hit_d = 1'b1;
+                    end
+                end
+            end
+            always @(posedge clk_i) begin
+                if (rst_i) begin
+                    a_q <= 16'sd0; b_q <= 16'sd0; tag_q <= 6'd0; hit_q <= 1'b0;
+                end else begin
+                    a_q <= a_d; b_q <= b_d; tag_q <= tag_d; hit_q <= hit_d;
+                end
+            end
+            wire signed [31:0] m = a_q * b_q;
+        end
+        for (g = 0; g < NP; g = g + 1) begin : g_prod
+            localparam integer MU = mul_of(g);
+            reg signed [31:0] q;
+            always @(posedge clk_i) begin
+                if (rst_i) q <= 32'sd0;
+                else if (g_mul[MU].hit_q && g_mul[MU].tag_q == g) q <= g_mul[MU].m;
+            end
+            assign prod_w[32*g +: 32] = q;
+        end
+    endgenerate
+
     // ------------------------------------------------------- stage 1
-    wire signed [W-1:0] ia = sx(i_a_i), ib = sx(i_b_i), pa = sx(psi_a_i), pb = sx(psi_b_i);
-    wire signed [W-1:0] ra = sx(ir_a_i), rb = sx(ir_b_i), wr = sx(omega_r_i), ws = sx(omega_s_i);
+    wire signed [W-1:0] ia = sx(i_a_i), ib = sx(i_b_i), ra = sx(ir_a_i), rb = sx(ir_b_i);
     wire signed [W-1:0] s1_pkw, s1_pw2, s1_pks, s1_ps2, s1_pkw1, s1_pks1;
     wire signed [W-1:0] s1_ta, s1_tb, s1_ra, s1_rb, s1_t1a, s1_t1b, s1_r1a, s1_r1b;
     wire signed [W-1:0] s1_ea, s1_eb, s1_en, s1_psi, s1_hi;
     wire signed [W-1:0] s1_eph [0:2];
-    mpdcc_pipe #(.W(W)) u1a (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_w_i), wr)), .q_o(s1_pkw));
-    mpdcc_pipe #(.W(W)) u1b (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(wr, wr)), .q_o(s1_pw2));
-    mpdcc_pipe #(.W(W)) u1c (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_s_i), ws)), .q_o(s1_pks));
-    mpdcc_pipe #(.W(W)) u1d (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(ws, ws)), .q_o(s1_ps2));
-    mpdcc_pipe #(.W(W)) u1e (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_w1_i), wr)), .q_o(s1_pkw1));
-    mpdcc_pipe #(.W(W)) u1f (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_s1_i), ws)), .q_o(s1_pks1));
-    mpdcc_pipe #(.W(W)) u1g (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_tau_i), ia)), .q_o(s1_ta));
-    mpdcc_pipe #(.W(W)) u1h (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_tau_i), ib)), .q_o(s1_tb));
-    mpdcc_pipe #(.W(W)) u1i (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_r_i), pa)), .q_o(s1_ra));
-    mpdcc_pipe #(.W(W)) u1j (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_r_i), pb)), .q_o(s1_rb));
-    mpdcc_pipe #(.W(W)) u1k (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_tau1_i), ia)), .q_o(s1_t1a));
-    mpdcc_pipe #(.W(W)) u1l (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_tau1_i), ib)), .q_o(s1_t1b));
-    mpdcc_pipe #(.W(W)) u1m (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_r1_i), pa)), .q_o(s1_r1a));
-    mpdcc_pipe #(.W(W)) u1n (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_r1_i), pb)), .q_o(s1_r1b));
+    assign s1_pkw = sx32(prod_w[32 * (0) +: 32]);
+    assign s1_pw2 = sx32(prod_w[32 * (1) +: 32]);
+    assign s1_pks = sx32(prod_w[32 * (2) +: 32]);
+    assign s1_ps2 = sx32(prod_w[32 * (3) +: 32]);
+    assign s1_pkw1 = sx32(prod_w[32 * (4) +: 32]);
+    assign s1_pks1 = sx32(prod_w[32 * (5) +: 32]);
+    assign s1_ta = sx32(prod_w[32 * (6) +: 32]);
+    assign s1_tb = sx32(prod_w[32 * (7) +: 32]);
+    assign s1_ra = sx32(prod_w[32 * (8) +: 32]);
+    assign s1_rb = sx32(prod_w[32 * (9) +: 32]);
+    assign s1_t1a = sx32(prod_w[32 * (10) +: 32]);
+    assign s1_t1b = sx32(prod_w[32 * (11) +: 32]);
+    assign s1_r1a = sx32(prod_w[32 * (12) +: 32]);
+    assign s1_r1b = sx32(prod_w[32 * (13) +: 32]);
     mpdcc_pipe #(.W(W)) u1o (.clk_i(clk_i), .rst_i(rst_i), .d_i(ra - ia), .q_o(s1_ea));
     mpdcc_pipe #(.W(W)) u1p (.clk_i(clk_i), .rst_i(rst_i), .d_i(rb - ib), .q_o(s1_eb));
     mpdcc_pipe #(.W(W)) u1q (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - sx(v_n_i)), .q_o(s1_en));
-    mpdcc_pipe #(.W(W)) u1r (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(s3h_i), ib)), .q_o(s1_psi));
+    assign s1_psi = sx32(prod_w[32 * (14) +: 32]);
     mpdcc_pipe #(.W(W)) u1s (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(ia, 1)), .q_o(s1_hi));
-    genvar g;
     generate
         for (g = 0; g < 3; g = g + 1) begin : g_eph
             mpdcc_pipe #(.W(W)) u (.clk_i(clk_i), .rst_i(rst_i),
@@ -139,12 +255,12 @@ module mpdcc_common (
     mpdcc_pipe #(.W(W)) u2l (.clk_i(clk_i), .rst_i(rst_i), .d_i(s1_r1b - (s1_t1b <<< 1)), .q_o(s2_n1b));
     mpdcc_pipe #(.W(W)) u2m (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(s1_ea)), .q_o(s2_ea));
     mpdcc_pipe #(.W(W)) u2n (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(s1_eb)), .q_o(s2_eb));
-    // e0 of v_n and v_ph: saturate, then delay to the output stage
+    // e0 of v_n and v_ph: saturated (final at stage 2)
     wire signed [W-1:0] e0_vn, e0_ph [0:2];
-    mpdcc_pipe #(.W(W), .N(15)) u2o (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(s1_en)), .q_o(e0_vn));
+    mpdcc_pipe #(.W(W), .N(1)) u2o (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(s1_en)), .q_o(e0_vn));
     generate
         for (g = 0; g < 3; g = g + 1) begin : g_e0ph
-            mpdcc_pipe #(.W(W), .N(15)) u (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(s1_eph[g])), .q_o(e0_ph[g]));
+            mpdcc_pipe #(.W(W), .N(1)) u (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(s1_eph[g])), .q_o(e0_ph[g]));
         end
     endgenerate
 
@@ -152,19 +268,19 @@ module mpdcc_common (
     wire signed [W-1:0] s3_pkp, s3_ptr, s3_pts, s3_pk2, s3_kwpb, s3_kwpa, s3_ksrb, s3_ksra;
     wire signed [W-1:0] s3_k1pb, s3_k1pa, s3_s1rb, s3_s1ra, s3_pse, s3_he, s3_ib, s3_ic;
     wire signed [W-1:0] s3_kw, s3_ks, s3_na, s3_nb, s3_n1a, s3_n1b, s3_ea;
-    mpdcc_pipe #(.W(W)) u3a (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_p_i), s2_w2)), .q_o(s3_pkp));
-    mpdcc_pipe #(.W(W)) u3b (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_3_i), s2_w2)), .q_o(s3_ptr));
-    mpdcc_pipe #(.W(W)) u3c (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_3_i), s2_s2)), .q_o(s3_pts));
-    mpdcc_pipe #(.W(W)) u3d (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s2_ks, s2_ks)), .q_o(s3_pk2));
-    mpdcc_pipe #(.W(W)) u3e (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s2_kw, pb)), .q_o(s3_kwpb));
-    mpdcc_pipe #(.W(W)) u3f (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s2_kw, pa)), .q_o(s3_kwpa));
-    mpdcc_pipe #(.W(W)) u3g (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s2_ks, rb)), .q_o(s3_ksrb));
-    mpdcc_pipe #(.W(W)) u3h (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s2_ks, ra)), .q_o(s3_ksra));
-    mpdcc_pipe #(.W(W)) u3i (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s2_kw1, pb)), .q_o(s3_k1pb));
-    mpdcc_pipe #(.W(W)) u3j (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s2_kw1, pa)), .q_o(s3_k1pa));
-    mpdcc_pipe #(.W(W)) u3k (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s2_ks1, rb)), .q_o(s3_s1rb));
-    mpdcc_pipe #(.W(W)) u3l (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s2_ks1, ra)), .q_o(s3_s1ra));
-    mpdcc_pipe #(.W(W)) u3m (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(s3h_i), s2_eb)), .q_o(s3_pse));
+    assign s3_pkp = sx32(prod_w[32 * (15) +: 32]);
+    assign s3_ptr = sx32(prod_w[32 * (16) +: 32]);
+    assign s3_pts = sx32(prod_w[32 * (17) +: 32]);
+    assign s3_pk2 = sx32(prod_w[32 * (18) +: 32]);
+    assign s3_kwpb = sx32(prod_w[32 * (19) +: 32]);
+    assign s3_kwpa = sx32(prod_w[32 * (20) +: 32]);
+    assign s3_ksrb = sx32(prod_w[32 * (21) +: 32]);
+    assign s3_ksra = sx32(prod_w[32 * (22) +: 32]);
+    assign s3_k1pb = sx32(prod_w[32 * (23) +: 32]);
+    assign s3_k1pa = sx32(prod_w[32 * (24) +: 32]);
+    assign s3_s1rb = sx32(prod_w[32 * (25) +: 32]);
+    assign s3_s1ra = sx32(prod_w[32 * (26) +: 32]);
+    assign s3_pse = sx32(prod_w[32 * (27) +: 32]);
     mpdcc_pipe #(.W(W)) u3n (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(s2_ea, 1)), .q_o(s3_he));
     mpdcc_pipe #(.W(W)) u3o (.clk_i(clk_i), .rst_i(rst_i), .d_i(s2_ri - s2_hi), .q_o(s3_ib));
     mpdcc_pipe #(.W(W)) u3p (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - s2_hi - s2_ri), .q_o(s3_ic));
@@ -205,12 +321,12 @@ module mpdcc_common (
     // ------------------------------------------------------- stage 5
     wire signed [W-1:0] s5_pkw3, s5_pks3, s5_kppa, s5_kppb, s5_k2ra, s5_k2rb;
     wire signed [W-1:0] s5_rta, s5_rtb, s5_r1a, s5_r1b, s5_nqa, s5_nqb, s5_eb, s5_ec, s5_ea;
-    mpdcc_pipe #(.W(W)) u5a (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s4_kw, s4_tr)), .q_o(s5_pkw3));
-    mpdcc_pipe #(.W(W)) u5b (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s4_ks, s4_ts)), .q_o(s5_pks3));
-    mpdcc_pipe #(.W(W)) u5c (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s4_kp, pa)), .q_o(s5_kppa));
-    mpdcc_pipe #(.W(W)) u5d (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s4_kp, pb)), .q_o(s5_kppb));
-    mpdcc_pipe #(.W(W)) u5e (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s4_k2, ra)), .q_o(s5_k2ra));
-    mpdcc_pipe #(.W(W)) u5f (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s4_k2, rb)), .q_o(s5_k2rb));
+    assign s5_pkw3 = sx32(prod_w[32 * (34) +: 32]);
+    assign s5_pks3 = sx32(prod_w[32 * (35) +: 32]);
+    assign s5_kppa = sx32(prod_w[32 * (36) +: 32]);
+    assign s5_kppb = sx32(prod_w[32 * (37) +: 32]);
+    assign s5_k2ra = sx32(prod_w[32 * (38) +: 32]);
+    assign s5_k2rb = sx32(prod_w[32 * (39) +: 32]);
     mpdcc_pipe #(.W(W)) u5g (.clk_i(clk_i), .rst_i(rst_i), .d_i(s4_ra - s4_na), .q_o(s5_rta));
     mpdcc_pipe #(.W(W)) u5h (.clk_i(clk_i), .rst_i(rst_i), .d_i(s4_rb - s4_nb), .q_o(s5_rtb));
     mpdcc_pipe #(.W(W)) u5i (.clk_i(clk_i), .rst_i(rst_i), .d_i(s4_r1a - s4_n1a), .q_o(s5_r1a));
@@ -220,24 +336,25 @@ module mpdcc_common (
     mpdcc_pipe #(.W(W)) u5m (.clk_i(clk_i), .rst_i(rst_i), .d_i(s4_re - s4_he), .q_o(s5_eb));
     mpdcc_pipe #(.W(W)) u5n (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - s4_he - s4_re), .q_o(s5_ec));
     mpdcc_pipe #(.W(W)) u5o (.clk_i(clk_i), .rst_i(rst_i), .d_i(s4_ea), .q_o(s5_ea));
-    // P_n, P_ph (f27), delayed to the output stage
+    // P_n, P_ph (f27), straight from the hold registers
     generate
         for (g = 0; g < 3; g = g + 1) begin : g_p
             wire signed [W-1:0] pn5, pph5;
-            mpdcc_pipe #(.W(W)) un (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_n_i), i_abc[g])), .q_o(pn5));
-            mpdcc_pipe #(.W(W)) up (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_ph_i), i_abc[g])), .q_o(pph5));
-            wire signed [W-1:0] pn16, pph16;
-            mpdcc_pipe #(.W(W), .N(11)) dn (.clk_i(clk_i), .rst_i(rst_i), .d_i(pn5), .q_o(pn16));
-            mpdcc_pipe #(.W(W), .N(11)) dp (.clk_i(clk_i), .rst_i(rst_i), .d_i(pph5), .q_o(pph16));
-            assign pn_o[32*g +: 32] = pn16[31:0];
-            assign pph_o[32*g +: 32] = pph16[31:0];
+            assign opa_w[16*(28+g) +: 16] = c_n_i;
+            assign opb_w[16*(28+g) +: 16] = i_abc[g][15:0];
+            assign opa_w[16*(31+g) +: 16] = c_ph_i;
+            assign opb_w[16*(31+g) +: 16] = i_abc[g][15:0];
+            assign pn5 = sx32(prod_w[32 * (28 + g) +: 32]);
+            assign pph5 = sx32(prod_w[32 * (31 + g) +: 32]);
+            assign pn_o[32*g +: 32] = pn5[31:0];
+            assign pph_o[32*g +: 32] = pph5[31:0];
         end
     endgenerate
-    // e0 of the currents: e_abc = inv_clarke_q(e_ab), delayed to stage 16
+    // e0 of the currents: e_abc = inv_clarke_q(e_ab) (final at stage 6)
     wire signed [W-1:0] e0_i3 [0:2];
-    mpdcc_pipe #(.W(W), .N(11)) u5p (.clk_i(clk_i), .rst_i(rst_i), .d_i(s5_ea), .q_o(e0_i3[0]));
-    mpdcc_pipe #(.W(W), .N(11)) u5q (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(s5_eb)), .q_o(e0_i3[1]));
-    mpdcc_pipe #(.W(W), .N(11)) u5r (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(s5_ec)), .q_o(e0_i3[2]));
+    mpdcc_pipe #(.W(W), .N(1)) u5p (.clk_i(clk_i), .rst_i(rst_i), .d_i(s5_ea), .q_o(e0_i3[0]));
+    mpdcc_pipe #(.W(W), .N(1)) u5q (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(s5_eb)), .q_o(e0_i3[1]));
+    mpdcc_pipe #(.W(W), .N(1)) u5r (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(s5_ec)), .q_o(e0_i3[2]));
 
     // ------------------------------------------------------- stage 6
     wire signed [W-1:0] s6_kw3, s6_ks3, s6_cora, s6_corb, s6_pda, s6_pdb;
@@ -246,8 +363,8 @@ module mpdcc_common (
     mpdcc_pipe #(.W(W)) u6b (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(rnd(s5_pks3, 14))), .q_o(s6_ks3));
     mpdcc_pipe #(.W(W)) u6c (.clk_i(clk_i), .rst_i(rst_i), .d_i(s5_kppa + (s5_k2ra <<< 1)), .q_o(s6_cora));
     mpdcc_pipe #(.W(W)) u6d (.clk_i(clk_i), .rst_i(rst_i), .d_i(s5_kppb + (s5_k2rb <<< 1)), .q_o(s6_corb));
-    mpdcc_pipe #(.W(W)) u6e (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_d_i), s5_nqa)), .q_o(s6_pda));
-    mpdcc_pipe #(.W(W)) u6f (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(c_d_i), s5_nqb)), .q_o(s6_pdb));
+    assign s6_pda = sx32(prod_w[32 * (40) +: 32]);
+    assign s6_pdb = sx32(prod_w[32 * (41) +: 32]);
     mpdcc_pipe #(.W(W)) u6g (.clk_i(clk_i), .rst_i(rst_i), .d_i(s5_rta), .q_o(s6_rta));
     mpdcc_pipe #(.W(W)) u6h (.clk_i(clk_i), .rst_i(rst_i), .d_i(s5_rtb), .q_o(s6_rtb));
     mpdcc_pipe #(.W(W)) u6i (.clk_i(clk_i), .rst_i(rst_i), .d_i(s5_r1a), .q_o(s6_r1a));
@@ -255,10 +372,10 @@ module mpdcc_common (
 
     // ------------------------------------------------------- stage 7
     wire signed [W-1:0] s7_ka, s7_wa, s7_kb, s7_wb, s7_dca, s7_dcb, s7_cora, s7_corb;
-    mpdcc_pipe #(.W(W)) u7a (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s6_ks3, rb)), .q_o(s7_ka));
-    mpdcc_pipe #(.W(W)) u7b (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s6_kw3, pb)), .q_o(s7_wa));
-    mpdcc_pipe #(.W(W)) u7c (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s6_ks3, ra)), .q_o(s7_kb));
-    mpdcc_pipe #(.W(W)) u7d (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(s6_kw3, pa)), .q_o(s7_wb));
+    assign s7_ka = sx32(prod_w[32 * (42) +: 32]);
+    assign s7_wa = sx32(prod_w[32 * (43) +: 32]);
+    assign s7_kb = sx32(prod_w[32 * (44) +: 32]);
+    assign s7_wb = sx32(prod_w[32 * (45) +: 32]);
     mpdcc_pipe #(.W(W)) u7e (.clk_i(clk_i), .rst_i(rst_i), .d_i((s6_pda <<< 1) - s6_cora), .q_o(s7_dca));
     mpdcc_pipe #(.W(W)) u7f (.clk_i(clk_i), .rst_i(rst_i), .d_i((s6_pdb <<< 1) - s6_corb), .q_o(s7_dcb));
     mpdcc_pipe #(.W(W)) u7g (.clk_i(clk_i), .rst_i(rst_i), .d_i(s6_cora), .q_o(s7_cora));
@@ -320,7 +437,9 @@ module mpdcc_common (
             wire signed [W-1:0] xa13, xb13, xa14, h14, p14, xa15, h15, r15, b16, c16, xa16;
             mpdcc_pipe #(.W(W)) ua (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(x12[g][0])), .q_o(xa13));
             mpdcc_pipe #(.W(W)) ub (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(x12[g][1])), .q_o(xb13));
-            mpdcc_pipe #(.W(W)) uc (.clk_i(clk_i), .rst_i(rst_i), .d_i(pr(sx(s3h_i), xb13)), .q_o(p14));
+            assign opa_w[16*(46+g) +: 16] = s3h_i;
+            assign opb_w[16*(46+g) +: 16] = xb13[15:0];
+            assign p14 = sx32(prod_w[32 * (46 + g) +: 32]);
             mpdcc_pipe #(.W(W)) ud (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(xa13, 1)), .q_o(h14));
             mpdcc_pipe #(.W(W)) ue (.clk_i(clk_i), .rst_i(rst_i), .d_i(xa13), .q_o(xa14));
             mpdcc_pipe #(.W(W)) uf (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(rnd(p14, 14))), .q_o(r15));
@@ -341,6 +460,87 @@ module mpdcc_common (
             end
         end
     endgenerate
+    // operands of the shared multipliers (products in schedule order)
+    assign opa_w[16*0 +: 16] = c_w_i;
+    assign opb_w[16*0 +: 16] = omega_r_i;
+    assign opa_w[16*1 +: 16] = omega_r_i;
+    assign opb_w[16*1 +: 16] = omega_r_i;
+    assign opa_w[16*2 +: 16] = c_s_i;
+    assign opb_w[16*2 +: 16] = omega_s_i;
+    assign opa_w[16*3 +: 16] = omega_s_i;
+    assign opb_w[16*3 +: 16] = omega_s_i;
+    assign opa_w[16*4 +: 16] = c_w1_i;
+    assign opb_w[16*4 +: 16] = omega_r_i;
+    assign opa_w[16*5 +: 16] = c_s1_i;
+    assign opb_w[16*5 +: 16] = omega_s_i;
+    assign opa_w[16*6 +: 16] = c_tau_i;
+    assign opb_w[16*6 +: 16] = i_a_i;
+    assign opa_w[16*7 +: 16] = c_tau_i;
+    assign opb_w[16*7 +: 16] = i_b_i;
+    assign opa_w[16*8 +: 16] = c_r_i;
+    assign opb_w[16*8 +: 16] = psi_a_i;
+    assign opa_w[16*9 +: 16] = c_r_i;
+    assign opb_w[16*9 +: 16] = psi_b_i;
+    assign opa_w[16*10 +: 16] = c_tau1_i;
+    assign opb_w[16*10 +: 16] = i_a_i;
+    assign opa_w[16*11 +: 16] = c_tau1_i;
+    assign opb_w[16*11 +: 16] = i_b_i;
+    assign opa_w[16*12 +: 16] = c_r1_i;
+    assign opb_w[16*12 +: 16] = psi_a_i;
+    assign opa_w[16*13 +: 16] = c_r1_i;
+    assign opb_w[16*13 +: 16] = psi_b_i;
+    assign opa_w[16*14 +: 16] = s3h_i;
+    assign opb_w[16*14 +: 16] = i_b_i;
+    assign opa_w[16*15 +: 16] = c_p_i;
+    assign opb_w[16*15 +: 16] = s2_w2[15:0];
+    assign opa_w[16*16 +: 16] = c_3_i;
+    assign opb_w[16*16 +: 16] = s2_w2[15:0];
+    assign opa_w[16*17 +: 16] = c_3_i;
+    assign opb_w[16*17 +: 16] = s2_s2[15:0];
+    assign opa_w[16*18 +: 16] = s2_ks[15:0];
+    assign opb_w[16*18 +: 16] = s2_ks[15:0];
+    assign opa_w[16*19 +: 16] = s2_kw[15:0];
+    assign opb_w[16*19 +: 16] = psi_b_i;
+    assign opa_w[16*20 +: 16] = s2_kw[15:0];
+    assign opb_w[16*20 +: 16] = psi_a_i;
+    assign opa_w[16*21 +: 16] = s2_ks[15:0];
+    assign opb_w[16*21 +: 16] = ir_b_i;
+    assign opa_w[16*22 +: 16] = s2_ks[15:0];
+    assign opb_w[16*22 +: 16] = ir_a_i;
+    assign opa_w[16*23 +: 16] = s2_kw1[15:0];
+    assign opb_w[16*23 +: 16] = psi_b_i;
+    assign opa_w[16*24 +: 16] = s2_kw1[15:0];
+    assign opb_w[16*24 +: 16] = psi_a_i;
+    assign opa_w[16*25 +: 16] = s2_ks1[15:0];
+    assign opb_w[16*25 +: 16] = ir_b_i;
+    assign opa_w[16*26 +: 16] = s2_ks1[15:0];
+    assign opb_w[16*26 +: 16] = ir_a_i;
+    assign opa_w[16*27 +: 16] = s3h_i;
+    assign opb_w[16*27 +: 16] = s2_eb[15:0];
+    assign opa_w[16*34 +: 16] = s4_kw[15:0];
+    assign opb_w[16*34 +: 16] = s4_tr[15:0];
+    assign opa_w[16*35 +: 16] = s4_ks[15:0];
+    assign opb_w[16*35 +: 16] = s4_ts[15:0];
+    assign opa_w[16*36 +: 16] = s4_kp[15:0];
+    assign opb_w[16*36 +: 16] = psi_a_i;
+    assign opa_w[16*37 +: 16] = s4_kp[15:0];
+    assign opb_w[16*37 +: 16] = psi_b_i;
+    assign opa_w[16*38 +: 16] = s4_k2[15:0];
+    assign opb_w[16*38 +: 16] = ir_a_i;
+    assign opa_w[16*39 +: 16] = s4_k2[15:0];
+    assign opb_w[16*39 +: 16] = ir_b_i;
+    assign opa_w[16*40 +: 16] = c_d_i;
+    assign opb_w[16*40 +: 16] = s5_nqa[15:0];
+    assign opa_w[16*41 +: 16] = c_d_i;
+    assign opb_w[16*41 +: 16] = s5_nqb[15:0];
+    assign opa_w[16*42 +: 16] = s6_ks3[15:0];
+    assign opb_w[16*42 +: 16] = ir_b_i;
+    assign opa_w[16*43 +: 16] = s6_kw3[15:0];
+    assign opb_w[16*43 +: 16] = psi_b_i;
+    assign opa_w[16*44 +: 16] = s6_ks3[15:0];
+    assign opb_w[16*44 +: 16] = ir_a_i;
+    assign opa_w[16*45 +: 16] = s6_kw3[15:0];
+    assign opb_w[16*45 +: 16] = psi_a_i;
     assign e0_o[15:0]    = e0_i3[0][15:0];
     assign e0_o[31:16]   = e0_i3[1][15:0];
     assign e0_o[47:32]   = e0_i3[2][15:0];

@@ -4,23 +4,27 @@
 //
 // Inputs are the state registers (drive::mpdcc::fpga::Inputs, already
 // quantized) and the design constants (Coeffs), held stable from start_i to
-// done_o. On start_i the scheduler computes the common terms (mpdcc_common,
-// eq. 14, 16 cycles) and then enumerates S(s(k-1)): per phase the positions
-// within one level of s(k-1), a contiguous code range [lo, hi] because the
-// level is monotonic in the code; candidates in ascending code order
-// (a outer, c inner), n_use_i (1..N) of them per clock, candidate i of a
-// clock to explorer i. Each explorer (mpdcc_explorer) takes one candidate per
-// clock and returns it LAT = 41 cycles later, so the results of one clock
-// arrive together and in enumeration order. The scheduler compares them as
-// they arrive (strict "<" in enumeration order: the first of equal ones
-// wins, as the model's select()):
+// done_o. On start_i the scheduler starts the common terms (mpdcc_common,
+// eq. 14, on MULS shared multipliers) and, once the terms the explorers read
+// first are final (COMMON_LATENCY = mpdcc_common's ISSUE_DELAY = 20 cycles;
+// the rest is final before it is read), enumerates S(s(k-1)): per phase the
+// positions within one level of s(k-1), a contiguous code range [lo, hi]
+// because the level is monotonic in the code; candidates in ascending code
+// order (a outer, c inner), n_use_i (1..N) of them per clock, candidate i
+// of a clock to explorer i. Each explorer (mpdcc_explorer) takes one
+// candidate per clock and returns it LAT = 41 cycles later, so the results
+// of one clock arrive together and in enumeration order. A registered
+// arg-min tree (ARGMIN_LEVELS = 3 levels, one comparison each) reduces them
+// and the scheduler folds the tree's result into the decision's minimum
+// (strict "<" with the earlier candidate on the left: the first of equal
+// ones wins, as the model's select()):
 //   best  = min J over L* > 0,  best_dl = min J_dl (eqs. 15-16)
 // and takes the lazy check from the result of s(k-1) itself: "all seven
 // |e(k+1)| <= bnd with s(k-1)" is exactly J_dl(s(k-1)) <= 0.
 // Decision: kept (lazy check passes: s(k-1), no candidates), optimal (best),
 // or deadlock (best_dl). done_o is high for one cycle with the decision;
 // cycles_o counts the clock edges from the start_i cycle to the done_o cycle:
-//   16 + ceil(|S| / n_use) + 41 + 1   (drive::mpdcc::cycles::pipelined_core_cycles)
+//   20 + ceil(|S| / n_use) + 41 + 3 + 1   (drive::mpdcc::cycles::pipelined_core_cycles)
 // The search always runs (a kept decision takes as long): the lazy check
 // costs no separate pass.
 `default_nettype none
@@ -76,9 +80,13 @@ module mpdcc_core #(
     output reg         [7:0]  candidates_o,
     output reg         [15:0] cycles_o
 );
-    // latency of mpdcc_common: the candidates start this many cycles after
-    // the start strobe's edge
-    localparam integer COMMON_LATENCY = 16;
+    // mpdcc_common's shared multipliers; the candidates start this many
+    // cycles after the start strobe's edge (mpdcc_common ISSUE_DELAY: the
+    // common terms are final when the explorers read them)
+    localparam integer MULS = 4;
+    localparam integer COMMON_LATENCY = 20;
+    // registered levels of the arg-min tree (up to 8 results per clock)
+    localparam integer ARGMIN_LEVELS = 3;
 
     // ------------------------------------------------ admissible ranges
     function automatic [2:0] lo_of(input [2:0] f);
@@ -102,7 +110,7 @@ module mpdcc_core #(
     reg  [8:0] hi_q;         // {c, b, a}
     reg  [8:0] cur_q;
     reg        gen_q;        // enumerating
-    reg  [4:0] pre_q;        // cycles left until the common terms are valid
+    reg  [5:0] pre_q;        // cycles left until the common terms are valid
     reg        busy_q;
     reg  [2:0] nuse_q;
     reg  [15:0] cyc_q;
@@ -153,7 +161,7 @@ module mpdcc_core #(
     wire last_now = |(cv & is_last);
     reg [8:0] nxt;
     reg [7:0] nissue;
-    integer i, k;
+    integer i;
     always @(*) begin
         nxt = cur_q;
         nissue = 8'd0;
@@ -170,8 +178,8 @@ module mpdcc_core #(
     wire [191:0] dn_w;
     wire [47:0]  dn1_w;
     wire [95:0]  pn_w, pph_w;
-    mpdcc_common u_common (
-        .clk_i(clk_i), .rst_i(rst_i),
+    mpdcc_common #(.MULS(MULS), .EXPECT_ISSUE_DELAY(COMMON_LATENCY)) u_common (
+        .clk_i(clk_i), .rst_i(rst_i), .start_i(start_i && !busy_q),
         .i_a_i(i_a_i), .i_b_i(i_b_i), .psi_a_i(psi_a_i), .psi_b_i(psi_b_i),
         .v_n_i(v_n_i), .v_ph_i(v_ph_i), .ir_a_i(ir_a_i), .ir_b_i(ir_b_i),
         .omega_r_i(omega_r_i), .omega_s_i(omega_s_i),
@@ -203,42 +211,86 @@ module mpdcc_core #(
         end
     endgenerate
 
-    // --------------------------------------------- arg-min as results arrive
+    // ----------------------------------------------------------- arg-min
+    // The results of one clock (at most N <= 8, candidate i of a clock
+    // before i + 1 in enumeration order) are reduced by a registered binary
+    // tree, ARGMIN_LEVELS levels of one comparison each, then folded into
+    // the decision's running minimum; every comparison is strict "<" with
+    // the earlier operand on the left, so the first of equal ones wins, as
+    // a sequential scan and the model's select() do. A record:
+    //   {n[3:0], lz, hd, ds, dc, dj, hb, bs, bl, bc, bj}
+    //   hb/bs/bl/bc/bj  best optimal (L* > 0, min J); hd/ds/dc/dj  least
+    //   J_dl (deadlock); lz  s(k-1) among them with J_dl <= 0; n  results.
+    localparam integer RW = 4 + 1 + 1 + 9 + 32 + 32 + 1 + 9 + 8 + 32 + 32;
+    localparam integer LEAVES = 1 << ARGMIN_LEVELS;
+    // field offsets of a record (LSB first)
+    localparam integer F_BJ = 0, F_BC = 32, F_BL = 64, F_BS = 72, F_HB = 81;
+    localparam integer F_DJ = 82, F_DC = 114, F_DS = 146, F_HD = 155, F_LZ = 156, F_N = 157;
+    function automatic [RW-1:0] comb(input [RW-1:0] l, input [RW-1:0] r);
+        reg rb, rd;
+        begin
+            rb = r[F_HB] && (!l[F_HB] || r[F_BC +: 32] < l[F_BC +: 32]);
+            rd = r[F_HD] && (!l[F_HD] || $signed(r[F_DJ +: 32]) < $signed(l[F_DJ +: 32]));
+            comb[F_N +: 4] = l[F_N +: 4] + r[F_N +: 4];
+            comb[F_LZ] = l[F_LZ] | r[F_LZ];
+            comb[F_DJ +: 74] = rd ? r[F_DJ +: 74] : l[F_DJ +: 74];
+            comb[F_BJ +: 82] = rb ? r[F_BJ +: 82] : l[F_BJ +: 82];
+        end
+    endfunction
+    wire [RW*LEAVES-1:0] leaf;
+    generate
+        for (gi = 0; gi < LEAVES; gi = gi + 1) begin : g_leaf
+            if (gi < N) begin : g_res
+                assign leaf[RW*gi +: RW] = {
+                    {3'd0, rv[gi]},
+                    rv[gi] && rs[gi] == s_prev_i && rj[gi] <= 0,
+                    rv[gi], rs[gi], rc[gi], rj[gi],
+                    rv[gi] && rl[gi] != 8'd0, rs[gi], rl[gi], rc[gi], rj[gi]};
+            end else begin : g_none
+                assign leaf[RW*gi +: RW] = {RW{1'b0}};
+            end
+        end
+    endgenerate
+    // level v holds LEAVES >> v records
+    wire [RW*LEAVES-1:0] lvl [0:ARGMIN_LEVELS];
+    assign lvl[0] = leaf;
+    generate
+        genvar lv;
+        for (lv = 0; lv < ARGMIN_LEVELS; lv = lv + 1) begin : g_lvl
+            localparam integer K = LEAVES >> (lv + 1);
+            reg [RW*K-1:0] r_q;
+            integer x;
+            always @(posedge clk_i) begin
+                if (rst_i) r_q <= {(RW * K) {1'b0}};
+                else begin
+                    for (x = 0; x < K; x = x + 1)
+                        r_q[RW*x +: RW] <= comb(lvl[lv][RW*(2*x) +: RW], lvl[lv][RW*(2*x+1) +: RW]);
+                end
+            end
+            assign lvl[lv+1] = {{(RW * (LEAVES - K)) {1'b0}}, r_q};
+        end
+    endgenerate
+    wire [RW-1:0] tree = lvl[ARGMIN_LEVELS][RW-1:0];
+
     reg        hb_q, hd_q, lazy_q;
     reg [8:0]  bs_q, ds_q;
     reg [7:0]  bl_q;
     reg [31:0] bc_q, dc_q;
     reg signed [31:0] bj_q, dj_q;
-    reg        hb, hd, lz;
-    reg [8:0]  bs, ds;
-    reg [7:0]  bl;
-    reg [31:0] bc, dc;
-    reg signed [31:0] bj, dj;
-    reg [7:0]  nrecv;
-    always @(*) begin
-        hb = hb_q; hd = hd_q; lz = lazy_q;
-        bs = bs_q; ds = ds_q; bl = bl_q; bc = bc_q; dc = dc_q; bj = bj_q; dj = dj_q;
-        nrecv = 8'd0;
-        for (k = 0; k < N; k = k + 1) begin
-            if (rv[k]) begin
-                nrecv = nrecv + 8'd1;
-                if (rl[k] != 8'd0 && (!hb || rc[k] < bc)) begin
-                    hb = 1'b1; bs = rs[k]; bl = rl[k]; bc = rc[k]; bj = rj[k];
-                end
-                if (!hd || rj[k] < dj) begin
-                    hd = 1'b1; ds = rs[k]; dc = rc[k]; dj = rj[k];
-                end
-                if (rs[k] == s_prev_i && rj[k] <= 0) lz = 1'b1;
-            end
-        end
-    end
-    wire all_in = !gen_q && busy_q && (pre_q == 5'd0) && (received_q + nrecv == issued_q)
+    wire [RW-1:0] acc = {4'd0, lazy_q, hd_q, ds_q, dc_q, dj_q, hb_q, bs_q, bl_q, bc_q, bj_q};
+    wire [RW-1:0] fold = comb(acc, tree);
+    wire        hb = fold[F_HB], hd = fold[F_HD], lz = fold[F_LZ];
+    wire [8:0]  bs = fold[F_BS +: 9], ds = fold[F_DS +: 9];
+    wire [7:0]  bl = fold[F_BL +: 8];
+    wire [31:0] bc = fold[F_BC +: 32], dc = fold[F_DC +: 32];
+    wire signed [31:0] bj = fold[F_BJ +: 32], dj = fold[F_DJ +: 32];
+    wire [7:0]  nrecv = {4'd0, tree[F_N +: 4]};
+    wire all_in = !gen_q && busy_q && (pre_q == 6'd0) && (received_q + nrecv == issued_q)
                   && (nrecv != 8'd0);
-
     always @(posedge clk_i) begin
         if (rst_i) begin
             lo_q <= 6'd0; hi_q <= 9'd0; cur_q <= 9'd0;
-            gen_q <= 1'b0; busy_q <= 1'b0; nuse_q <= 3'd1; pre_q <= 5'd0;
+            gen_q <= 1'b0; busy_q <= 1'b0; nuse_q <= 3'd1; pre_q <= 6'd0;
             cyc_q <= 16'd0; issued_q <= 8'd0; received_q <= 8'd0;
             hb_q <= 1'b0; hd_q <= 1'b0; lazy_q <= 1'b0;
             bs_q <= 9'd0; ds_q <= 9'd0; bl_q <= 8'd0; bc_q <= 32'd0; dc_q <= 32'd0;
@@ -253,7 +305,7 @@ module mpdcc_core #(
                 cur_q <= {lo_of(s_prev_i[8:6]), lo_of(s_prev_i[5:3]), lo_of(s_prev_i[2:0])};
                 nuse_q <= (n_use_i == 3'd0) ? 3'd1 : (n_use_i > N[2:0]) ? N[2:0] : n_use_i;
                 gen_q <= 1'b0;
-                pre_q <= COMMON_LATENCY[4:0];
+                pre_q <= COMMON_LATENCY[5:0];
                 busy_q <= 1'b1;
                 cyc_q <= 16'd1;
                 issued_q <= 8'd0;
@@ -261,9 +313,9 @@ module mpdcc_core #(
                 hb_q <= 1'b0; hd_q <= 1'b0; lazy_q <= 1'b0;
             end else if (busy_q) begin
                 cyc_q <= cyc_q + 16'd1;
-                if (pre_q != 5'd0) begin
-                    pre_q <= pre_q - 5'd1;
-                    if (pre_q == 5'd1) gen_q <= 1'b1;
+                if (pre_q != 6'd0) begin
+                    pre_q <= pre_q - 6'd1;
+                    if (pre_q == 6'd1) gen_q <= 1'b1;
                 end
                 if (gen_q) begin
                     cur_q <= nxt;

@@ -28,23 +28,25 @@
 //   2  inv_n (+ np_c P_n,c); -inv_ph; v0_a + v0_b; 3 v0
 //   3  t = n inv_n + ph inv_ph; sum v0; inverter rows rounded
 //   4  dv = -t; u0 = 3 v0 - sum; inverter rows clamped
-//   5  vh = rnd(dv, 15), v1r = rnd(dv, 18); g3 u0, gd u0
-//   6  sum vh (1/2); 3 vh; v1 = v0 + v1r
-//   7  sum vh (2/2); sum v1 (1/2); 3 v1
-//   8  uh = 3 vh - sum; sum v1 (2/2)
-//   9  g3 uh; u1 = 3 v1 - sum
-//  10  Q = g3 uh - gd u0; g3_1 u1
-//  11  g_m = m g3 u0 + m^2 Q (shifts, m = 1, 2, 4, 8); rnd(g3_1 u1, 17)
-//  12  rnd(g_m, 14); sat16
-//  13  dn_m - rnd(g_m, 14); dn1 - ...
-//  14  node changes clamped, one-step changes saturated
-//  15..26  the seven lanes (mpdcc_lane); beside them e1 = e0 + d1, |e1|,
-//      |e1| - bnd, a 3-level max tree (J_dl), |e0| <= bnd (inside at k)
+//   5  vh = rnd(dv, 15), v1r = rnd(dv, 18); g3 u0, gd u0 (phases a, b)
+//   6  vh_a - vh_b, vh_a - vh_c, vh_b - vh_c; v1 = v0 + v1r; sums of a, b
+//   7  uh_a, uh_b; v1 differences; g3 u0_c = -(sum)
+//   8  g3 uh (a, b); u1_a, u1_b
+//   9  g3_1 u1 (a, b); -gd u0_c - g3 uh_a
+//  10  Q = g3 uh - gd u0 (Q_c: - g3 uh_b); sum of g3_1 u1
+//  11  g_m = m g3 u0 + m^2 Q (shifts, m = 1, 2, 4, 8); g3_1 u1_c = -(sum)
+//  12  rnd(g_m, 14); rnd(g3_1 u1, 17)
+//  13  dn_m - rnd(g_m, 14); sat16
+//  14  node changes clamped; dn1 - ...
+//  15  one-step changes saturated
+//  15..26  the seven lanes (mpdcc_lane); beside them e1 = e0 + d1 (16),
+//      |e1|, |e1| - bnd, a 3-level max tree (J_dl, 21), |e0| <= bnd
+//      (inside at k)
 //  27..29  3-level min tree of l_j
 //  30  L*
 //  31  recip ROM; piece of L*, L* - start, slope of v_n on it
-//  32  (L* - start) slope; f_s recip
-//  33  rnd(., ls)   34  + n_(i-1)   35  + e0_vn   36  sat16
+//  32  (L* - start) slope; f_s recip (shift and add, 1/2)
+//  33  rnd(., ls); f_s recip (2/2)   34  + n_(i-1)   35  + e0_vn   36  sat16
 //  37  square   38  x lambda_n   39  rnd(., 17)   40  + J_sw   41  J
 `default_nettype none
 
@@ -237,7 +239,7 @@ module mpdcc_explorer (
     wire signed [W-1:0] v0_4 [0:2];
     // inverter rows, clamped / saturated, delayed to stage 14
     wire [17:0] invn_14 [0:3][0:3];
-    wire [15:0] inv1_14 [0:3];
+    wire [15:0] inv1_15 [0:3];
     generate
         for (gi = 0; gi < 3; gi = gi + 1) begin : g_s4
             mpdcc_pipe #(.W(W), .N(1)) u_dv (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - t_3[gi]), .q_o(dv_4[gi]));
@@ -250,112 +252,131 @@ module mpdcc_explorer (
                 mpdcc_pipe #(.W(18), .N(11)) u_c (.clk_i(clk_i), .rst_i(rst_i),
                     .d_i(clamp18(invr_3[gi][m])), .q_o(invn_14[gi][m]));
             end
-            mpdcc_pipe #(.W(16), .N(11)) u_c1 (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(sat16(invr_3[gi][4])), .q_o(inv1_14[gi]));
+            mpdcc_pipe #(.W(16), .N(12)) u_c1 (.clk_i(clk_i), .rst_i(rst_i),
+                .d_i(sat16(invr_3[gi][4])), .q_o(inv1_15[gi]));
         end
     endgenerate
 
     // --------------------------------------------------------------- stage 5
+    // u0, uh and u1 sum to zero over the phases (3 x - sum x), so the
+    // products of phase c are minus the sum of those of a and b (exact:
+    // the 25-bit operands never wrap, |u| < 2^21): two multipliers per
+    // product row instead of three.
     wire signed [W-1:0] vh_5 [0:2];
     wire signed [W-1:0] v1r_5 [0:2];
-    wire signed [W-1:0] p0_5 [0:2];
-    wire signed [W-1:0] r_5 [0:2];
+    wire signed [W-1:0] p0_5 [0:1];
+    wire signed [W-1:0] r_5 [0:1];
     wire signed [W-1:0] v0_5 [0:2];
     generate
         for (gi = 0; gi < 3; gi = gi + 1) begin : g_s5
+            mpdcc_pipe #(.W(W), .N(1)) u_a (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(dv_4[gi], 15)), .q_o(vh_5[gi]));
+            mpdcc_pipe #(.W(W), .N(1)) u_b (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(dv_4[gi], 18)), .q_o(v1r_5[gi]));
+            mpdcc_pipe #(.W(W), .N(1)) u_e (.clk_i(clk_i), .rst_i(rst_i), .d_i(v0_4[gi]), .q_o(v0_5[gi]));
+        end
+        for (gi = 0; gi < 2; gi = gi + 1) begin : g_s5m
             wire signed [24:0] u0n = u0_4[gi][24:0];
             wire signed [40:0] p0 = g3_i * u0n;
             wire signed [40:0] r = gd_i * u0n;
-            mpdcc_pipe #(.W(W), .N(1)) u_a (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(dv_4[gi], 15)), .q_o(vh_5[gi]));
-            mpdcc_pipe #(.W(W), .N(1)) u_b (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(dv_4[gi], 18)), .q_o(v1r_5[gi]));
             mpdcc_pipe #(.W(W), .N(1)) u_c (.clk_i(clk_i), .rst_i(rst_i),
                 .d_i({{(W - 41) {p0[40]}}, p0}), .q_o(p0_5[gi]));
             mpdcc_pipe #(.W(W), .N(1)) u_d (.clk_i(clk_i), .rst_i(rst_i),
                 .d_i({{(W - 41) {r[40]}}, r}), .q_o(r_5[gi]));
-            mpdcc_pipe #(.W(W), .N(1)) u_e (.clk_i(clk_i), .rst_i(rst_i), .d_i(v0_4[gi]), .q_o(v0_5[gi]));
         end
     endgenerate
 
     // ----------------------------------------------------------- stages 6-8
-    wire signed [W-1:0] sh01_6;
-    mpdcc_pipe #(.W(W), .N(1)) u_sh01 (.clk_i(clk_i), .rst_i(rst_i), .d_i(vh_5[0] + vh_5[1]), .q_o(sh01_6));
-    wire signed [W-1:0] vh_6 [0:2];
-    wire signed [W-1:0] vh3_6 [0:2];
+    // uh_a = (vh_a - vh_b) + (vh_a - vh_c), uh_b = (vh_b - vh_c) - (vh_a -
+    // vh_b) (= 3 vh - sum vh), two adders deep; likewise u1 one stage later.
+    wire signed [W-1:0] xh_6, yh_6, zh_6, ps_6, nrc_6;
+    mpdcc_pipe #(.W(W), .N(1)) u_xh (.clk_i(clk_i), .rst_i(rst_i), .d_i(vh_5[0] - vh_5[1]), .q_o(xh_6));
+    mpdcc_pipe #(.W(W), .N(1)) u_yh (.clk_i(clk_i), .rst_i(rst_i), .d_i(vh_5[0] - vh_5[2]), .q_o(yh_6));
+    mpdcc_pipe #(.W(W), .N(1)) u_zh (.clk_i(clk_i), .rst_i(rst_i), .d_i(vh_5[1] - vh_5[2]), .q_o(zh_6));
+    mpdcc_pipe #(.W(W), .N(1)) u_ps (.clk_i(clk_i), .rst_i(rst_i), .d_i(p0_5[0] + p0_5[1]), .q_o(ps_6));
+    // -gd u0_c = gd u0_a + gd u0_b
+    mpdcc_pipe #(.W(W), .N(1)) u_nrc (.clk_i(clk_i), .rst_i(rst_i), .d_i(r_5[0] + r_5[1]), .q_o(nrc_6));
     wire signed [W-1:0] v1_6 [0:2];
-    wire signed [W-1:0] p0_8 [0:2];
-    wire signed [W-1:0] r_9 [0:2];
     generate
         for (gi = 0; gi < 3; gi = gi + 1) begin : g_s6
-            mpdcc_pipe #(.W(W), .N(1)) u_a (.clk_i(clk_i), .rst_i(rst_i), .d_i(vh_5[gi]), .q_o(vh_6[gi]));
-            mpdcc_pipe #(.W(W), .N(1)) u_b (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(vh_5[gi] + (vh_5[gi] <<< 1)), .q_o(vh3_6[gi]));
             mpdcc_pipe #(.W(W), .N(1)) u_c (.clk_i(clk_i), .rst_i(rst_i), .d_i(v0_5[gi] + v1r_5[gi]), .q_o(v1_6[gi]));
+        end
+    endgenerate
+    wire signed [W-1:0] uh_7 [0:1];
+    wire signed [W-1:0] p0c_7, x1_7, y1_7, z1_7;
+    mpdcc_pipe #(.W(W), .N(1)) u_uha (.clk_i(clk_i), .rst_i(rst_i), .d_i(xh_6 + yh_6), .q_o(uh_7[0]));
+    mpdcc_pipe #(.W(W), .N(1)) u_uhb (.clk_i(clk_i), .rst_i(rst_i), .d_i(zh_6 - xh_6), .q_o(uh_7[1]));
+    mpdcc_pipe #(.W(W), .N(1)) u_p0c (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - ps_6), .q_o(p0c_7));
+    mpdcc_pipe #(.W(W), .N(1)) u_x1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(v1_6[0] - v1_6[1]), .q_o(x1_7));
+    mpdcc_pipe #(.W(W), .N(1)) u_y1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(v1_6[0] - v1_6[2]), .q_o(y1_7));
+    mpdcc_pipe #(.W(W), .N(1)) u_z1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(v1_6[1] - v1_6[2]), .q_o(z1_7));
+    wire signed [W-1:0] p0_8 [0:2];
+    wire signed [W-1:0] r_9 [0:1];
+    wire signed [W-1:0] g_8 [0:1];
+    wire signed [W-1:0] u1_8 [0:1];
+    wire signed [W-1:0] nrc_8;
+    generate
+        for (gi = 0; gi < 2; gi = gi + 1) begin : g_s8
+            wire signed [24:0] uhn = uh_7[gi][24:0];
+            wire signed [40:0] gg = g3_i * uhn;
+            mpdcc_pipe #(.W(W), .N(1)) u_g (.clk_i(clk_i), .rst_i(rst_i),
+                .d_i({{(W - 41) {gg[40]}}, gg}), .q_o(g_8[gi]));
             mpdcc_pipe #(.W(W), .N(3)) u_p (.clk_i(clk_i), .rst_i(rst_i), .d_i(p0_5[gi]), .q_o(p0_8[gi]));
             mpdcc_pipe #(.W(W), .N(4)) u_r (.clk_i(clk_i), .rst_i(rst_i), .d_i(r_5[gi]), .q_o(r_9[gi]));
         end
     endgenerate
-    wire signed [W-1:0] sh_7;
-    mpdcc_pipe #(.W(W), .N(1)) u_sh (.clk_i(clk_i), .rst_i(rst_i), .d_i(sh01_6 + vh_6[2]), .q_o(sh_7));
-    wire signed [W-1:0] s101_7;
-    mpdcc_pipe #(.W(W), .N(1)) u_s101 (.clk_i(clk_i), .rst_i(rst_i), .d_i(v1_6[0] + v1_6[1]), .q_o(s101_7));
-    wire signed [W-1:0] vh3_7 [0:2];
-    wire signed [W-1:0] v1_7 [0:2];
-    wire signed [W-1:0] v13_7 [0:2];
-    generate
-        for (gi = 0; gi < 3; gi = gi + 1) begin : g_s7
-            mpdcc_pipe #(.W(W), .N(1)) u_a (.clk_i(clk_i), .rst_i(rst_i), .d_i(vh3_6[gi]), .q_o(vh3_7[gi]));
-            mpdcc_pipe #(.W(W), .N(1)) u_b (.clk_i(clk_i), .rst_i(rst_i), .d_i(v1_6[gi]), .q_o(v1_7[gi]));
-            mpdcc_pipe #(.W(W), .N(1)) u_c (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(v1_6[gi] + (v1_6[gi] <<< 1)), .q_o(v13_7[gi]));
-        end
-    endgenerate
-    wire signed [W-1:0] sum1_8;
-    mpdcc_pipe #(.W(W), .N(1)) u_sum1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(s101_7 + v1_7[2]), .q_o(sum1_8));
-    wire signed [W-1:0] uh_8 [0:2];
-    wire signed [W-1:0] v13_8 [0:2];
-    generate
-        for (gi = 0; gi < 3; gi = gi + 1) begin : g_s8
-            mpdcc_pipe #(.W(W), .N(1)) u_a (.clk_i(clk_i), .rst_i(rst_i), .d_i(vh3_7[gi] - sh_7), .q_o(uh_8[gi]));
-            mpdcc_pipe #(.W(W), .N(1)) u_b (.clk_i(clk_i), .rst_i(rst_i), .d_i(v13_7[gi]), .q_o(v13_8[gi]));
-        end
-    endgenerate
+    mpdcc_pipe #(.W(W), .N(1)) u_p0c8 (.clk_i(clk_i), .rst_i(rst_i), .d_i(p0c_7), .q_o(p0_8[2]));
+    mpdcc_pipe #(.W(W), .N(2)) u_nrc8 (.clk_i(clk_i), .rst_i(rst_i), .d_i(nrc_6), .q_o(nrc_8));
+    mpdcc_pipe #(.W(W), .N(1)) u_u1a (.clk_i(clk_i), .rst_i(rst_i), .d_i(x1_7 + y1_7), .q_o(u1_8[0]));
+    mpdcc_pipe #(.W(W), .N(1)) u_u1b (.clk_i(clk_i), .rst_i(rst_i), .d_i(z1_7 - x1_7), .q_o(u1_8[1]));
 
-    // ---------------------------------------------------------- stages 9-14
-    wire [17:0] nodes_14 [0:3][0:6];  // [node][output]
-    wire [15:0] d1_14 [0:6];
+    // ---------------------------------------------------------- stages 9-15
+    // Q = g3 uh - gd u0 (stage 10); Q_c = -gd u0_c - g3 uh_a - g3 uh_b.
+    // The one-step changes d1 = dn1 - sat16(rnd(g3_1 u1, 17)) take one
+    // stage more (stage 15): they only feed J_dl, which waits for L*.
+    wire signed [W-1:0] g_9 [0:1];
+    wire signed [W-1:0] tc_9;
+    wire signed [W-1:0] q_10 [0:2];
+    wire signed [W-1:0] g1_9 [0:1];
+    wire signed [W-1:0] g1_11 [0:2];
+    wire signed [W-1:0] g1s_10;
+    mpdcc_pipe #(.W(W), .N(1)) u_tc (.clk_i(clk_i), .rst_i(rst_i), .d_i(nrc_8 - g_8[0]), .q_o(tc_9));
+    mpdcc_pipe #(.W(W), .N(1)) u_qc (.clk_i(clk_i), .rst_i(rst_i), .d_i(tc_9 - g_9[1]), .q_o(q_10[2]));
     generate
-        for (gi = 0; gi < 3; gi = gi + 1) begin : g_s9
-            wire signed [24:0] uhn = uh_8[gi][24:0];
-            wire signed [40:0] gg = g3_i * uhn;
-            wire signed [W-1:0] g_9, u1_9, q_10, g1_10, p0_10;
-            mpdcc_pipe #(.W(W), .N(1)) u_g (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i({{(W - 41) {gg[40]}}, gg}), .q_o(g_9));
-            mpdcc_pipe #(.W(W), .N(1)) u_u1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(v13_8[gi] - sum1_8), .q_o(u1_9));
-            mpdcc_pipe #(.W(W), .N(2)) u_p (.clk_i(clk_i), .rst_i(rst_i), .d_i(p0_8[gi]), .q_o(p0_10));
-            // stage 10
-            wire signed [24:0] u1n = u1_9[24:0];
+        for (gi = 0; gi < 2; gi = gi + 1) begin : g_s9
+            mpdcc_pipe #(.W(W), .N(1)) u_g (.clk_i(clk_i), .rst_i(rst_i), .d_i(g_8[gi]), .q_o(g_9[gi]));
+            mpdcc_pipe #(.W(W), .N(1)) u_q (.clk_i(clk_i), .rst_i(rst_i), .d_i(g_9[gi] - r_9[gi]), .q_o(q_10[gi]));
+            wire signed [24:0] u1n = u1_8[gi][24:0];
             wire signed [40:0] g1 = g3_1_i * u1n;
-            mpdcc_pipe #(.W(W), .N(1)) u_q (.clk_i(clk_i), .rst_i(rst_i), .d_i(g_9 - r_9[gi]), .q_o(q_10));
             mpdcc_pipe #(.W(W), .N(1)) u_g1 (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i({{(W - 41) {g1[40]}}, g1}), .q_o(g1_10));
-            // stage 11
-            wire signed [W-1:0] r1_11;
-            mpdcc_pipe #(.W(W), .N(1)) u_r1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(g1_10, 17)), .q_o(r1_11));
+                .d_i({{(W - 41) {g1[40]}}, g1}), .q_o(g1_9[gi]));
+            mpdcc_pipe #(.W(W), .N(2)) u_g1d (.clk_i(clk_i), .rst_i(rst_i), .d_i(g1_9[gi]), .q_o(g1_11[gi]));
+        end
+    endgenerate
+    mpdcc_pipe #(.W(W), .N(1)) u_g1s (.clk_i(clk_i), .rst_i(rst_i), .d_i(g1_9[0] + g1_9[1]), .q_o(g1s_10));
+    mpdcc_pipe #(.W(W), .N(1)) u_g1c (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - g1s_10), .q_o(g1_11[2]));
+    wire [17:0] nodes_14 [0:3][0:6];  // [node][output]
+    wire [15:0] d1_15 [0:6];
+    wire signed [W-1:0] p0_10 [0:2];
+    generate
+        for (gi = 0; gi < 3; gi = gi + 1) begin : g_s10
+            mpdcc_pipe #(.W(W), .N(2)) u_p (.clk_i(clk_i), .rst_i(rst_i), .d_i(p0_8[gi]), .q_o(p0_10[gi]));
             // stage 12
-            wire signed [W-1:0] r1s_12;
-            mpdcc_pipe #(.W(W), .N(1)) u_r1s (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(sx16(sat16(r1_11))), .q_o(r1s_12));
+            wire signed [W-1:0] r1_12;
+            mpdcc_pipe #(.W(W), .N(1)) u_r1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(g1_11[gi], 17)), .q_o(r1_12));
             // stage 13
-            wire signed [W-1:0] d1c_13;
-            mpdcc_pipe #(.W(W), .N(1)) u_d1c (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(sx16(dn1_i[16*gi +: 16]) - r1s_12), .q_o(d1c_13));
+            wire signed [W-1:0] r1s_13;
+            mpdcc_pipe #(.W(W), .N(1)) u_r1s (.clk_i(clk_i), .rst_i(rst_i),
+                .d_i(sx16(sat16(r1_12))), .q_o(r1s_13));
             // stage 14
-            mpdcc_pipe #(.W(16), .N(1)) u_d1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat16(d1c_13)), .q_o(d1_14[gi]));
+            wire signed [W-1:0] d1c_14;
+            mpdcc_pipe #(.W(W), .N(1)) u_d1c (.clk_i(clk_i), .rst_i(rst_i),
+                .d_i(sx16(dn1_i[16*gi +: 16]) - r1s_13), .q_o(d1c_14));
+            // stage 15
+            mpdcc_pipe #(.W(16), .N(1)) u_d1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat16(d1c_14)), .q_o(d1_15[gi]));
             genvar m;
             for (m = 0; m < 4; m = m + 1) begin : g_node
                 wire signed [W-1:0] g_11, rg_12, nd_13;
                 mpdcc_pipe #(.W(W), .N(1)) u_g (.clk_i(clk_i), .rst_i(rst_i),
-                    .d_i((p0_10 <<< m) + (q_10 <<< (2 * m))), .q_o(g_11));
+                    .d_i((p0_10[gi] <<< m) + (q_10[gi] <<< (2 * m))), .q_o(g_11));
                 mpdcc_pipe #(.W(W), .N(1)) u_rg (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(g_11, 14)), .q_o(rg_12));
                 mpdcc_pipe #(.W(W), .N(1)) u_nd (.clk_i(clk_i), .rst_i(rst_i),
                     .d_i(sx16(dn_i[16*(3*m+gi) +: 16]) - rg_12), .q_o(nd_13));
@@ -368,7 +389,7 @@ module mpdcc_explorer (
             for (m = 0; m < 4; m = m + 1) begin : g_node
                 assign nodes_14[m][3 + gi] = invn_14[gi][m];
             end
-            assign d1_14[3 + gi] = inv1_14[gi];
+            assign d1_15[3 + gi] = inv1_15[gi];
         end
     endgenerate
 
@@ -387,19 +408,19 @@ module mpdcc_explorer (
         end
     endgenerate
 
-    // J_dl and inside-at-k beside the lanes (stages 15-20, 15-17)
-    wire signed [W-1:0] x_17 [0:6];
+    // J_dl and inside-at-k beside the lanes (stages 16-21, 15-17)
+    wire signed [W-1:0] x_18 [0:6];
     wire [6:0] ok_16;
     generate
         for (gi = 0; gi < 7; gi = gi + 1) begin : g_jdl
             wire signed [W-1:0] e0w = sx16(e0_i[16*gi +: 16]);
             wire signed [W-1:0] bw = sx16(bnd_i[16*gi +: 16]);
-            wire signed [W-1:0] e1_15, a_16, ae0_15;
+            wire signed [W-1:0] e1_16, a_17, ae0_15;
             mpdcc_pipe #(.W(W), .N(1)) u_e1 (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(e0w + sx16(d1_14[gi])), .q_o(e1_15));
+                .d_i(e0w + sx16(d1_15[gi])), .q_o(e1_16));
             mpdcc_pipe #(.W(W), .N(1)) u_a (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(e1_15[W-1] ? 0 - e1_15 : e1_15), .q_o(a_16));
-            mpdcc_pipe #(.W(W), .N(1)) u_x (.clk_i(clk_i), .rst_i(rst_i), .d_i(a_16 - bw), .q_o(x_17[gi]));
+                .d_i(e1_16[W-1] ? 0 - e1_16 : e1_16), .q_o(a_17));
+            mpdcc_pipe #(.W(W), .N(1)) u_x (.clk_i(clk_i), .rst_i(rst_i), .d_i(a_17 - bw), .q_o(x_18[gi]));
             mpdcc_pipe #(.W(W), .N(1)) u_ae0 (.clk_i(clk_i), .rst_i(rst_i),
                 .d_i(e0w[W-1] ? 0 - e0w : e0w), .q_o(ae0_15));
             mpdcc_pipe #(.W(1), .N(1)) u_ok (.clk_i(clk_i), .rst_i(rst_i), .d_i(ae0_15 <= bw), .q_o(ok_16[gi]));
@@ -408,21 +429,21 @@ module mpdcc_explorer (
     function automatic signed [W-1:0] smax(input signed [W-1:0] a, input signed [W-1:0] b);
         smax = (b > a) ? b : a;
     endfunction
-    wire signed [W-1:0] m18 [0:3];
-    wire signed [W-1:0] m19 [0:1];
-    wire signed [W-1:0] jdl_20;
-    mpdcc_pipe #(.W(W), .N(1)) u_m0 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(x_17[0], x_17[1])), .q_o(m18[0]));
-    mpdcc_pipe #(.W(W), .N(1)) u_m1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(x_17[2], x_17[3])), .q_o(m18[1]));
-    mpdcc_pipe #(.W(W), .N(1)) u_m2 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(x_17[4], x_17[5])), .q_o(m18[2]));
-    mpdcc_pipe #(.W(W), .N(1)) u_m3 (.clk_i(clk_i), .rst_i(rst_i), .d_i(x_17[6]), .q_o(m18[3]));
-    mpdcc_pipe #(.W(W), .N(1)) u_m4 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(m18[0], m18[1])), .q_o(m19[0]));
-    mpdcc_pipe #(.W(W), .N(1)) u_m5 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(m18[2], m18[3])), .q_o(m19[1]));
-    mpdcc_pipe #(.W(W), .N(1)) u_m6 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(m19[0], m19[1])), .q_o(jdl_20));
+    wire signed [W-1:0] m19 [0:3];
+    wire signed [W-1:0] m20 [0:1];
+    wire signed [W-1:0] jdl_21;
+    mpdcc_pipe #(.W(W), .N(1)) u_m0 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(x_18[0], x_18[1])), .q_o(m19[0]));
+    mpdcc_pipe #(.W(W), .N(1)) u_m1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(x_18[2], x_18[3])), .q_o(m19[1]));
+    mpdcc_pipe #(.W(W), .N(1)) u_m2 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(x_18[4], x_18[5])), .q_o(m19[2]));
+    mpdcc_pipe #(.W(W), .N(1)) u_m3 (.clk_i(clk_i), .rst_i(rst_i), .d_i(x_18[6]), .q_o(m19[3]));
+    mpdcc_pipe #(.W(W), .N(1)) u_m4 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(m19[0], m19[1])), .q_o(m20[0]));
+    mpdcc_pipe #(.W(W), .N(1)) u_m5 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(m19[2], m19[3])), .q_o(m20[1]));
+    mpdcc_pipe #(.W(W), .N(1)) u_m6 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(m20[0], m20[1])), .q_o(jdl_21));
     wire inside_17;
     mpdcc_pipe #(.W(1), .N(1)) u_in (.clk_i(clk_i), .rst_i(rst_i), .d_i(&ok_16), .q_o(inside_17));
     wire signed [W-1:0] jdl_29;
     wire inside_29;
-    mpdcc_pipe #(.W(W), .N(9)) u_jdld (.clk_i(clk_i), .rst_i(rst_i), .d_i(jdl_20), .q_o(jdl_29));
+    mpdcc_pipe #(.W(W), .N(8)) u_jdld (.clk_i(clk_i), .rst_i(rst_i), .d_i(jdl_21), .q_o(jdl_29));
     mpdcc_pipe #(.W(1), .N(12)) u_ind (.clk_i(clk_i), .rst_i(rst_i), .d_i(inside_17), .q_o(inside_29));
 
     // ------------------------------------------- stages 27-30: min l_j, L*
@@ -496,11 +517,17 @@ module mpdcc_explorer (
     wire signed [18:0] slope_s = slope_31[18:0];
     wire signed [27:0] prod = dl_s * slope_s;
     wire signed [W-1:0] prod_32, nlo_32;
-    wire [21:0] jsw_32;
     wire [1:0] pc_32;
     mpdcc_pipe #(.W(W), .N(1)) u_pr (.clk_i(clk_i), .rst_i(rst_i),
         .d_i({{(W - 28) {prod[27]}}, prod}), .q_o(prod_32));
-    mpdcc_pipe #(.W(22), .N(1)) u_jsw (.clk_i(clk_i), .rst_i(rst_i), .d_i(fs_31 * recip_31), .q_o(jsw_32));
+    // f_s recip[L*] by shift and add (f_s <= 12, four bits): two partial
+    // sums here, their sum at stage 33, no multiplier
+    wire [21:0] rw = {4'd0, recip_31};
+    wire [21:0] jsw_lo_32, jsw_hi_32;
+    mpdcc_pipe #(.W(22), .N(1)) u_jswl (.clk_i(clk_i), .rst_i(rst_i),
+        .d_i((fs_31[0] ? rw : 22'd0) + (fs_31[1] ? rw << 1 : 22'd0)), .q_o(jsw_lo_32));
+    mpdcc_pipe #(.W(22), .N(1)) u_jswh (.clk_i(clk_i), .rst_i(rst_i),
+        .d_i((fs_31[2] ? rw << 2 : 22'd0) + (fs_31[3] ? rw << 3 : 22'd0)), .q_o(jsw_hi_32));
     mpdcc_pipe #(.W(W), .N(1)) u_nl2 (.clk_i(clk_i), .rst_i(rst_i), .d_i(nlo_31), .q_o(nlo_32));
     mpdcc_pipe #(.W(2), .N(1)) u_pc2 (.clk_i(clk_i), .rst_i(rst_i), .d_i(pc_31), .q_o(pc_32));
     // 33: rnd(prod, ls), ls = 3, 3, 4, 5
@@ -523,7 +550,9 @@ module mpdcc_explorer (
         .d_i({16'd0, sq_37} * {32'd0, lambda_n_i}), .q_o(jl_38));
     mpdcc_pipe #(.W(W), .N(1)) u_jl2 (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(jl_38, 17)), .q_o(jl_39));
     wire [21:0] jsw_39;
-    mpdcc_pipe #(.W(22), .N(7)) u_jswd (.clk_i(clk_i), .rst_i(rst_i), .d_i(jsw_32), .q_o(jsw_39));
+    wire [21:0] jsw_33;
+    mpdcc_pipe #(.W(22), .N(1)) u_jsw (.clk_i(clk_i), .rst_i(rst_i), .d_i(jsw_lo_32 + jsw_hi_32), .q_o(jsw_33));
+    mpdcc_pipe #(.W(22), .N(6)) u_jswd (.clk_i(clk_i), .rst_i(rst_i), .d_i(jsw_33), .q_o(jsw_39));
     wire [W-1:0] tot_40;
     mpdcc_pipe #(.W(W), .N(1)) u_tot (.clk_i(clk_i), .rst_i(rst_i), .d_i(jl_39 + {26'd0, jsw_39}), .q_o(tot_40));
     wire [7:0] ls_40;

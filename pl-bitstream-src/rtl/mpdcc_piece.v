@@ -81,9 +81,18 @@ module mpdcc_piece #(
     wire [W-1:0] diff1    = bnd1_w - abs_a1_w;
     wire [W-1:0] sum1     = bnd1_w + abs_a1_w;
     wire [W-1:0] x1_w     = {{(W - 19) {1'b0}}, abs_d1_q};
-    // CAP x: a constant multiply, a shift for a power of two, else one add
-    // (CAP = 2^p + 2^r covers the lanes' last pieces, e.g. 96 = 64 + 32).
-    wire [W-1:0] capx1    = x1_w * CAP[W-1:0];
+    // CAP x by shift and add over CAP's set bits, no multiplier: a shift
+    // for a power of two, one adder for the lanes' last pieces (CAP = 2^p +
+    // 2^r, e.g. 96 = 64 + 32).
+    function automatic [W-1:0] cap_times(input [W-1:0] x);
+        integer b;
+        begin
+            cap_times = {W{1'b0}};
+            for (b = 0; b < 8; b = b + 1)
+                if (CAP[b]) cap_times = cap_times + (x << b);
+        end
+    endfunction
+    wire [W-1:0] capx1    = cap_times(x1_w);
     always @(posedge clk_i) begin
         if (rst_i) begin
             v2_q      <= 1'b0;

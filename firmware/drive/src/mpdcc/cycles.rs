@@ -1096,19 +1096,79 @@ impl CycleModel {
 /// from a candidate's strobe to its result (one candidate per clock).
 pub const PIPELINED_EXPLORER_LATENCY: u32 = 41;
 
-/// Latency of the common-terms pipeline `mpdcc_common` (Verilog), cycles.
-pub const PIPELINED_COMMON_LATENCY: u32 = 16;
+/// Shared 16 x 16 multipliers (DSP48E1) of the common terms `mpdcc_common`
+/// (Verilog parameter `MULS` of `mpdcc_core`).
+pub const PIPELINED_COMMON_MULTIPLIERS: u32 = 4;
+
+/// Products of the common terms per group of `mpdcc_common`'s schedule: a
+/// group needs only values of the groups before it (the products of the
+/// straight pipeline's stages 1, 3, 5-6, 7 and 14).
+pub const PIPELINED_COMMON_GROUPS: [u32; 5] = [15, 13, 14, 4, 5];
+
+/// Group starts of `mpdcc_common`'s schedule with `muls` shared
+/// multipliers, cycles after the start strobe: group `g` issues
+/// `ceil(n_g / muls)` cycles of products (one per multiplier and cycle,
+/// final two cycles after issue); the next group starts when its operands
+/// are final (the pipeline stages between the groups: 1, 2, 1, 6).
+const fn common_group_starts(muls: u32) -> [u32; 5] {
+    let m = if muls == 0 { 1 } else { muls };
+    let g = PIPELINED_COMMON_GROUPS;
+    let s1 = 1;
+    let s3 = s1 + g[0].div_ceil(m) + 2;
+    let s5 = s3 + g[1].div_ceil(m) + 3;
+    let s7 = s5 + g[2].div_ceil(m) + 2;
+    let s14 = s7 + g[3].div_ceil(m) + 7;
+    [s1, s3, s5, s7, s14]
+}
+
+/// Latency of `mpdcc_common` with `muls` shared multipliers, cycles from
+/// the start strobe until the last outputs (the node changes `dn`, `dn1`)
+/// are final: two stages after the last product.
+pub const fn pipelined_common_latency(muls: u32) -> u32 {
+    let m = if muls == 0 { 1 } else { muls };
+    common_group_starts(m)[4] + PIPELINED_COMMON_GROUPS[4].div_ceil(m) - 1 + 4
+}
+
+/// Cycles from the start strobe to the first candidate's issue, less one
+/// (`mpdcc_common` `ISSUE_DELAY`): the explorers read `P_n`, `P_ph` (the
+/// first six products of the third group, from their hold registers) in the issue
+/// cycle and `dn` 12 cycles after it, so the first candidate issues when
+/// both are final when read, before the common terms are complete.
+pub const fn pipelined_issue_delay(muls: u32) -> u32 {
+    let m = if muls == 0 { 1 } else { muls };
+    let pn_final = common_group_starts(m)[2] + 5 / m + 2;
+    let dn_read = pipelined_common_latency(m) - 12;
+    let first = if pn_final > dn_read {
+        pn_final
+    } else {
+        dn_read
+    };
+    first - 1
+}
+
+/// Cycles from the start strobe until the explorers start (less one),
+/// [`pipelined_issue_delay`] of [`PIPELINED_COMMON_MULTIPLIERS`].
+pub const PIPELINED_COMMON_LATENCY: u32 = pipelined_issue_delay(PIPELINED_COMMON_MULTIPLIERS);
+
+/// Registered levels of `mpdcc_core`'s arg-min tree (up to eight results
+/// of one clock, one comparison per level), cycles.
+pub const PIPELINED_ARGMIN_LEVELS: u32 = 3;
 
 /// Clock cycles of one decision of the Verilog `mpdcc_core`, from the
-/// start strobe to the decision strobe: the common terms
-/// ([`PIPELINED_COMMON_LATENCY`]), `ceil(|S| / n)` cycles issuing `n`
-/// candidates per clock, the explorers' latency for the last group, one
-/// cycle for the last comparison. Data-independent apart from `|S|`; a
-/// decision that keeps `s(k-1)` takes as long (the lazy check is the
-/// result of `s(k-1)` itself). Checked against the RTL's own count on every
-/// vector of `scripts/rtl-check mpdcc`.
+/// start strobe to the decision strobe: the common terms until the first
+/// issue ([`PIPELINED_COMMON_LATENCY`]), `ceil(|S| / n)` cycles issuing `n`
+/// candidates per clock, the explorers' latency for the last group, the
+/// arg-min tree ([`PIPELINED_ARGMIN_LEVELS`]), one cycle for the fold into
+/// the decision's minimum. Data-independent apart from `|S|`; a decision
+/// that keeps `s(k-1)` takes as long (the lazy check is the result of
+/// `s(k-1)` itself). Checked against the RTL's own count on every vector
+/// of `scripts/rtl-check mpdcc`.
 pub fn pipelined_core_cycles(n: u32, candidates: u32) -> u32 {
-    PIPELINED_COMMON_LATENCY + candidates.div_ceil(n.max(1)) + PIPELINED_EXPLORER_LATENCY + 1
+    PIPELINED_COMMON_LATENCY
+        + candidates.div_ceil(n.max(1))
+        + PIPELINED_EXPLORER_LATENCY
+        + PIPELINED_ARGMIN_LEVELS
+        + 1
 }
 
 /// The paper's Table II, worst-case cycles for `n = 1..6` explorers.
@@ -1228,19 +1288,34 @@ mod tests {
         assert_eq!(check_program(DUP), Err(ProgramError::Duplicate("a")));
     }
 
-    /// The Verilog core's count by hand: 216 candidates at N = 2 are 108
-    /// issue cycles after the 16 of the common terms, the last group's
-    /// results 41 cycles later, one cycle for the last comparison; fewer
-    /// candidates than explorers take one issue cycle.
+    /// The Verilog core's count by hand: the common terms' 51 products on
+    /// four multipliers are 4 + 4 + 4 + 1 + 2 issue cycles in five groups,
+    /// groups starting at cycles 1, 7, 14, 20 and 28 (the stages between
+    /// them), the last products final at 31, the node changes at 33, read
+    /// by the explorers 12 cycles after issue: the first candidate issues
+    /// at 21 (P_n, P_ph are final at 14 + 1 + 2 = 17); then 216 candidates
+    /// at N = 2 are 108 issue cycles, the last group's results 41 cycles
+    /// later, three tree levels and one fold; fewer candidates than
+    /// explorers take one issue cycle.
     #[test]
     fn pipelined_core_cycles_by_hand() {
-        assert_eq!(pipelined_core_cycles(2, 216), 16 + 108 + 41 + 1);
-        assert_eq!(pipelined_core_cycles(4, 216), 16 + 54 + 41 + 1);
-        assert_eq!(pipelined_core_cycles(5, 216), 16 + 44 + 41 + 1);
-        assert_eq!(pipelined_core_cycles(6, 5), 16 + 1 + 41 + 1);
+        assert_eq!(PIPELINED_COMMON_GROUPS.iter().sum::<u32>(), 51);
+        assert_eq!(common_group_starts(4), [1, 7, 14, 20, 28]);
+        assert_eq!(pipelined_common_latency(4), 28 + 2 - 1 + 4);
+        assert_eq!(pipelined_issue_delay(4), 33 - 12 - 1);
+        assert_eq!(PIPELINED_COMMON_LATENCY, 20);
+        // one multiplier: 15 + 13 + 14 + 4 + 5 issue cycles
+        assert_eq!(
+            pipelined_common_latency(1),
+            1 + 15 + 2 + 13 + 3 + 14 + 2 + 4 + 7 + 5 - 1 + 4
+        );
+        assert_eq!(pipelined_core_cycles(2, 216), 20 + 108 + 41 + 3 + 1);
+        assert_eq!(pipelined_core_cycles(4, 216), 20 + 54 + 41 + 3 + 1);
+        assert_eq!(pipelined_core_cycles(5, 216), 20 + 44 + 41 + 3 + 1);
+        assert_eq!(pipelined_core_cycles(6, 5), 20 + 1 + 41 + 3 + 1);
         // Against the structural model of the iterative explorers: more
-        // than 20 times fewer cycles at every N for the full set (26x at
-        // N = 6, 44x at N = 2).
+        // than 20 times fewer cycles at every N for the full set (24x at
+        // N = 6, 42x at N = 2).
         let m = CycleModel::default();
         let lw = worst_lane_cycles(4, 3, 7);
         for n in 1..=6 {
