@@ -544,6 +544,40 @@ module mpdcc_explorer (
                 .d_i(sat16({{(W - 18) {nodes_14[0][gi][17]}}, nodes_14[0][gi]})), .q_o(d0_o[16*gi +: 16]));
         end
     endgenerate
+
+`ifdef FORMAL
+    // Hand-shake contract of an explorer, the one mpdcc_core's proof assumes
+    // of each of its explorers (F_LAT there): a candidate taken at a clock
+    // comes out exactly LAT cycles later, once, with its code; nothing comes
+    // out that was not taken; a reset clears every candidate in flight.
+    // The datapath plays no part: scripts/rtl-formal proves this with the
+    // explorer's result outputs cut off, so the arithmetic is pruned.
+    // Shadow of the last LAT inputs (stage j = the input j clocks ago),
+    // cleared by a reset as the pipeline registers are.
+    reg [LAT:1]     f_v = {LAT{1'b0}};
+    reg [9*LAT-1:0] f_s = {9 * LAT{1'b0}};  // stage j at [9 (j - 1) +: 9]
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            f_v <= {LAT{1'b0}};
+            f_s <= {9 * LAT{1'b0}};
+        end else begin
+            f_v <= {f_v[LAT-1:1], in_valid_i};
+            f_s <= {f_s[9*(LAT-1)-1:0], s_i};
+        end
+    end
+    always @(*) begin
+        // mpdcc_core's proof assumes this latency: change both together.
+        assert (LAT == 41);
+        assert (out_valid_o == f_v[LAT]);
+        assert (s_o == f_s[9*(LAT-1) +: 9]);
+    end
+    // Stage by stage, so that the valid half is inductive in one step.
+    generate
+        for (gi = 1; gi <= LAT; gi = gi + 1) begin : g_fv
+            always @(*) assert (v[gi] == f_v[gi]);
+        end
+    endgenerate
+`endif
 endmodule
 
 `default_nettype wire
