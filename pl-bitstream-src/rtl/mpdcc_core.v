@@ -303,6 +303,7 @@ module mpdcc_core #(
     // (no reset assumed); a reset may come at any clock.
     localparam integer F_LAT = 41;  // mpdcc_explorer's LAT (asserted there)
     localparam integer F_CL = COMMON_LATENCY;
+    localparam [2:0] F_N = N[2:0];
 
     integer f_k;
 
@@ -354,18 +355,31 @@ module mpdcc_core #(
             for (x = 0; x < 8; x = x + 1) if (f_adm(x[2:0], f)) f_max = x[2:0];
         end
     endfunction
-    function automatic [3:0] f_cnt(input [2:0] f);
+    function automatic [2:0] f_cnt(input [2:0] f);  // 3, 5 or 6
         integer x;
         begin
-            f_cnt = 4'd0;
-            for (x = 0; x < 8; x = x + 1) if (f_adm(x[2:0], f)) f_cnt = f_cnt + 4'd1;
+            f_cnt = 3'd0;
+            for (x = 0; x < 8; x = x + 1) if (f_adm(x[2:0], f)) f_cnt = f_cnt + 3'd1;
         end
+    endfunction
+    // x m for a small factor m (shifts and adds: keeps the proof linear)
+    function automatic [8:0] f_times(input [8:0] x, input [2:0] m);
+        case (m)
+            3'd0: f_times = 9'd0;
+            3'd1: f_times = x;
+            3'd2: f_times = x << 1;
+            3'd3: f_times = x + (x << 1);
+            3'd4: f_times = x << 2;
+            3'd5: f_times = x + (x << 2);
+            3'd6: f_times = (x << 1) + (x << 2);
+            default: f_times = (x << 3) - x;
+        endcase
     endfunction
     // Position of a candidate in the enumeration (a outer, c inner): a
     // bijection from S onto 0 .. |S| - 1.
     function automatic [8:0] f_rank(input [8:0] x, input [8:0] f);
-        f_rank = ({6'd0, x[2:0] - f_min(f[2:0])} * {5'd0, f_cnt(f[5:3])}
-                  + {6'd0, x[5:3] - f_min(f[5:3])}) * {5'd0, f_cnt(f[8:6])}
+        f_rank = f_times(f_times({6'd0, x[2:0] - f_min(f[2:0])}, f_cnt(f[5:3]))
+                         + {6'd0, x[5:3] - f_min(f[5:3])}, f_cnt(f[8:6]))
                  + {6'd0, x[8:6] - f_min(f[8:6])};
     endfunction
     function automatic [N-1:0] f_ones(input [8:0] n);  // n low bits set
@@ -400,7 +414,7 @@ module mpdcc_core #(
     reg [8:0]  f_rcv = 9'd0;      // results back in this decision
     reg [8:0]  f_lastclk = 9'd0;  // clock of the last issue (0: not yet)
     reg [N-1:0] f_restv = {N{1'b0}};  // valid bits of that clock
-    wire [8:0] f_size = {5'd0, f_cnt(f_sp[2:0])} * {5'd0, f_cnt(f_sp[5:3])} * {5'd0, f_cnt(f_sp[8:6])};
+    wire [8:0] f_size = f_times(f_times({6'd0, f_cnt(f_sp[2:0])}, f_cnt(f_sp[5:3])), f_cnt(f_sp[8:6]));
     wire [8:0] f_first = F_CL[8:0] + 9'd1;
     wire [8:0] f_left = f_size - f_iss;
     wire       f_gen = f_busy && f_cyc >= f_first && f_lastclk == 9'd0;
@@ -419,7 +433,7 @@ module mpdcc_core #(
         end else if (f_start) begin
             f_busy <= 1'b1;
             f_sp <= s_prev_i;
-            f_nu <= (n_use_i < 3'd1) ? 3'd1 : (n_use_i > N) ? N : n_use_i;
+            f_nu <= (n_use_i < 3'd1) ? 3'd1 : (n_use_i > F_N) ? F_N : n_use_i;
             f_cyc <= 9'd1;
             f_iss <= 9'd0;
             f_rcv <= 9'd0;
@@ -443,6 +457,11 @@ module mpdcc_core #(
                     : (e == lastclk) ? rest : full;
     endfunction
     wire [N-1:0] f_full = f_ones({6'd0, f_nu});
+    // results back before clock f_cyc: those issued before f_cyc - F_LAT
+    wire [8:0] f_back_by = f_cyc - F_LAT[8:0];
+    wire [8:0] f_back = (f_cyc <= F_LAT[8:0] || f_back_by <= f_first) ? 9'd0
+                      : (f_lastclk != 9'd0 && f_back_by > f_lastclk) ? f_size
+                      : f_times(f_back_by - f_first, f_nu);
 
     wire [8:0] f_lo = {f_min(f_sp[8:6]), f_min(f_sp[5:3]), f_min(f_sp[2:0])};
     wire [8:0] f_hi = {f_max(f_sp[8:6]), f_max(f_sp[5:3]), f_max(f_sp[2:0])};
@@ -456,22 +475,22 @@ module mpdcc_core #(
         assert (done_o == f_done);
         if (done_o) begin
             assert (cycles_o == {7'd0, f_cyc});
-            assert ({6'd0, f_nu} * f_g >= f_size && {6'd0, f_nu} * (f_g - 9'd1) < f_size);
+            assert (f_times(f_g, f_nu) >= f_size && f_times(f_g - 9'd1, f_nu) < f_size);
         end
         // -- n_use clamped to 1..N and held for the decision
-        if (f_busy) assert (nuse_q == f_nu && nuse_q >= 3'd1 && nuse_q <= N);
+        if (f_busy) assert (nuse_q == f_nu && nuse_q >= 3'd1 && nuse_q <= F_N);
         // -- enumeration: the i-th candidate issued in a decision is the
         //    i-th of S (so each candidate of S exactly once, in order),
         //    n_use per clock but the last, explorer 0 first
         assert (cv == f_cv);
         for (f_k = 0; f_k < N; f_k = f_k + 1)
-            if (cv[f_k]) assert (f_in_set(cand[f_k], f_sp) && f_rank(cand[f_k], f_sp) == f_iss + f_k);
+            if (cv[f_k]) assert (f_in_set(cand[f_k], f_sp) && f_rank(cand[f_k], f_sp) == f_iss + f_k[8:0]);
         assert (issued_q == f_iss[7:0] && f_iss <= f_size);
         // -- results: only while busy, each counted once, none lost: what
         //    was issued is back or in flight, nothing in flight when idle
         if (rv != {N{1'b0}}) assert (busy_q);
         assert (received_q == f_rcv[7:0]);
-        assert (f_iss == f_rcv + f_popc_all(f_fly));
+        assert (f_rcv == (f_busy ? f_back : f_iss));
         if (!f_busy) assert (f_fly == {N * F_LAT{1'b0}} && !gen_q && pre_q == 5'd0);
         // -- at done: every candidate issued and back; candidates_o = |S|
         //    (0 for a kept decision, as documented)
@@ -489,24 +508,18 @@ module mpdcc_core #(
             if (f_cyc < f_first) assert (cur_q == f_lo && f_iss == 9'd0);
             if (f_gen) begin
                 assert (f_in_set(cur_q, f_sp) && f_rank(cur_q, f_sp) == f_iss);
-                assert (f_iss == {6'd0, f_nu} * (f_cyc - f_first) && f_iss < f_size);
+                assert (f_iss == f_times(f_cyc - f_first, f_nu) && f_iss < f_size);
             end
             if (f_lastclk != 9'd0) begin
                 assert (f_lastclk >= f_first && f_cyc > f_lastclk && f_cyc <= f_lastclk + F_LAT[8:0]);
-                assert (f_iss == f_size && f_restv != {N{1'b0}});
-                assert ({6'd0, f_nu} * (f_lastclk - F_CL[8:0]) >= f_size
-                        && {6'd0, f_nu} * (f_lastclk - f_first) < f_size);
+                assert (f_iss == f_size && f_restv != {N{1'b0}}
+                        && f_restv == f_ones(f_size - f_times(f_lastclk - f_first, f_nu)));
+                assert (f_times(f_lastclk - F_CL[8:0], f_nu) >= f_size
+                        && f_times(f_lastclk - f_first, f_nu) < f_size);
             end
         end
     end
     // In flight, stage by stage: stage j holds what clock f_cyc - j issued.
-    function automatic [8:0] f_popc_all(input [N*F_LAT-1:0] v);
-        integer q;
-        begin
-            f_popc_all = 9'd0;
-            for (q = 0; q < N * F_LAT; q = q + 1) f_popc_all = f_popc_all + {8'd0, v[q]};
-        end
-    endfunction
     generate
         for (gi = 1; gi <= F_LAT; gi = gi + 1) begin : g_fly
             localparam [8:0] F_J = gi;
