@@ -344,6 +344,267 @@ module mpdcc_core #(
             end
         end
     end
+
+`ifdef FORMAL
+    // Hand-shake properties of the scheduler (scripts/rtl-formal, N = 2),
+    // proved for ANY explorer arithmetic: the explorers are a stand-in
+    // (formal/stubs/mpdcc_explorer.v, free outputs) constrained only by the
+    // explorer's hand-shake contract, assumed here and proved on the real
+    // explorer by its own FORMAL block: out_valid_o is in_valid_i exactly
+    // F_LAT clocks later, cleared by a reset. Power-up is the all-zero state
+    // (no reset assumed); a reset may come at any clock.
+    localparam integer F_LAT = 41;  // mpdcc_explorer's LAT (asserted there)
+    localparam integer F_CL = COMMON_LATENCY;
+    localparam integer F_AM = ARGMIN_LEVELS;  // a result leaves the tree this much later
+    localparam [2:0] F_NU = N[2:0];
+
+    integer f_k;
+
+    // ------------------------------------------------ explorer contract
+    // f_fly stage j (1..F_LAT) at [N (j - 1) +: N]: the valid bits issued
+    // j clocks ago, i.e. the candidates in flight.
+    reg [N*F_LAT-1:0] f_fly = {N * F_LAT{1'b0}};
+    always @(posedge clk_i) begin
+        if (rst_i) f_fly <= {N * F_LAT{1'b0}};
+        else f_fly <= {f_fly[N*(F_LAT-1)-1:0], cv};
+    end
+    always @(*) assume (rv == f_fly[N*(F_LAT-1) +: N]);
+    // The results' valid bits through the arg-min tree: stage j (1..F_AM)
+    // at [N (j - 1) +: N]; the scheduler counts them as they leave it.
+    reg [N*F_AM-1:0] f_rvd = {N * F_AM{1'b0}};
+    always @(posedge clk_i) begin
+        if (rst_i) f_rvd <= {N * F_AM{1'b0}};
+        else f_rvd <= {f_rvd[N*(F_AM-1)-1:0], rv};
+    end
+
+    // ------------------------------------ S(s(k-1)), written independently
+    // Level of a position (drive::mpdcc::anpc::TABLE): -2, -1, -1, 0, 0, 1,
+    // 1, 2; a candidate is admissible in a phase when its level is within
+    // one of s(k-1)'s (drive::mpdcc::anpc::admissible_phase).
+    function automatic signed [3:0] f_level(input [2:0] x);
+        case (x)
+            3'd0: f_level = -4'sd2;
+            3'd1, 3'd2: f_level = -4'sd1;
+            3'd3, 3'd4: f_level = 4'sd0;
+            3'd5, 3'd6: f_level = 4'sd1;
+            default: f_level = 4'sd2;
+        endcase
+    endfunction
+    function automatic f_adm(input [2:0] x, input [2:0] f);
+        reg signed [3:0] d;
+        begin
+            d = f_level(x) - f_level(f);
+            f_adm = (d >= -4'sd1) && (d <= 4'sd1);
+        end
+    endfunction
+    function automatic f_in_set(input [8:0] x, input [8:0] f);
+        f_in_set = f_adm(x[2:0], f[2:0]) && f_adm(x[5:3], f[5:3]) && f_adm(x[8:6], f[8:6]);
+    endfunction
+    // smallest / largest admissible position and how many there are
+    function automatic [2:0] f_min(input [2:0] f);
+        integer x;
+        begin
+            f_min = 3'd0;
+            for (x = 7; x >= 0; x = x - 1) if (f_adm(x[2:0], f)) f_min = x[2:0];
+        end
+    endfunction
+    function automatic [2:0] f_max(input [2:0] f);
+        integer x;
+        begin
+            f_max = 3'd0;
+            for (x = 0; x < 8; x = x + 1) if (f_adm(x[2:0], f)) f_max = x[2:0];
+        end
+    endfunction
+    function automatic [2:0] f_cnt(input [2:0] f);  // 3, 5 or 6
+        integer x;
+        begin
+            f_cnt = 3'd0;
+            for (x = 0; x < 8; x = x + 1) if (f_adm(x[2:0], f)) f_cnt = f_cnt + 3'd1;
+        end
+    endfunction
+    // x m for a small factor m (shifts and adds: keeps the proof linear)
+    function automatic [8:0] f_times(input [8:0] x, input [2:0] m);
+        case (m)
+            3'd0: f_times = 9'd0;
+            3'd1: f_times = x;
+            3'd2: f_times = x << 1;
+            3'd3: f_times = x + (x << 1);
+            3'd4: f_times = x << 2;
+            3'd5: f_times = x + (x << 2);
+            3'd6: f_times = (x << 1) + (x << 2);
+            default: f_times = (x << 3) - x;
+        endcase
+    endfunction
+    // Position of a candidate in the enumeration (a outer, c inner): a
+    // bijection from S onto 0 .. |S| - 1.
+    function automatic [8:0] f_rank(input [8:0] x, input [8:0] f);
+        f_rank = f_times(f_times({6'd0, x[2:0] - f_min(f[2:0])}, f_cnt(f[5:3]))
+                         + {6'd0, x[5:3] - f_min(f[5:3])}, f_cnt(f[8:6]))
+                 + {6'd0, x[8:6] - f_min(f[8:6])};
+    endfunction
+    function automatic [N-1:0] f_ones(input [8:0] n);  // n low bits set
+        integer q;
+        begin
+            for (q = 0; q < N; q = q + 1) f_ones[q] = (q < n);
+        end
+    endfunction
+    function automatic [8:0] f_popc(input [N-1:0] v);
+        integer q;
+        begin
+            f_popc = 9'd0;
+            for (q = 0; q < N; q = q + 1) f_popc = f_popc + {8'd0, v[q]};
+        end
+    endfunction
+
+    // ----------------------------------------------- the decision monitor
+    // Latched on an accepted start (a start while busy is ignored, as the
+    // design documents): s(k-1), the clamped n_use, |S|. The candidates
+    // are issued from clock 17 (16 clocks of common terms), n_use per clock
+    // while at least that many are left, the rest at the last issue clock
+    // f_lastclk; their results are back F_LAT clocks later, and done_o
+    // follows one clock after the last: G = f_lastclk - 16 issue clocks, so
+    // done_o comes at clock T = 16 + G + F_LAT + 1
+    // (drive::mpdcc::cycles::pipelined_core_cycles).
+    wire f_start = start_i && !busy_q && !rst_i;
+    reg        f_busy = 1'b0, f_done = 1'b0;
+    reg [8:0]  f_sp = 9'd0;
+    reg [2:0]  f_nu = 3'd0;
+    reg [8:0]  f_cyc = 9'd0;      // clocks since the accepted start (<= 274)
+    reg [8:0]  f_iss = 9'd0;      // candidates issued in this decision
+    reg [8:0]  f_rcv = 9'd0;      // results back in this decision
+    reg [8:0]  f_lastclk = 9'd0;  // clock of the last issue (0: not yet)
+    reg [N-1:0] f_restv = {N{1'b0}};  // valid bits of that clock
+    wire [8:0] f_size = f_times(f_times({6'd0, f_cnt(f_sp[2:0])}, f_cnt(f_sp[5:3])), f_cnt(f_sp[8:6]));
+    wire [8:0] f_first = F_CL[8:0] + 9'd1;
+    wire [8:0] f_left = f_size - f_iss;
+    wire       f_gen = f_busy && f_cyc >= f_first && f_lastclk == 9'd0;
+    // what the scheduler must issue this clock
+    wire [N-1:0] f_cv = !f_gen ? {N{1'b0}} : f_ones((f_left < {6'd0, f_nu}) ? f_left : {6'd0, f_nu});
+    always @(posedge clk_i) begin
+        f_done <= 1'b0;
+        f_iss <= f_iss + f_popc(cv);
+        f_rcv <= f_rcv + f_popc(f_rvd[N*(F_AM-1) +: N]);
+        if (rst_i) begin
+            f_busy <= 1'b0;
+            f_cyc <= 9'd0;
+            f_iss <= 9'd0;
+            f_rcv <= 9'd0;
+            f_lastclk <= 9'd0;
+        end else if (f_start) begin
+            f_busy <= 1'b1;
+            f_sp <= s_prev_i;
+            f_nu <= (n_use_i < 3'd1) ? 3'd1 : (n_use_i > F_NU) ? F_NU : n_use_i;
+            f_cyc <= 9'd1;
+            f_iss <= 9'd0;
+            f_rcv <= 9'd0;
+            f_lastclk <= 9'd0;
+        end else if (f_busy) begin
+            f_cyc <= f_cyc + 9'd1;
+            if (f_gen && f_left <= {6'd0, f_nu}) begin
+                f_lastclk <= f_cyc;
+                f_restv <= f_cv;
+            end
+            if (f_lastclk != 9'd0 && f_cyc == f_lastclk + F_LAT[8:0] + F_AM[8:0]) begin
+                f_busy <= 1'b0;
+                f_done <= 1'b1;
+            end
+        end
+    end
+    // valid bits issued at clock e (e < f_cyc) of this decision
+    function automatic [N-1:0] f_issued_at(input [8:0] e, input [8:0] first, input [8:0] lastclk,
+                                           input [N-1:0] full, input [N-1:0] rest);
+        f_issued_at = (e < first || (lastclk != 9'd0 && e > lastclk)) ? {N{1'b0}}
+                    : (e == lastclk) ? rest : full;
+    endfunction
+    wire [N-1:0] f_full = f_ones({6'd0, f_nu});
+    // results back before clock f_cyc: those issued before f_cyc - F_LAT
+    wire [8:0] f_back_by = f_cyc - F_LAT[8:0] - F_AM[8:0];
+    wire [8:0] f_back = (f_cyc <= F_LAT[8:0] + F_AM[8:0] || f_back_by <= f_first) ? 9'd0
+                      : (f_lastclk != 9'd0 && f_back_by > f_lastclk) ? f_size
+                      : f_times(f_back_by - f_first, f_nu);
+
+    wire [8:0] f_lo = {f_min(f_sp[8:6]), f_min(f_sp[5:3]), f_min(f_sp[2:0])};
+    wire [8:0] f_hi = {f_max(f_sp[8:6]), f_max(f_sp[5:3]), f_max(f_sp[2:0])};
+    wire [8:0] f_g = f_cyc - F_CL[8:0] - F_LAT[8:0] - F_AM[8:0] - 9'd1;  // issue clocks, at done
+
+    always @(*) begin
+        // -- busy_o from the accepted start to done_o; done_o once per
+        //    start, at clock T, with cycles_o = T and G = ceil(|S| / n_use)
+        //    (G n_use >= |S| > (G - 1) n_use)
+        assert (busy_q == f_busy);
+        assert (done_o == f_done);
+        if (done_o) begin
+            assert (cycles_o == {7'd0, f_cyc});
+            assert (f_times(f_g, f_nu) >= f_size && f_times(f_g - 9'd1, f_nu) < f_size);
+        end
+        // -- n_use clamped to 1..N and held for the decision
+        if (f_busy) assert (nuse_q == f_nu && nuse_q >= 3'd1 && nuse_q <= F_NU);
+        // -- enumeration: the i-th candidate issued in a decision is the
+        //    i-th of S (so each candidate of S exactly once, in order),
+        //    n_use per clock but the last, explorer 0 first
+        assert (cv == f_cv);
+        for (f_k = 0; f_k < N; f_k = f_k + 1)
+            if (cv[f_k]) assert (f_in_set(cand[f_k], f_sp) && f_rank(cand[f_k], f_sp) == f_iss + f_k[8:0]);
+        assert (issued_q == f_iss[7:0] && f_iss <= f_size);
+        // -- results: only while busy, each counted once, none lost: what
+        //    was issued is back or in flight, nothing in flight when idle
+        if (rv != {N{1'b0}}) assert (busy_q);
+        assert (received_q == f_rcv[7:0]);
+        assert (f_rcv == (f_busy ? f_back : f_iss));
+        if (!f_busy) assert (f_fly == {N * F_LAT{1'b0}} && f_rvd == {N * F_AM{1'b0}} && !gen_q && pre_q == 6'd0);
+        // -- at done: every candidate issued and back; candidates_o = |S|
+        //    (0 for a kept decision, as documented)
+        if (done_o) begin
+            assert (f_iss == f_size && f_rcv == f_size);
+            assert (candidates_o == (kind_o == 2'd0 ? 8'd0 : f_size[7:0]));
+            assert (kind_o != 2'd3);
+        end
+        // -- scheduler state against the monitor (makes the proof inductive)
+        if (f_busy) begin
+            assert (cyc_q == {7'd0, f_cyc} && f_cyc >= 9'd1);
+            assert (pre_q == ((f_cyc < f_first) ? f_first[5:0] - f_cyc[5:0] : 6'd0));
+            assert (gen_q == f_gen);
+            assert (lo_q == f_lo[8:3] && hi_q == f_hi);
+            if (f_cyc < f_first) assert (cur_q == f_lo && f_iss == 9'd0);
+            if (f_gen) begin
+                assert (f_in_set(cur_q, f_sp) && f_rank(cur_q, f_sp) == f_iss);
+                assert (f_iss == f_times(f_cyc - f_first, f_nu) && f_iss < f_size);
+            end
+            if (f_lastclk != 9'd0) begin
+                assert (f_lastclk >= f_first && f_cyc > f_lastclk && f_cyc <= f_lastclk + F_LAT[8:0] + F_AM[8:0]);
+                assert (f_iss == f_size && f_restv != {N{1'b0}}
+                        && f_restv == f_ones(f_size - f_times(f_lastclk - f_first, f_nu)));
+                assert (f_times(f_lastclk - F_CL[8:0], f_nu) >= f_size
+                        && f_times(f_lastclk - f_first, f_nu) < f_size);
+            end
+        end
+    end
+    // In flight, stage by stage: stage j holds what clock f_cyc - j issued.
+    generate
+        for (gi = 1; gi <= F_LAT; gi = gi + 1) begin : g_fly
+            localparam [8:0] F_J = gi;
+            always @(*) begin
+                if (f_busy)
+                    assert (f_fly[N*(gi-1) +: N] == ((f_cyc <= F_J) ? {N{1'b0}}
+                            : f_issued_at(f_cyc - F_J, f_first, f_lastclk, f_full, f_restv)));
+            end
+        end
+    endgenerate
+
+    // -- reset: the clock after a reset is idle, without done_o, with the
+    //    counters cleared (a decision in flight is dropped: no done_o for
+    //    it, its results are cleared in the explorers by the same reset).
+    //    A start while busy is ignored: the monitor takes no start while
+    //    busy, and lo_q, hi_q, nuse_q, cyc_q and the counters are asserted
+    //    equal to it above.
+    reg f_rst_q = 1'b0;
+    always @(posedge clk_i) f_rst_q <= rst_i;
+    always @(*) begin
+        if (f_rst_q)
+            assert (!busy_o && !done_o && issued_q == 8'd0 && received_q == 8'd0
+                    && cycles_o == 16'd0 && candidates_o == 8'd0);
+    end
+`endif
 endmodule
 
 `default_nettype wire

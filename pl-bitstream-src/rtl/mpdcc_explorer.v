@@ -573,6 +573,35 @@ module mpdcc_explorer (
                 .d_i(sat16({{(W - 18) {nodes_14[0][gi][17]}}, nodes_14[0][gi]})), .q_o(d0_o[16*gi +: 16]));
         end
     endgenerate
+
+`ifdef FORMAL
+    // Hand-shake contract of an explorer, the one mpdcc_core's proof assumes
+    // of each of its explorers (F_LAT there): a candidate taken at a clock
+    // comes out exactly LAT clocks later, once; nothing comes out that was
+    // not taken; a reset clears every candidate in flight. The datapath
+    // plays no part: scripts/rtl-formal proves this with the explorer's
+    // result outputs cut off, so the arithmetic is pruned. (The candidate's
+    // code travels beside it in u_s, an mpdcc_pipe of the same LAT; it is
+    // checked by the bit-exact runs, not here: a 41-deep induction.)
+    // Shadow of the last LAT valid bits (stage j = j clocks ago), cleared
+    // by a reset as the pipeline registers are.
+    reg [LAT:1] f_v = {LAT{1'b0}};
+    always @(posedge clk_i) begin
+        if (rst_i) f_v <= {LAT{1'b0}};
+        else f_v <= {f_v[LAT-1:1], in_valid_i};
+    end
+    always @(*) begin
+        // mpdcc_core's proof assumes this latency: change both together.
+        assert (LAT == 41);
+        assert (out_valid_o == f_v[LAT]);
+    end
+    // Stage by stage, so that the proof is inductive in one step.
+    generate
+        for (gi = 1; gi <= LAT; gi = gi + 1) begin : g_fv
+            always @(*) assert (v[gi] == f_v[gi]);
+        end
+    endgenerate
+`endif
 endmodule
 
 `default_nettype wire
