@@ -15,11 +15,14 @@
 //   2  count (+ cpr if negative); dphi = product >> 8; (ADC - off) x gain
 //   3  phi = count x ang_scale (low 32 bits); (dphi >> 8) x age[j];
 //      w Ts = sat18(round((dphi >> 8) x 2 pi 2^14 / 2^22)); Clarke sums
-//   4  the four angles (Park, three instants); i_alpha, i_beta (x 1/3, x 1/sqrt 3)
-//   5  table entries t0 = T[i], t1 = T[i + 1] and the fraction, 8 lookups
-//   6  t1 - t0
-//   7  t0 + round((t1 - t0) f / 2^16) (t0 << 16 in the addend)
-//   8  Park: i_d = R(c i_alpha + s i_beta), i_q = R(c i_beta - s i_alpha)
+//   4  the three instants' angles (phi + offset); i_alpha, i_beta
+//      (x 1/3, x 1/sqrt 3); table read 0: sin and cos at phi
+//   5  value 0 = T[i] + round(D[i] f / 2^16) (T[i] << 16 in the addend);
+//      table read 1 (instant 0)
+//   6  value 1; read 2          7  value 2; read 3
+//   8  value 3; Park: i_d = R(c i_alpha + s i_beta), i_q = R(c i_beta - s i_alpha)
+// One 1024-word table (one BRAM36, two read ports) serves all eight
+// lookups; word i = {D[i] = T[i + 1] - T[i], T[i]}.
 `default_nettype none
 
 module mpdtc_frontend (
@@ -133,7 +136,7 @@ module mpdtc_frontend (
     reg        [31:0] phi, offs[0:2];
     reg signed [17:0] w_ts;
     reg signed [24:0] csa, csb;
-    reg        [31:0] ang[0:3];
+    reg        [31:0] ang[1:3];
     reg signed [24:0] i_al, i_be;
     reg signed [48:0] spdp;
     wire signed [23:0] dphi24 = dphi[31:8];
@@ -166,39 +169,61 @@ module mpdtc_frontend (
                       - {{23{cur[1][24]}}, cur[1]} - {{23{cur[2][24]}}, cur[2]});
         csb  <= sat25({{23{cur[1][24]}}, cur[1]} - {{23{cur[2][24]}}, cur[2]});
         // 4
-        ang[0] <= phi;
         for (k = 0; k < 3; k = k + 1) ang[k+1] <= phi + offs[k];
         i_al <= sat25((ONE_THIRD * csa + 48'sd32768) >>> 16);
         i_be <= sat25((INV_SQRT3 * csb + 48'sd32768) >>> 16);
     end
 
-    // ------------------------------------------------------------ stages 5-7
-    // Lookup e = 2 m + c: angle m (0 = Park, 1..3 = instants), cosine if c.
-    wire signed [17:0] v[0:7];
-    genvar ge;
-    generate
-        for (ge = 0; ge < 8; ge = ge + 1) begin : g_lut
-            // bits 5..0 of the angle are below the interpolation step
-            /* verilator lint_off UNUSEDSIGNAL */
-            wire [31:0] a = ang[ge/2] + ((ge % 2 == 1) ? 32'h4000_0000 : 32'h0);
-            /* verilator lint_on UNUSEDSIGNAL */
-            reg signed [17:0] t0_q, t1_q, v_q;
-            reg        [15:0] fr_q;
-            reg signed [18:0] dt_q;
-            always @(posedge clk_i) begin
-                // 5
-                t0_q <= sin_lut(a[31:22]);
-                t1_q <= sin_lut(a[31:22] + 10'd1);
-                fr_q <= a[21:6];
-                // 6
-                dt_q <= {t1_q[17], t1_q} - {t0_q[17], t0_q};
-                // 7
-                v_q <= sat18((dt_q * $signed({1'b0, fr_q})
-                              + $signed({{14{t0_q[17]}}, t0_q, 16'h8000})) >>> 16);
+    // ------------------------------------------------------------ stages 5-8
+    // One shared table, read through two ports (sine and cosine of the same
+    // angle) in four consecutive cycles: Park angle at stage 4 (phi is
+    // ready after stage 3), then the three instants at stages 5..7. Each
+    // word holds the entry and its step to the next, {T[i + 1] - T[i], T[i]}
+    // (the step is at most 402, so 18 bits hold it exactly), so the
+    // interpolation is one multiply-add after the read: the eight lookups
+    // take one 1024 x 36 ROM (one BRAM36) and two multipliers.
+    reg [35:0] rom[0:1023];
+    reg [10:0] ri;
+    initial begin
+        for (ri = 11'd0; ri < 11'd1024; ri = ri + 11'd1)
+            rom[ri[9:0]] = {sin_lut(ri[9:0] + 10'd1) - sin_lut(ri[9:0]), sin_lut(ri[9:0])};
+    end
+
+    // Read r (0 = Park, 1..3 = instants) is issued in the cycle vld_q[3 + r].
+    // bits 5..0 of the angle are below the interpolation step
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [31:0] a = vld_q[3] ? phi : vld_q[4] ? ang[1] : vld_q[5] ? ang[2] : ang[3];
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [9:0] idx_s = a[31:22];
+    wire [9:0] idx_c = {a[31:30] + 2'd1, a[29:22]};  // + 1/4 turn
+    reg  [35:0] qs_q, qc_q;
+    reg  [15:0] fr_q;
+    always @(posedge clk_i) begin
+        qs_q <= rom[idx_s];
+        qc_q <= rom[idx_c];
+        fr_q <= a[21:6];
+    end
+
+    // T[i] + round((T[i + 1] - T[i]) f / 2^16), one multiply-add per port.
+    function automatic signed [17:0] interp(input [35:0] q, input [15:0] f);
+        interp = sat18(($signed(q[35:18]) * $signed({1'b0, f})
+                        + $signed({{14{q[17]}}, q[17:0], 16'h8000})) >>> 16);
+    endfunction
+    wire signed [17:0] vs = interp(qs_q, fr_q);
+    wire signed [17:0] vc = interp(qc_q, fr_q);
+
+    // v[2 m] = sin, v[2 m + 1] = cos of angle m, written one cycle after
+    // read m; each holds until the next period's read.
+    reg signed [17:0] v[0:7];
+    always @(posedge clk_i) begin : store
+        integer m;
+        for (m = 0; m < 4; m = m + 1) begin
+            if (vld_q[4+m]) begin
+                v[2*m]   <= vs;
+                v[2*m+1] <= vc;
             end
-            assign v[ge] = v_q;
         end
-    endgenerate
+    end
 
     // ------------------------------------------------------------ stage 8
     reg signed [24:0] i_d, i_q;
