@@ -76,8 +76,6 @@ module mpdtc_frontend (
     localparam signed [17:0] ONE_THIRD = 18'sd21845;
     localparam signed [17:0] INV_SQRT3 = 18'sd37837;
 
-    `include "sin_table.vh"
-
     function automatic signed [24:0] sat25(input signed [47:0] x);
         if (x > MAX25) sat25 = MAX25[24:0];
         else if (x < MIN25) sat25 = MIN25[24:0];
@@ -182,12 +180,8 @@ module mpdtc_frontend (
     // (the step is at most 402, so 18 bits hold it exactly), so the
     // interpolation is one multiply-add after the read: the eight lookups
     // take one 1024 x 36 ROM (one BRAM36) and two multipliers.
-    reg [35:0] rom[0:1023];
-    reg [10:0] ri;
-    initial begin
-        for (ri = 11'd0; ri < 11'd1024; ri = ri + 11'd1)
-            rom[ri[9:0]] = {sin_lut(ri[9:0] + 10'd1) - sin_lut(ri[9:0]), sin_lut(ri[9:0])};
-    end
+    reg [35:0] sin_rom[0:1023];
+    `include "sin_table.vh"
 
     // Read r (0 = Park, 1..3 = instants) is issued in the cycle vld_q[3 + r].
     // bits 5..0 of the angle are below the interpolation step
@@ -199,8 +193,8 @@ module mpdtc_frontend (
     reg  [35:0] qs_q, qc_q;
     reg  [15:0] fr_q;
     always @(posedge clk_i) begin
-        qs_q <= rom[idx_s];
-        qc_q <= rom[idx_c];
+        qs_q <= sin_rom[idx_s];
+        qc_q <= sin_rom[idx_c];
         fr_q <= a[21:6];
     end
 
@@ -231,6 +225,62 @@ module mpdtc_frontend (
         i_d <= sat25((v[1] * i_al + v[0] * i_be + 48'sd32768) >>> 16);
         i_q <= sat25((v[1] * i_be - v[0] * i_al + 48'sd32768) >>> 16);
     end
+
+`ifdef FORMAL
+    // Independent monitors; the all-zero power-up state is the reset state.
+    reg        f_past_valid = 1'b0;
+    reg [3:0]  f_norst_q = 4'd0;    // cycles since the last reset, up to 15
+    reg [8:0]  f_iv_q = 9'd0;       // f_iv_q[k]: in_valid_i k + 1 cycles ago
+    always @(posedge clk_i) begin
+        f_past_valid <= 1'b1;
+        f_norst_q    <= rst_i ? 4'd0 : (f_norst_q == 4'd15) ? 4'd15 : f_norst_q + 4'd1;
+        f_iv_q       <= {f_iv_q[7:0], in_valid_i};
+    end
+
+    // Exactly one period's input in the read window (legal spacing).
+    wire f_alone = (f_iv_q[6:3] == 4'b0001) || (f_iv_q[6:3] == 4'b0010)
+                || (f_iv_q[6:3] == 4'b0100) || (f_iv_q[6:3] == 4'b1000);
+    // The values in pairs (sin, cos of angle m).
+    wire [35:0] f_v0 = {v[1], v[0]};
+    wire [35:0] f_v1 = {v[3], v[2]};
+    wire [35:0] f_v2 = {v[5], v[4]};
+    wire [35:0] f_v3 = {v[7], v[6]};
+
+    integer f_k;
+    always @(*) begin
+        // Fixed latency: out_valid_o exactly LATENCY cycles after an
+        // in_valid_i with no reset in between; never without one, never
+        // within LATENCY cycles of a reset.
+        assert (out_valid_o == (f_norst_q >= 4'd9 && f_iv_q[8]));
+        // The same for every stage of the valid pipeline (makes the
+        // induction hold in one step).
+        for (f_k = 0; f_k < LATENCY; f_k = f_k + 1)
+            assert (vld_q[f_k] == (f_iv_q[f_k] && {28'd0, f_norst_q} > f_k));
+        // The cosine reads a quarter turn (256 entries) after the sine.
+        assert (idx_c == idx_s + 10'd256);
+        // Read m takes the Park angle (m = 0) or instant m - 1, 4 + m cycles
+        // after the input (whenever one period is in flight).
+        if (f_alone && f_iv_q[3] && f_norst_q >= 4'd4) assert (a == phi);
+        if (f_alone && f_iv_q[4] && f_norst_q >= 4'd5) assert (a == ang[1]);
+        if (f_alone && f_iv_q[5] && f_norst_q >= 4'd6) assert (a == ang[2]);
+        if (f_alone && f_iv_q[6] && f_norst_q >= 4'd7) assert (a == ang[3]);
+    end
+
+    always @(posedge clk_i) begin
+        if (f_past_valid) begin
+            // Value m changes only in the cycle after its read, 6 + m
+            // cycles after the input: the outputs hold until the next one.
+            if (f_v0 != $past(f_v0))
+                assert (f_iv_q[5] && $past(f_norst_q) >= 4'd5);
+            if (f_v1 != $past(f_v1))
+                assert (f_iv_q[6] && $past(f_norst_q) >= 4'd6);
+            if (f_v2 != $past(f_v2))
+                assert (f_iv_q[7] && $past(f_norst_q) >= 4'd7);
+            if (f_v3 != $past(f_v3))
+                assert (f_iv_q[8] && $past(f_norst_q) >= 4'd8);
+        end
+    end
+`endif
 
     assign i_d_o     = i_d;
     assign i_q_o     = i_q;
