@@ -353,9 +353,13 @@ mod tests {
     fn pl_loop_at_1mhz_settles_within_5_percent_of_the_bound() {
         let b = settling_bound_s(&MotorParams::default(), 0.8, 1e-6);
         let st = toggle(&mut MpdtcPl::new(cfg(RATE_1MHZ)).unwrap(), RATE_1MHZ);
-        for s in st {
+        let fx = toggle(&mut MpdtcFixed::new(cfg(RATE_1MHZ)).unwrap(), RATE_1MHZ);
+        for (s, f) in st.iter().zip(&fx) {
             let s = s.expect("settles");
             assert!(s <= 1.05 * b && s >= 0.85 * b, "{s} vs bound {b}");
+            // The integer front end costs no settling against the f64 one.
+            let f = f.expect("settles");
+            assert!((s - f).abs() <= 5e-6, "{s} vs {f}");
         }
         let slow = PlRate {
             t_tol_nm: 0.08,
