@@ -367,6 +367,6 @@ mod tests {
             ..RATE_1MHZ
         };
         let st = toggle(&mut MpdtcPl::new(cfg(slow)).unwrap(), slow);
-        assert!(st.iter().any(|s| s.map_or(true, |s| s > 1e-3)), "{st:?}");
+        assert!(st.iter().any(|s| s.is_none_or(|s| s > 1e-3)), "{st:?}");
     }
 }
