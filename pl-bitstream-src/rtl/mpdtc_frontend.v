@@ -15,11 +15,14 @@
 //   2  count (+ cpr if negative); dphi = product >> 8; (ADC - off) x gain
 //   3  phi = count x ang_scale (low 32 bits); (dphi >> 8) x age[j];
 //      w Ts = sat18(round((dphi >> 8) x 2 pi 2^14 / 2^22)); Clarke sums
-//   4  the four angles (Park, three instants); i_alpha, i_beta (x 1/3, x 1/sqrt 3)
-//   5  table entries t0 = T[i], t1 = T[i + 1] and the fraction, 8 lookups
-//   6  t1 - t0
-//   7  t0 + round((t1 - t0) f / 2^16) (t0 << 16 in the addend)
-//   8  Park: i_d = R(c i_alpha + s i_beta), i_q = R(c i_beta - s i_alpha)
+//   4  the three instants' angles (phi + offset); i_alpha, i_beta
+//      (x 1/3, x 1/sqrt 3); table read 0: sin and cos at phi
+//   5  value 0 = T[i] + round(D[i] f / 2^16) (T[i] << 16 in the addend);
+//      table read 1 (instant 0)
+//   6  value 1; read 2          7  value 2; read 3
+//   8  value 3; Park: i_d = R(c i_alpha + s i_beta), i_q = R(c i_beta - s i_alpha)
+// One 1024-word table (one BRAM36, two read ports) serves all eight
+// lookups; word i = {D[i] = T[i + 1] - T[i], T[i]}.
 `default_nettype none
 
 module mpdtc_frontend (
@@ -72,8 +75,6 @@ module mpdtc_frontend (
     localparam signed [17:0] TWO_PI_Q14 = 18'sd102944;
     localparam signed [17:0] ONE_THIRD = 18'sd21845;
     localparam signed [17:0] INV_SQRT3 = 18'sd37837;
-
-    `include "sin_table.vh"
 
     function automatic signed [24:0] sat25(input signed [47:0] x);
         if (x > MAX25) sat25 = MAX25[24:0];
@@ -133,7 +134,7 @@ module mpdtc_frontend (
     reg        [31:0] phi, offs[0:2];
     reg signed [17:0] w_ts;
     reg signed [24:0] csa, csb;
-    reg        [31:0] ang[0:3];
+    reg        [31:0] ang[1:3];
     reg signed [24:0] i_al, i_be;
     reg signed [48:0] spdp;
     wire signed [23:0] dphi24 = dphi[31:8];
@@ -166,39 +167,57 @@ module mpdtc_frontend (
                       - {{23{cur[1][24]}}, cur[1]} - {{23{cur[2][24]}}, cur[2]});
         csb  <= sat25({{23{cur[1][24]}}, cur[1]} - {{23{cur[2][24]}}, cur[2]});
         // 4
-        ang[0] <= phi;
         for (k = 0; k < 3; k = k + 1) ang[k+1] <= phi + offs[k];
         i_al <= sat25((ONE_THIRD * csa + 48'sd32768) >>> 16);
         i_be <= sat25((INV_SQRT3 * csb + 48'sd32768) >>> 16);
     end
 
-    // ------------------------------------------------------------ stages 5-7
-    // Lookup e = 2 m + c: angle m (0 = Park, 1..3 = instants), cosine if c.
-    wire signed [17:0] v[0:7];
-    genvar ge;
-    generate
-        for (ge = 0; ge < 8; ge = ge + 1) begin : g_lut
-            // bits 5..0 of the angle are below the interpolation step
-            /* verilator lint_off UNUSEDSIGNAL */
-            wire [31:0] a = ang[ge/2] + ((ge % 2 == 1) ? 32'h4000_0000 : 32'h0);
-            /* verilator lint_on UNUSEDSIGNAL */
-            reg signed [17:0] t0_q, t1_q, v_q;
-            reg        [15:0] fr_q;
-            reg signed [18:0] dt_q;
-            always @(posedge clk_i) begin
-                // 5
-                t0_q <= sin_lut(a[31:22]);
-                t1_q <= sin_lut(a[31:22] + 10'd1);
-                fr_q <= a[21:6];
-                // 6
-                dt_q <= {t1_q[17], t1_q} - {t0_q[17], t0_q};
-                // 7
-                v_q <= sat18((dt_q * $signed({1'b0, fr_q})
-                              + $signed({{14{t0_q[17]}}, t0_q, 16'h8000})) >>> 16);
+    // ------------------------------------------------------------ stages 5-8
+    // One shared table, read through two ports (sine and cosine of the same
+    // angle) in four consecutive cycles: Park angle at stage 4 (phi is
+    // ready after stage 3), then the three instants at stages 5..7. Each
+    // word holds the entry and its step to the next, {T[i + 1] - T[i], T[i]}
+    // (the step is at most 402, so 18 bits hold it exactly), so the
+    // interpolation is one multiply-add after the read: the eight lookups
+    // take one 1024 x 36 ROM (one BRAM36) and two multipliers.
+    reg [35:0] sin_rom[0:1023];
+    `include "sin_table.vh"
+
+    // Read r (0 = Park, 1..3 = instants) is issued in the cycle vld_q[3 + r].
+    // bits 5..0 of the angle are below the interpolation step
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [31:0] a = vld_q[3] ? phi : vld_q[4] ? ang[1] : vld_q[5] ? ang[2] : ang[3];
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [9:0] idx_s = a[31:22];
+    wire [9:0] idx_c = {a[31:30] + 2'd1, a[29:22]};  // + 1/4 turn
+    reg  [35:0] qs_q, qc_q;
+    reg  [15:0] fr_q;
+    always @(posedge clk_i) begin
+        qs_q <= sin_rom[idx_s];
+        qc_q <= sin_rom[idx_c];
+        fr_q <= a[21:6];
+    end
+
+    // T[i] + round((T[i + 1] - T[i]) f / 2^16), one multiply-add per port.
+    function automatic signed [17:0] interp(input [35:0] q, input [15:0] f);
+        interp = sat18(($signed(q[35:18]) * $signed({1'b0, f})
+                        + $signed({{14{q[17]}}, q[17:0], 16'h8000})) >>> 16);
+    endfunction
+    wire signed [17:0] vs = interp(qs_q, fr_q);
+    wire signed [17:0] vc = interp(qc_q, fr_q);
+
+    // v[2 m] = sin, v[2 m + 1] = cos of angle m, written one cycle after
+    // read m; each holds until the next period's read.
+    reg signed [17:0] v[0:7];
+    always @(posedge clk_i) begin : store
+        integer m;
+        for (m = 0; m < 4; m = m + 1) begin
+            if (vld_q[4+m]) begin
+                v[2*m]   <= vs;
+                v[2*m+1] <= vc;
             end
-            assign v[ge] = v_q;
         end
-    endgenerate
+    end
 
     // ------------------------------------------------------------ stage 8
     reg signed [24:0] i_d, i_q;
@@ -206,6 +225,62 @@ module mpdtc_frontend (
         i_d <= sat25((v[1] * i_al + v[0] * i_be + 48'sd32768) >>> 16);
         i_q <= sat25((v[1] * i_be - v[0] * i_al + 48'sd32768) >>> 16);
     end
+
+`ifdef FORMAL
+    // Independent monitors; the all-zero power-up state is the reset state.
+    reg        f_past_valid = 1'b0;
+    reg [3:0]  f_norst_q = 4'd0;    // cycles since the last reset, up to 15
+    reg [8:0]  f_iv_q = 9'd0;       // f_iv_q[k]: in_valid_i k + 1 cycles ago
+    always @(posedge clk_i) begin
+        f_past_valid <= 1'b1;
+        f_norst_q    <= rst_i ? 4'd0 : (f_norst_q == 4'd15) ? 4'd15 : f_norst_q + 4'd1;
+        f_iv_q       <= {f_iv_q[7:0], in_valid_i};
+    end
+
+    // Exactly one period's input in the read window (legal spacing).
+    wire f_alone = (f_iv_q[6:3] == 4'b0001) || (f_iv_q[6:3] == 4'b0010)
+                || (f_iv_q[6:3] == 4'b0100) || (f_iv_q[6:3] == 4'b1000);
+    // The values in pairs (sin, cos of angle m).
+    wire [35:0] f_v0 = {v[1], v[0]};
+    wire [35:0] f_v1 = {v[3], v[2]};
+    wire [35:0] f_v2 = {v[5], v[4]};
+    wire [35:0] f_v3 = {v[7], v[6]};
+
+    integer f_k;
+    always @(*) begin
+        // Fixed latency: out_valid_o exactly LATENCY cycles after an
+        // in_valid_i with no reset in between; never without one, never
+        // within LATENCY cycles of a reset.
+        assert (out_valid_o == (f_norst_q >= 4'd9 && f_iv_q[8]));
+        // The same for every stage of the valid pipeline (makes the
+        // induction hold in one step).
+        for (f_k = 0; f_k < LATENCY; f_k = f_k + 1)
+            assert (vld_q[f_k] == (f_iv_q[f_k] && {28'd0, f_norst_q} > f_k));
+        // The cosine reads a quarter turn (256 entries) after the sine.
+        assert (idx_c == idx_s + 10'd256);
+        // Read m takes the Park angle (m = 0) or instant m - 1, 4 + m cycles
+        // after the input (whenever one period is in flight).
+        if (f_alone && f_iv_q[3] && f_norst_q >= 4'd4) assert (a == phi);
+        if (f_alone && f_iv_q[4] && f_norst_q >= 4'd5) assert (a == ang[1]);
+        if (f_alone && f_iv_q[5] && f_norst_q >= 4'd6) assert (a == ang[2]);
+        if (f_alone && f_iv_q[6] && f_norst_q >= 4'd7) assert (a == ang[3]);
+    end
+
+    always @(posedge clk_i) begin
+        if (f_past_valid) begin
+            // Value m changes only in the cycle after its read, 6 + m
+            // cycles after the input: the outputs hold until the next one.
+            if (f_v0 != $past(f_v0))
+                assert (f_iv_q[5] && $past(f_norst_q) >= 4'd5);
+            if (f_v1 != $past(f_v1))
+                assert (f_iv_q[6] && $past(f_norst_q) >= 4'd6);
+            if (f_v2 != $past(f_v2))
+                assert (f_iv_q[7] && $past(f_norst_q) >= 4'd7);
+            if (f_v3 != $past(f_v3))
+                assert (f_iv_q[8] && $past(f_norst_q) >= 4'd8);
+        end
+    end
+`endif
 
     assign i_d_o     = i_d;
     assign i_q_o     = i_q;

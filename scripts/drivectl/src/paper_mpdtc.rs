@@ -8,6 +8,7 @@ use std::path::Path;
 
 mod experiments;
 mod metrics;
+mod pl_loop;
 mod plots;
 mod runs;
 
@@ -21,6 +22,10 @@ pub struct Args {
     /// Directory for CSV files and plots.
     #[arg(long)]
     pub out: Option<std::path::PathBuf>,
+    /// Instead: the PL's loop (front end + core models) at this control
+    /// rate, `64khz` or `1mhz`, on Figs. 10 and 11 against the slew bound.
+    #[arg(long)]
+    pub rate: Option<String>,
 }
 
 #[derive(clap::Args)]
@@ -31,6 +36,16 @@ pub struct BenchArgs {
 }
 
 pub fn run(a: Args) -> Result<()> {
+    if let Some(rate) = &a.rate {
+        let (name, rate) = pl_loop::parse_rate(rate)?;
+        let r = pl_loop::run(name, rate)?;
+        let text = if a.json {
+            serde_json::to_string(&r)? + "\n"
+        } else {
+            pl_loop::markdown(&r)
+        };
+        return print_stdout(&text);
+    }
     let r = experiments::all()?;
     if let Some(dir) = &a.out {
         std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;

@@ -11,7 +11,9 @@
 //!   in its module doc); [`observer`]: eqs. (14)-(16) and their stability
 //!   test; [`mpdtc_fixed`]: the bit-accurate model of the PL core;
 //!   [`mpdtc_ctrl`]: both as [`sim::Controller`]s; [`frontend_fixed`]: the
-//!   bit-accurate model of the PL front end (encoder, ADC -> core inputs).
+//!   bit-accurate model of the PL front end (encoder, ADC -> core inputs);
+//!   [`mpdtc_pl`]: both in one [`sim::Controller`] (the PL's autonomous
+//!   loop at any rate) and the inverter's slew bound.
 pub mod foc;
 pub mod frames;
 pub mod frontend_fixed;
@@ -19,6 +21,7 @@ pub mod measure;
 pub mod metrics;
 pub mod mpdtc_ctrl;
 pub mod mpdtc_fixed;
+pub mod mpdtc_pl;
 pub mod mpdtc_ref;
 #[cfg(test)]
 mod mpdtc_tests;

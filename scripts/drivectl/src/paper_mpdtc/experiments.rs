@@ -35,7 +35,7 @@ fn mpdtc_cfg(p: MpdtcParams) -> Result<MpdtcConfig> {
 /// Development aid: `MPDTC_TUNE="k_int_per_s=5000,cost_norm=euclidean"`
 /// overrides defaults of every MPDTC in the experiments (not for reports).
 /// An unknown key or a value that does not parse is an error.
-fn tuning_override(mut p: MpdtcParams) -> Result<MpdtcParams> {
+pub(super) fn tuning_override(mut p: MpdtcParams) -> Result<MpdtcParams> {
     use drive::pmsm::mpdtc_ref::CostNorm;
     let Ok(v) = std::env::var("MPDTC_TUNE") else {
         return Ok(p);
@@ -53,6 +53,8 @@ fn tuning_override(mut p: MpdtcParams) -> Result<MpdtcParams> {
         };
         match k {
             "k_int_per_s" => p.k_int_per_s = num()?,
+            "t_tol_nm" => p.t_tol_nm = num()?,
+            "p_weight" => p.p_weight = num()?,
             "int_limit_nm" => p.int_limit_nm = num()?,
             "obs_kp_v_per_a" => p.obs_kp_v_per_a = num()?,
             "obs_ki_per_s" => p.obs_ki_per_s = num()?,
@@ -72,7 +74,7 @@ fn tuning_override(mut p: MpdtcParams) -> Result<MpdtcParams> {
                 }
             }
             _ => anyhow::bail!(
-                "MPDTC_TUNE: unknown key {k:?} (k_int_per_s, int_limit_nm, obs_kp_v_per_a, \
+                "MPDTC_TUNE: unknown key {k:?} (k_int_per_s, t_tol_nm, p_weight, int_limit_nm, obs_kp_v_per_a, \
                  obs_ki_per_s, meas_age_periods, int_conditional, cost_norm)"
             ),
         }
