@@ -459,12 +459,13 @@ module mpdcc_core #(
     // ----------------------------------------------- the decision monitor
     // Latched on an accepted start (a start while busy is ignored, as the
     // design documents): s(k-1), the clamped n_use, |S|. The candidates
-    // are issued from clock 17 (16 clocks of common terms), n_use per clock
-    // while at least that many are left, the rest at the last issue clock
-    // f_lastclk; their results are back F_LAT clocks later, and done_o
-    // follows one clock after the last: G = f_lastclk - 16 issue clocks, so
-    // done_o comes at clock T = 16 + G + F_LAT + 1
-    // (drive::mpdcc::cycles::pipelined_core_cycles).
+    // are issued from clock F_CL + 1 = 21 (the explorers read the common
+    // terms as they become final), n_use per clock while at least that many
+    // are left, the rest at the last issue clock f_lastclk; their results
+    // are back F_LAT clocks later and leave the arg-min tree F_AM = 3 clocks
+    // after that, and done_o follows one clock after the last:
+    // G = f_lastclk - F_CL issue clocks, so done_o comes at clock
+    // T = F_CL + G + F_LAT + F_AM + 1 (drive::mpdcc::cycles::pipelined_core_cycles).
     wire f_start = start_i && !busy_q && !rst_i;
     reg        f_busy = 1'b0, f_done = 1'b0;
     reg [8:0]  f_sp = 9'd0;
