@@ -637,7 +637,7 @@ impl DriveOps for FwDrive {
 }
 
 /// Status polls per MPDCC decision: one PL cycle each on the simulated PL,
-/// more on the others; a decision takes at most 168 cycles at N = 2.
+/// more on the others; a decision takes at most 175 cycles at N = 2.
 const MPDCC_POLLS: u32 = 1000;
 
 /// The console's error for a failed MPDCC page access.

@@ -73,7 +73,7 @@ fn mpdcc_run_on_the_simulated_pl_is_the_host_model_loop() {
             kept + opt + dl
         )
     );
-    assert!(line("core_cycles:").ends_with("worst 166 (PL clock cycles)"));
+    assert!(line("core_cycles:").ends_with("worst 173 (PL clock cycles)"));
     assert!(
         (num(&r, "f_sw") - want.fsw_hz).abs() < 0.05,
         "{r:?} {want:?}"

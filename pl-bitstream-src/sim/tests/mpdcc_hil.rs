@@ -20,7 +20,7 @@ use rtl_sim::mpdcc_vectors::core;
 use rtl_sim::pl_top::PlTopSim;
 
 /// Status polls allowed per decision (2 PL cycles each; a decision takes at
-/// most 16 + 108 + 41 + 1 + 2 cycles at N = 2).
+/// most 20 + 108 + 41 + 3 + 1 + 2 cycles at N = 2).
 const MAX_POLLS: u32 = 200;
 
 /// The core on the register page of the Verilated `pl_top`.

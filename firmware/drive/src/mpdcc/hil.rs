@@ -150,7 +150,7 @@ mod tests {
 
     /// On the simulated PL the run is the FPGA-model loop: the same
     /// statistics (so the same decisions and trajectory), the cycle counts
-    /// of the pipelined core (at most 166 at N = 2, 216 candidates).
+    /// of the pipelined core (at most 173 at N = 2, 216 candidates).
     #[test]
     fn simulated_pl_run_is_the_model_loop() {
         let (p, f) = default_core().unwrap();
@@ -174,8 +174,10 @@ mod tests {
         assert_eq!(r.max_i_err_pu, want.max_i_err_pu);
         assert_eq!(r.decisions, 2 * want.steps);
         assert!(r.kinds[1] > 10 && r.kinds[0] > 10, "{r:?}");
-        assert_eq!(r.worst_cycles, 16 + 108 + 41 + 1);
-        assert!(r.mean_cycles > 59.0 && r.mean_cycles < 166.0, "{r:?}");
+        // Common terms 20, 108 issue cycles at N = 2, explorer 41, arg-min
+        // tree 3, the last fold 1.
+        assert_eq!(r.worst_cycles, 20 + 108 + 41 + 3 + 1);
+        assert!(r.mean_cycles > 59.0 && r.mean_cycles < 173.0, "{r:?}");
         assert_eq!(m.deadlocks().unwrap() as u64, r.kinds[2]);
     }
 

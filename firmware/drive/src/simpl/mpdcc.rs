@@ -277,9 +277,10 @@ mod tests {
                 | want.horizon_steps << 16
         );
         // The search time of the core: common terms, ceil(|S| / 2) issue
-        // cycles at N = 2, the explorer latency, the last comparison.
+        // cycles at N = 2, the explorer latency, the arg-min tree, the last
+        // fold.
         let n = candidates(x.s_prev).len() as u32;
-        assert_eq!(out.cycles & 0xFFFF, 16 + n.div_ceil(2) + 41 + 1);
+        assert_eq!(out.cycles & 0xFFFF, 20 + n.div_ceil(2) + 41 + 3 + 1);
         assert_eq!(out.cycles >> 16, want.candidates);
     }
 
