@@ -89,7 +89,9 @@ fn banner(con: &mut Uart, boot: &control::Boot) {
 fn run_console(con: &mut Uart) -> ! {
     let mut editor = LineEditor::new();
     let (mut lines, mut errors) = (0u32, 0u32);
+    let mut drive = control::FwDrive::new();
     loop {
+        drive.background();
         let Some(b) = next_byte() else { continue };
         let echo_to = *con;
         let Some(result) = editor.feed(b, &mut |e| echo_to.write_bytes(e)) else {
@@ -103,7 +105,7 @@ fn run_console(con: &mut Uart) -> ! {
                     Ok(cmd) => {
                         defmt::info!("console: {=str}", line);
                         let ctx = context(lines, errors);
-                        match console::execute(cmd, &ctx, &mut control::FwDrive, con) {
+                        match console::execute(cmd, &ctx, &mut drive, con) {
                             Ok(Action::Panic) => panic!("`debug panic` requested on the console"),
                             _ => true,
                         }

@@ -30,7 +30,7 @@ use drive::config::spi_nor::SpiNor;
 use drive::config::{store, Config};
 use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
 use drive::mpdcc::fpga::Inputs;
-use drive::mpdcc::hil::{self, HilError, HilReport};
+use drive::mpdcc::hil::{self, HilError, HilReport, Paced, PacedStatus};
 use drive::pl::capture::{CapSample, CapState, CapStatus, Trigger};
 use drive::pl::fault::Faults;
 use drive::pl::mpdcc::{Mpdcc, MpdccError};
@@ -376,8 +376,58 @@ impl State {
     }
 }
 
-/// The console's handle on the drive.
-pub struct FwDrive;
+/// The console's handle on the drive. `mode mpdcc`'s HIL loop lives here,
+/// in the main loop: its plant step can take several control periods (a
+/// transition matrix not in the plant's cache is a 9 x 9 matrix
+/// exponential), which the control interrupt must not wait for.
+pub struct FwDrive {
+    hil: Option<Paced>,
+    /// `Servo::periods` when the loop was last served.
+    hil_seen: u64,
+}
+
+impl FwDrive {
+    /// No HIL loop.
+    pub const fn new() -> Self {
+        Self {
+            hil: None,
+            hil_seen: 0,
+        }
+    }
+
+    /// Serves `mode mpdcc` from the main loop: one boundary of the loop
+    /// when control periods passed since the last one (several passed: the
+    /// plant waited, the loop still takes one decision). A stopped loop
+    /// stays stopped; `status` says why.
+    pub fn background(&mut self) {
+        let Some(h) = &mut self.hil else { return };
+        if h.status().stopped.is_some() {
+            return;
+        }
+        let Some(now) = console(|s| s.servo.periods()) else {
+            return;
+        };
+        if now == self.hil_seen {
+            return;
+        }
+        self.hil_seen = now;
+        // One critical section per register access: the plant step in
+        // between runs with the control interrupt enabled.
+        let _ = h.tick(&mut Mpdcc(Locked));
+    }
+}
+
+/// The register bus, one critical section per access.
+struct Locked;
+
+impl RegisterBus for Locked {
+    fn read(&mut self, addr: usize) -> Result<u32, BusError> {
+        console(|s| s.bus.read(addr)).unwrap_or(Err(BusError::Absent))
+    }
+    fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
+        console(|s| s.bus.write(addr, value)).unwrap_or(Err(BusError::Absent))
+    }
+}
 
 fn run<T>(f: impl FnOnce(&mut State) -> Result<T, ServoError>) -> Result<T, DriveError> {
     match console(f) {
@@ -397,7 +447,22 @@ impl DriveOps for FwDrive {
         console(|s| s.servo.mode()).unwrap_or(Mode::Off)
     }
     fn set_mode(&mut self, m: Mode) -> Result<(), DriveError> {
+        self.hil = None;
         run(|s| s.servo.set_mode(&mut s.bus, m))
+    }
+    fn set_mpdcc_mode(&mut self) -> Result<(), DriveError> {
+        self.hil = None;
+        run(|s| s.servo.set_mode(&mut s.bus, Mode::Off))?;
+        let (p, f) = hil::default_core().map_err(|_| DriveError::Unsupported)?;
+        console(|s| Mpdcc(&mut s.bus).load_coeffs(f.coeffs()))
+            .ok_or(DriveError::Absent)?
+            .map_err(page_error)?;
+        self.hil = Some(Paced::new(&p).map_err(|_| DriveError::Unsupported)?);
+        self.hil_seen = console(|s| s.servo.periods()).unwrap_or(0);
+        Ok(())
+    }
+    fn mpdcc_live(&mut self) -> Option<PacedStatus> {
+        self.hil.as_ref().map(Paced::status)
     }
     fn enable(&mut self) -> Result<(), DriveError> {
         run(|s| s.servo.enable(&mut s.bus))
@@ -458,7 +523,9 @@ impl DriveOps for FwDrive {
         Ok(())
     }
     fn status(&mut self) -> DriveStatus {
+        let mpdcc = self.mpdcc_live();
         console(|s| DriveStatus {
+            mpdcc,
             mode: s.servo.mode(),
             mpdtc_autonomous: !s.servo.config().mpdtc_ps_fed,
             gates_on: s.servo.gates_on(&mut s.bus).unwrap_or(false),
@@ -491,6 +558,7 @@ impl DriveOps for FwDrive {
             pl: PlKind::Absent,
             sim_time_scale: None,
             store: None,
+            mpdcc,
         })
     }
     fn bench(&mut self) -> Result<Bench, DriveError> {

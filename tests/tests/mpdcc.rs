@@ -109,3 +109,91 @@ fn mpdcc_run_on_the_simulated_pl_is_the_host_model_loop() {
     assert!(cmd(&mut s, "disable").is_ok());
     assert_eq!(cmd(&mut s, "mpdcc").lines, r.lines);
 }
+
+/// The rest of the line `key: ...`.
+fn rest<'a>(r: &'a Reply, key: &str) -> Option<&'a str> {
+    r.lines
+        .iter()
+        .find_map(|l| l.strip_prefix(key)?.strip_prefix(": "))
+}
+
+/// The host's FPGA-model loop, windowed as `mode mpdcc` windows it: one
+/// warm-up period, then f_sw and THD of each fundamental period.
+fn model_periods(n: usize) -> Vec<(f64, f64)> {
+    let (p, mut f) = hil::default_core().unwrap();
+    let mut st = closed_loop::Stepper::new(&p).unwrap();
+    let (warm, period) = (st.steps_in(1), st.steps_in(1));
+    let mut out = Vec::new();
+    while out.len() < n {
+        if !st.measuring() && st.step() >= warm {
+            st.measure(period);
+        }
+        let d = f.decide(&st.state()).unwrap();
+        if let Some(w) = st.apply(&d, None).unwrap() {
+            out.push((w.fsw_hz, w.thd_percent));
+        }
+    }
+    out
+}
+
+/// `mode mpdcc` on the simulated PL: the loop runs by itself, one decision
+/// per control period, and `status` reports each measured period as the
+/// host's model loop has it; the PMSM gates stay off, the PMSM drive's
+/// loop sees no overrun, and another mode ends the loop.
+#[test]
+fn mode_mpdcc_runs_the_hil_loop_paced_by_the_control_periods() {
+    let want = model_periods(hil::MAX_PERIODS as usize);
+    let mut s = boot();
+    let r = cmd(&mut s, "mode mpdcc");
+    assert!(r.is_ok(), "{r:?}");
+    assert_eq!(cmd(&mut s, "mode").lines, ["mode: mpdcc"]);
+    let t0 = Instant::now();
+    let st = loop {
+        let st = cmd(&mut s, "status");
+        let m = rest(&st, "mpdcc_period").unwrap_or_else(|| panic!("{st:?}"));
+        if !m.starts_with("none") {
+            break st;
+        }
+        assert!(t0.elapsed() < Duration::from_secs(300), "{st:?}");
+        std::thread::sleep(Duration::from_millis(500));
+    };
+    println!(
+        "{:#?}\n({:.1} s under QEMU)",
+        st.lines,
+        t0.elapsed().as_secs_f64()
+    );
+    let per = rest(&st, "mpdcc_period").unwrap();
+    let n: usize = per.split(' ').next().unwrap().parse().unwrap();
+    assert!((1..=want.len()).contains(&n), "{per}");
+    let (fsw, thd) = want[n - 1];
+    assert!(
+        per.contains(&format!("f_sw {fsw:.1} Hz, THD {thd:.2} %")),
+        "{per} against the model's period {n}: {fsw} Hz, {thd} %"
+    );
+    let lp = rest(&st, "mpdcc_loop").unwrap();
+    let decisions: u64 = lp.split(' ').next().unwrap().parse().unwrap();
+    assert!(decisions >= 1600, "{lp}");
+    assert!(
+        rest(&st, "mpdcc_cycles")
+            .unwrap()
+            .ends_with("worst 173 PL cycles"),
+        "{st:?}"
+    );
+    assert_eq!(rest(&st, "mpdcc_stopped"), None, "{st:?}");
+    assert_eq!(rest(&st, "gates"), Some("off (safe state)"), "{st:?}");
+    assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+    assert_eq!(field(&st, "overruns"), Some("0"), "{st:?}");
+    // The PMSM's gates and the page belong to the loop.
+    for line in ["enable", "mpdcc run 1"] {
+        let e = cmd(&mut s, line);
+        assert!(
+            matches!(&e.fin, Final::Err { code, .. } if code == "mpdcc-mode"),
+            "{line}: {e:?}"
+        );
+    }
+    // Another mode ends it.
+    assert!(cmd(&mut s, "mode off").is_ok());
+    let st = cmd(&mut s, "status");
+    assert_eq!(field(&st, "mode"), Some("off"), "{st:?}");
+    assert_eq!(rest(&st, "mpdcc_loop"), None, "{st:?}");
+}

@@ -3,7 +3,7 @@
 //! The table [`COMMANDS`] is the single source of `help` and of the parser's
 //! list of names, so a command cannot exist without its help line.
 
-use super::drive::{self, DriveOps};
+use super::drive::{self, DriveError, DriveOps};
 use super::{write_err, ErrorCode};
 use crate::config::{self, Config};
 use crate::pl::capture::{self as pl_capture, CapState, Channel, Trigger};
@@ -41,8 +41,11 @@ pub const COMMANDS: &[Spec] = &[
     },
     Spec {
         name: "mode",
-        args: "[off|foc|mpdtc]",
-        help: "print or set the control mode; any change turns the gates off",
+        args: "[off|foc|mpdtc|mpdcc]",
+        help: "print or set the control mode; any change turns the gates off; `mpdcc` runs \
+               paper 001's hardware-in-the-loop arrangement continuously (the IM + 5L-ANPC \
+               plant on the PS feeds the PL's MPDCC core one decision per control period; \
+               progress in `status`), the PMSM gates stay off",
     },
     Spec {
         name: "enable",
@@ -115,6 +118,26 @@ pub const COMMANDS: &[Spec] = &[
     },
 ];
 
+/// What `mode` selects: a PL mode of the PMSM drive, or paper 001's HIL
+/// loop (the PL in mode off, the MPDCC page driven from the PS).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ModeSel {
+    /// `off`, `foc`, `mpdtc`.
+    Pl(Mode),
+    /// `mpdcc`.
+    Mpdcc,
+}
+
+impl ModeSel {
+    /// Parses a console name.
+    pub fn from_name(s: &str) -> Option<Self> {
+        match s {
+            "mpdcc" => Some(ModeSel::Mpdcc),
+            _ => Mode::from_name(s).map(ModeSel::Pl),
+        }
+    }
+}
+
 /// A parsed command line.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Command<'a> {
@@ -127,7 +150,7 @@ pub enum Command<'a> {
     /// `debug panic`.
     DebugPanic,
     /// `mode [m]`.
-    Mode(Option<Mode>),
+    Mode(Option<ModeSel>),
     /// `enable`.
     Enable,
     /// `disable`.
@@ -412,13 +435,15 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
                 "expected `debug panic`, `debug stall <ms>`, `debug bench` or `debug fault <f>`",
             )),
         },
-        "mode" => match args.as_slice() {
-            [] => Ok(Command::Mode(None)),
-            [m] => Mode::from_name(m)
-                .map(|m| Command::Mode(Some(m)))
-                .ok_or(ParseError::BadArgs("mode", "expected off, foc or mpdtc")),
-            _ => Err(ParseError::BadArgs("mode", "takes at most one argument")),
-        },
+        "mode" => {
+            match args.as_slice() {
+                [] => Ok(Command::Mode(None)),
+                [m] => ModeSel::from_name(m).map(|m| Command::Mode(Some(m))).ok_or(
+                    ParseError::BadArgs("mode", "expected off, foc, mpdtc or mpdcc"),
+                ),
+                _ => Err(ParseError::BadArgs("mode", "takes at most one argument")),
+            }
+        }
         "enable" => no_args(Command::Enable, "enable"),
         "disable" => no_args(Command::Disable, "disable"),
         "torque" => match args.as_slice() {
@@ -571,6 +596,21 @@ pub fn execute<W: Write>(
             }
         };
     }
+    // The PMSM's gates and the MPDCC page belong to the HIL loop in
+    // `mode mpdcc`.
+    let pmsm_or_page = match cmd {
+        Command::Enable => Some("enable"),
+        Command::Step(..) => Some("step"),
+        Command::Sweep { .. } => Some("sweep"),
+        Command::Mpdcc(Some(_)) => Some("mpdcc"),
+        _ => None,
+    };
+    if let Some(name) = pmsm_or_page {
+        if drv.mpdcc_live().is_some() {
+            drive::write_error(out, name, DriveError::MpdccMode)?;
+            return Ok(Action::None);
+        }
+    }
     match cmd {
         Command::Help(None) => {
             out.write_str("commands (arguments in [], units in brackets):\r\n")?;
@@ -615,10 +655,20 @@ pub fn execute<W: Write>(
             drive::write_status(out, &drv.status())?;
         }
         Command::DebugPanic => return Ok(Action::Panic),
-        Command::Mode(None) => write!(out, "mode: {}\r\n", drv.mode().name())?,
-        Command::Mode(Some(m)) => {
+        Command::Mode(None) => match drv.mpdcc_live() {
+            Some(_) => out.write_str("mode: mpdcc\r\n")?,
+            None => write!(out, "mode: {}\r\n", drv.mode().name())?,
+        },
+        Command::Mode(Some(ModeSel::Pl(m))) => {
             try_drive!("mode", drv.set_mode(m));
             write!(out, "mode: {}\r\ngates: off (safe state)\r\n", m.name())?;
+        }
+        Command::Mode(Some(ModeSel::Mpdcc)) => {
+            try_drive!("mode", drv.set_mpdcc_mode());
+            out.write_str(
+                "mode: mpdcc\r\ngates: off (safe state)\r\nmpdcc_loop: started, one decision \
+                 per control period (IM + 5L-ANPC plant on the PS, core on the PL; `status`)\r\n",
+            )?;
         }
         Command::Enable => {
             try_drive!("enable", drv.enable());
@@ -1056,6 +1106,8 @@ mod tests {
         servo: Servo,
         pl: FakePl,
         stalled_ms: u32,
+        /// `mode mpdcc`'s loop (its progress set by hand).
+        hil: Option<crate::mpdcc::hil::PacedStatus>,
     }
 
     impl TestDrive {
@@ -1067,6 +1119,7 @@ mod tests {
                 servo,
                 pl,
                 stalled_ms: 0,
+                hil: None,
             }
         }
     }
@@ -1076,7 +1129,17 @@ mod tests {
             self.servo.mode()
         }
         fn set_mode(&mut self, m: Mode) -> Result<(), DriveError> {
-            Ok(self.servo.set_mode(&mut self.pl, m)?)
+            self.servo.set_mode(&mut self.pl, m)?;
+            self.hil = None;
+            Ok(())
+        }
+        fn set_mpdcc_mode(&mut self) -> Result<(), DriveError> {
+            self.servo.set_mode(&mut self.pl, Mode::Off)?;
+            self.hil = Some(Default::default());
+            Ok(())
+        }
+        fn mpdcc_live(&mut self) -> Option<crate::mpdcc::hil::PacedStatus> {
+            self.hil
         }
         fn enable(&mut self) -> Result<(), DriveError> {
             Ok(self.servo.enable(&mut self.pl)?)
@@ -1124,6 +1187,7 @@ mod tests {
                 pl: PlKind::Simulated,
                 sim_time_scale: Some(4.0),
                 store: None,
+                mpdcc: self.hil,
             }
         }
         fn bench(&mut self) -> Result<Bench, DriveError> {
@@ -1198,6 +1262,64 @@ mod tests {
         assert_eq!(
             reply_on(&mut d, "disable"),
             "gates: off (safe state)\r\nOK\r\n"
+        );
+    }
+
+    /// `mode mpdcc`: the PMSM gates go off and stay off, the MPDCC page
+    /// belongs to the loop, `status` shows its progress; another mode ends it.
+    #[test]
+    fn mpdcc_mode_owns_the_page_and_keeps_the_gates_off() {
+        let mut d = TestDrive::new();
+        assert!(reply_on(&mut d, "mode foc").ends_with("OK\r\n"));
+        assert_eq!(reply_on(&mut d, "enable"), "gates: on\r\nOK\r\n");
+        let r = reply_on(&mut d, "mode mpdcc");
+        assert!(
+            r.starts_with("mode: mpdcc\r\ngates: off (safe state)\r\nmpdcc_loop: started"),
+            "{r}"
+        );
+        assert!(!d.servo.gates_on(&mut d.pl).unwrap());
+        assert_eq!(d.servo.mode(), Mode::Off);
+        assert_eq!(reply_on(&mut d, "mode"), "mode: mpdcc\r\nOK\r\n");
+        for (line, name) in [
+            ("enable", "enable"),
+            ("step 0.2", "step"),
+            ("sweep 10 100 0.1", "sweep"),
+            ("mpdcc run", "mpdcc"),
+        ] {
+            let r = reply_on(&mut d, line);
+            assert!(
+                r.starts_with(&format!("ERR mpdcc-mode {name}: ")),
+                "{line}: {r}"
+            );
+            assert_one_final_line(&r);
+        }
+        assert!(!d.servo.gates_on(&mut d.pl).unwrap());
+        let mut h = crate::mpdcc::hil::PacedStatus::default();
+        h.report.decisions = 1200;
+        h.report.kinds = [900, 290, 10];
+        h.report.mean_cycles = 99.04;
+        h.report.worst_cycles = 173;
+        h.late = 2;
+        h.plant_time_s = 0.03;
+        d.hil = Some(h);
+        let st = reply_on(&mut d, "status");
+        assert!(st.contains("\r\nmode: mpdcc\r\nmpdcc_loop: 1200 decisions (kept 900, optimal 290, deadlock 10), 2 late, plant time 30.000 ms\r\nmpdcc_cycles: mean 99.0, worst 173 PL cycles\r\nmpdcc_period: none measured yet"), "{st}");
+        h.report.periods = 3;
+        h.report.fsw_hz = 251.25;
+        h.report.thd_percent = 4.567;
+        h.report.max_i_err_pu = 0.12345;
+        h.stopped = Some(crate::mpdcc::hil::HilError::Page(
+            crate::pl::mpdcc::MpdccError::Timeout,
+        ));
+        d.hil = Some(h);
+        let st = reply_on(&mut d, "status");
+        assert!(st.contains("mpdcc_period: 3 measured; the last: f_sw 251.2 Hz, THD 4.57 %, max current error 0.1235 pu\r\nmpdcc_stopped: MPDCC page: "), "{st}");
+        assert!(reply_on(&mut d, "mode off").ends_with("OK\r\n"));
+        assert_eq!(reply_on(&mut d, "mode"), "mode: off\r\nOK\r\n");
+        let st = reply_on(&mut d, "status");
+        assert!(
+            st.contains("\r\nmode: off\r\n") && !st.contains("mpdcc"),
+            "{st}"
         );
     }
 

@@ -2,7 +2,7 @@
 //! ([`DriveOps`]) and how replies and errors are written.
 use super::{write_err, ErrorCode};
 use crate::config::store::SlotState;
-use crate::mpdcc::hil::HilReport;
+use crate::mpdcc::hil::{HilError, HilReport, PacedStatus};
 use crate::pl::capture::{CapSample, CapStatus, Trigger};
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
@@ -61,6 +61,8 @@ pub struct DriveStatus {
     pub sim_time_scale: Option<f64>,
     /// The configuration store (`None`: no flash access here).
     pub store: Option<StoreStatus>,
+    /// `mode mpdcc`: the paced HIL loop's progress (`None` in other modes).
+    pub mpdcc: Option<PacedStatus>,
 }
 
 /// Guest instructions of the control code, measured by `debug bench`.
@@ -110,6 +112,9 @@ pub enum DriveError {
     Unsupported,
     /// The configuration flash did not answer as expected.
     Flash,
+    /// Refused in `mode mpdcc` (the HIL loop uses the MPDCC page, the PMSM
+    /// gates stay off).
+    MpdccMode,
 }
 
 impl From<ServoError> for DriveError {
@@ -204,6 +209,15 @@ pub trait DriveOps {
     fn mpdcc_report(&mut self) -> Option<HilReport> {
         None
     }
+    /// `mode mpdcc`: the PMSM gates off and the PL in mode off, then the
+    /// HIL loop paced by the control periods ([`crate::mpdcc::hil::Paced`]).
+    fn set_mpdcc_mode(&mut self) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// The paced HIL loop's progress while `mode mpdcc` is active.
+    fn mpdcc_live(&mut self) -> Option<PacedStatus> {
+        None
+    }
 }
 
 /// Writes the final `ERR` line of a failed drive command.
@@ -286,6 +300,61 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
             ErrorCode::FlashError,
             format_args!("{cmd}: the configuration flash failed (nothing loaded or changed)"),
         ),
+        DriveError::MpdccMode => write_err(
+            out,
+            ErrorCode::MpdccMode,
+            format_args!(
+                "{cmd}: refused in mode mpdcc (its HIL loop uses the MPDCC page, the PMSM \
+                 gates stay off; `mode off`, `mode foc` or `mode mpdtc` first)"
+            ),
+        ),
+    }
+}
+
+/// The `mode mpdcc` lines of `status`: the paced HIL loop's progress.
+pub fn write_paced<W: Write>(out: &mut W, h: &PacedStatus) -> fmt::Result {
+    let r = &h.report;
+    write!(
+        out,
+        "mpdcc_loop: {} decisions (kept {}, optimal {}, deadlock {}), {} late, plant time \
+         {:.3} ms\r\n",
+        r.decisions,
+        r.kinds[0],
+        r.kinds[1],
+        r.kinds[2],
+        h.late,
+        h.plant_time_s * 1e3
+    )?;
+    write!(
+        out,
+        "mpdcc_cycles: mean {:.1}, worst {} PL cycles\r\n",
+        r.mean_cycles, r.worst_cycles
+    )?;
+    if r.periods == 0 {
+        out.write_str("mpdcc_period: none measured yet (the first period is the warm-up)\r\n")?;
+    } else {
+        write!(
+            out,
+            "mpdcc_period: {} measured; the last: f_sw {:.1} Hz, THD {:.2} %, max current \
+             error {:.4} pu\r\n",
+            r.periods, r.fsw_hz, r.thd_percent, r.max_i_err_pu
+        )?;
+    }
+    if let Some(e) = h.stopped {
+        out.write_str("mpdcc_stopped: ")?;
+        write_hil_error(out, e)?;
+        out.write_str(" (`mode mpdcc` restarts it)\r\n")?;
+    }
+    Ok(())
+}
+
+/// Why the HIL loop stopped, in words.
+fn write_hil_error<W: Write>(out: &mut W, e: HilError) -> fmt::Result {
+    match e {
+        HilError::Periods => out.write_str("periods out of range"),
+        HilError::Core(e) => write!(out, "the core's constants: {e:?}"),
+        HilError::Page(e) => write!(out, "MPDCC page: {e}"),
+        HilError::Loop(e) => write!(out, "plant: {e}"),
     }
 }
 
@@ -314,7 +383,13 @@ pub fn write_mpdcc<W: Write>(out: &mut W, r: &HilReport) -> fmt::Result {
 
 /// The drive's `status` lines.
 pub fn write_status<W: Write>(out: &mut W, s: &DriveStatus) -> fmt::Result {
-    write!(out, "mode: {}\r\n", s.mode.name())?;
+    match &s.mpdcc {
+        Some(h) => {
+            out.write_str("mode: mpdcc\r\n")?;
+            write_paced(out, h)?;
+        }
+        None => write!(out, "mode: {}\r\n", s.mode.name())?,
+    }
     let path = if s.mpdtc_autonomous {
         "autonomous (PL front end, PS writes the torque reference)"
     } else {

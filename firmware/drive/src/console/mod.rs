@@ -55,6 +55,8 @@ pub enum ErrorCode {
     GatesOn,
     /// The configuration flash failed.
     FlashError,
+    /// A PMSM or page command while `mode mpdcc` runs the MPDCC HIL loop.
+    MpdccMode,
 }
 
 impl ErrorCode {
@@ -67,6 +69,7 @@ impl ErrorCode {
             ErrorCode::BadEncoding => "bad-encoding",
             ErrorCode::BadChar => "bad-char",
             ErrorCode::ModeOff => "mode-off",
+            ErrorCode::MpdccMode => "mpdcc-mode",
             ErrorCode::FaultLatched => "fault-latched",
             ErrorCode::GatesOff => "gates-off",
             ErrorCode::PlAbsent => "pl-absent",

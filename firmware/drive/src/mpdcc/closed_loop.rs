@@ -15,7 +15,7 @@
 #![allow(clippy::needless_range_loop)] // index loops mirror the matrix equations
 
 use super::anpc;
-use super::controller::{CtrlState, DecisionKind, MpdccController, StateError};
+use super::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
 use super::machine::{self, inv_clarke};
 use super::params::{DriveParams, ParamError};
 use super::plant::{Plant, PlantState};
@@ -136,6 +136,207 @@ impl LoopResult {
     }
 }
 
+/// The plant in closed loop, one step at a time: [`Stepper::state`] is
+/// what the controller sees at step `k`, [`Stepper::apply`] takes its
+/// decision and advances the plant by `T_s`. Statistics are taken over a
+/// measurement window ([`Stepper::measure`]); [`run`] is one warm-up and
+/// one window, the console's paced HIL loop a window per fundamental period.
+pub struct Stepper {
+    plant: Plant,
+    ts_s: f64,
+    i_ref_amplitude_pu: f64,
+    omega_s_pu: f64,
+    omega_r_pu: f64,
+    dth: f64,
+    bounds: super::controller::Bounds,
+    z: PlantState,
+    s_prev: [u8; 3],
+    k: u64,
+    max_level_jump: u8,
+    win: Option<Window>,
+}
+
+/// The statistics of one measurement window.
+struct Window {
+    end: u64,
+    r: LoopResult,
+    thd: ThdAccumulator,
+    turn_ons: u64,
+}
+
+impl Stepper {
+    /// The plant in the machine's sinusoidal steady state for the
+    /// operating point's reference, step 0, no window.
+    pub fn new(p: &DriveParams) -> Result<Self, LoopError> {
+        p.validate()?;
+        let op = p.operating_point;
+        let i_ref0 = [op.i_ref_amplitude_pu, 0.0];
+        let psi = machine::steady_state_flux(&p.machine, i_ref0, op.omega_s_pu, op.omega_r_pu);
+        Ok(Self {
+            plant: Plant::new(p)?,
+            ts_s: p.controller.ts_s,
+            i_ref_amplitude_pu: op.i_ref_amplitude_pu,
+            omega_s_pu: op.omega_s_pu,
+            omega_r_pu: op.omega_r_pu,
+            dth: op.omega_s_pu * p.controller.ts_pu(&p.machine),
+            bounds: super::controller::Bounds::new(&p.controller, &p.inverter),
+            z: PlantState {
+                x_m: [i_ref0[0], i_ref0[1], psi[0], psi[1]],
+                v_n_pu: 0.0,
+                v_ph_pu: [p.inverter.v_ph_ref_pu(); 3],
+            },
+            s_prev: [4; 3],
+            k: 0,
+            max_level_jump: 0,
+            win: None,
+        })
+    }
+
+    /// Steps in `periods` fundamental periods (rounded).
+    pub fn steps_in(&self, periods: u32) -> u64 {
+        libm::round(periods as f64 * 2.0 * core::f64::consts::PI / self.dth) as u64
+    }
+
+    /// `T_s`, s.
+    pub fn ts_s(&self) -> f64 {
+        self.ts_s
+    }
+
+    /// Steps applied so far.
+    pub fn step(&self) -> u64 {
+        self.k
+    }
+
+    /// Whether a measurement window is open.
+    pub fn measuring(&self) -> bool {
+        self.win.is_some()
+    }
+
+    /// Opens a window of `steps` steps from the next one (statistics of an
+    /// open window are dropped).
+    pub fn measure(&mut self, steps: u64) {
+        self.win = Some(Window {
+            end: self.k + steps,
+            r: LoopResult::default(),
+            thd: ThdAccumulator::new(self.dth),
+            turn_ons: 0,
+        });
+    }
+
+    fn i_ref(&self) -> [f64; 2] {
+        let th = self.dth * self.k as f64;
+        [
+            self.i_ref_amplitude_pu * libm::cos(th),
+            self.i_ref_amplitude_pu * libm::sin(th),
+        ]
+    }
+
+    /// What the controller sees at this step (ideal measurement).
+    pub fn state(&self) -> CtrlState {
+        CtrlState {
+            x_m: self.z.x_m,
+            v_n_pu: self.z.v_n_pu,
+            v_ph_pu: self.z.v_ph_pu,
+            omega_r_pu: self.omega_r_pu,
+            omega_s_pu: self.omega_s_pu,
+            i_ref_ab_pu: self.i_ref(),
+            s_prev: self.s_prev,
+        }
+    }
+
+    /// This step's sample with `s` applied.
+    pub fn trace_sample(&self, s: [u8; 3]) -> TraceSample {
+        TraceSample {
+            t_s: self.k as f64 * self.ts_s,
+            i_abc_pu: inv_clarke([self.z.x_m[0], self.z.x_m[1]]),
+            i_ref_abc_pu: inv_clarke(self.i_ref()),
+            v_n_pu: self.z.v_n_pu,
+            v_ph_pu: self.z.v_ph_pu,
+            s,
+        }
+    }
+
+    /// Applies the controller's decision `d` (and compares the shadow's
+    /// `shadow`, if any) and advances the plant by `T_s`. Returns the
+    /// window's statistics when this step closes it. An inadmissible `d`
+    /// changes nothing.
+    pub fn apply(
+        &mut self,
+        d: &Decision,
+        shadow: Option<&Decision>,
+    ) -> Result<Option<LoopResult>, LoopError> {
+        if !anpc::admissible(self.s_prev, d.s) {
+            return Err(LoopError::Inadmissible);
+        }
+        for x in 0..3 {
+            let jump = (anpc::TABLE[self.s_prev[x] as usize].level
+                - anpc::TABLE[d.s[x] as usize].level)
+                .unsigned_abs();
+            self.max_level_jump = self.max_level_jump.max(jump);
+        }
+        let i_abc = inv_clarke([self.z.x_m[0], self.z.x_m[1]]);
+        let i_ref_abc = inv_clarke(self.i_ref());
+        let (z, s_prev, bounds) = (&self.z, self.s_prev, &self.bounds);
+        let closed = match &mut self.win {
+            Some(w) => {
+                let r = &mut w.r;
+                if let Some(ds) = shadow {
+                    if ds.s != d.s {
+                        r.shadow_mismatches += 1;
+                        if d.kind != DecisionKind::Kept {
+                            r.shadow_mismatches_switching += 1;
+                        }
+                        if (d.kind == DecisionKind::Kept) != (ds.kind == DecisionKind::Kept) {
+                            r.shadow_mismatches_lazy += 1;
+                        }
+                    }
+                }
+                r.steps += 1;
+                w.thd.push(i_abc);
+                w.turn_ons += anpc::switch_transitions(s_prev, d.s) as u64;
+                match d.kind {
+                    DecisionKind::Kept => {}
+                    DecisionKind::Optimal => r.switching_decisions += 1,
+                    DecisionKind::Deadlock => {
+                        r.switching_decisions += 1;
+                        r.deadlocks += 1;
+                    }
+                }
+                let e: [f64; 3] = core::array::from_fn(|x| i_ref_abc[x] - i_abc[x]);
+                for x in 0..3 {
+                    r.max_i_err_pu = r.max_i_err_pu.max(libm::fabs(e[x]));
+                    r.max_v_ph_dev_pu = r
+                        .max_v_ph_dev_pu
+                        .max(libm::fabs(z.v_ph_pu[x] - bounds.v_ph_ref));
+                }
+                r.max_abs_v_n_pu = r.max_abs_v_n_pu.max(libm::fabs(z.v_n_pu));
+                // Tiny tolerance: the plant and the controller model differ by ~1e-7 pu.
+                if bounds.worst_excess(e, z.v_n_pu, z.v_ph_pu) > 1e-6 {
+                    r.steps_outside_bounds += 1;
+                }
+                self.k + 1 == w.end
+            }
+            None => false,
+        };
+        self.z = self.plant.step(&self.z, d.s);
+        self.s_prev = d.s;
+        self.k += 1;
+        if !closed {
+            return Ok(None);
+        }
+        let Some(w) = self.win.take() else {
+            return Ok(None);
+        };
+        let mut r = w.r;
+        r.max_level_jump = self.max_level_jump;
+        r.fsw_hz = fsw_per_device_hz(w.turn_ons, r.steps as f64 * self.ts_s);
+        r.thd_percent = w.thd.thd_percent();
+        let f = w.thd.fundamental_rms();
+        r.i1_rms_pu = (f[0] + f[1] + f[2]) / 3.0;
+        Ok(Some(r))
+    }
+}
+
 /// Runs the loop. `shadow` (optional) is fed the same states; `trace` is
 /// called every step (warm-up included).
 pub fn run(
@@ -145,105 +346,36 @@ pub fn run(
     mut shadow: Option<&mut dyn MpdccController>,
     trace: &mut dyn FnMut(&TraceSample),
 ) -> Result<LoopResult, LoopError> {
-    p.validate()?;
-    let mut plant = Plant::new(p)?;
-    let op = p.operating_point;
-    let ts_pu = p.controller.ts_pu(&p.machine);
-    let dth = op.omega_s_pu * ts_pu;
-    let steps_per_period = 2.0 * core::f64::consts::PI / dth;
-    let warm = libm::round(cfg.warmup_periods as f64 * steps_per_period) as u64;
-    let meas = libm::round(cfg.measure_periods as f64 * steps_per_period) as u64;
-    let i_ref0 = [op.i_ref_amplitude_pu, 0.0];
-    let psi = machine::steady_state_flux(&p.machine, i_ref0, op.omega_s_pu, op.omega_r_pu);
-    let mut z = PlantState {
-        x_m: [i_ref0[0], i_ref0[1], psi[0], psi[1]],
-        v_n_pu: 0.0,
-        v_ph_pu: [p.inverter.v_ph_ref_pu(); 3],
-    };
-    let bounds = super::controller::Bounds::new(&p.controller, &p.inverter);
-    let mut s_prev = [4u8; 3];
-    let mut thd = ThdAccumulator::new(dth);
-    let mut r = LoopResult::default();
-    let mut turn_ons = 0u64;
-    for k in 0..(warm + meas) {
-        let th = dth * k as f64;
-        let i_ref = [
-            op.i_ref_amplitude_pu * libm::cos(th),
-            op.i_ref_amplitude_pu * libm::sin(th),
-        ];
-        let st = CtrlState {
-            x_m: z.x_m,
-            v_n_pu: z.v_n_pu,
-            v_ph_pu: z.v_ph_pu,
-            omega_r_pu: op.omega_r_pu,
-            omega_s_pu: op.omega_s_pu,
-            i_ref_ab_pu: i_ref,
-            s_prev,
-        };
-        let d = ctrl.decide(&st)?;
-        if !anpc::admissible(s_prev, d.s) {
-            return Err(LoopError::Inadmissible);
+    let mut st = Stepper::new(p)?;
+    let warm = st.steps_in(cfg.warmup_periods);
+    let meas = st.steps_in(cfg.measure_periods);
+    if meas == 0 {
+        // An empty window: nothing measured (as a whole-run statistic).
+        for _ in 0..warm {
+            let d = ctrl.decide(&st.state())?;
+            trace(&st.trace_sample(d.s));
+            st.apply(&d, None)?;
         }
-        for x in 0..3 {
-            let jump = (anpc::TABLE[s_prev[x] as usize].level - anpc::TABLE[d.s[x] as usize].level)
-                .unsigned_abs();
-            r.max_level_jump = r.max_level_jump.max(jump);
-        }
-        let i_abc = inv_clarke([z.x_m[0], z.x_m[1]]);
-        let i_ref_abc = inv_clarke(i_ref);
-        trace(&TraceSample {
-            t_s: k as f64 * p.controller.ts_s,
-            i_abc_pu: i_abc,
-            i_ref_abc_pu: i_ref_abc,
-            v_n_pu: z.v_n_pu,
-            v_ph_pu: z.v_ph_pu,
-            s: d.s,
+        return Ok(LoopResult {
+            max_level_jump: st.max_level_jump,
+            ..LoopResult::default()
         });
-        if k >= warm {
-            if let Some(sh) = shadow.as_deref_mut() {
-                let ds = sh.decide(&st)?;
-                if ds.s != d.s {
-                    r.shadow_mismatches += 1;
-                    if d.kind != DecisionKind::Kept {
-                        r.shadow_mismatches_switching += 1;
-                    }
-                    if (d.kind == DecisionKind::Kept) != (ds.kind == DecisionKind::Kept) {
-                        r.shadow_mismatches_lazy += 1;
-                    }
-                }
-            }
-            r.steps += 1;
-            thd.push(i_abc);
-            turn_ons += anpc::switch_transitions(s_prev, d.s) as u64;
-            match d.kind {
-                DecisionKind::Kept => {}
-                DecisionKind::Optimal => r.switching_decisions += 1,
-                DecisionKind::Deadlock => {
-                    r.switching_decisions += 1;
-                    r.deadlocks += 1;
-                }
-            }
-            let e: [f64; 3] = core::array::from_fn(|x| i_ref_abc[x] - i_abc[x]);
-            for x in 0..3 {
-                r.max_i_err_pu = r.max_i_err_pu.max(libm::fabs(e[x]));
-                r.max_v_ph_dev_pu = r
-                    .max_v_ph_dev_pu
-                    .max(libm::fabs(z.v_ph_pu[x] - bounds.v_ph_ref));
-            }
-            r.max_abs_v_n_pu = r.max_abs_v_n_pu.max(libm::fabs(z.v_n_pu));
-            // Tiny tolerance: the plant and the controller model differ by ~1e-7 pu.
-            if bounds.worst_excess(e, z.v_n_pu, z.v_ph_pu) > 1e-6 {
-                r.steps_outside_bounds += 1;
-            }
-        }
-        z = plant.step(&z, d.s);
-        s_prev = d.s;
     }
-    r.fsw_hz = fsw_per_device_hz(turn_ons, meas as f64 * p.controller.ts_s);
-    r.thd_percent = thd.thd_percent();
-    let f = thd.fundamental_rms();
-    r.i1_rms_pu = (f[0] + f[1] + f[2]) / 3.0;
-    Ok(r)
+    loop {
+        if st.step() == warm {
+            st.measure(meas);
+        }
+        let x = st.state();
+        let d = ctrl.decide(&x)?;
+        trace(&st.trace_sample(d.s));
+        let ds = match (st.measuring(), shadow.as_deref_mut()) {
+            (true, Some(sh)) => Some(sh.decide(&x)?),
+            _ => None,
+        };
+        if let Some(r) = st.apply(&d, ds.as_ref())? {
+            return Ok(r);
+        }
+    }
 }
 
 #[cfg(test)]

@@ -8,11 +8,12 @@
 //! The page is reached through a caller's function, so the same run works
 //! on the simulated PL, the co-simulated RTL or a bitstream; its decisions
 //! must be the FPGA model's ([`super::fpga::FpgaMpdcc`]) one for one.
-use super::closed_loop::{self, LoopConfig, LoopError};
+use super::closed_loop::{self, LoopConfig, LoopError, Stepper};
 use super::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
 use super::fpga::{FpgaConfig, FpgaError, FpgaMpdcc, Inputs};
 use super::params::DriveParams;
-use crate::pl::mpdcc::{MpdccError, PageDecision};
+use crate::bus::RegisterBus;
+use crate::pl::mpdcc::{Mpdcc, MpdccError, PageDecision};
 
 /// Most measured periods of one run.
 pub const MAX_PERIODS: u32 = 20;
@@ -75,11 +76,7 @@ impl MpdccController for Page<'_> {
         match (self.decide)(&x) {
             Ok(d) => {
                 self.r.decisions += 1;
-                self.r.kinds[match d.decision.kind {
-                    DecisionKind::Kept => 0,
-                    DecisionKind::Optimal => 1,
-                    DecisionKind::Deadlock => 2,
-                }] += 1;
+                self.r.kinds[kind_index(d.decision.kind)] += 1;
                 self.sum_cycles += u64::from(d.cycles);
                 self.r.worst_cycles = self.r.worst_cycles.max(d.cycles);
                 Ok(d.decision)
@@ -129,13 +126,134 @@ pub fn run(
     Ok(r)
 }
 
+/// Control boundaries in a row at which a started decision may still be
+/// running before the paced loop stops with a timeout (the core needs at
+/// most 281 PL cycles at N = 1, a control period is 1,564).
+pub const MAX_LATE_IN_A_ROW: u32 = 64;
+
+/// What the paced loop has done (`status` in `mode mpdcc`).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PacedStatus {
+    /// Decisions, kinds, cycles since the mode started; `periods` counts
+    /// the measured fundamental periods, `fsw_hz`, `thd_percent` and
+    /// `max_i_err_pu` are the last one's (0 before the first).
+    pub report: HilReport,
+    /// Control boundaries at which the running decision was not done yet
+    /// (the plant waited a boundary for it).
+    pub late: u64,
+    /// Plant time simulated, s (one `T_s` per decision).
+    pub plant_time_s: f64,
+    /// Why the loop stopped, if it did.
+    pub stopped: Option<HilError>,
+}
+
+/// The HIL loop paced by the drive's control periods (`mode mpdcc`): at
+/// each boundary the decision started at the last one is read, applied to
+/// the plant for one `T_s`, and the next state starts the next decision.
+/// The plant's time and the core's decisions are those of [`run`] (one
+/// warm-up period, then one measured window per fundamental period); only
+/// the wall-clock pacing differs.
+pub struct Paced {
+    stepper: Stepper,
+    warm: u64,
+    period: u64,
+    started: bool,
+    late_in_a_row: u32,
+    sum_cycles: u64,
+    st: PacedStatus,
+}
+
+impl Paced {
+    /// The default drive's plant at its steady state; the page must hold
+    /// the core's constants ([`default_core`]).
+    pub fn new(p: &DriveParams) -> Result<Self, HilError> {
+        let stepper = Stepper::new(p).map_err(HilError::Loop)?;
+        Ok(Self {
+            warm: stepper.steps_in(1),
+            period: stepper.steps_in(1).max(1),
+            stepper,
+            started: false,
+            late_in_a_row: 0,
+            sum_cycles: 0,
+            st: PacedStatus::default(),
+        })
+    }
+
+    /// Progress so far.
+    pub fn status(&self) -> PacedStatus {
+        self.st
+    }
+
+    /// One control boundary. After an error the loop stays stopped (the
+    /// error is in [`Paced::status`]) and touches the page no more.
+    pub fn tick<B: RegisterBus>(&mut self, m: &mut Mpdcc<B>) -> Result<(), HilError> {
+        if let Some(e) = self.st.stopped {
+            return Err(e);
+        }
+        let r = self.advance(m);
+        if let Err(e) = r {
+            self.st.stopped = Some(e);
+        }
+        r
+    }
+
+    fn advance<B: RegisterBus>(&mut self, m: &mut Mpdcc<B>) -> Result<(), HilError> {
+        if self.started {
+            let s = m.status().map_err(HilError::Page)?;
+            if s.busy || !s.done {
+                self.st.late += 1;
+                self.late_in_a_row += 1;
+                if self.late_in_a_row >= MAX_LATE_IN_A_ROW {
+                    return Err(HilError::Page(MpdccError::Timeout));
+                }
+                return Ok(());
+            }
+            self.late_in_a_row = 0;
+            let d = m.read_decision().map_err(HilError::Page)?;
+            let r = &mut self.st.report;
+            r.decisions += 1;
+            r.kinds[kind_index(d.decision.kind)] += 1;
+            self.sum_cycles += u64::from(d.cycles);
+            r.worst_cycles = r.worst_cycles.max(d.cycles);
+            r.mean_cycles = self.sum_cycles as f64 / r.decisions as f64;
+            if !self.stepper.measuring() && self.stepper.step() >= self.warm {
+                self.stepper.measure(self.period);
+            }
+            let closed = self
+                .stepper
+                .apply(&d.decision, None)
+                .map_err(HilError::Loop)?;
+            self.st.plant_time_s = self.stepper.step() as f64 * self.stepper.ts_s();
+            if let Some(w) = closed {
+                r.periods += 1;
+                r.fsw_hz = w.fsw_hz;
+                r.thd_percent = w.thd_percent;
+                r.max_i_err_pu = w.max_i_err_pu;
+            }
+        }
+        let x = Inputs::quantize(&self.stepper.state())
+            .map_err(|e| HilError::Loop(LoopError::State(e)))?;
+        m.write_inputs(&x).map_err(HilError::Page)?;
+        m.start().map_err(HilError::Page)?;
+        self.started = true;
+        Ok(())
+    }
+}
+
+fn kind_index(k: DecisionKind) -> usize {
+    match k {
+        DecisionKind::Kept => 0,
+        DecisionKind::Optimal => 1,
+        DecisionKind::Deadlock => 2,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bus::{BusError, RegisterBus};
+    use crate::bus::BusError;
     use crate::mpdcc::closed_loop::LoopResult;
-    use crate::pl::mpdcc::Mpdcc;
-    use crate::simpl::pl::SimPl;
+    use crate::simpl::pl::{Events, SimPl};
 
     struct Bus(SimPl);
 
@@ -179,6 +297,82 @@ mod tests {
         assert_eq!(r.worst_cycles, 20 + 108 + 41 + 3 + 1);
         assert!(r.mean_cycles > 59.0 && r.mean_cycles < 173.0, "{r:?}");
         assert_eq!(m.deadlocks().unwrap() as u64, r.kinds[2]);
+    }
+
+    /// Paced by control periods (1,564 PL cycles between boundaries), the
+    /// loop is [`run`]'s: its first measured period has the model loop's
+    /// statistics exactly, and no decision was late (at most 173 cycles).
+    #[test]
+    fn paced_loop_is_the_model_loop() {
+        let (p, f) = default_core().unwrap();
+        let mut model = f.clone();
+        let cfg = LoopConfig {
+            warmup_periods: 1,
+            measure_periods: 1,
+        };
+        let want = closed_loop::run(&p, &cfg, &mut model, None, &mut |_| {}).unwrap();
+        let mut m = Mpdcc(Bus(SimPl::new(10)));
+        m.load_coeffs(f.coeffs()).unwrap();
+        let mut h = Paced::new(&p).unwrap();
+        let mut ticks = 0u64;
+        while h.status().report.periods == 0 {
+            h.tick(&mut m).unwrap();
+            m.0 .0.run(1564, &Events::default());
+            ticks += 1;
+        }
+        let st = h.status();
+        assert_eq!(st.report.fsw_hz, want.fsw_hz);
+        assert_eq!(st.report.thd_percent, want.thd_percent);
+        assert_eq!(st.report.max_i_err_pu, want.max_i_err_pu);
+        assert_eq!(st.report.decisions, 2 * want.steps);
+        assert_eq!(st.late, 0);
+        // The tick that read the last decision also started the next one.
+        assert_eq!(ticks, st.report.decisions + 1);
+        assert_eq!(st.report.worst_cycles, 20 + 108 + 41 + 3 + 1);
+        assert!((st.plant_time_s - 2.0 * want.steps as f64 * p.controller.ts_s).abs() < 1e-12);
+        assert_eq!(st.stopped, None);
+    }
+
+    /// A decision not done at the next boundary waits (counted late); one
+    /// that never ends stops the loop with a timeout, and a stopped loop
+    /// stays stopped without touching the page.
+    #[test]
+    fn late_decisions_wait_then_time_out() {
+        let (p, f) = default_core().unwrap();
+        let mut m = Mpdcc(Bus(SimPl::new(10)));
+        m.load_coeffs(f.coeffs()).unwrap();
+        let mut h = Paced::new(&p).unwrap();
+        h.tick(&mut m).unwrap();
+        // The next boundary comes at once: the decision is still running.
+        h.tick(&mut m).unwrap();
+        assert_eq!((h.status().late, h.status().report.decisions), (1, 0));
+        m.0 .0.run(400, &Events::default());
+        h.tick(&mut m).unwrap();
+        assert_eq!((h.status().late, h.status().report.decisions), (1, 1));
+        // A page that never finishes: STATUS reads busy.
+        struct Busy;
+        impl RegisterBus for Busy {
+            fn read(&mut self, _: usize) -> Result<u32, BusError> {
+                Ok(1)
+            }
+            fn write(&mut self, _: usize, _: u32) -> Result<(), BusError> {
+                Ok(())
+            }
+        }
+        let mut b = Mpdcc(Busy);
+        let mut h = Paced::new(&p).unwrap();
+        for _ in 0..MAX_LATE_IN_A_ROW {
+            h.tick(&mut b).unwrap();
+        }
+        let e = Err(HilError::Page(MpdccError::Timeout));
+        assert_eq!(h.tick(&mut b), e);
+        assert_eq!(h.status().late, u64::from(MAX_LATE_IN_A_ROW));
+        assert_eq!(
+            h.status().stopped,
+            Some(HilError::Page(MpdccError::Timeout))
+        );
+        let mut never = Mpdcc(Bus(SimPl::new(10)));
+        assert_eq!(h.tick(&mut never), e);
     }
 
     #[test]
