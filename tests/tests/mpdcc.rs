@@ -3,8 +3,9 @@
 //! page) must give the numbers of the host's FPGA-model loop
 //! (`drive::mpdcc::closed_loop` with `FpgaMpdcc`): decision counts by kind,
 //! the worst core cycle count, f_sw and THD, without faults or overruns of
-//! the PMSM drive's loop. Also the command's errors (bad arguments, gates
-//! on).
+//! the PMSM drive's loop; the same run on the Verilated `pl_top`; `mode
+//! mpdcc`, the loop paced by the control periods. Also the command's
+//! errors (bad arguments, gates on, the page in use).
 use std::time::{Duration, Instant};
 
 use drive::mpdcc::closed_loop::{self, LoopConfig};
@@ -12,7 +13,7 @@ use drive::mpdcc::controller::{CtrlState, Decision, DecisionKind, MpdccControlle
 use drive::mpdcc::fpga::FpgaMpdcc;
 use drive::mpdcc::hil;
 use drivectl::link::{Final, Reply};
-use system_tests::{boot, cmd, field};
+use system_tests::{boot, boot_rtl, cmd, field};
 
 /// The model, counting its decisions by kind.
 struct Counting(FpgaMpdcc, [u64; 3]);
@@ -38,8 +39,8 @@ fn num(r: &Reply, key: &str) -> f64 {
         .unwrap_or_else(|| panic!("no number for {key}: {r:?}"))
 }
 
-#[test]
-fn mpdcc_run_on_the_simulated_pl_is_the_host_model_loop() {
+/// Checks an `mpdcc run 1` reply against the host's FPGA-model loop.
+fn assert_model_run(r: &Reply) {
     let (p, f) = hil::default_core().unwrap();
     let mut host = Counting(f, [0; 3]);
     let cfg = LoopConfig {
@@ -47,17 +48,7 @@ fn mpdcc_run_on_the_simulated_pl_is_the_host_model_loop() {
         measure_periods: 1,
     };
     let want = closed_loop::run(&p, &cfg, &mut host, None, &mut |_| {}).unwrap();
-
-    let mut s = boot();
-    let r = cmd(&mut s, "mpdcc");
-    assert!(r.lines.iter().any(|l| l.contains("no run yet")), "{r:?}");
-    let t0 = Instant::now();
-    let r = s
-        .command("mpdcc run 1", Duration::from_secs(240))
-        .expect("mpdcc run");
-    let secs = t0.elapsed().as_secs_f64();
     assert!(r.is_ok(), "{r:?}");
-    println!("{:#?}\n({secs:.1} s under QEMU)", r.lines);
     let line = |k: &str| {
         r.lines
             .iter()
@@ -75,13 +66,27 @@ fn mpdcc_run_on_the_simulated_pl_is_the_host_model_loop() {
     );
     assert!(line("core_cycles:").ends_with("worst 173 (PL clock cycles)"));
     assert!(
-        (num(&r, "f_sw") - want.fsw_hz).abs() < 0.05,
+        (num(r, "f_sw") - want.fsw_hz).abs() < 0.05,
         "{r:?} {want:?}"
     );
     assert!(
-        (num(&r, "thd") - want.thd_percent).abs() < 0.005,
+        (num(r, "thd") - want.thd_percent).abs() < 0.005,
         "{r:?} {want:?}"
     );
+}
+
+#[test]
+fn mpdcc_run_on_the_simulated_pl_is_the_host_model_loop() {
+    let mut s = boot();
+    let r = cmd(&mut s, "mpdcc");
+    assert!(r.lines.iter().any(|l| l.contains("no run yet")), "{r:?}");
+    let t0 = Instant::now();
+    let r = s
+        .command("mpdcc run 1", Duration::from_secs(240))
+        .expect("mpdcc run");
+    let secs = t0.elapsed().as_secs_f64();
+    println!("{:#?}\n({secs:.1} s under QEMU)", r.lines);
+    assert_model_run(&r);
     // The report stays for `mpdcc`.
     let again = cmd(&mut s, "mpdcc");
     assert_eq!(again.lines, r.lines);
@@ -108,6 +113,26 @@ fn mpdcc_run_on_the_simulated_pl_is_the_host_model_loop() {
     );
     assert!(cmd(&mut s, "disable").is_ok());
     assert_eq!(cmd(&mut s, "mpdcc").lines, r.lines);
+}
+
+/// The same run against the Verilog: the Verilated `pl_top` behind the
+/// co-simulation bridge (about 13 s).
+#[test]
+fn mpdcc_run_on_the_rtl_is_the_host_model_loop() {
+    let mut s = boot_rtl();
+    let t0 = Instant::now();
+    let r = s
+        .command("mpdcc run 1", Duration::from_secs(600))
+        .expect("mpdcc run");
+    println!(
+        "{:#?}\n({:.1} s under QEMU)",
+        r.lines,
+        t0.elapsed().as_secs_f64()
+    );
+    assert_model_run(&r);
+    let st = cmd(&mut s, "status");
+    assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+    assert_eq!(field(&st, "overruns"), Some("0"), "{st:?}");
 }
 
 /// The rest of the line `key: ...`.
