@@ -11,6 +11,10 @@
 use crate::ps::timer;
 use drive::bus::{BusError, RegisterBus};
 use drive::console::Bench;
+use drive::mpdcc::hil::{self, Paced};
+use drive::mpdcc::machine::expm;
+use drive::mpdcc::plant::Plant;
+use drive::pl::mpdcc::Mpdcc;
 use drive::pl::top::Mode;
 use drive::pmsm::foc::{Foc, FocParams};
 use drive::pmsm::params::MotorParams;
@@ -18,6 +22,7 @@ use drive::pmsm::sim::{Controller, Measurement};
 use drive::regmap::seq_state;
 use drive::regs::adc::{AdcCount, AdcIa, AdcIaValue, AdcIb, AdcIbValue, AdcIc, AdcIcValue};
 use drive::regs::enc::{EncCpr, EncCprValue, EncPos, EncPosValue, EncWindow, EncWindowValue};
+use drive::regs::mpdcc::{MpdccDecision, MpdccDecisionValue, MpdccStatus, MpdccStatusValue};
 use drive::regs::mpdtc::{MpdtcSeqStatus, MpdtcSeqStatusValue};
 use drive::regs::pwm::{GateCtrl, GateCtrlValue};
 use drive::servo::{Servo, ServoConfig};
@@ -46,8 +51,9 @@ fn count(mut f: impl FnMut()) -> u32 {
 
 /// A PL that answers every read like a running drive (gates on, the MPDTC
 /// sequence in SAMPLE, aligned, a new ADC result every read of
-/// `ADC_COUNT`) and drops writes: the control code's own cost, without the
-/// simulated PL's.
+/// `ADC_COUNT`; the MPDCC core done, keeping the start position (4, 4, 4))
+/// and drops writes: the control code's own cost, without the simulated
+/// PL's.
 struct Quiet {
     adc_count: u32,
 }
@@ -67,6 +73,12 @@ impl RegisterBus for Quiet {
             EncCpr::ADDR => EncCprValue::ZERO.with_value(4096).bits(),
             EncPos::ADDR => EncPosValue::ZERO.with_value(1234).bits(),
             EncWindow::ADDR => EncWindowValue::ZERO.with_value(100_000).bits(),
+            MpdccStatus::ADDR => MpdccStatusValue::ZERO.with_done(true).bits(),
+            MpdccDecision::ADDR => MpdccDecisionValue::ZERO
+                .with_s_a(4)
+                .with_s_b(4)
+                .with_s_c(4)
+                .bits(),
             AdcCount::ADDR => {
                 self.adc_count = self.adc_count.wrapping_add(1);
                 self.adc_count
@@ -106,9 +118,31 @@ pub fn run() -> Option<Bench> {
     if !servo.faults(&mut bus).map(|f| f.none()).unwrap_or(false) {
         return None;
     }
+    // `mode mpdcc`: one boundary of the HIL loop (decision read, plant
+    // step with its transition matrix cached, quantization, inputs and
+    // START), and the 9 x 9 matrix exponential of a cache miss.
+    let (p, _) = hil::default_core().ok()?;
+    let mut h = Paced::new(&p).ok()?;
+    let mut page = Mpdcc(Quiet { adc_count: 0 });
+    h.tick(&mut page).ok()?;
+    h.tick(&mut page).ok()?;
+    let mpdcc_boundary = count(|| {
+        let _ = h.tick(&mut page);
+    });
+    if h.status().stopped.is_some() {
+        return None;
+    }
+    let a = Plant::new(&p).ok()?.augmented([4; 3]);
+    let ts = p.controller.ts_pu(&p.machine);
+    let a = a.map(|r| r.map(|v| v * ts));
+    let mpdcc_expm = count(|| {
+        core::hint::black_box(expm(core::hint::black_box(&a)));
+    });
     Some(Bench {
         foc_step,
         mpdtc_period,
+        mpdcc_boundary,
+        mpdcc_expm,
         runs: RUNS,
     })
 }

@@ -725,6 +725,8 @@ pub fn execute<W: Write>(
             let b = try_drive!("debug", drv.bench());
             write!(out, "foc_step: {} instructions\r\n", b.foc_step)?;
             write!(out, "mpdtc_period: {} instructions\r\n", b.mpdtc_period)?;
+            write!(out, "mpdcc_boundary: {} instructions\r\n", b.mpdcc_boundary)?;
+            write!(out, "mpdcc_expm: {} instructions\r\n", b.mpdcc_expm)?;
             write!(out, "runs: {}\r\n", b.runs)?;
         }
         Command::ConfigList => {

@@ -72,6 +72,12 @@ pub struct Bench {
     pub foc_step: u32,
     /// One MPDTC-mode control period on the PS (measurement, inputs, START), instructions.
     pub mpdtc_period: u32,
+    /// One boundary of `mode mpdcc`'s HIL loop on the PS (decision, plant
+    /// step from the transition-matrix cache, inputs, START), instructions.
+    pub mpdcc_boundary: u32,
+    /// A transition matrix the plant's cache misses (9 x 9 matrix
+    /// exponential), instructions.
+    pub mpdcc_expm: u32,
     /// Repetitions each figure is the minimum of.
     pub runs: u32,
 }
