@@ -5,9 +5,12 @@
 //! plant. One warm-up fundamental period, then `periods` measured ones
 //! (f_sw and THD over those, as the host experiments).
 //!
-//! The page is reached through a caller's function, so the same run works
-//! on the simulated PL, the co-simulated RTL or a bitstream; its decisions
-//! must be the FPGA model's ([`super::fpga::FpgaMpdcc`]) one for one.
+//! Two ways to run it: [`run`] (`mpdcc run`) takes its decisions as fast as
+//! the page answers, through a caller's function; [`Paced`] (`mode mpdcc`)
+//! takes one per control period of the drive and runs until stopped. Both
+//! work on the simulated PL, the co-simulated RTL or a bitstream; their
+//! decisions must be the FPGA model's ([`super::fpga::FpgaMpdcc`]) one for
+//! one.
 use super::closed_loop::{self, LoopConfig, LoopError, Stepper};
 use super::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
 use super::fpga::{FpgaConfig, FpgaError, FpgaMpdcc, Inputs};
