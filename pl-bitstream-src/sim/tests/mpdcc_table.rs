@@ -14,7 +14,9 @@ use drive::mpdcc::cycles::{pipelined_core_cycles, PAPER_TABLE2};
 const CANDIDATES: u32 = 216;
 
 fn repo_file(rel: &str) -> String {
-    let p = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(rel);
+    let p = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(rel);
     std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
 }
 
@@ -46,7 +48,11 @@ fn mpdcc_table_is_complete_and_agrees_with_the_design() {
         assert_eq!(c.len(), 8, "{row}");
         assert_eq!(c[0], n.to_string(), "{row}");
         assert_eq!(c[1], PAPER_TABLE2[k].to_string(), "{row}");
-        assert_eq!(c[2], pipelined_core_cycles(n, CANDIDATES).to_string(), "{row}");
+        assert_eq!(
+            c[2],
+            pipelined_core_cycles(n, CANDIDATES).to_string(),
+            "{row}"
+        );
         let lut = number(c[3], "LUT", row);
         let ff = number(c[4], "FF", row);
         let dsp = number(c[5], "DSP48E1", row);
@@ -68,6 +74,12 @@ fn mpdcc_table_is_complete_and_agrees_with_the_design() {
     let begin = readme
         .find("<!-- mpdcc-rtl-table begin -->")
         .expect("README marker");
-    let end = readme.find("<!-- mpdcc-rtl-table end -->").expect("README marker");
-    assert_eq!(rows(&readme[begin..end]), rs, "README and docs/mpdcc-rtl-table.md differ");
+    let end = readme
+        .find("<!-- mpdcc-rtl-table end -->")
+        .expect("README marker");
+    assert_eq!(
+        rows(&readme[begin..end]),
+        rs,
+        "README and docs/mpdcc-rtl-table.md differ"
+    );
 }
