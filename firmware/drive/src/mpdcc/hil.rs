@@ -158,7 +158,7 @@ pub struct PacedStatus {
 /// the wall-clock pacing differs.
 pub struct Paced {
     stepper: Stepper,
-    warm: u64,
+    /// Steps per fundamental period: the warm-up and each window.
     period: u64,
     started: bool,
     late_in_a_row: u32,
@@ -172,7 +172,6 @@ impl Paced {
     pub fn new(p: &DriveParams) -> Result<Self, HilError> {
         let stepper = Stepper::new(p).map_err(HilError::Loop)?;
         Ok(Self {
-            warm: stepper.steps_in(1),
             period: stepper.steps_in(1).max(1),
             stepper,
             started: false,
@@ -219,7 +218,7 @@ impl Paced {
             self.sum_cycles += u64::from(d.cycles);
             r.worst_cycles = r.worst_cycles.max(d.cycles);
             r.mean_cycles = self.sum_cycles as f64 / r.decisions as f64;
-            if !self.stepper.measuring() && self.stepper.step() >= self.warm {
+            if !self.stepper.measuring() && self.stepper.step() >= self.period {
                 self.stepper.measure(self.period);
             }
             let closed = self
