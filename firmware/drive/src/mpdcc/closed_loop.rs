@@ -349,20 +349,8 @@ pub fn run(
     let mut st = Stepper::new(p)?;
     let warm = st.steps_in(cfg.warmup_periods);
     let meas = st.steps_in(cfg.measure_periods);
-    if meas == 0 {
-        // An empty window: nothing measured (as a whole-run statistic).
-        for _ in 0..warm {
-            let d = ctrl.decide(&st.state())?;
-            trace(&st.trace_sample(d.s));
-            st.apply(&d, None)?;
-        }
-        return Ok(LoopResult {
-            max_level_jump: st.max_level_jump,
-            ..LoopResult::default()
-        });
-    }
-    loop {
-        if st.step() == warm {
+    for _ in 0..warm + meas {
+        if st.step() == warm && meas > 0 {
             st.measure(meas);
         }
         let x = st.state();
@@ -376,6 +364,11 @@ pub fn run(
             return Ok(r);
         }
     }
+    // An empty window: nothing measured (as a whole-run statistic).
+    Ok(LoopResult {
+        max_level_jump: st.max_level_jump,
+        ..LoopResult::default()
+    })
 }
 
 #[cfg(test)]
