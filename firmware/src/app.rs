@@ -72,7 +72,7 @@ fn banner(con: &mut Uart, boot: &control::Boot) {
     let _ = match boot.pl {
         PlKind::Simulated => write!(con, "pl: simulated"),
         PlKind::Bitstream(v) => {
-            let v = drive::regs::top::VersionValue::from_bits(v);
+            let v = regmap::regs::top::VersionValue::from_bits(v);
             write!(con, "pl: bitstream v{}.{}", v.major(), v.minor())
         }
         PlKind::Absent => write!(con, "pl: absent"),

@@ -9,23 +9,23 @@
 //! reads 0.) Without `-icount` the numbers are host-speed noise;
 //! `scripts/bench` runs it with `-icount shift=0`.
 use crate::ps::timer;
-use drive::bus::{BusError, RegisterBus};
 use drive::console::Bench;
-use drive::mpdcc::hil::{self, Paced};
-use drive::mpdcc::machine::expm;
-use drive::mpdcc::plant::Plant;
+use drive::hil::{self, Paced};
 use drive::pl::mpdcc::Mpdcc;
 use drive::pl::top::Mode;
-use drive::pmsm::foc::{Foc, FocParams};
-use drive::pmsm::params::MotorParams;
-use drive::pmsm::sim::{Controller, Measurement};
-use drive::regmap::seq_state;
-use drive::regs::adc::{AdcCount, AdcIa, AdcIaValue, AdcIb, AdcIbValue, AdcIc, AdcIcValue};
-use drive::regs::enc::{EncCpr, EncCprValue, EncPos, EncPosValue, EncWindow, EncWindowValue};
-use drive::regs::mpdcc::{MpdccDecision, MpdccDecisionValue, MpdccStatus, MpdccStatusValue};
-use drive::regs::mpdtc::{MpdtcSeqStatus, MpdtcSeqStatusValue};
-use drive::regs::pwm::{GateCtrl, GateCtrlValue};
 use drive::servo::{Servo, ServoConfig};
+use models::mpdcc::machine::expm;
+use models::mpdcc::plant::Plant;
+use models::pmsm::foc::{Foc, FocParams};
+use models::pmsm::params::MotorParams;
+use models::pmsm::sim::{Controller, Measurement};
+use regmap::bus::{BusError, RegisterBus};
+use regmap::regs::adc::{AdcCount, AdcIa, AdcIaValue, AdcIb, AdcIbValue, AdcIc, AdcIcValue};
+use regmap::regs::enc::{EncCpr, EncCprValue, EncPos, EncPosValue, EncWindow, EncWindowValue};
+use regmap::regs::mpdcc::{MpdccDecision, MpdccDecisionValue, MpdccStatus, MpdccStatusValue};
+use regmap::regs::mpdtc::{MpdtcSeqStatus, MpdtcSeqStatusValue};
+use regmap::regs::pwm::{GateCtrl, GateCtrlValue};
+use regmap::seq_state;
 
 /// Calls per figure.
 const RUNS: u32 = 64;

@@ -25,12 +25,10 @@ use crate::ps::qspi::Qspi;
 use crate::ps::{gic, timer};
 use crate::{cosim, pl};
 use core::cell::RefCell;
-use drive::bus::{BusError, RegisterBus};
 use drive::config::spi_nor::SpiNor;
 use drive::config::{store, Config};
 use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
-use drive::mpdcc::fpga::Inputs;
-use drive::mpdcc::hil::{self, HilError, HilReport, Paced, PacedStatus};
+use drive::hil::{self, HilError, HilReport, Paced, PacedStatus};
 use drive::pl::capture::{CapSample, CapState, CapStatus, Trigger};
 use drive::pl::fault::Faults;
 use drive::pl::mpdcc::{Mpdcc, MpdccError};
@@ -40,7 +38,9 @@ use drive::servo::faults::FaultRecord;
 use drive::servo::{
     record_response, Servo, ServoConfig, ServoError, StepRecorder, StepResult, SweepPoint,
 };
-use drive::simpl::{SimConfig, SimDrive};
+use models::mpdcc::fpga::Inputs;
+use regmap::bus::{BusError, RegisterBus};
+use simpl::{SimConfig, SimDrive};
 
 /// Software-generated interrupt of the control step.
 pub const SGI_CONTROL: u32 = 1;
@@ -51,7 +51,7 @@ pub const SGI_CONTROL: u32 = 1;
 enum Backend {
     /// Our bitstream behind GP0.
     Gp0(pl::Gp0),
-    /// No bitstream: the simulated PL and motor (`drive::simpl`).
+    /// No bitstream: the simulated PL and motor (`simpl`).
     Sim(SimDrive),
     /// No bitstream, QEMU with the bridge: the Verilated `pl_top` and the
     /// motor in the host process `pl-cosim`.
@@ -161,14 +161,15 @@ pub fn init() -> Boot {
             // No bitstream, but QEMU runs the bridge: the Verilated PL with
             // the same simulated motor.
             Some(c) => {
-                cfg = ServoConfig::for_simulated(&SimConfig::default());
+                let sim = SimConfig::default();
+                cfg = ServoConfig::for_plant(sim.motor, sim.adc_amps_per_count);
                 (PlKind::RtlCosim, Some(Backend::Cosim(c)))
             }
             // No bitstream: the simulated PL (the paper's motor, held at
             // standstill), read through the same drivers.
             None => {
                 let sim = SimDrive::new(&SimConfig::default()).expect("paper motor parameters");
-                cfg = ServoConfig::for_simulated(sim.config());
+                cfg = ServoConfig::for_plant(sim.config().motor, sim.config().adc_amps_per_count);
                 (PlKind::Simulated, Some(Backend::Sim(sim)))
             }
         },
@@ -228,7 +229,7 @@ pub fn init() -> Boot {
 
 /// PL clock cycles of one control period of the active mode.
 fn period_cycles(servo: &Servo) -> u64 {
-    (f64::from(drive::regmap::PL_CLOCK_HZ) / servo.control_rate_hz()) as u64
+    (f64::from(regmap::PL_CLOCK_HZ) / servo.control_rate_hz()) as u64
 }
 
 /// Global-timer counts of `cycles` PL clock cycles at real-time speed.
@@ -365,7 +366,7 @@ impl State {
     /// PL time after `ms` milliseconds from now.
     fn pl_after_ms(&self, ms: u32) -> u64 {
         let per_ms = match &self.bus {
-            Backend::Sim(_) | Backend::Cosim(_) => u64::from(drive::regmap::PL_CLOCK_HZ / 1000),
+            Backend::Sim(_) | Backend::Cosim(_) => u64::from(regmap::PL_CLOCK_HZ / 1000),
             Backend::Gp0(_) => 1000,
         };
         self.pl_now() + u64::from(ms) * per_ms

@@ -1,16 +1,16 @@
 //! The PL as a co-simulation under QEMU: every register access travels
 //! over semihosting to the host process `pl-cosim` (Verilated `pl_top` and
-//! the plant, wire format `drive::cosim`) and waits for its reply.
+//! the plant, wire format `simpl::cosim`) and waits for its reply.
 //!
 //! Selected when semihosting answers and the host's command line for the
 //! guest has `cosim=<dir>`: requests go to the FIFO `<dir>/req`, replies
 //! come from `<dir>/rep` (opened in that order, as `pl-cosim` does).
 //! Guest time is the global-timer count, one PL cycle per count under QEMU
-//! (both 100 MHz; see `drive::cosim`).
+//! (both 100 MHz; see `simpl::cosim`).
 use crate::ps::timer;
 use crate::semihosting::{self, HostFile};
-use drive::bus::{BusError, RegisterBus};
-use drive::cosim::{Op, Reply, Request, Status, REPLY_LEN};
+use regmap::bus::{BusError, RegisterBus};
+use simpl::cosim::{Op, Reply, Request, Status, REPLY_LEN};
 
 /// The bridge to `pl-cosim`.
 pub struct Cosim {

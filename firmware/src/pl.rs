@@ -5,10 +5,10 @@
 //! on a real Zynq an access to an unconfigured PL hangs the bus. The panic
 //! handler's gate write obeys the same rule ([`gates_safe`]).
 use core::sync::atomic::{AtomicBool, Ordering};
-use drive::bus::{BusError, RegisterBus};
 use drive::pl::presence::{self, Presence};
-use drive::regmap;
-use drive::regs::pwm::{GateCtrl, GateCtrlValue};
+use regmap;
+use regmap::bus::{BusError, RegisterBus};
+use regmap::regs::pwm::{GateCtrl, GateCtrlValue};
 use volatile_register::RW;
 
 /// Set once presence detection found our bitstream behind GP0.

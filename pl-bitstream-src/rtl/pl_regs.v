@@ -1,4 +1,4 @@
-// Generated from firmware/drive/src/regmap.rs by `cargo run -p regmap-gen`;
+// Generated from firmware/regmap/src/lib.rs by `cargo run -p regmap-gen`;
 // do not edit (a test fails when this file is stale).
 //
 // pl_regs: the PL register file behind axil_slave. Register-bus side:

@@ -1,4 +1,4 @@
-// Generated from firmware/drive/src/regmap.rs by `cargo run -p regmap-gen`;
+// Generated from firmware/regmap/src/lib.rs by `cargo run -p regmap-gen`;
 // do not edit (a test fails when this file is stale).
 // Included inside module bodies. RM_<REG>_ADDR: byte address in the
 // 15-bit AXI window (page << 12 | offset); _W: implemented bits;

@@ -1,4 +1,4 @@
-// Generated from drive::pmsm::frontend_fixed by `cargo run -p regmap-gen`;
+// Generated from models::pmsm::frontend_fixed by `cargo run -p regmap-gen`;
 // do not edit (a test fails when this file is stale).
 // Included in mpdtc_frontend after `reg [35:0] sin_rom[0:1023]`:
 // word i = {T[i + 1] - T[i], T[i]}, T[i] = round(2^16 sin(2 pi i / 1024)),

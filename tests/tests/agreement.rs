@@ -1,25 +1,25 @@
 //! Agreement of the drive under QEMU (firmware on the simulated PL) with
 //! the host simulation of the same motor and controllers
-//! (`drive::pmsm::sim`, the paper-000 experiments' plant), within 10 %:
+//! (`models::pmsm::sim`, the paper-000 experiments' plant), within 10 %:
 //! the -3 dB torque bandwidth of a 0.3 N m sine reference (firmware's
 //! `sweep` vs the host run), MPDTC and FOC; the settling time of a
 //! 0 -> 0.4 N m MPDTC step (PL capture vs the host run). The FOC step from
-//! the PL capture does not agree to 10 % with `drive::pmsm::sim` (QEMU
+//! the PL capture does not agree to 10 % with `models::pmsm::sim` (QEMU
 //! 0.193 ms, host 0.220 ms: the capture samples once per 62.56 us FOC
 //! period and lags the PS by one period, and `sim` has the default FOC
 //! parameters, not the firmware's measurement chain); the FOC step is
 //! compared instead through `step` with the host run of the same servo on
-//! the same simulated PL (`drive::servo` on `drive::simpl`, without QEMU).
+//! the same simulated PL (`drive::servo` on `simpl`, without QEMU).
 use drive::pl::top::Mode;
-use drive::pmsm::foc::{Foc, FocParams};
-use drive::pmsm::mpdtc_ctrl::MpdtcRef;
-use drive::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use drive::pmsm::params::{DriveParams, MotorParams};
-use drive::pmsm::plant::{MechanicalMode, Plant};
-use drive::pmsm::sim::{self, Controller};
 use drive::servo::{bandwidth_hz, tone_response, Servo, ServoConfig, SweepPoint};
-use drive::simpl::{SimConfig, SimDrive};
 use drivectl::link::Final;
+use models::pmsm::foc::{Foc, FocParams};
+use models::pmsm::mpdtc_ctrl::MpdtcRef;
+use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+use models::pmsm::params::{DriveParams, MotorParams};
+use models::pmsm::plant::{MechanicalMode, Plant};
+use models::pmsm::sim::{self, Controller};
+use simpl::{SimConfig, SimDrive};
 use std::f64::consts::PI;
 use std::time::Duration;
 use system_tests::{boot, cmd};
@@ -212,7 +212,11 @@ fn mpdtc_step_settling_agrees_with_the_host_simulation() {
 /// (as the firmware's control interrupt runs it), after 2 ms at rest.
 fn host_servo_step_ms(mode: Mode) -> f64 {
     let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
-    let mut s = Servo::new(&ServoConfig::for_simulated(sim.config())).unwrap();
+    let mut s = Servo::new(&ServoConfig::for_plant(
+        sim.config().motor,
+        sim.config().adc_amps_per_count,
+    ))
+    .unwrap();
     s.init(&mut sim).unwrap();
     s.set_mode(&mut sim, mode).unwrap();
     s.enable(&mut sim).unwrap();

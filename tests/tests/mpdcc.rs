@@ -1,18 +1,18 @@
 //! Paper 001's hardware-in-the-loop run under QEMU: `mpdcc run` on the
 //! simulated PL (the plant on the PS, the core's model behind the MPDCC
 //! page) must give the numbers of the host's FPGA-model loop
-//! (`drive::mpdcc::closed_loop` with `FpgaMpdcc`): decision counts by kind,
+//! (`models::mpdcc::closed_loop` with `FpgaMpdcc`): decision counts by kind,
 //! the worst core cycle count, f_sw and THD, without faults or overruns of
 //! the PMSM drive's loop; the same run on the Verilated `pl_top`; `mode
 //! mpdcc`, the loop paced by the control periods. Also the command's
 //! errors (bad arguments, gates on, the page in use).
 use std::time::{Duration, Instant};
 
-use drive::mpdcc::closed_loop::{self, LoopConfig};
-use drive::mpdcc::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
-use drive::mpdcc::fpga::FpgaMpdcc;
-use drive::mpdcc::hil;
+use drive::hil;
 use drivectl::link::{Final, Reply};
+use models::mpdcc::closed_loop::{self, LoopConfig};
+use models::mpdcc::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
+use models::mpdcc::fpga::FpgaMpdcc;
 use system_tests::{boot, boot_rtl, cmd, field};
 
 /// The model, counting its decisions by kind.

@@ -13,11 +13,11 @@
 //! The values not in the table (the current-sensing gain of the board or of
 //! the simulated PL, the smallest `step`) stay what the base
 //! [`ServoConfig`] has.
-use crate::pmsm::params::PSI_PM_FROM_KE_WB;
-use crate::regmap;
 use crate::servo::{Servo, ServoConfig};
-use crate::validate::ParamError;
 use core::fmt::{self, Write};
+use models::pmsm::params::PSI_PM_FROM_KE_WB;
+use models::validate::ParamError;
+use regmap;
 
 /// Kind of a parameter's value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -437,7 +437,7 @@ impl Config {
                 reason: "4 ADC periods must fit in the FOC period (2 foc_half_period)",
             }));
         }
-        if oc_limit_counts(&sc).is_none() {
+        if sc.oc_limit_counts().is_none() {
             return Err(ConfigError::Invalid(ParamError {
                 field: "current_limit",
                 reason: "beyond the ADC's full scale",
@@ -519,13 +519,6 @@ impl Config {
             .zip(self.values.iter().zip(other.values.iter()))
             .any(|(p, (a, b))| p.gates_off && a != b)
     }
-}
-
-/// `OC_LIMIT` for the current limit of `sc`: ADC counts, rounded down so
-/// that the trip is never above the limit; `None` beyond the 11-bit range.
-pub fn oc_limit_counts(sc: &ServoConfig) -> Option<u32> {
-    let c = libm::floor(sc.current_limit_a / sc.adc.amps_per_count);
-    (c.is_finite() && (0.0..=2047.0).contains(&c)).then_some(c as u32)
 }
 
 /// `<name> = <value> <unit>`.

@@ -1,11 +1,11 @@
 //! The Verilator harness of `pl_top`, generated from
-//! `drive::regmap::PL_TOP_PORTS`: the C++ shim (`csrc/pl_top_shim.cpp`) and
+//! `ports::PL_TOP_PORTS`: the C++ shim (`csrc/pl_top_shim.cpp`) and
 //! the `#[repr(C)]` structs `PtIn`/`PtOut` it shares with Rust
 //! (`rtl_sim::pl_top`). Registers never appear here: the harness reaches them
 //! through the AXI port, at addresses from the table.
 use std::fmt::Write;
 
-use drive::regmap::{Port, PortDir};
+use crate::ports::{Port, PortDir};
 
 /// Repository-relative path of the generated C++ shim.
 pub const SHIM_PATH: &str = "pl-bitstream-src/sim/csrc/pl_top_shim.cpp";
@@ -42,7 +42,7 @@ fn masked(p: &Port) -> String {
 pub fn shim(ports: &[Port]) -> String {
     let mut s = String::new();
     s.push_str(
-        "// Generated from firmware/drive/src/regmap.rs (PL_TOP_PORTS) by `cargo run -p\n\
+        "// Generated from pl-bitstream-src/regmap-gen/src/ports.rs (PL_TOP_PORTS) by `cargo run -p\n\
          // regmap-gen`; do not edit (a test fails when this file is stale).\n\
          //\n\
          // C ABI around the Verilated pl_top, for rtl-sim (Rust).\n\
@@ -98,7 +98,7 @@ pub fn shim(ports: &[Port]) -> String {
 pub fn rust(ports: &[Port]) -> String {
     let mut s = String::new();
     s.push_str(
-        "// Generated from firmware/drive/src/regmap.rs (PL_TOP_PORTS) by `cargo run -p\n\
+        "// Generated from pl-bitstream-src/regmap-gen/src/ports.rs (PL_TOP_PORTS) by `cargo run -p\n\
          // regmap-gen`; do not edit (a test fails when this file is stale).\n\
          //! The ports of `pl_top` as the harness sees them (C layout shared with\n\
          //! `csrc/pl_top_shim.cpp`); re-exported by [`crate::pl_top`].\n\n\

@@ -1,14 +1,15 @@
-//! Generates from the one table, `drive::regmap`, every file that repeats
+//! Generates from the one table, `regmap`, every file that repeats
 //! it: the Verilog header `pl-bitstream-src/rtl/regmap.vh`, the register file
 //! `pl-bitstream-src/rtl/pl_regs.v` ([`rtl`]), `docs/register-map.md` and the
-//! typed accessors `firmware/drive/src/regs.rs` ([`rust`]); and from the
-//! port list `drive::regmap::PL_TOP_PORTS` the `pl_top` Verilator harness
+//! typed accessors `firmware/regmap/src/regs.rs` ([`rust`]); and from the
+//! port list [`ports::PL_TOP_PORTS`] the `pl_top` Verilator harness
 //! ([`harness`]). `cargo run -p
 //! regmap-gen` writes them; the test `tests/regmap_files.rs` fails when
 //! the committed files differ from what this produces.
 use std::fmt::Write;
 
 pub mod harness;
+pub mod ports;
 pub mod rtl;
 pub mod rust;
 pub mod trig;
@@ -21,19 +22,13 @@ pub fn files(blocks: &[&Block]) -> Vec<(&'static str, String)> {
         (rtl::PL_REGS_PATH, rtl::pl_regs(blocks)),
         (MARKDOWN_PATH, markdown(blocks)),
         (rust::RUST_PATH, rust::rust(blocks)),
-        (
-            harness::SHIM_PATH,
-            harness::shim(drive::regmap::PL_TOP_PORTS),
-        ),
-        (
-            harness::RUST_PATH,
-            harness::rust(drive::regmap::PL_TOP_PORTS),
-        ),
+        (harness::SHIM_PATH, harness::shim(ports::PL_TOP_PORTS)),
+        (harness::RUST_PATH, harness::rust(ports::PL_TOP_PORTS)),
         (trig::SIN_TABLE_PATH, trig::sin_table()),
     ]
 }
 
-use drive::regmap::{self, Access, Block, Invalid, Register};
+use regmap::{self, Access, Block, Invalid, Register};
 
 /// Repository-relative path of the Verilog header.
 pub const VERILOG_PATH: &str = "pl-bitstream-src/rtl/regmap.vh";
@@ -62,7 +57,7 @@ fn invalid(r: &Register) -> String {
 pub fn verilog(blocks: &[&Block]) -> String {
     let mut s = String::new();
     s.push_str(
-        "// Generated from firmware/drive/src/regmap.rs by `cargo run -p regmap-gen`;\n\
+        "// Generated from firmware/regmap/src/lib.rs by `cargo run -p regmap-gen`;\n\
          // do not edit (a test fails when this file is stale).\n\
          // Included inside module bodies. RM_<REG>_ADDR: byte address in the\n\
          // 15-bit AXI window (page << 12 | offset); _W: implemented bits;\n\
@@ -121,15 +116,15 @@ pub fn verilog(blocks: &[&Block]) -> String {
 const HOW_TO: &str = r#"
 ## What is generated from the table
 
-`cargo run -p regmap-gen` writes, from `firmware/drive/src/regmap.rs`:
+`cargo run -p regmap-gen` writes, from `firmware/regmap/src/lib.rs`:
 
 | file | contents |
 |---|---|
 | `pl-bitstream-src/rtl/pl_regs.v` | the whole AXI4-Lite register file behind `axil_slave`: storage, address decode, byte strobes, each register's write rule, W1C, SLVERR for RO and unmapped offsets, `ERR`, the read mux, one port per field |
 | `pl-bitstream-src/rtl/regmap.vh` | Verilog localparams (`RM_<REG>_ADDR`, `_W`, `_RESET`, bounds, field positions, `RM_MODE_*`) for hand-written RTL |
-| `firmware/drive/src/regs.rs` | typed accessors `drive::regs` over `drive::bus::RegisterBus` |
+| `firmware/regmap/src/regs.rs` | typed accessors `regmap::regs` over `regmap::bus::RegisterBus` |
 | `docs/register-map.md` | this page |
-| `pl-bitstream-src/sim/csrc/pl_top_shim.cpp`, `pl-bitstream-src/sim/src/pl_top_ports.rs` | the `pl_top` Verilator harness (C++ shim, `PtIn`/`PtOut`), from the port list `regmap::PL_TOP_PORTS` (a test checks `pl_top.v`'s ports against it) |
+| `pl-bitstream-src/sim/csrc/pl_top_shim.cpp`, `pl-bitstream-src/sim/src/pl_top_ports.rs` | the `pl_top` Verilator harness (C++ shim, `PtIn`/`PtOut`), from the port list `regmap_gen::ports::PL_TOP_PORTS` (a test checks `pl_top.v`'s ports against it) |
 
 `cargo test -p regmap-gen` fails when a committed file differs from what the
 generator writes. The hand-written RTL holds only the cores and their wiring
@@ -149,7 +144,7 @@ fields is one port):
 | W1C, `Plain` | input `_i` per field (the flags live in the core) and output `_clr_o` per field (the ones written, one cycle) |
 | W1C, `Errors` | none: the register file's own `ERR` |
 
-Typed access from Rust (`drive::regs`): one module per block, per register
+Typed access from Rust (`regmap::regs`): one module per block, per register
 a zero-sized type named after it in camel case with `ADDR`, `DEF` (the
 table entry) and the accesses its type allows (RW `read`/`write`/`modify`,
 RO `read`, W1C `read`/`write`), and a value type `<Name>Value` with a getter
@@ -157,7 +152,7 @@ and a `with_*` setter per field (`bool` for one bit, else `u32` masked to
 the field; a register without fields has the one field `value`):
 
 ```rust
-use drive::regs::pwm::{DeadTime, DeadTimeValue, GateCtrl};
+use regmap::regs::pwm::{DeadTime, DeadTimeValue, GateCtrl};
 DeadTime::write(&mut bus, DeadTimeValue::ZERO.with_value(100))?; // 1 us
 GateCtrl::modify(&mut bus, |v| v.with_gate_en(true))?;
 let on = GateCtrl::read(&mut bus)?.gate_en();
@@ -166,7 +161,7 @@ let on = GateCtrl::read(&mut bus)?.gate_en();
 ## Adding a register
 
 One table entry: write the `Register` constant next to its block's others in
-`firmware/drive/src/regmap.rs` and list it in the block's `registers`
+`firmware/regmap/src/lib.rs` and list it in the block's `registers`
 (increasing offset), for example a clamped 12-bit setting of the PWM block:
 
 ```rust
@@ -187,7 +182,7 @@ pub const TRIM: Register = Register {
 
 Then `cargo run -p regmap-gen` regenerates the files: `pl_regs` gets
 `trim_q`, its decode, the clamp, the read-mux entry and the port
-`output wire [11:0] trim_o`; `drive::regs::pwm::Trim` and `TrimValue`
+`output wire [11:0] trim_o`; `regmap::regs::pwm::Trim` and `TrimValue`
 appear; this page gets the row. What stays by hand is the core that uses the
 value: connect `.trim_o(...)` in `pl_top.v` (Verilator warns about an
 unconnected port). The `pl_top` harness (`rtl-sim`, generated from
@@ -201,7 +196,7 @@ pub fn markdown(blocks: &[&Block]) -> String {
     let mut s = String::new();
     s.push_str("# PL register map\n\n");
     s.push_str(
-        "Generated from `firmware/drive/src/regmap.rs` by `cargo run -p regmap-gen`; do not \
+        "Generated from `firmware/regmap/src/lib.rs` by `cargo run -p regmap-gen`; do not \
          edit.\n\n",
     );
     let _ = writeln!(

@@ -1,10 +1,10 @@
 //! The PL register file `pl-bitstream-src/rtl/pl_regs.v`, generated from the
 //! table: storage, address decode, byte strobes, each register's
 //! invalid-value rule, W1C, read-only and unmapped accesses, the read mux and
-//! one port per field to the cores ([`drive::regmap::Hw`] says which).
+//! one port per field to the cores ([`regmap::Hw`] says which).
 use std::fmt::Write;
 
-use drive::regmap::{Access, Block, Hw, Invalid, Register, AXI_ADDR_BITS};
+use regmap::{Access, Block, Hw, Invalid, Register, AXI_ADDR_BITS};
 
 /// Repository-relative path of the generated register file.
 pub const PL_REGS_PATH: &str = "pl-bitstream-src/rtl/pl_regs.v";
@@ -199,7 +199,7 @@ pub fn pl_regs(blocks: &[&Block]) -> String {
     let aw = AXI_ADDR_BITS;
     let mut s = String::new();
     s.push_str(
-        "// Generated from firmware/drive/src/regmap.rs by `cargo run -p regmap-gen`;\n\
+        "// Generated from firmware/regmap/src/lib.rs by `cargo run -p regmap-gen`;\n\
          // do not edit (a test fails when this file is stale).\n\
          //\n\
          // pl_regs: the PL register file behind axil_slave. Register-bus side:\n\

@@ -1,4 +1,4 @@
-//! The typed register accessors of `drive::regs`, generated from the table.
+//! The typed register accessors of `regmap::regs`, generated from the table.
 //!
 //! Per block a module (`regs::pwm`), per register a zero-sized type named
 //! after the register in camel case (`regs::pwm::DeadTime`) with its
@@ -6,13 +6,13 @@
 //! (RW: `read`, `write`, `modify`; RO: `read`; W1C: `read`, `write`), and a
 //! value type (`DeadTimeValue`) with one getter and one `with_*` setter per
 //! field (a register without fields has one field, `value`, over its
-//! implemented bits). Every access goes through `drive::bus::RegisterBus`.
+//! implemented bits). Every access goes through `regmap::bus::RegisterBus`.
 use std::fmt::Write;
 
-use drive::regmap::{Access, Block, Invalid, Register};
+use regmap::{Access, Block, Invalid, Register};
 
 /// Repository-relative path of the generated Rust module.
-pub const RUST_PATH: &str = "firmware/drive/src/regs.rs";
+pub const RUST_PATH: &str = "firmware/regmap/src/regs.rs";
 
 /// `DEAD_TIME` -> `DeadTime`.
 pub fn camel(name: &str) -> String {
@@ -288,7 +288,7 @@ fn register(s: &mut String, b: &Block, r: &Register) {
 pub fn rust(blocks: &[&Block]) -> String {
     let mut s = String::new();
     s.push_str(
-        "// Generated from firmware/drive/src/regmap.rs by `cargo run -p regmap-gen`;\n\
+        "// Generated from firmware/regmap/src/lib.rs by `cargo run -p regmap-gen`;\n\
          // do not edit (a test fails when this file is stale).\n\
          //! Typed access to the PL registers, one module per block.\n\
          //!\n\
@@ -305,21 +305,22 @@ pub fn rust(blocks: &[&Block]) -> String {
          //! register's doc. Every access is one whole-word `RegisterBus` access:\n\
          //!\n\
          //! ```\n\
-         //! # use drive::bus::{BusError, RegisterBus};\n\
+         //! # use regmap::bus::{BusError, RegisterBus};\n\
          //! # struct Bus(u32);\n\
          //! # impl RegisterBus for Bus {\n\
          //! #     fn read(&mut self, _: usize) -> Result<u32, BusError> { Ok(self.0) }\n\
          //! #     fn write(&mut self, _: usize, v: u32) -> Result<(), BusError> { self.0 = v; Ok(()) }\n\
          //! # }\n\
-         //! use drive::regs::pwm::{DeadTime, DeadTimeValue, GateCtrl};\n\
+         //! use regmap::regs::pwm::{DeadTime, DeadTimeValue, GateCtrl};\n\
          //! let mut bus = Bus(0);\n\
          //! DeadTime::write(&mut bus, DeadTimeValue::ZERO.with_value(100))?;\n\
          //! GateCtrl::modify(&mut bus, |v| v.with_gate_en(true))?;\n\
          //! assert!(GateCtrl::read(&mut bus)?.gate_en());\n\
          //! # Ok::<(), BusError>(())\n\
          //! ```\n\n\
+         use crate as regmap;\n\
          use crate::bus::{BusError, RegisterBus};\n\
-         use crate::regmap::{self, Register};\n",
+         use crate::Register;\n",
     );
     for b in blocks {
         let _ = writeln!(

@@ -1,7 +1,7 @@
 //! The sine table of the PL front end, `pl-bitstream-src/rtl/sin_table.vh`,
-//! from `drive::pmsm::frontend_fixed::sin_entry` (one source for the RTL
+//! from `models::pmsm::frontend_fixed::sin_entry` (one source for the RTL
 //! and its Rust model).
-use drive::pmsm::frontend_fixed::{sin_entry, SIN_N};
+use models::pmsm::frontend_fixed::{sin_entry, SIN_N};
 use std::fmt::Write;
 
 /// Repository-relative path of the table.
@@ -24,7 +24,7 @@ pub fn sin_table() -> String {
     let mut s = String::new();
     let _ = write!(
         s,
-        "// Generated from drive::pmsm::frontend_fixed by `cargo run -p regmap-gen`;\n\
+        "// Generated from models::pmsm::frontend_fixed by `cargo run -p regmap-gen`;\n\
          // do not edit (a test fails when this file is stale).\n\
          // Included in mpdtc_frontend after `reg [35:0] sin_rom[0:{last}]`:\n\
          // word i = {{T[i + 1] - T[i], T[i]}}, T[i] = round(2^16 sin(2 pi i / {SIN_N})),\n\

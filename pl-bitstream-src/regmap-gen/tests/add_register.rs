@@ -5,7 +5,7 @@
 use std::path::PathBuf;
 use std::process::Command;
 
-use drive::regmap::{self, Access, Block, Hw, Invalid, Register, BLOCKS};
+use regmap::{self, Access, Block, Hw, Invalid, Register, BLOCKS};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")

@@ -1,9 +1,9 @@
-//! `pl_top.v`'s port list is `drive::regmap::PL_TOP_PORTS` plus the clock:
+//! `pl_top.v`'s port list is `ports::PL_TOP_PORTS` plus the clock:
 //! the generated harness binds every port, with the right direction and
 //! width, and nothing else.
 use std::path::PathBuf;
 
-use drive::regmap::{PortDir, PL_TOP_PORTS};
+use regmap_gen::ports::{PortDir, PL_TOP_PORTS};
 
 /// (name, direction, width) of every port in the ANSI header of `module`.
 fn ports_of(verilog: &str, module: &str) -> Vec<(String, PortDir, u8)> {

@@ -1,4 +1,4 @@
-// Generated from firmware/drive/src/regmap.rs (PL_TOP_PORTS) by `cargo run -p
+// Generated from pl-bitstream-src/regmap-gen/src/ports.rs (PL_TOP_PORTS) by `cargo run -p
 // regmap-gen`; do not edit (a test fails when this file is stale).
 //
 // C ABI around the Verilated pl_top, for rtl-sim (Rust).

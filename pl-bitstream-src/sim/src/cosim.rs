@@ -1,8 +1,8 @@
 //! Co-simulation of the firmware against the Verilog: the Verilated
-//! `pl_top` coupled to the plant by `drive::simpl::SimDrive` (the same
+//! `pl_top` coupled to the plant by `simpl::SimDrive` (the same
 //! inverter, PMSM and ADC/encoder code as the simulated PL, through the
 //! [`PlModel`] trait: no second copy of the coupling), served to the
-//! firmware under QEMU over the bridge protocol of `drive::cosim`.
+//! firmware under QEMU over the bridge protocol of `simpl::cosim`.
 //!
 //! [`RtlPl`] is the Verilated `pl_top` as a [`PlModel`]: one clock cycle
 //! per simulated cycle (no closed-form skips), an AXI4-Lite access in two
@@ -15,12 +15,12 @@
 //! on every cycle ([`RtlPl::mismatches`]; the equivalence itself is
 //! `tests/simpl_equiv.rs`).
 use crate::pl_top::{PlTopSim, OKAY};
-use drive::bus::BusError;
-use drive::cosim::{Op, Reply, Request, Status, REQUEST_LEN};
-use drive::gates::GateOutputs;
-use drive::regmap::BASE_ADDR;
-use drive::simpl::pl::{Events, Pins, SimPl};
-use drive::simpl::{PlModel, SimConfig, SimDrive};
+use regmap::bus::BusError;
+use regmap::BASE_ADDR;
+use simpl::cosim::{Op, Reply, Request, Status, REQUEST_LEN};
+use simpl::gates::GateOutputs;
+use simpl::pl::{Events, Pins, SimPl};
+use simpl::{PlModel, SimConfig, SimDrive};
 
 /// What the shadow model does in a cycle.
 #[derive(Clone, Copy)]
@@ -59,7 +59,7 @@ impl RtlPl {
     }
 
     /// Cycles in which the shadow model disagreed with the RTL (gates or
-    /// read data): 0 unless the RTL and `drive::simpl` diverged.
+    /// read data): 0 unless the RTL and `simpl` diverged.
     pub fn mismatches(&self) -> u64 {
         self.mismatches
     }
@@ -234,7 +234,7 @@ fn merge(a: Events, b: Events) -> Events {
 }
 
 /// The host end of the bridge: the co-simulated drive and the time
-/// mapping of `drive::cosim`.
+/// mapping of `simpl::cosim`.
 pub struct Bridge {
     drive: SimDrive<RtlPl>,
     /// (guest time, PL cycle) of the first request.
@@ -307,11 +307,11 @@ impl Bridge {
         self.run_to(target);
         let addr = req.addr as usize;
         match req.op {
-            Op::Read => match drive::bus::RegisterBus::read(&mut self.drive, addr) {
+            Op::Read => match regmap::bus::RegisterBus::read(&mut self.drive, addr) {
                 Ok(v) => self.reply(Status::Ok, v),
                 Err(_) => self.reply(Status::SlaveError, 0),
             },
-            Op::Write => match drive::bus::RegisterBus::write(&mut self.drive, addr, req.data) {
+            Op::Write => match regmap::bus::RegisterBus::write(&mut self.drive, addr, req.data) {
                 Ok(()) => self.reply(Status::Ok, 0),
                 Err(_) => self.reply(Status::SlaveError, 0),
             },

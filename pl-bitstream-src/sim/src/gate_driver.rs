@@ -2,7 +2,7 @@
 use core::ffi::c_void;
 use core::ptr::NonNull;
 
-use drive::gates::{GateInputs, GateOutputs};
+use simpl::gates::{GateInputs, GateOutputs};
 
 extern "C" {
     fn gd_new() -> *mut c_void;

@@ -1,12 +1,12 @@
 //! Safe wrapper of the Verilated `mpdcc_core` (shim:
 //! `csrc/mpdcc_core_shim.cpp`, 6 explorers instantiated, `n_use` of them
 //! used): one call = one decision from the state registers
-//! (`drive::mpdcc::fpga::Inputs`).
+//! (`models::mpdcc::fpga::Inputs`).
 use core::ffi::c_void;
 use core::ptr::NonNull;
 
-use drive::mpdcc::controller::DecisionKind;
-use drive::mpdcc::fpga::{Coeffs, Inputs};
+use models::mpdcc::controller::DecisionKind;
+use models::mpdcc::fpga::{Coeffs, Inputs};
 
 /// Explorers instantiated in the Verilated model.
 pub const MAX_EXPLORERS: u32 = 6;

@@ -1,4 +1,4 @@
-//! Test vectors for the MPDCC RTL against `drive::mpdcc::fpga` (the frozen
+//! Test vectors for the MPDCC RTL against `models::mpdcc::fpga` (the frozen
 //! core, `FpgaConfig::core`), and the comparison loop used by the tests and
 //! `scripts/rtl-check mpdcc-lane`.
 //!
@@ -15,10 +15,10 @@
 //!
 //! Inputs are offered back to back, with a random idle gap before one in
 //! eight, so the pipeline is checked at one input per clock and with gaps.
-use drive::mpdcc::closed_loop::{self, LoopConfig};
-use drive::mpdcc::controller::{candidates, CtrlState, Decision, MpdccController, StateError};
-use drive::mpdcc::fpga::{self, Coeffs, FpgaConfig, FpgaMpdcc, Inputs, NODE_MAX};
-use drive::mpdcc::params::DriveParams;
+use models::mpdcc::closed_loop::{self, LoopConfig};
+use models::mpdcc::controller::{candidates, CtrlState, Decision, MpdccController, StateError};
+use models::mpdcc::fpga::{self, Coeffs, FpgaConfig, FpgaMpdcc, Inputs, NODE_MAX};
+use models::mpdcc::params::DriveParams;
 
 use crate::mpdcc_lane::{LaneInput, MpdccLaneSim};
 pub use crate::mpdtc_vectors::Rng;
@@ -379,8 +379,8 @@ pub struct CoreSummary {
 /// through `mpdcc_core` with `explorers` explorers and `FpgaMpdcc::decide_raw`.
 pub fn check_core(seed: u64, n: u64, explorers: u32) -> CoreSummary {
     use crate::mpdcc_core::MpdccCoreSim;
-    use drive::mpdcc::controller::DecisionKind;
-    use drive::mpdcc::cycles;
+    use models::mpdcc::controller::DecisionKind;
+    use models::mpdcc::cycles;
     let f = core();
     let k = f.coeffs();
     let p = DriveParams::default();
@@ -423,7 +423,7 @@ pub fn check_core(seed: u64, n: u64, explorers: u32) -> CoreSummary {
             (DecisionKind::Kept, _) | (_, None) => (0, 0),
             (_, Some(r)) => (r.cost, r.j_dl),
         };
-        let cands = drive::mpdcc::controller::candidates(x.s_prev).len() as u32;
+        let cands = models::mpdcc::controller::candidates(x.s_prev).len() as u32;
         let model_cycles = cycles::pipelined_core_cycles(explorers.clamp(1, 6), cands);
         let ok = got.s == d.s
             && got.kind == Some(d.kind)

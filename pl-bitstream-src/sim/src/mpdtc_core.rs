@@ -1,9 +1,9 @@
 //! Safe wrapper of the Verilated `mpdtc_core` (shim: `csrc/mpdtc_core_shim.cpp`):
-//! one call = one decision, in the types of `drive::pmsm::mpdtc_fixed`.
+//! one call = one decision, in the types of `models::pmsm::mpdtc_fixed`.
 use core::ffi::c_void;
 use core::ptr::NonNull;
 
-use drive::pmsm::mpdtc_fixed::{FixedInputs, FixedOutputs, FixedParams, FixedState};
+use models::pmsm::mpdtc_fixed::{FixedInputs, FixedOutputs, FixedParams, FixedState};
 
 #[repr(C)]
 #[derive(Default)]

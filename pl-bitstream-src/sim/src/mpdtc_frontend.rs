@@ -1,11 +1,11 @@
 //! Safe wrapper of the Verilated `mpdtc_frontend` (shim:
 //! `csrc/mpdtc_frontend_shim.cpp`) and the bit-exact check against
-//! `drive::pmsm::frontend_fixed::frontend` behind `rtl-check frontend`.
+//! `models::pmsm::frontend_fixed::frontend` behind `rtl-check frontend`.
 use core::ffi::c_void;
 use core::ptr::NonNull;
 
-use drive::pmsm::frontend_fixed::{frontend, FrontendInputs, FrontendOutputs, FrontendParams};
-use drive::pmsm::mpdtc_fixed::FixedInputs;
+use models::pmsm::frontend_fixed::{frontend, FrontendInputs, FrontendOutputs, FrontendParams};
+use models::pmsm::mpdtc_fixed::FixedInputs;
 
 use crate::mpdtc_vectors::Rng;
 

@@ -1,4 +1,4 @@
-//! Test vectors for `mpdtc_core` against `drive::pmsm::mpdtc_fixed::decide`,
+//! Test vectors for `mpdtc_core` against `models::pmsm::mpdtc_fixed::decide`,
 //! and the comparison loop used by the tests and `scripts/rtl-check`.
 //!
 //! Each vector is (state, inputs, parameters). Classes, cycled by index:
@@ -9,9 +9,9 @@
 //!   extreme speed, saturated currents (+-full scale), all-zero state and
 //!   currents (cost ties between candidates), tolerance band 0 (no candidate
 //!   in band) and full scale (all in band), zero weights and gains.
-use drive::pmsm::mpdtc_fixed::{self, FixedInputs, FixedParams, FixedState};
-use drive::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use drive::pmsm::params::MotorParams;
+use models::pmsm::mpdtc_fixed::{self, FixedInputs, FixedParams, FixedState};
+use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+use models::pmsm::params::MotorParams;
 
 use crate::mpdtc_core::MpdtcCoreSim;
 
@@ -246,7 +246,7 @@ pub fn vector(
 
 /// Whether the decision had an exact tie (same band flag, value and
 /// transition count) for the best key, so that the index rule decided.
-pub fn had_tie(out: &drive::pmsm::mpdtc_fixed::FixedOutputs, tol: i32, s_applied: u8) -> bool {
+pub fn had_tie(out: &models::pmsm::mpdtc_fixed::FixedOutputs, tol: i32, s_applied: u8) -> bool {
     let key = |s: usize| {
         let n = ((s as u8 ^ s_applied) & 7).count_ones() as i64;
         if out.err[s] <= tol {

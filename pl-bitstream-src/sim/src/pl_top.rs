@@ -1,6 +1,6 @@
 //! Safe wrapper of the Verilated `pl_top` (shim: `csrc/pl_top_shim.cpp`)
 //! and a cycle-level AXI4-Lite master to drive it. The shim and the port
-//! structs [`PtIn`]/[`PtOut`] are generated from `drive::regmap::PL_TOP_PORTS`
+//! structs [`PtIn`]/[`PtOut`] are generated from `regmap::PL_TOP_PORTS`
 //! (`cargo run -p regmap-gen`).
 //!
 //! [`PlTopSim::step`] is one clock cycle: the inputs in [`PlTopSim::inp`]
@@ -187,33 +187,33 @@ impl Drop for PlTopSim {
 }
 
 /// AXI offset (15-bit window) of a register of the map.
-pub fn axi_addr(block: &drive::regmap::Block, reg: &drive::regmap::Register) -> u16 {
-    (block.addr(reg) - drive::regmap::BASE_ADDR) as u16
+pub fn axi_addr(block: &regmap::Block, reg: &regmap::Register) -> u16 {
+    (block.addr(reg) - regmap::BASE_ADDR) as u16
 }
 
 /// The Verilated `pl_top` as the drivers' register bus (absolute GP0
 /// addresses; one AXI access each, `SLVERR` as [`BusError::SlaveError`]).
-impl drive::bus::RegisterBus for PlTopSim {
-    fn read(&mut self, addr: usize) -> Result<u32, drive::bus::BusError> {
+impl regmap::bus::RegisterBus for PlTopSim {
+    fn read(&mut self, addr: usize) -> Result<u32, regmap::bus::BusError> {
         let rel = axi_rel(addr)?;
         match PlTopSim::read(self, rel) {
             (d, OKAY) => Ok(d),
-            _ => Err(drive::bus::BusError::SlaveError),
+            _ => Err(regmap::bus::BusError::SlaveError),
         }
     }
-    fn write(&mut self, addr: usize, value: u32) -> Result<(), drive::bus::BusError> {
+    fn write(&mut self, addr: usize, value: u32) -> Result<(), regmap::bus::BusError> {
         let rel = axi_rel(addr)?;
         match PlTopSim::write(self, rel, value) {
             OKAY => Ok(()),
-            _ => Err(drive::bus::BusError::SlaveError),
+            _ => Err(regmap::bus::BusError::SlaveError),
         }
     }
 }
 
 /// The AXI address of an absolute one (outside the window: `SlaveError`).
-fn axi_rel(addr: usize) -> Result<u16, drive::bus::BusError> {
-    addr.checked_sub(drive::regmap::BASE_ADDR)
-        .filter(|r| *r < 1 << drive::regmap::AXI_ADDR_BITS)
+fn axi_rel(addr: usize) -> Result<u16, regmap::bus::BusError> {
+    addr.checked_sub(regmap::BASE_ADDR)
+        .filter(|r| *r < 1 << regmap::AXI_ADDR_BITS)
         .map(|r| r as u16)
-        .ok_or(drive::bus::BusError::SlaveError)
+        .ok_or(regmap::bus::BusError::SlaveError)
 }

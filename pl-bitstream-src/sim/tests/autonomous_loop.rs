@@ -8,21 +8,21 @@
 //! take the same decision in every control period, and the torque must
 //! settle at the reference (plant truth, 10 % band). Run at the paper's
 //! 64 kHz and at a 1 us control period.
-use drive::bus::BusError;
-use drive::bus::RegisterBus;
-use drive::gates::GateOutputs;
 use drive::pl::adc::Adc;
 use drive::pl::enc::Encoder;
 use drive::pl::mpdtc::{frontend_params, torque_ref_word, FrontendSetup, Mpdtc};
 use drive::pl::pwm::Pwm;
 use drive::pl::top::{Mode, Top};
-use drive::pmsm::metrics;
-use drive::pmsm::mpdtc_fixed::FixedParams;
-use drive::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use drive::regmap::{self as rm};
-use drive::simpl::pl::{Events, Pins, SimPl};
-use drive::simpl::{PlModel, SimConfig, SimDrive};
+use models::pmsm::metrics;
+use models::pmsm::mpdtc_fixed::FixedParams;
+use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+use regmap::bus::BusError;
+use regmap::bus::RegisterBus;
+use regmap::{self as rm};
 use rtl_sim::cosim::RtlPl;
+use simpl::gates::GateOutputs;
+use simpl::pl::{Events, Pins, SimPl};
+use simpl::{PlModel, SimConfig, SimDrive};
 
 /// The simulated PL with the bus timing of the Verilated harness: an
 /// access is the register strobe cycle plus one idle cycle, and the plant

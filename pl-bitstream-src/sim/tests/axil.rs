@@ -1,8 +1,8 @@
 //! AXI4-Lite tests of the Verilated `pl_top`: every register of the table
-//! (`drive::regmap`) against the RTL (reset value, access type, clamping,
+//! (`regmap`) against the RTL (reset value, access type, clamping,
 //! rejection, byte strobes), unmapped addresses, and the handshake cases:
 //! simultaneous AW/W, either one first, back to back, stalled responses.
-use drive::regmap::{self, Access, Register, BLOCKS};
+use regmap::{self, Access, Register, BLOCKS};
 use rtl_sim::pl_top::{axi_addr, PlTopSim, OKAY, SLVERR};
 
 /// SplitMix64: small seedable generator (no dependency).

@@ -8,13 +8,13 @@
 //! strobe (PWM). A 0.4 N m reference step must reproduce the pure-Rust run
 //! (`MpdtcFixed`, the same fixed-point model) decision for decision, and the
 //! gates must hold S[k] until the boundary and follow S[k+1] after it.
-use drive::pmsm::mpdtc_ctrl::{fixed_inputs, inputs_from_measurement, MpdtcFixed};
-use drive::pmsm::mpdtc_fixed::FixedParams;
-use drive::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use drive::pmsm::params::{DriveParams, MotorParams};
-use drive::pmsm::plant::{MechanicalMode, Plant};
-use drive::pmsm::sim::{self, Actuation, Controller, Measurement};
-use drive::regmap::{self as rm, mode, seq_state, Register};
+use models::pmsm::mpdtc_ctrl::{fixed_inputs, inputs_from_measurement, MpdtcFixed};
+use models::pmsm::mpdtc_fixed::FixedParams;
+use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+use models::pmsm::params::{DriveParams, MotorParams};
+use models::pmsm::plant::{MechanicalMode, Plant};
+use models::pmsm::sim::{self, Actuation, Controller, Measurement};
+use regmap::{self as rm, mode, seq_state, Register};
 use rtl_sim::pl_top::{axi_addr, PlTopSim, OKAY};
 
 fn a(r: &Register) -> u16 {

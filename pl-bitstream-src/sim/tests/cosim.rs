@@ -7,14 +7,14 @@
 //!   a read-only write refused, a scratch register round trip, the time
 //!   mapping (one guest count = one PL cycle) and the control-period
 //!   boundaries of the ADC average (1564 cycles after reset).
-use drive::bus::RegisterBus;
-use drive::cosim::{Op, Reply, Request, Status, REPLY_LEN};
 use drive::pl::mpdtc::Mpdtc;
 use drive::pl::top::Mode;
-use drive::regmap::{self as rm};
 use drive::servo::{Servo, ServoConfig, StepResult};
-use drive::simpl::{PlModel, SimConfig, SimDrive};
+use regmap::bus::RegisterBus;
+use regmap::{self as rm};
 use rtl_sim::cosim::{Bridge, RtlPl};
+use simpl::cosim::{Op, Reply, Request, Status, REPLY_LEN};
+use simpl::{PlModel, SimConfig, SimDrive};
 use std::io::{BufRead, BufReader, Read, Write};
 use std::process::{Command, Stdio};
 
@@ -28,7 +28,7 @@ use std::process::{Command, Stdio};
 fn mpdtc_step<P: PlModel>(sim: &mut SimDrive<P>) -> (StepResult, Vec<u8>) {
     let cfg = ServoConfig {
         mpdtc_ps_fed: true,
-        ..ServoConfig::for_simulated(sim.config())
+        ..ServoConfig::for_plant(sim.config().motor, sim.config().adc_amps_per_count)
     };
     let mut s = Servo::new(&cfg).unwrap();
     s.init(sim).unwrap();

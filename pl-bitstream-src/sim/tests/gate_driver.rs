@@ -1,8 +1,8 @@
-//! The Verilated gate driver against the Rust model `drive::gates`,
+//! The Verilated gate driver against the Rust model `simpl::gates`,
 //! bit-exact on every output of every cycle, plus directed cases checked
 //! against hand-computed expectations (independent of the model).
-use drive::gates::{DeadTime, GateDriver, GateInputs, GateOutputs};
 use rtl_sim::gate_driver::GateDriverSim;
+use simpl::gates::{DeadTime, GateDriver, GateInputs, GateOutputs};
 
 /// SplitMix64: a small, seedable generator (no dependency).
 struct Rng(u64);

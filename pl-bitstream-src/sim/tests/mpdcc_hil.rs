@@ -1,21 +1,21 @@
 //! Hardware in the loop (paper 001, Sec. VII): the Verilated `pl_top`'s
 //! `mpdcc_core`, driven through its register page by the driver
 //! `drive::pl::mpdcc`, closes the loop around the Rust induction machine and
-//! 5L-ANPC plant (`drive::mpdcc::closed_loop`), one decision per `T_s`. It
+//! 5L-ANPC plant (`models::mpdcc::closed_loop`), one decision per `T_s`. It
 //! must reproduce the loop of the pure-Rust FPGA model
-//! (`drive::mpdcc::fpga::FpgaMpdcc`) decision for decision over two
+//! (`models::mpdcc::fpga::FpgaMpdcc`) decision for decision over two
 //! fundamental periods: same positions, kinds, `L*`, candidate counts, so
 //! the same trajectory and the same statistics; and each decision's cycle
 //! count must be the core's (`cycles::pipelined_core_cycles`).
 use std::time::Instant;
 
-use drive::mpdcc::closed_loop::{self, LoopConfig, LoopResult};
-use drive::mpdcc::controller::{candidates, CtrlState, Decision, MpdccController, StateError};
-use drive::mpdcc::cycles;
-use drive::mpdcc::fpga::{FpgaMpdcc, Inputs};
-use drive::mpdcc::params::DriveParams;
 use drive::pl::mpdcc::Mpdcc;
-use drive::regmap;
+use models::mpdcc::closed_loop::{self, LoopConfig, LoopResult};
+use models::mpdcc::controller::{candidates, CtrlState, Decision, MpdccController, StateError};
+use models::mpdcc::cycles;
+use models::mpdcc::fpga::{FpgaMpdcc, Inputs};
+use models::mpdcc::params::DriveParams;
+use regmap;
 use rtl_sim::mpdcc_vectors::core;
 use rtl_sim::pl_top::PlTopSim;
 
@@ -98,7 +98,7 @@ fn pl_top_reproduces_the_fpga_model_loop_over_two_periods() {
     assert_eq!(got, want);
     // Not a trivial loop: it switched, and searched often.
     let kinds = |k| model.1.iter().filter(|d| d.kind == k).count();
-    use drive::mpdcc::controller::DecisionKind::*;
+    use models::mpdcc::controller::DecisionKind::*;
     let (kept, opt, dl) = (kinds(Kept), kinds(Optimal), kinds(Deadlock));
     assert!(
         n > 1000 && opt > 50 && kept > 50,

@@ -1,6 +1,6 @@
-//! `mpdcc_lane` against `drive::mpdcc::fpga::lane`: bit-exact `l_j` at one
+//! `mpdcc_lane` against `models::mpdcc::fpga::lane`: bit-exact `l_j` at one
 //! input per clock (and with idle gaps), fixed latency.
-use drive::mpdcc::binsearch;
+use models::mpdcc::binsearch;
 use rtl_sim::mpdcc_lane::{LaneInput, MpdccLaneSim};
 use rtl_sim::mpdcc_vectors::{check_lane, lane_cases};
 

@@ -9,7 +9,7 @@
 //!   (the multipliers written in `mpdcc_common.v` and `mpdcc_explorer.v`),
 //!   so at most 32 at N = 2;
 //! - LUT and FF grow with every explorer added.
-use drive::mpdcc::cycles::{pipelined_core_cycles, PAPER_TABLE2};
+use models::mpdcc::cycles::{pipelined_core_cycles, PAPER_TABLE2};
 
 const CANDIDATES: u32 = 216;
 

@@ -1,6 +1,6 @@
 //! `mpdtc_core` against `mpdtc_fixed::decide`: bit-exact on every output
 //! (switch state, debug values, next state), fixed latency.
-use drive::pmsm::mpdtc_fixed;
+use models::pmsm::mpdtc_fixed;
 use rtl_sim::mpdtc_core::MpdtcCoreSim;
 use rtl_sim::mpdtc_vectors::{check, paper_params, vector, Rng};
 
@@ -10,7 +10,7 @@ fn random_and_corner_vectors_are_bit_exact() {
     assert_eq!(s.mismatches, 0, "{s:?}");
     assert_eq!(s.latency_cycles, Some(11), "{s:?}");
     // The register the PS reads says the same.
-    assert_eq!(drive::regmap::MPDTC_LATENCY_CYCLES, 11);
+    assert_eq!(regmap::MPDTC_LATENCY_CYCLES, 11);
     // Both band outcomes are exercised.
     assert!(
         s.in_band_decisions > 1000 && s.in_band_decisions < 19_000,

@@ -1,6 +1,6 @@
 //! `mpdtc_frontend` against `frontend_fixed::frontend`: bit-exact on every
 //! output, fixed latency, cos/sin within the written error bound.
-use drive::pmsm::frontend_fixed::{frontend, FrontendInputs};
+use models::pmsm::frontend_fixed::{frontend, FrontendInputs};
 use rtl_sim::mpdtc_frontend::{check, drive_params, FrontendSim};
 
 #[test]

@@ -6,7 +6,7 @@
 //! and the START hand-shake, MPDTC (the core latency), PWM applying S[k+1] only at
 //! the next ADC average strobe, overruns, ignored starts, and the aborts to
 //! IDLE (fault, GATE_EN = 0, mode change, MANUAL).
-use drive::regmap::{self as rm, mode, seq_state, Block, Register};
+use regmap::{self as rm, mode, seq_state, Block, Register};
 use rtl_sim::pl_top::{axi_addr, PlTopSim, PtOut, OKAY};
 
 fn w(sim: &mut PlTopSim, b: &Block, r: &Register, v: u32) {
@@ -80,12 +80,12 @@ fn setup() -> PlTopSim {
     // Parameters and inputs of a decision that picks an active vector:
     // zero currents, angle 0 (cos 1.0 = 65536 in COEF sQ1.16), T* = 0.4 N m
     // (TRQ sQ3.14: 6554), the default drive's fixed-point parameters.
-    let cfg = drive::pmsm::mpdtc_ref::MpdtcConfig::new(
-        drive::pmsm::params::MotorParams::default(),
-        drive::pmsm::mpdtc_ref::MpdtcParams::default(),
+    let cfg = models::pmsm::mpdtc_ref::MpdtcConfig::new(
+        models::pmsm::params::MotorParams::default(),
+        models::pmsm::mpdtc_ref::MpdtcParams::default(),
     )
     .unwrap();
-    let p = drive::pmsm::mpdtc_fixed::FixedParams::from_config(&cfg).unwrap();
+    let p = models::pmsm::mpdtc_fixed::FixedParams::from_config(&cfg).unwrap();
     let m = &rm::MPDTC;
     for (reg, v) in [
         (&rm::MPDTC_P_A, p.a),

@@ -2,7 +2,7 @@
 //! AXI-Lite port, against hand-computed expectations: fault trip timing and
 //! latching, watchdog, over-current, ADC rate and averaging, PWM on-times
 //! with dead time, encoder position, index and speed.
-use drive::regmap::{self, mode};
+use regmap::{self, mode};
 use rtl_sim::pl_top::{axi_addr, PlTopSim, OKAY};
 
 fn a(b: &regmap::Block, r: &regmap::Register) -> u16 {

@@ -1,4 +1,4 @@
-//! The simulated PL (`drive::simpl::pl::SimPl`, event-driven) against the
+//! The simulated PL (`simpl::pl::SimPl`, event-driven) against the
 //! Verilated `pl_top`: the same random sequence of register accesses (every
 //! register of the map, valid and invalid values, unmapped and unaligned
 //! addresses), ADC converter data, encoder and fault pin levels and idle
@@ -11,14 +11,14 @@
 //! the register-bus strobe in the first; a `SimPl` access is that strobe
 //! cycle, followed here by one idle cycle. The Verilated model leaves reset
 //! at cycle 4; `SimPl` counts from 0 there.
-use drive::bus::{BusError, RegisterBus};
-use drive::mpdcc::fpga::{self, Coeffs, Inputs};
 use drive::pl::mpdcc::Mpdcc;
-use drive::regmap::{self as rm, Access, Register, BASE_ADDR, BLOCKS};
-use drive::simpl::adc::adc_word;
-use drive::simpl::pl::{Events, SimPl};
+use models::mpdcc::fpga::{self, Coeffs, Inputs};
+use regmap::bus::{BusError, RegisterBus};
+use regmap::{self as rm, Access, Register, BASE_ADDR, BLOCKS};
 use rtl_sim::mpdtc_vectors::Rng;
 use rtl_sim::pl_top::{PlTopSim, PtOut, OKAY, SLVERR};
+use simpl::adc::adc_word;
+use simpl::pl::{Events, SimPl};
 
 /// Converter time of both models: `drdy` 11 cycles after `adc_cnv`.
 const CONV: u32 = 10;
@@ -155,7 +155,7 @@ impl Pair {
             Ok(o2.rdata)
         } else {
             assert_eq!(o2.rresp, SLVERR);
-            Err(drive::bus::BusError::SlaveError)
+            Err(regmap::bus::BusError::SlaveError)
         };
         self.reads += 1;
         if let Ok(v) = want {
@@ -321,9 +321,9 @@ fn mpdcc_op(p: &mut Pair, rng: &mut Rng, states: &[Inputs], k: &Coeffs) {
             let _ = m.deadlocks();
             let _ = m.config();
             let idx = match got.decision.kind {
-                drive::mpdcc::controller::DecisionKind::Kept => 0,
-                drive::mpdcc::controller::DecisionKind::Optimal => 1,
-                drive::mpdcc::controller::DecisionKind::Deadlock => 2,
+                models::mpdcc::controller::DecisionKind::Kept => 0,
+                models::mpdcc::controller::DecisionKind::Optimal => 1,
+                models::mpdcc::controller::DecisionKind::Deadlock => 2,
             };
             let want = fpga::decide(k, &x, 2).decision;
             assert_eq!(got.decision, want, "MPDCC page vs model on {x:?}");

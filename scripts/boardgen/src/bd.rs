@@ -63,8 +63,8 @@ pub fn problems(facts: &str, stub_ports: &[Port], board: &Board) -> Vec<String> 
         }
     }
     let want_addr = (
-        format!("0x{:08X}", drive::regmap::BASE_ADDR),
-        format!("{}K", (1usize << drive::regmap::AXI_ADDR_BITS) / 1024),
+        format!("0x{:08X}", regmap::BASE_ADDR),
+        format!("{}K", (1usize << regmap::AXI_ADDR_BITS) / 1024),
     );
     if address.as_ref() != Some(&want_addr) {
         out.push(format!(
@@ -83,7 +83,7 @@ pub fn problems(facts: &str, stub_ports: &[Port], board: &Board) -> Vec<String> 
             board.board.part
         ));
     }
-    let want_fclk = crate::gen::mhz(drive::regmap::PL_CLOCK_HZ);
+    let want_fclk = crate::gen::mhz(regmap::PL_CLOCK_HZ);
     if fclk.as_deref() != Some(want_fclk.as_str()) {
         out.push(format!(
             "PS7 FCLK0 {fclk:?} MHz, the register map needs {want_fclk} MHz"

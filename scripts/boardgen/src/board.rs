@@ -200,11 +200,11 @@ impl Board {
         }
         let ps = &self.ps;
         // The register map counts time in PL cycles of this clock.
-        if ps.fclk0_hz != drive::regmap::PL_CLOCK_HZ {
+        if ps.fclk0_hz != regmap::PL_CLOCK_HZ {
             return err(format!(
                 "ps.fclk0_hz = {} Hz: the PL design and its register map assume {} Hz",
                 ps.fclk0_hz,
-                drive::regmap::PL_CLOCK_HZ
+                regmap::PL_CLOCK_HZ
             ));
         }
         if drive::zynq::uart_divisors(ps.uart_ref_hz, BAUD).is_none() {

@@ -113,11 +113,11 @@ pub fn ps7_tcl(b: &Board) -> String {
     let _ = writeln!(s, "set board_part {}", b.board.part);
     let _ = writeln!(s, "set fclk0_hz {}", ps.fclk0_hz);
     // The PL's AXI window: the register map's base and its 2^AXI_ADDR_BITS bytes.
-    let _ = writeln!(s, "set pl_base 0x{:08X}", drive::regmap::BASE_ADDR);
+    let _ = writeln!(s, "set pl_base 0x{:08X}", regmap::BASE_ADDR);
     let _ = writeln!(
         s,
         "set pl_range {}K",
-        (1usize << drive::regmap::AXI_ADDR_BITS) / 1024
+        (1usize << regmap::AXI_ADDR_BITS) / 1024
     );
     let bit = |v: bool| if v { "1" } else { "0" };
     let mut cfg: Vec<(String, String)> = vec![

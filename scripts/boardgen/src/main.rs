@@ -147,8 +147,8 @@ fn run(args: &[String]) -> Result<(), String> {
                 "boardgen: block design: {} ports as in {}, PL window 0x{:08X}, FCLK0 {} MHz",
                 stub.len(),
                 boardgen::bd::PS_BD_STUB,
-                drive::regmap::BASE_ADDR,
-                boardgen::gen::mhz(drive::regmap::PL_CLOCK_HZ)
+                regmap::BASE_ADDR,
+                boardgen::gen::mhz(regmap::PL_CLOCK_HZ)
             );
             Ok(())
         }

@@ -7,10 +7,10 @@
 //! structures of `drive`'s `mpdcc-research` feature (docs/mpdcc-fpga.md).
 use anyhow::{anyhow, Result};
 use clap::{Args as ClapArgs, ValueEnum};
-use drive::mpdcc::closed_loop::{self, LoopConfig};
-use drive::mpdcc::fpga::{self, FpgaConfig, FpgaMpdcc, Structure, P_PAPER};
-use drive::mpdcc::params::DriveParams;
-use drive::mpdcc::reference::Reference;
+use models::mpdcc::closed_loop::{self, LoopConfig};
+use models::mpdcc::fpga::{self, FpgaConfig, FpgaMpdcc, Structure, P_PAPER};
+use models::mpdcc::params::DriveParams;
+use models::mpdcc::reference::Reference;
 
 /// Datapath structure of the explored core.
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -64,7 +64,7 @@ pub fn mpdcc(a: Args) -> Result<()> {
     if let Some(n) = a.nodes {
         st.nodes = n;
     }
-    let run = |p: &DriveParams, ctrl: &mut dyn drive::mpdcc::controller::MpdccController| {
+    let run = |p: &DriveParams, ctrl: &mut dyn models::mpdcc::controller::MpdccController| {
         closed_loop::run(p, &cfg, ctrl, None, &mut |_| {}).map_err(|e| anyhow!("{e:?}"))
     };
     for &di in &a.delta_i {

@@ -5,7 +5,7 @@
 //! Definitions used by every number printed here (docs/mpdcc.md):
 //! - switching frequency: device turn-ons per semiconductor per second
 //!   (24 devices), THD: rms of `i - i_1` over rms of `i_1`, pooled over the
-//!   three phases, over a whole number of periods ([`drive::mpdcc::stats`]);
+//!   three phases, over a whole number of periods ([`models::mpdcc::stats`]);
 //! - decision mismatch: share of all steps where the FPGA model, fed the
 //!   reference's closed-loop state, returns another position than the
 //!   reference (the reference drives the plant);
@@ -13,12 +13,12 @@
 //!   independent closed-loop runs, in percent; the headline is the maximum
 //!   over the sweep (the paper's "below 8 % and 2 %" covers its sweep).
 use anyhow::{anyhow, Context, Result};
-use drive::mpdcc::closed_loop::{self, LoopConfig, LoopResult, TraceSample};
-use drive::mpdcc::controller::MpdccController;
-use drive::mpdcc::cycles;
-use drive::mpdcc::fpga::{FpgaConfig, FpgaMpdcc};
-use drive::mpdcc::params::DriveParams;
-use drive::mpdcc::reference::Reference;
+use models::mpdcc::closed_loop::{self, LoopConfig, LoopResult, TraceSample};
+use models::mpdcc::controller::MpdccController;
+use models::mpdcc::cycles;
+use models::mpdcc::fpga::{FpgaConfig, FpgaMpdcc};
+use models::mpdcc::params::DriveParams;
+use models::mpdcc::reference::Reference;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -194,7 +194,7 @@ pub fn load_params(path: Option<&Path>) -> Result<DriveParams> {
 fn fpga_for(p: &DriveParams) -> Result<FpgaMpdcc> {
     FpgaMpdcc::new(
         p,
-        FpgaConfig::with_p(drive::mpdcc::fpga::p_taylor(&p.machine)),
+        FpgaConfig::with_p(models::mpdcc::fpga::p_taylor(&p.machine)),
     )
     .map_err(|e| anyhow!("FPGA model: {e}"))
 }
@@ -383,7 +383,7 @@ fn build_report(a: &Args) -> Result<(Report, Vec<Trace>)> {
         mismatch_anatomy,
         reference_reduced_candidates: reduced,
         params: base,
-        p_correction: drive::mpdcc::fpga::p_taylor(&base.machine),
+        p_correction: models::mpdcc::fpga::p_taylor(&base.machine),
         measure_periods: a.periods,
         runtime_s: t0.elapsed().as_secs_f64(),
     };

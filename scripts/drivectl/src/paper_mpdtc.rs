@@ -227,12 +227,12 @@ fn write_csv(dir: &Path, r: &Results) -> Result<()> {
 /// Throughput: closed-loop control periods per second (MPDTC reference,
 /// MPDTC fixed-point model, FOC), and open-loop replay steps per second.
 pub fn bench(a: BenchArgs) -> Result<()> {
-    use drive::pmsm::foc::{Foc, FocParams};
-    use drive::pmsm::mpdtc_ctrl::{MpdtcFixed, MpdtcRef};
-    use drive::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-    use drive::pmsm::params::{DriveParams, MotorParams};
-    use drive::pmsm::plant::{MechanicalMode, Plant};
-    use drive::pmsm::sim::{self, Controller};
+    use models::pmsm::foc::{Foc, FocParams};
+    use models::pmsm::mpdtc_ctrl::{MpdtcFixed, MpdtcRef};
+    use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+    use models::pmsm::params::{DriveParams, MotorParams};
+    use models::pmsm::plant::{MechanicalMode, Plant};
+    use models::pmsm::sim::{self, Controller};
     use std::time::Instant;
     anyhow::ensure!(
         a.sim_s.is_finite() && a.sim_s > 0.0 && a.sim_s <= 100.0,
@@ -240,7 +240,7 @@ pub fn bench(a: BenchArgs) -> Result<()> {
     );
     let motor = MotorParams::default();
     let drive = DriveParams::default();
-    let e = |e: drive::pmsm::params::ParamError| anyhow::anyhow!("{e}");
+    let e = |e: models::pmsm::params::ParamError| anyhow::anyhow!("{e}");
     let cfg = MpdtcConfig::new(motor, MpdtcParams::default()).map_err(e)?;
     fn closed<C: Controller>(
         c: &mut C,
@@ -314,24 +314,28 @@ pub fn bench(a: BenchArgs) -> Result<()> {
     ))
 }
 
-/// The simulated PL and motor (`drive::simpl::SimDrive`) in closed loop
+/// The simulated PL and motor (`simpl::SimDrive`) in closed loop
 /// with the firmware's drive code (`drive::servo::Servo`: one control step
 /// per control-period boundary, the Fig. 10 toggling reference): control
 /// periods per second of host time, and the simulation's work per period
 /// (PL cycles stepped, quiet spans skipped, plant segments) to estimate its
 /// cost on a slower machine.
 fn simdrive_loop(mpdtc: bool, sim_s: f64) -> Result<serde_json::Value> {
-    use drive::bus::RegisterBus;
     use drive::pl::top::Mode;
-    use drive::regmap as rm;
     use drive::servo::{Servo, ServoConfig};
-    use drive::simpl::{SimConfig, SimDrive};
+    use regmap as rm;
+    use regmap::bus::RegisterBus;
+    use simpl::{SimConfig, SimDrive};
     use std::time::Instant;
-    let e = |e: drive::pmsm::params::ParamError| anyhow::anyhow!("{e}");
+    let e = |e: models::pmsm::params::ParamError| anyhow::anyhow!("{e}");
     let s = |e: drive::servo::ServoError| anyhow::anyhow!("drive: {e:?}");
-    let b = |e: drive::bus::BusError| anyhow::anyhow!("register access failed: {e:?}");
+    let b = |e: regmap::bus::BusError| anyhow::anyhow!("register access failed: {e:?}");
     let mut sim = SimDrive::new(&SimConfig::default()).map_err(e)?;
-    let mut servo = Servo::new(&ServoConfig::for_simulated(sim.config())).map_err(e)?;
+    let mut servo = Servo::new(&ServoConfig::for_plant(
+        sim.config().motor,
+        sim.config().adc_amps_per_count,
+    ))
+    .map_err(e)?;
     servo.init(&mut sim).map_err(b)?;
     servo
         .set_mode(&mut sim, if mpdtc { Mode::Mpdtc } else { Mode::Foc })

@@ -1,5 +1,5 @@
 //! `drivectl sim replay`: applies a sequence of switching states to the PMSM
-//! plant (`drive::pmsm::plant`), open loop, at constant electrical speed, from
+//! plant (`models::pmsm::plant`), open loop, at constant electrical speed, from
 //! zero current and angle 0, and writes the currents and torque per period.
 //!
 //! Formats (documented in `docs/pmsm-models.md`):
@@ -16,9 +16,9 @@
 //! All input is read and checked before anything is written; the output is
 //! written to a temporary file next to `--out` and renamed into place.
 use anyhow::{anyhow, bail, Context, Result};
-use drive::pmsm::frames::{parse_state_bits, state_bits};
-use drive::pmsm::params::MotorParams;
-use drive::pmsm::plant::{Actuation, MechanicalMode, Plant};
+use models::pmsm::frames::{parse_state_bits, state_bits};
+use models::pmsm::params::MotorParams;
+use models::pmsm::plant::{Actuation, MechanicalMode, Plant};
 use std::path::PathBuf;
 
 #[derive(clap::Args)]
@@ -88,7 +88,7 @@ fn toml_key_line(text: &str, key: &str) -> Option<usize> {
 pub fn parse_config(text: &str) -> Result<ReplayConfig> {
     let c: ReplayConfig = toml::from_str(text).map_err(|e| anyhow!("{e}"))?;
     let m = motor_of(&c);
-    let check = || -> std::result::Result<(), drive::pmsm::params::ParamError> {
+    let check = || -> std::result::Result<(), models::pmsm::params::ParamError> {
         m.validate()?;
         // Plant::new checks L_d = L_q, dead time and speed.
         Plant::new(
@@ -98,13 +98,13 @@ pub fn parse_config(text: &str) -> Result<ReplayConfig> {
             c.omega_e_rad_s,
         )?;
         if !(c.period_s.is_finite() && c.period_s > 0.0) {
-            return Err(drive::pmsm::params::ParamError {
+            return Err(models::pmsm::params::ParamError {
                 field: "period_s",
                 reason: "must be finite and > 0",
             });
         }
         if c.dead_time_s >= 0.5 * c.period_s {
-            return Err(drive::pmsm::params::ParamError {
+            return Err(models::pmsm::params::ParamError {
                 field: "dead_time_s",
                 reason: "must be below half the period",
             });
@@ -280,7 +280,7 @@ mod tests {
     /// missing keys take the paper's defaults, unknown keys are rejected.
     #[test]
     fn library_params_load_from_toml() {
-        use drive::pmsm::params::DriveParams;
+        use models::pmsm::params::DriveParams;
         let m: MotorParams = toml::from_str("r_s_ohm = 0.6\npole_pairs = 4\n").unwrap();
         assert_eq!((m.r_s_ohm, m.pole_pairs), (0.6, 4));
         assert_eq!(m.l_d_h, MotorParams::default().l_d_h);

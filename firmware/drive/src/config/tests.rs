@@ -1,9 +1,9 @@
 use super::*;
 use crate::pl::fake::FakePl;
-use crate::pmsm::mpdtc_fixed::FixedParams;
-use crate::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use crate::regmap::{self, ADC, ENC, FAULT, MPDTC, PWM};
 use crate::servo::ServoError;
+use models::pmsm::mpdtc_fixed::FixedParams;
+use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+use regmap::{self, ADC, ENC, FAULT, MPDTC, PWM};
 use std::string::String;
 
 #[test]
@@ -138,7 +138,7 @@ fn whole_configuration_is_checked() {
         Err(ConfigError::Invalid(_))
     ));
     // 2047 counts of 10 mA: 20.47 A is in range of the board's ADC.
-    assert_eq!(oc_limit_counts(&c.apply(&base)), Some(1400));
+    assert_eq!(c.apply(&base).oc_limit_counts(), Some(1400));
     assert_eq!(c.get("enc_zero"), Some(999.0));
 }
 

@@ -505,9 +505,7 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
             [] => Ok(Command::Mpdcc(None)),
             ["run"] => Ok(Command::Mpdcc(Some(1))),
             ["run", n] => match n.parse::<u32>() {
-                Ok(n) if (1..=crate::mpdcc::hil::MAX_PERIODS).contains(&n) => {
-                    Ok(Command::Mpdcc(Some(n)))
-                }
+                Ok(n) if (1..=crate::hil::MAX_PERIODS).contains(&n) => Ok(Command::Mpdcc(Some(n))),
                 _ => Err(ParseError::BadArgs(
                     "mpdcc",
                     "periods must be a whole number in 1..=20",
@@ -965,7 +963,7 @@ mod tests {
             assert!(reply(bad).starts_with("ERR bad-args mpdcc: "), "{bad}");
         }
         assert_eq!(parse("mpdcc run 20"), Ok(Command::Mpdcc(Some(20))));
-        let r = crate::mpdcc::hil::HilReport {
+        let r = crate::hil::HilReport {
             periods: 2,
             decisions: 2400,
             kinds: [2300, 96, 4],
@@ -1109,7 +1107,7 @@ mod tests {
         pl: FakePl,
         stalled_ms: u32,
         /// `mode mpdcc`'s loop (its progress set by hand).
-        hil: Option<crate::mpdcc::hil::PacedStatus>,
+        hil: Option<crate::hil::PacedStatus>,
     }
 
     impl TestDrive {
@@ -1140,7 +1138,7 @@ mod tests {
             self.hil = Some(Default::default());
             Ok(())
         }
-        fn mpdcc_live(&mut self) -> Option<crate::mpdcc::hil::PacedStatus> {
+        fn mpdcc_live(&mut self) -> Option<crate::hil::PacedStatus> {
             self.hil
         }
         fn enable(&mut self) -> Result<(), DriveError> {
@@ -1296,7 +1294,7 @@ mod tests {
             assert_one_final_line(&r);
         }
         assert!(!d.servo.gates_on(&mut d.pl).unwrap());
-        let mut h = crate::mpdcc::hil::PacedStatus::default();
+        let mut h = crate::hil::PacedStatus::default();
         h.report.decisions = 1200;
         h.report.kinds = [900, 290, 10];
         h.report.mean_cycles = 99.04;
@@ -1310,7 +1308,7 @@ mod tests {
         h.report.fsw_hz = 251.25;
         h.report.thd_percent = 4.567;
         h.report.max_i_err_pu = 0.12345;
-        h.stopped = Some(crate::mpdcc::hil::HilError::Page(
+        h.stopped = Some(crate::hil::HilError::Page(
             crate::pl::mpdcc::MpdccError::Timeout,
         ));
         d.hil = Some(h);
@@ -1416,7 +1414,7 @@ mod tests {
     #[test]
     fn faults_are_listed_cleared_and_block_enable() {
         let mut d = TestDrive::new();
-        d.pl.set(crate::regmap::FAULT_STATUS_ADDR, Faults::WATCHDOG | 1);
+        d.pl.set(regmap::FAULT_STATUS_ADDR, Faults::WATCHDOG | 1);
         assert_eq!(
             reply_on(&mut d, "fault"),
             "fault: OVERCURRENT WATCHDOG\r\nOK\r\n"

@@ -2,7 +2,7 @@
 //! ([`DriveOps`]) and how replies and errors are written.
 use super::{write_err, ErrorCode};
 use crate::config::store::SlotState;
-use crate::mpdcc::hil::{HilError, HilReport, PacedStatus};
+use crate::hil::{HilError, HilReport, PacedStatus};
 use crate::pl::capture::{CapSample, CapStatus, Trigger};
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
@@ -206,7 +206,7 @@ pub trait DriveOps {
     /// Ends a sweep: the sine stops, the reference returns to 0 N m.
     fn sweep_end(&mut self) {}
     /// `mpdcc run`: paper 001's hardware-in-the-loop run on the PL's MPDCC
-    /// page ([`crate::mpdcc::hil`]), one warm-up and `periods` measured
+    /// page ([`crate::hil`]), one warm-up and `periods` measured
     /// fundamental periods.
     fn mpdcc_run(&mut self, _periods: u32) -> Result<HilReport, DriveError> {
         Err(DriveError::Unsupported)
@@ -216,7 +216,7 @@ pub trait DriveOps {
         None
     }
     /// `mode mpdcc`: the PMSM gates off and the PL in mode off, then the
-    /// HIL loop paced by the control periods ([`crate::mpdcc::hil::Paced`]).
+    /// HIL loop paced by the control periods ([`crate::hil::Paced`]).
     fn set_mpdcc_mode(&mut self) -> Result<(), DriveError> {
         Err(DriveError::Unsupported)
     }

@@ -3,8 +3,8 @@
 //! `ADC_IA..IC` hold signed 12-bit counts (sign-extended to 16 bits), the
 //! floor of the mean of 4 samples. The current per count is a fact of the
 //! board's current sensing, not of the register map: [`AdcScale`].
-use crate::bus::{BusError, RegisterBus};
-use crate::regs::adc::{
+use regmap::bus::{BusError, RegisterBus};
+use regmap::regs::adc::{
     AdcCount, AdcCtrl, AdcCtrlValue, AdcIa, AdcIb, AdcIc, AdcPeriod, AdcPeriodValue,
 };
 
@@ -68,7 +68,7 @@ impl<B: RegisterBus> Adc<B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
-    use crate::regmap::{self, ADC};
+    use regmap::{self, ADC};
 
     #[test]
     fn currents_are_sign_extended_and_scaled() {

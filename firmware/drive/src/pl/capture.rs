@@ -5,15 +5,15 @@
 //! Channel formats (the register table's): currents in mA, torques in
 //! 0.1 mN m, 16-bit two's complement, saturated at the ends when written
 //! (+-32.767 A, +-3.2767 N m), rounded to nearest.
-use crate::bus::{BusError, RegisterBus};
-use crate::regmap::{cap_source, cap_state, CAPTURE_DEPTH};
-use crate::regs::capture::{
+use regmap::bus::{BusError, RegisterBus};
+use regmap::regs::capture::{
     self as r, CapArm, CapArmValue, CapData0, CapData1, CapData2, CapDecim, CapDecimValue, CapInId,
     CapInIdValue, CapInIq, CapInIqValue, CapInTorque, CapInTorqueValue, CapInTref, CapInTrefValue,
     CapPre, CapPreValue, CapRdIndex, CapRdIndexValue, CapSource, CapSourceValue, CapStep,
     CapStepValue, CapThrCh, CapThrChValue, CapThrEdge, CapThrEdgeValue, CapThrLevel,
     CapThrLevelValue, CapTrig, CapTrigValue,
 };
+use regmap::{cap_source, cap_state, CAPTURE_DEPTH};
 
 /// Current channel resolution, A per LSB.
 pub const CURRENT_LSB_A: f64 = 1e-3;

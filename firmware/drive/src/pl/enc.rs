@@ -1,8 +1,8 @@
 //! Encoder block: position and speed, and their electrical equivalents.
-use crate::bus::{BusError, RegisterBus};
-use crate::regmap;
-use crate::regs::enc::{EncCpr, EncPos, EncSpeed, EncWindow};
 use core::f64::consts::TAU;
+use regmap;
+use regmap::bus::{BusError, RegisterBus};
+use regmap::regs::enc::{EncCpr, EncPos, EncSpeed, EncWindow};
 
 /// Encoder readings.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -50,7 +50,7 @@ impl<B: RegisterBus> Encoder<B> {
     pub fn set_cpr(&mut self, cpr: u32) -> Result<(), BusError> {
         EncCpr::write(
             &mut self.0,
-            crate::regs::enc::EncCprValue::ZERO.with_value(cpr),
+            regmap::regs::enc::EncCprValue::ZERO.with_value(cpr),
         )
     }
 }
@@ -59,7 +59,7 @@ impl<B: RegisterBus> Encoder<B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
-    use crate::regmap::{self, ENC};
+    use regmap::{self, ENC};
 
     #[test]
     fn electrical_angle_and_speed() {

@@ -3,8 +3,8 @@
 //! the writes. Its one behaviour: `ADC_COUNT` advances at every read while
 //! `ADC_CTRL.ENABLE` is set (an ADC that keeps converting); otherwise tests
 //! poke read-only registers through [`FakePl::set`] to play the hardware.
-use crate::bus::{BusError, RegisterBus};
-use crate::regmap::{self, RegError};
+use regmap::bus::{BusError, RegisterBus};
+use regmap::{self, RegError};
 use std::vec::Vec;
 
 pub(crate) struct FakePl {

@@ -1,6 +1,6 @@
 //! Fault block: latched faults, over-current limit, watchdog timeout.
-use crate::bus::{BusError, RegisterBus};
-use crate::regs::fault::{
+use regmap::bus::{BusError, RegisterBus};
+use regmap::regs::fault::{
     FaultStatus, FaultStatusValue, OcLimit, OcLimitValue, WdgTimeout, WdgTimeoutValue,
 };
 
@@ -121,7 +121,7 @@ impl<B: RegisterBus> Fault<B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
-    use crate::regmap::{self, FAULT};
+    use regmap::{self, FAULT};
     use std::string::String;
 
     #[test]

@@ -17,7 +17,7 @@
 //! - [`mpdtc`]: parameters, per-period inputs and status of the MPDTC core
 //!   and its control sequence.
 //!
-//! Every access goes through the typed accessors of `crate::regs` (generated
+//! Every access goes through the typed accessors of `regmap::regs` (generated
 //! from the register table) by named field; no driver spells an address,
 //! shift or mask.
 

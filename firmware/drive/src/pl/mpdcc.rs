@@ -6,11 +6,11 @@
 //! until `BUSY = 0` and `DONE = 1`) and the result registers. `START`
 //! snapshots the page, so the next inputs may be written while a decision
 //! runs.
-use crate::bus::{BusError, RegisterBus};
-use crate::mpdcc::controller::{Decision, DecisionKind};
-use crate::mpdcc::fpga::{Coeffs, Inputs};
-use crate::regmap::mpdcc_kind;
-use crate::regs::mpdcc::*;
+use models::mpdcc::controller::{Decision, DecisionKind};
+use models::mpdcc::fpga::{Coeffs, Inputs};
+use regmap::bus::{BusError, RegisterBus};
+use regmap::mpdcc_kind;
+use regmap::regs::mpdcc::*;
 
 /// Why a driver call failed; nothing was started by a call that failed
 /// before its `START`.

@@ -6,11 +6,11 @@
 //!
 //! Signed values are written as two's complement masked to the register
 //! width, as the register map says (formats in docs/mpdtc-fixed.md).
-use crate::bus::{BusError, RegisterBus};
-use crate::pmsm::frontend_fixed::FrontendParams;
-use crate::pmsm::mpdtc_fixed::{quantize_sat, FixedInputs, FixedParams, FRAC, TRQ_FRAC};
-use crate::regs::mpdtc::*;
-use crate::validate::ParamError;
+use models::pmsm::frontend_fixed::FrontendParams;
+use models::pmsm::mpdtc_fixed::{quantize_sat, FixedInputs, FixedParams, FRAC, TRQ_FRAC};
+use models::validate::ParamError;
+use regmap::bus::{BusError, RegisterBus};
+use regmap::regs::mpdtc::*;
 
 /// What the front end's registers are computed from (the drive's facts).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -262,7 +262,7 @@ impl<B: RegisterBus> Mpdtc<B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
-    use crate::regmap::{self, Register, MPDTC};
+    use regmap::{self, Register, MPDTC};
 
     #[test]
     fn negative_values_are_masked_two_complement() {
@@ -284,8 +284,8 @@ mod tests {
 
     #[test]
     fn params_from_the_paper_configuration() {
-        use crate::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-        use crate::pmsm::params::MotorParams;
+        use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+        use models::pmsm::params::MotorParams;
         let cfg = MpdtcConfig::new(MotorParams::default(), MpdtcParams::default()).unwrap();
         let p = FixedParams::from_config(&cfg).unwrap();
         let mut pl = FakePl::new();

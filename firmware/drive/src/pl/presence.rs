@@ -13,9 +13,9 @@
 //! load one) `INT_STS` reads `0x0000_0000` after reset (measured: `status`
 //! prints it), so `PCFG_DONE` is clear and the firmware never touches GP0:
 //! it selects the simulated PL instead.
-use crate::bus::RegisterBus;
-use crate::regmap;
-use crate::regs::top::{Id, Version, VersionValue};
+use regmap;
+use regmap::bus::RegisterBus;
+use regmap::regs::top::{Id, Version, VersionValue};
 
 /// Absolute address of devcfg `INT_STS` (PS side, always readable).
 pub const DEVCFG_INT_STS: usize = 0xF800_7000 + 0x0C;
@@ -78,8 +78,8 @@ pub fn detect<B: RegisterBus>(devcfg_int_sts: u32, bus: &mut B) -> Presence {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bus::BusError;
     use crate::pl::fake::FakePl;
+    use regmap::bus::BusError;
 
     /// A bus that must never be touched.
     struct Untouchable;

@@ -3,8 +3,8 @@
 //!
 //! Each leg's duty register is an `embedded_hal::pwm::SetDutyCycle` channel
 //! ([`Leg`]) whose full scale is `PWM_PERIOD` (duty = DUTY / PWM_PERIOD).
-use crate::bus::{BusError, RegisterBus};
-use crate::regs::pwm::{
+use regmap::bus::{BusError, RegisterBus};
+use regmap::regs::pwm::{
     DeadTime, DeadTimeValue, DutyA, DutyAValue, DutyB, DutyBValue, DutyC, DutyCValue, GateCtrl,
     GateCtrlValue, GateStatus, PwmPeriod, PwmPeriodValue,
 };
@@ -110,8 +110,8 @@ impl<B: RegisterBus> embedded_hal::pwm::SetDutyCycle for Leg<'_, B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
-    use crate::regmap::{self, Register, PWM};
     use embedded_hal::pwm::SetDutyCycle;
+    use regmap::{self, Register, PWM};
 
     /// The duty registers of legs a, b, c.
     const DUTY: [&Register; 3] = [&regmap::DUTY_A, &regmap::DUTY_B, &regmap::DUTY_C];

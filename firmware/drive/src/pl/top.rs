@@ -1,7 +1,7 @@
 //! Top/ID block: mode, status summary, access errors, watchdog heartbeat.
-use crate::bus::{BusError, RegisterBus};
-use crate::regmap::mode;
-use crate::regs::top::{Ctrl, CtrlValue, Err, Heartbeat, HeartbeatValue, Status};
+use regmap::bus::{BusError, RegisterBus};
+use regmap::mode;
+use regmap::regs::top::{Ctrl, CtrlValue, Err, Heartbeat, HeartbeatValue, Status};
 
 /// Source of the switching state (`CTRL.MODE`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -81,7 +81,7 @@ impl<B: RegisterBus> Top<B> {
 mod tests {
     use super::*;
     use crate::pl::fake::FakePl;
-    use crate::regmap::{self, TOP};
+    use regmap::{self, TOP};
 
     #[test]
     fn mode_names_and_register_values() {

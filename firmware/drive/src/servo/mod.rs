@@ -15,7 +15,6 @@
 //! - FOC: PWM half period 3128 cycles, so one PWM period (6256 cycles,
 //!   15.985 kHz, the paper's 16 kHz within 0.1 %) is exactly 4 averaged
 //!   ADC results.
-use crate::bus::{BusError, RegisterBus};
 use crate::pl::adc::{Adc, AdcScale};
 use crate::pl::capture::Capture;
 use crate::pl::enc::Encoder;
@@ -23,16 +22,17 @@ use crate::pl::fault::{Fault, Faults};
 use crate::pl::mpdtc::{frontend_params, torque_ref_word, FrontendSetup, Mpdtc};
 use crate::pl::pwm::{duty_cycles, Pwm};
 use crate::pl::top::{Mode, Top};
-use crate::pmsm::foc::{Foc, FocParams};
-use crate::pmsm::frames::{clarke, park};
-use crate::pmsm::frontend_fixed::FrontendParams;
-use crate::pmsm::mpdtc_ctrl::{fixed_inputs, inputs_from_measurement};
-use crate::pmsm::mpdtc_fixed::FixedParams;
-use crate::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use crate::pmsm::params::MotorParams;
-use crate::pmsm::sim::{Actuation, Controller, Measurement};
-use crate::regmap::{self, seq_state};
-use crate::validate::ParamError;
+use models::pmsm::foc::{Foc, FocParams};
+use models::pmsm::frames::{clarke, park};
+use models::pmsm::frontend_fixed::FrontendParams;
+use models::pmsm::mpdtc_ctrl::{fixed_inputs, inputs_from_measurement};
+use models::pmsm::mpdtc_fixed::FixedParams;
+use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+use models::pmsm::params::MotorParams;
+use models::pmsm::sim::{Actuation, Controller, Measurement};
+use models::validate::ParamError;
+use regmap::bus::{BusError, RegisterBus};
+use regmap::{self, seq_state};
 
 pub mod faults;
 mod step;
@@ -125,13 +125,23 @@ impl Default for ServoConfig {
 }
 
 impl ServoConfig {
-    /// The defaults with the motor and the current-sensing gain of the
-    /// simulated PL `sim` (what the firmware runs under QEMU).
-    pub fn for_simulated(sim: &crate::simpl::SimConfig) -> Self {
+    /// `OC_LIMIT` for [`Self::current_limit_a`]: ADC counts, rounded down
+    /// so that the trip is never above the limit; `None` beyond the 11-bit
+    /// range.
+    pub fn oc_limit_counts(&self) -> Option<u32> {
+        let c = libm::floor(self.current_limit_a / self.adc.amps_per_count);
+        (c.is_finite() && (0.0..=2047.0).contains(&c)).then_some(c as u32)
+    }
+
+    /// The defaults with the `motor` and the current-sensing gain
+    /// `adc_amps_per_count` (A per ADC count) of the plant the drive runs:
+    /// a board's, or under QEMU the simulated PL's, which the firmware
+    /// reads from the simulator when it selects that backend.
+    pub fn for_plant(motor: MotorParams, adc_amps_per_count: f64) -> Self {
         Self {
-            motor: sim.motor,
+            motor,
             adc: AdcScale {
-                amps_per_count: sim.adc_amps_per_count,
+                amps_per_count: adc_amps_per_count,
             },
             ..Self::default()
         }
@@ -312,7 +322,7 @@ impl Servo {
         Encoder(&mut *bus).set_cpr(self.cfg.enc_cpr)?;
         // `Config::check` refuses a limit beyond the ADC's range; any other
         // `ServoConfig` gets the largest trip level.
-        let oc = crate::config::oc_limit_counts(&self.cfg).unwrap_or(2047);
+        let oc = self.cfg.oc_limit_counts().unwrap_or(2047);
         Fault(&mut *bus).set_oc_limit(oc)?;
         let mut pwm = Pwm(&mut *bus);
         pwm.set_dead_time(self.cfg.dead_time_cycles)?;
@@ -827,7 +837,5 @@ fn period_s(cycles: u32) -> f64 {
 
 #[cfg(test)]
 mod fault_tests;
-#[cfg(test)]
-mod sim_tests;
 #[cfg(test)]
 mod tests;

@@ -1,6 +1,6 @@
 //! The `step` command's recorder: the measured torque sampled once per
 //! control period from the step on, and its metrics by the one definition
-//! in [`crate::pmsm::metrics`] (10 % settling band).
+//! in [`models::pmsm::metrics`] (10 % settling band).
 //!
 //! The metrics assume the plant starts at rest at the step's start value.
 //! Right after `enable` (or a mode change) the current of the previous run
@@ -11,7 +11,7 @@
 //! until the measured torque is within the settling band of its start
 //! value, at most one window (a steady offset larger than the band is not
 //! a transient), and only then applies the new reference.
-use crate::pmsm::metrics::{
+use models::pmsm::metrics::{
     overshoot_percent, settling_band, settling_time_s, transitions_per_leg_per_s,
 };
 

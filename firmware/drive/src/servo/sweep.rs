@@ -4,11 +4,11 @@
 //! (single-bin DFT over a whole number of periods of both captured
 //! channels, so the PS's timing does not enter the phase).
 use super::{Servo, ServoError};
-use crate::bus::RegisterBus;
 use crate::pl::capture::{CapSample, CapStatus, Capture, Trigger};
 use crate::pl::top::Mode;
-use crate::regmap;
 use core::f64::consts::PI;
+use regmap;
+use regmap::bus::RegisterBus;
 
 /// A sine torque reference `amp sin(2 pi f n T)`, one value per control
 /// period.

@@ -2,7 +2,7 @@
 //! dynamics); the closed loop is tested against the simulated PL.
 use super::*;
 use crate::pl::fake::FakePl;
-use crate::regmap::{FAULT_STATUS_ADDR, GATE_CTRL_ADDR, HEARTBEAT_ADDR, MPDTC, PWM};
+use regmap::{FAULT_STATUS_ADDR, GATE_CTRL_ADDR, HEARTBEAT_ADDR, MPDTC, PWM};
 
 fn setup() -> (Servo, FakePl) {
     let mut s = Servo::new(&ServoConfig::default()).unwrap();
@@ -123,7 +123,7 @@ fn measured_torque_from_the_adc_currents() {
     let m = s.measured();
     let iq = f64::from(2 * c) * 0.01 / 3f64.sqrt();
     assert!(m.i_d_a.abs() < 1e-9 && (m.i_q_a - iq).abs() < 1e-9, "{m:?}");
-    let t = 1.5 * 7.0 * crate::pmsm::params::PSI_PM_FROM_KE_WB * iq;
+    let t = 1.5 * 7.0 * models::pmsm::params::PSI_PM_FROM_KE_WB * iq;
     assert!((m.torque_nm - t).abs() < 1e-9);
 }
 

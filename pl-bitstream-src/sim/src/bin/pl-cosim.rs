@@ -1,5 +1,5 @@
 //! `pl-cosim --dir DIR [--stats FILE]`: the host end of the co-simulation
-//! bridge (`drive::cosim`). Creates the FIFOs `DIR/req` and `DIR/rep`,
+//! bridge (`simpl::cosim`). Creates the FIFOs `DIR/req` and `DIR/rep`,
 //! prints `ready` on stdout, then serves the firmware's requests (QEMU
 //! opens `req` for writing and `rep` for reading through semihosting) with
 //! the Verilated `pl_top` and the plant until the request FIFO closes. On
@@ -68,7 +68,7 @@ fn main() -> ExitCode {
         }
     };
     let t0 = Instant::now();
-    let mut buf = [0u8; drive::cosim::REQUEST_LEN];
+    let mut buf = [0u8; simpl::cosim::REQUEST_LEN];
     loop {
         match req.read_exact(&mut buf) {
             Ok(()) => {}

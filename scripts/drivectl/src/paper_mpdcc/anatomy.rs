@@ -6,9 +6,9 @@
 //! `L*` the reference's exact extension gives that candidate, and when both
 //! switch to different positions the two choices are priced with the
 //! reference's cost (eqs. 10-12).
-use drive::mpdcc::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
-use drive::mpdcc::fpga::FpgaMpdcc;
-use drive::mpdcc::reference::Reference;
+use models::mpdcc::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
+use models::mpdcc::fpga::FpgaMpdcc;
+use models::mpdcc::reference::Reference;
 use serde::Serialize;
 
 /// Drives with the reference, watches the FPGA model.

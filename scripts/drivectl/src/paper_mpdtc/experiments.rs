@@ -3,16 +3,16 @@
 //! Common setup: the paper's motor (`MotorParams::default()`), free rotor with
 //! its inertia and no load, starting at rest; the paper's measurement chain
 //! (256 kHz, mean of 4, one-period computation delay); ideal inverter.
-//! MPDTC at 64 kHz, FOC at 16 kHz (`drive::pmsm::foc::Foc`, default tuning).
+//! MPDTC at 64 kHz, FOC at 16 kHz (`models::pmsm::foc::Foc`, default tuning).
 
 use super::metrics;
 use super::runs::{self, Mech, Trace, Window};
 use anyhow::{anyhow, Result};
-use drive::pmsm::foc::{Foc, FocParams};
-use drive::pmsm::mpdtc_ctrl::{MpdtcFixed, MpdtcShadow};
-use drive::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use drive::pmsm::params::{DriveParams, MotorParams};
-use drive::pmsm::sim::Controller;
+use models::pmsm::foc::{Foc, FocParams};
+use models::pmsm::mpdtc_ctrl::{MpdtcFixed, MpdtcShadow};
+use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+use models::pmsm::params::{DriveParams, MotorParams};
+use models::pmsm::sim::Controller;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -36,7 +36,7 @@ fn mpdtc_cfg(p: MpdtcParams) -> Result<MpdtcConfig> {
 /// overrides defaults of every MPDTC in the experiments (not for reports).
 /// An unknown key or a value that does not parse is an error.
 pub(super) fn tuning_override(mut p: MpdtcParams) -> Result<MpdtcParams> {
-    use drive::pmsm::mpdtc_ref::CostNorm;
+    use models::pmsm::mpdtc_ref::CostNorm;
     let Ok(v) = std::env::var("MPDTC_TUNE") else {
         return Ok(p);
     };
@@ -215,7 +215,7 @@ pub fn table3(drive: &DriveParams) -> Result<Table3> {
             t_tol_nm: t_tol,
             ..Default::default()
         })?;
-        let mut c = drive::pmsm::mpdtc_ctrl::MpdtcRef::new(cfg);
+        let mut c = models::pmsm::mpdtc_ctrl::MpdtcRef::new(cfg);
         let tr = runs::run(
             &mut c,
             &MotorParams::default(),
@@ -255,7 +255,7 @@ pub fn table4_traces(drive: &DriveParams) -> Result<Table4> {
             p_weight: p,
             ..Default::default()
         })?;
-        let mut c = drive::pmsm::mpdtc_ctrl::MpdtcRef::new(cfg);
+        let mut c = models::pmsm::mpdtc_ctrl::MpdtcRef::new(cfg);
         let tr = runs::run(
             &mut c,
             &MotorParams::default(),
@@ -315,7 +315,7 @@ pub fn toggle_metrics(tr: &Trace) -> StepMetrics {
     let all: Option<Vec<f64>> = st.iter().copied().collect();
     let fsw = metrics::fsw_hz(tr.summary.transitions, tr.summary.duration_s);
     let (mean_err, ripple) =
-        drive::pmsm::metrics::error_mean_and_ripple_rms(steady).unwrap_or((0.0, 0.0));
+        models::pmsm::metrics::error_mean_and_ripple_rms(steady).unwrap_or((0.0, 0.0));
     StepMetrics {
         settling_time_ms: all
             .as_ref()
@@ -478,7 +478,7 @@ pub fn all() -> Result<Results> {
     let step_mpdtc = toggle_metrics(&toggle_mpdtc);
     let step_foc = toggle_metrics(&toggle_foc);
     let cfg = mpdtc_cfg(MpdtcParams::default())?;
-    let bode_mpdtc = bode(&drive, || Ok(drive::pmsm::mpdtc_ctrl::MpdtcRef::new(cfg)))?;
+    let bode_mpdtc = bode(&drive, || Ok(models::pmsm::mpdtc_ctrl::MpdtcRef::new(cfg)))?;
     let bode_foc = bode(&drive, || {
         Foc::new(&MotorParams::default(), &FocParams::default()).map_err(|e| anyhow!("{e}"))
     })?;

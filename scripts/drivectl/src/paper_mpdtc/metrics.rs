@@ -1,23 +1,23 @@
 //! The metrics of the paper-000 experiments: the definitions of
-//! `drive::pmsm::metrics` (one place, band included), applied to window means.
+//! `models::pmsm::metrics` (one place, band included), applied to window means.
 //!
 //! Signals are evaluated as the paper measures them: the plant value averaged
 //! over consecutive windows of one MPDTC period (the mean of 4 ADC samples at
 //! 256 kHz, 15.625 us, "each four sampled phase currents are averaged"),
 //! identically for MPDTC and FOC, and time-stamped at the window end.
 //!
-//! **Settling time** (`drive::pmsm::metrics::settling_time_s`): from the step
+//! **Settling time** (`models::pmsm::metrics::settling_time_s`): from the step
 //! to the end of the first window inside the band `y1 +- SETTLING_BAND
 //! |y1 - y0|` after which no window within the evaluation interval (2 ms
 //! after the step) leaves it; `None` if still outside at its end. Band 10 %
-//! (`drive::pmsm::metrics::SETTLING_BAND_FRACTION`, reason there), the same
+//! (`models::pmsm::metrics::SETTLING_BAND_FRACTION`, reason there), the same
 //! for both controllers and every table.
 //!
 //! **Overshoot**, **switching frequency** (transitions per leg per second):
-//! `drive::pmsm::metrics`.
+//! `models::pmsm::metrics`.
 
 use super::runs::Window;
-use drive::pmsm::metrics as m;
+use models::pmsm::metrics as m;
 
 /// Relative half-width of the settling band (the library's definition).
 pub const SETTLING_BAND: f64 = m::SETTLING_BAND_FRACTION;

@@ -1,5 +1,5 @@
 //! `drivectl paper mpdtc --rate 64khz|1mhz`: the PL's autonomous loop
-//! (`drive::pmsm::mpdtc_pl::MpdtcPl`: sensors -> front end model -> core
+//! (`models::pmsm::mpdtc_pl::MpdtcPl`: sensors -> front end model -> core
 //! model) on Fig. 10 and Fig. 11 at one control rate, against the
 //! inverter's slew bound (docs/mpdtc.md). Same runs and metrics as the
 //! paper experiments; the signal is the plant torque averaged over one
@@ -7,9 +7,9 @@
 use super::experiments::{self, Bode, StepMetrics, STEP_NM, TOGGLE_RUN_S};
 use super::runs::{self, Mech};
 use anyhow::{anyhow, bail, Result};
-use drive::pmsm::mpdtc_pl::{self, MpdtcPl, PlRate};
-use drive::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use drive::pmsm::params::MotorParams;
+use models::pmsm::mpdtc_pl::{self, MpdtcPl, PlRate};
+use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+use models::pmsm::params::MotorParams;
 use serde::Serialize;
 
 /// The rate named on the command line.

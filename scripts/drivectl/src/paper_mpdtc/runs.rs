@@ -1,10 +1,10 @@
-//! Closed-loop runs on the PMSM plant and runner (`drive::pmsm::sim`),
+//! Closed-loop runs on the PMSM plant and runner (`models::pmsm::sim`),
 //! reduced to 15.625 us windows.
 
 use anyhow::{anyhow, Result};
-use drive::pmsm::params::{DriveParams, MotorParams};
-use drive::pmsm::plant::{MechanicalMode, Plant};
-use drive::pmsm::sim::{self, Controller, RunSummary};
+use models::pmsm::params::{DriveParams, MotorParams};
+use models::pmsm::plant::{MechanicalMode, Plant};
+use models::pmsm::sim::{self, Controller, RunSummary};
 
 /// ADC samples per averaging window (paper: 4 at 256 kHz = one MPDTC period).
 pub const WINDOW_SAMPLES: usize = 4;

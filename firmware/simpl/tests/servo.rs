@@ -1,9 +1,10 @@
-//! The servo in closed loop on the simulated PL and motor (`drive::simpl`),
+//! The servo in closed loop on the simulated PL and motor (`simpl`),
 //! the way the firmware runs it under QEMU: one control step at each
 //! control-period boundary the PL reports. The settling figures are the
 //! host simulation's (README, paper 000) plus 10 %.
-use super::*;
-use crate::simpl::{SimConfig, SimDrive};
+use drive::pl::top::Mode;
+use drive::servo::{Servo, ServoConfig};
+use simpl::{SimConfig, SimDrive};
 
 fn setup(mode: Mode) -> (Servo, SimDrive) {
     setup_path(mode, false)
@@ -14,7 +15,7 @@ fn setup_path(mode: Mode, ps_fed: bool) -> (Servo, SimDrive) {
     let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
     let cfg = ServoConfig {
         mpdtc_ps_fed: ps_fed,
-        ..ServoConfig::for_simulated(sim.config())
+        ..ServoConfig::for_plant(sim.config().motor, sim.config().adc_amps_per_count)
     };
     let mut s = Servo::new(&cfg).unwrap();
     s.init(&mut sim).unwrap();
@@ -163,7 +164,7 @@ fn a_step_right_after_a_mode_change_starts_from_rest() {
     s.begin_step(&mut sim, 0.4, 2e-3).unwrap();
     run(&mut s, &mut sim, 10_000, |s| !s.step_pending());
     let r = s.step_result().expect("step completed");
-    let band = crate::pmsm::metrics::settling_band(0.0, 0.4);
+    let band = models::pmsm::metrics::settling_band(0.0, 0.4);
     let first = f64::from(s.rec.samples()[0]);
     assert!(first.abs() <= band, "first sample {first} N m: {r:?}");
     assert!(s.rec.waited_periods() > 0, "{r:?}");
@@ -176,7 +177,7 @@ fn a_step_right_after_a_mode_change_starts_from_rest() {
 /// reference, the torque is near 0 before it and settles at 0.4 N m.
 #[test]
 fn capture_records_a_step_with_pre_trigger() {
-    use crate::pl::capture::{CapState, Trigger};
+    use drive::pl::capture::{CapState, Trigger};
     let (mut s, mut sim) = setup(Mode::Mpdtc);
     let n = (2.5e-3 * s.control_rate_hz()) as u32;
     run(&mut s, &mut sim, n, |_| false);
@@ -221,7 +222,7 @@ fn sweep_points_on_the_simulated_pl() {
             s.sine_start(&mut sim, f, 0.2).unwrap();
             let n = (Servo::sine_settle_s(f) * s.control_rate_hz()) as u32;
             run(&mut s, &mut sim, n, |_| false);
-            s.capture_arm(&mut sim, crate::pl::capture::Trigger::Manual, 0)
+            s.capture_arm(&mut sim, drive::pl::capture::Trigger::Manual, 0)
                 .unwrap();
             s.capture_trigger(&mut sim).unwrap();
             run(&mut s, &mut sim, 1100, |_| false);

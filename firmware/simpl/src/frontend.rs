@@ -5,8 +5,8 @@
 //! RTL, evaluated on the inputs captured at the start.
 
 use super::NEVER;
-use crate::pmsm::frontend_fixed::{self, FrontendInputs, FrontendOutputs, FrontendParams};
-use crate::regmap;
+use models::pmsm::frontend_fixed::{self, FrontendInputs, FrontendOutputs, FrontendParams};
+use regmap;
 
 const LAT: u32 = regmap::MPDTC_FE_LATENCY_CYCLES;
 const VLD_MASK: u32 = (1 << LAT) - 1;

@@ -6,7 +6,7 @@
 //! reference in 0.1 mN m, 16-bit two's complement; the selectable channel is
 //! the low 16 bits of its register; the switching state 3 bits.
 
-use crate::regmap::{cap_source, cap_state, CAPTURE_DEPTH};
+use regmap::{cap_source, cap_state, CAPTURE_DEPTH};
 
 /// Samples in the ring.
 pub const DEPTH: usize = CAPTURE_DEPTH as usize;

@@ -1,7 +1,7 @@
 //! Block 2, the MPDCC page: the registers of `mpdcc_core` (paper 001's
 //! scheduler and N explorers) as `pl_top` instantiates it.
 //!
-//! Inputs and constants are the words of `drive::mpdcc::fpga::Inputs` and
+//! Inputs and constants are the words of `models::mpdcc::fpga::Inputs` and
 //! `Coeffs`, one 16-bit two's complement word per register (formats in
 //! docs/mpdcc-fpga.md). An `MPDCC_START` write while the core is idle takes
 //! a snapshot of every input and constant register at the end of that cycle
@@ -23,7 +23,7 @@ pub const MPDCC_NODES: u32 = 4;
 /// Cycles from the `MPDCC_START` write to the core's start strobe.
 pub const MPDCC_START_DELAY: u32 = 1;
 
-/// `MPDCC_DECISION.KIND` values (`drive::mpdcc::controller::DecisionKind`).
+/// `MPDCC_DECISION.KIND` values (`models::mpdcc::controller::DecisionKind`).
 pub mod mpdcc_kind {
     /// The lazy check passed: `s(k-1)` kept.
     pub const KEPT: u32 = 0;

@@ -1,4 +1,4 @@
-// Generated from firmware/drive/src/regmap.rs by `cargo run -p regmap-gen`;
+// Generated from firmware/regmap/src/lib.rs by `cargo run -p regmap-gen`;
 // do not edit (a test fails when this file is stale).
 //! Typed access to the PL registers, one module per block.
 //!
@@ -15,13 +15,13 @@
 //! register's doc. Every access is one whole-word `RegisterBus` access:
 //!
 //! ```
-//! # use drive::bus::{BusError, RegisterBus};
+//! # use regmap::bus::{BusError, RegisterBus};
 //! # struct Bus(u32);
 //! # impl RegisterBus for Bus {
 //! #     fn read(&mut self, _: usize) -> Result<u32, BusError> { Ok(self.0) }
 //! #     fn write(&mut self, _: usize, v: u32) -> Result<(), BusError> { self.0 = v; Ok(()) }
 //! # }
-//! use drive::regs::pwm::{DeadTime, DeadTimeValue, GateCtrl};
+//! use regmap::regs::pwm::{DeadTime, DeadTimeValue, GateCtrl};
 //! let mut bus = Bus(0);
 //! DeadTime::write(&mut bus, DeadTimeValue::ZERO.with_value(100))?;
 //! GateCtrl::modify(&mut bus, |v| v.with_gate_en(true))?;
@@ -29,8 +29,9 @@
 //! # Ok::<(), BusError>(())
 //! ```
 
+use crate as regmap;
 use crate::bus::{BusError, RegisterBus};
-use crate::regmap::{self, Register};
+use crate::Register;
 
 /// Block 0 `TOP` at `0x43C00000`: Identification, mode, status, heartbeat.
 pub mod top {
@@ -10968,7 +10969,7 @@ pub mod capture {
             self.0
         }
 
-        /// `STATE` (bits 1:0, 2 bits): 0 idle, 1 armed, 2 triggered, 3 done (drive::regmap::cap_state)
+        /// `STATE` (bits 1:0, 2 bits): 0 idle, 1 armed, 2 triggered, 3 done (regmap::cap_state)
         pub const fn state(self) -> u32 {
             self.0 & 0x3
         }

@@ -4,8 +4,9 @@
 //! `controller` (the interface both implementations share), `reference`,
 //! `plant`, `closed_loop`, `stats`. See docs/mpdcc.md.
 //! The 16-bit FPGA model: `fixed`, `fpga`, `binsearch`, `scheduler`,
-//! `cycles`, `fpga_eval` (tests). See docs/mpdcc-fpga.md. `hil`: the
-//! hardware-in-the-loop run of the core on its register page.
+//! `cycles`, `fpga_eval` (tests). See docs/mpdcc-fpga.md. The
+//! hardware-in-the-loop run of the core on its register page is the
+//! product's (`drive::hil`).
 pub mod anpc;
 pub mod binsearch;
 pub mod closed_loop;
@@ -14,7 +15,6 @@ pub mod cycles;
 pub mod fixed;
 pub mod fpga;
 pub mod fpga_eval;
-pub mod hil;
 pub mod machine;
 pub mod params;
 pub mod plant;

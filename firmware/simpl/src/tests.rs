@@ -3,11 +3,11 @@
 
 use super::pl::{Events, SimPl};
 use super::{SimConfig, SimDrive};
-use crate::bus::{BusError, RegisterBus};
-use crate::pl::enc::Encoder;
-use crate::pl::pwm::Pwm;
-use crate::pl::top::{Mode, Top};
-use crate::regmap::{self as rm, mode, Block, Register};
+use drive::pl::enc::Encoder;
+use drive::pl::pwm::Pwm;
+use drive::pl::top::{Mode, Top};
+use regmap::bus::{BusError, RegisterBus};
+use regmap::{self as rm, mode, Block, Register};
 use std::vec::Vec;
 
 fn a(b: &Block, r: &Register) -> usize {
@@ -188,7 +188,7 @@ fn event_driven_equals_cycle_by_cycle() {
         w(&mut pl, &rm::FAULT, &rm::WDG_TIMEOUT, 3000);
         w(&mut pl, &rm::TOP, &rm::CTRL, m);
         w(&mut pl, &rm::PWM, &rm::GATE_CTRL, 1);
-        pl.pins.adc_word = crate::simpl::adc::adc_word([100, -40, -60]);
+        pl.pins.adc_word = crate::adc::adc_word([100, -40, -60]);
         let mut slow = pl.clone();
         for n in [1u64, 17, 250, 999, 4000] {
             pl.run(n, &Events::default());
@@ -236,7 +236,7 @@ fn encoder_follows_the_rotor() {
     let (theta_e, omega_e) = (e.theta_e_rad(7, 0), e.omega_e_rad_s(7));
     let tr = sim.truth();
     // One count is 2 pi 7 / 4096 = 0.0107 rad electrical.
-    let d = crate::pmsm::measure::wrap_pi(theta_e - tr.theta_e_rad);
+    let d = models::pmsm::measure::wrap_pi(theta_e - tr.theta_e_rad);
     assert!(
         d.abs() < 0.011 && d <= 1e-9,
         "angle {theta_e} vs {}",

@@ -29,11 +29,11 @@ use super::pwm::Pwm;
 use super::regs::{slot, slot_of, Regs, WriteResult};
 use super::seq::{Seq, SeqIn};
 use super::NEVER;
-use crate::bus::BusError;
 use crate::gates::{DeadTime, GateDriver, GateInputs, GateOutputs, DEAD_TIME_MAX_CYCLES};
-use crate::pmsm::frontend_fixed::{FrontendInputs, FrontendParams};
-use crate::pmsm::mpdtc_fixed::{FixedInputs, FixedParams};
-use crate::regmap::{self as rm, mode, ADC, CAPTURE, ENC, FAULT, MPDCC, MPDTC, PWM, TOP};
+use models::pmsm::frontend_fixed::{FrontendInputs, FrontendParams};
+use models::pmsm::mpdtc_fixed::{FixedInputs, FixedParams};
+use regmap::bus::BusError;
+use regmap::{self as rm, mode, ADC, CAPTURE, ENC, FAULT, MPDCC, MPDTC, PWM, TOP};
 
 const S_CTRL: usize = slot_of(&TOP, &rm::CTRL);
 const S_ERR: usize = slot_of(&TOP, &rm::ERR);

@@ -7,8 +7,8 @@
 //! (two's complement in the port width).
 
 use super::NEVER;
-use crate::pmsm::mpdtc_fixed::{self, FixedInputs, FixedParams, FixedState};
-use crate::regmap;
+use models::pmsm::mpdtc_fixed::{self, FixedInputs, FixedParams, FixedState};
+use regmap;
 
 const LAT: u32 = regmap::MPDTC_LATENCY_CYCLES;
 const VLD_MASK: u32 = (1 << LAT) - 1;

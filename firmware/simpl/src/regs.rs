@@ -3,7 +3,7 @@
 //! W1C) rather than restated; read-only registers are views of the blocks
 //! (assembled in `pl.rs`).
 
-use crate::regmap::{self, Access, Block, RegError, Register};
+use regmap::{self, Access, Block, RegError, Register};
 
 /// Number of software-writable (RW and W1C) registers in the map.
 const fn count_stored() -> usize {

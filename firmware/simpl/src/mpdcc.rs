@@ -9,10 +9,10 @@
 //! counters change in `t + C + 2`.
 
 use super::NEVER;
-use crate::mpdcc::controller::{candidates, DecisionKind};
-use crate::mpdcc::cycles;
-use crate::mpdcc::fpga::{self, Coeffs, Inputs};
-use crate::regmap::{self as rm, mpdcc_kind};
+use models::mpdcc::controller::{candidates, DecisionKind};
+use models::mpdcc::cycles;
+use models::mpdcc::fpga::{self, Coeffs, Inputs};
+use regmap::{self as rm, mpdcc_kind};
 
 /// The page's input and constant words at a START (register values).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -202,14 +202,14 @@ impl MpdccBlock {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bus::{BusError, RegisterBus};
-    use crate::mpdcc::controller::CtrlState;
-    use crate::mpdcc::fpga::{FpgaConfig, FpgaMpdcc};
-    use crate::mpdcc::params::DriveParams;
-    use crate::pl::fake::FakePl;
-    use crate::pl::mpdcc::Mpdcc;
-    use crate::regmap::MPDCC;
-    use crate::simpl::pl::SimPl;
+    use crate::pl::SimPl;
+    use drive::pl::fake::FakePl;
+    use drive::pl::mpdcc::Mpdcc;
+    use models::mpdcc::controller::CtrlState;
+    use models::mpdcc::fpga::{FpgaConfig, FpgaMpdcc};
+    use models::mpdcc::params::DriveParams;
+    use regmap::bus::{BusError, RegisterBus};
+    use regmap::MPDCC;
 
     struct Bus(SimPl);
 

@@ -13,12 +13,12 @@
 use super::adc::adc_word;
 use super::inverter::potentials;
 use super::pl::{Events, Pins, SimPl};
-use crate::bus::{BusError, RegisterBus};
-use crate::pmsm::frames::leg_voltage_alpha_beta;
-use crate::pmsm::params::{check_finite, check_pos, MotorParams, ParamError};
-use crate::pmsm::plant::{MechanicalMode, Plant};
-use crate::regmap::{self, mode};
 use core::f64::consts::PI;
+use models::pmsm::frames::leg_voltage_alpha_beta;
+use models::pmsm::params::{check_finite, check_pos, MotorParams, ParamError};
+use models::pmsm::plant::{MechanicalMode, Plant};
+use regmap::bus::{BusError, RegisterBus};
+use regmap::{self, mode};
 
 /// Seconds per PL clock cycle.
 pub const CYCLE_S: f64 = 1.0 / regmap::PL_CLOCK_HZ as f64;

@@ -1,13 +1,15 @@
 //! The simulated PL: a register-accurate model of `pl_top`
-//! (`pl-bitstream-src/rtl/`) behind [`crate::bus::RegisterBus`], coupled to
+//! (`pl-bitstream-src/rtl/`) behind [`regmap::bus::RegisterBus`], coupled to
 //! the PMSM plant. See `docs/ARCHITECTURE.md` (simulated PL).
 
 pub mod adc;
 pub mod capture;
 pub mod core;
+pub mod cosim;
 pub mod enc;
 pub mod fault;
 pub mod frontend;
+pub mod gates;
 pub mod inverter;
 pub mod mpdcc;
 pub mod pl;

@@ -1,7 +1,7 @@
 //! Tests of the generated accessors in `regs` against hand-computed words
 //! and the fixed addresses of the map.
+use crate as regmap;
 use crate::bus::{BusError, RegisterBus};
-use crate::regmap;
 use crate::regs::{fault, mpdtc, pwm, top};
 
 /// A bus with a log of every access and one stored word per address.

@@ -3,7 +3,7 @@
 //! between events. State encoding = `regmap::seq_state`.
 
 use super::NEVER;
-use crate::regmap::seq_state::{IDLE, INITIAL, MPDTC, PWM, SAMPLE};
+use regmap::seq_state::{IDLE, INITIAL, MPDTC, PWM, SAMPLE};
 
 /// Inputs of one cycle.
 #[derive(Debug, Clone, Copy)]
