@@ -6,7 +6,6 @@
 //! handler's gate write obeys the same rule ([`gates_safe`]).
 use core::sync::atomic::{AtomicBool, Ordering};
 use drive::pl::presence::{self, Presence};
-use regmap;
 use regmap::bus::{BusError, RegisterBus};
 use regmap::regs::pwm::{GateCtrl, GateCtrlValue};
 use volatile_register::RW;

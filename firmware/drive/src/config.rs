@@ -17,7 +17,6 @@ use crate::servo::{Servo, ServoConfig};
 use core::fmt::{self, Write};
 use models::pmsm::params::PSI_PM_FROM_KE_WB;
 use models::validate::ParamError;
-use regmap;
 
 /// Kind of a parameter's value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -8,7 +8,6 @@
 
 use super::NEVER;
 use models::pmsm::mpdtc_fixed::{self, FixedInputs, FixedParams, FixedState};
-use regmap;
 
 const LAT: u32 = regmap::MPDTC_LATENCY_CYCLES;
 const VLD_MASK: u32 = (1 << LAT) - 1;

@@ -6,7 +6,6 @@
 
 use super::NEVER;
 use models::pmsm::frontend_fixed::{self, FrontendInputs, FrontendOutputs, FrontendParams};
-use regmap;
 
 const LAT: u32 = regmap::MPDTC_FE_LATENCY_CYCLES;
 const VLD_MASK: u32 = (1 << LAT) - 1;

@@ -203,7 +203,6 @@ impl MpdccBlock {
 mod tests {
     use super::*;
     use crate::pl::SimPl;
-    use drive::pl::fake::FakePl;
     use drive::pl::mpdcc::Mpdcc;
     use models::mpdcc::controller::CtrlState;
     use models::mpdcc::fpga::{FpgaConfig, FpgaMpdcc};
@@ -248,10 +247,10 @@ mod tests {
     fn page_words_are_the_model_constants_and_decision() {
         let f = core();
         let x = state([4, 4, 3]);
-        let mut pl = FakePl::new();
+        let mut pl = Bus(SimPl::new(10));
         Mpdcc(&mut pl).load_coeffs(f.coeffs()).unwrap();
         Mpdcc(&mut pl).write_inputs(&x).unwrap();
-        let g = |r: usize| pl.get(MPDCC.addr(MPDCC.registers[r])) as u16;
+        let mut g = |r: usize| pl.read(MPDCC.addr(MPDCC.registers[r])).unwrap() as u16;
         let words = Words {
             n_use: u32::from(g(2)),
             s_prev: u32::from(g(4)),

@@ -1,6 +1,6 @@
 //! The MPDCC hardware-in-the-loop run (`drive::hil`) on the simulated PL:
 //! its decisions and statistics are the FPGA model's loop, one for one.
-use drive::hil::{default_core, run, HilError, Paced};
+use drive::hil::{default_core, run, HilError, Paced, MAX_LATE_IN_A_ROW, MAX_PERIODS};
 use drive::pl::mpdcc::{Mpdcc, MpdccError, PageDecision};
 use models::mpdcc::closed_loop::{self, LoopConfig, LoopResult};
 use models::mpdcc::fpga::Inputs;

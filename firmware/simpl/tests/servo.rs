@@ -2,8 +2,9 @@
 //! the way the firmware runs it under QEMU: one control step at each
 //! control-period boundary the PL reports. The settling figures are the
 //! host simulation's (README, paper 000) plus 10 %.
+use drive::pl::fault::Faults;
 use drive::pl::top::Mode;
-use drive::servo::{Servo, ServoConfig};
+use drive::servo::{Servo, ServoConfig, ServoError, StepResult};
 use simpl::{SimConfig, SimDrive};
 
 fn setup(mode: Mode) -> (Servo, SimDrive) {
@@ -165,9 +166,10 @@ fn a_step_right_after_a_mode_change_starts_from_rest() {
     run(&mut s, &mut sim, 10_000, |s| !s.step_pending());
     let r = s.step_result().expect("step completed");
     let band = models::pmsm::metrics::settling_band(0.0, 0.4);
-    let first = f64::from(s.rec.samples()[0]);
+    let rec = s.step_recording().expect("window full");
+    let first = f64::from(rec.samples()[0]);
     assert!(first.abs() <= band, "first sample {first} N m: {r:?}");
-    assert!(s.rec.waited_periods() > 0, "{r:?}");
+    assert!(rec.waited_periods() > 0, "{r:?}");
     let t = r.settling_s.expect("settled");
     assert!(t > 0.0 && t <= 0.27e-3, "{r:?}");
 }

@@ -15,7 +15,6 @@ use models::mpdcc::controller::{candidates, CtrlState, Decision, MpdccController
 use models::mpdcc::cycles;
 use models::mpdcc::fpga::{FpgaMpdcc, Inputs};
 use models::mpdcc::params::DriveParams;
-use regmap;
 use rtl_sim::mpdcc_vectors::core;
 use rtl_sim::pl_top::PlTopSim;
 

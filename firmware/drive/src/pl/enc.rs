@@ -1,6 +1,5 @@
 //! Encoder block: position and speed, and their electrical equivalents.
 use core::f64::consts::TAU;
-use regmap;
 use regmap::bus::{BusError, RegisterBus};
 use regmap::regs::enc::{EncCpr, EncPos, EncSpeed, EncWindow};
 

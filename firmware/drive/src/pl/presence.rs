@@ -13,7 +13,6 @@
 //! load one) `INT_STS` reads `0x0000_0000` after reset (measured: `status`
 //! prints it), so `PCFG_DONE` is clear and the firmware never touches GP0:
 //! it selects the simulated PL instead.
-use regmap;
 use regmap::bus::RegisterBus;
 use regmap::regs::top::{Id, Version, VersionValue};
 

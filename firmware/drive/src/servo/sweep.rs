@@ -7,7 +7,6 @@ use super::{Servo, ServoError};
 use crate::pl::capture::{CapSample, CapStatus, Capture, Trigger};
 use crate::pl::top::Mode;
 use core::f64::consts::PI;
-use regmap;
 use regmap::bus::RegisterBus;
 
 /// A sine torque reference `amp sin(2 pi f n T)`, one value per control
