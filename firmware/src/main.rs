@@ -1,9 +1,21 @@
 //! Bare-metal PS application of the predictive servo drive.
 //!
 //! Boot: VBAR, UART0 (defmt log) and UART1 (console) at 115200 8N1, GIC,
-//! private timer tick at [`TICK_HZ`], then the console loop. Everything that
-//! can be tested on the host lives in the `drive` crate; this crate only
-//! moves bytes and touches registers.
+//! private timer tick at [`TICK_HZ`], then the console loop. This crate only
+//! moves bytes, touches registers and chooses the backend the drive's
+//! `RegisterBus` is answered by (`control`: GP0 with a bitstream, else the
+//! co-simulated RTL over `cosim`, else the simulated PL). Everything that
+//! can be tested on the host lives in the library crates:
+//! - `drive` (`firmware/drive`): the product: PL drivers, servo, the MPDCC
+//!   HIL loop, configuration and its flash store, console grammar;
+//! - `models` (`firmware/models`): the papers' plants, controllers and
+//!   bit-exact fixed-point models;
+//! - `simpl` (`firmware/simpl`): the simulated PL, the gate-driver model,
+//!   the co-simulation wire format;
+//! - `regmap` (`firmware/regmap`): the PL register map, its typed accessors
+//!   and the `RegisterBus` trait.
+//!
+//! Only this crate may depend on both `drive` and `simpl`.
 #![cfg_attr(target_os = "none", no_std)]
 #![cfg_attr(target_os = "none", no_main)]
 

@@ -14,7 +14,7 @@
 //              firmware writes it only with the gates disabled.
 //   hi_o, lo_o upper / lower gate, 1 = on. Registered outputs.
 //
-// Behaviour (the Rust model drive::gates::GateLeg is the same, bit for bit)
+// Behaviour (the Rust model simpl::gates::GateLeg is the same, bit for bit)
 //   off_cnt_q counts the consecutive cycles, up to and including the current
 //   one, in which both gates are off; it saturates at 2^DT_W-1 (>= every
 //   dead time). A gate may turn on at the next edge only if the other gate is

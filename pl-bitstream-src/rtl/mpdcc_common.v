@@ -1,5 +1,5 @@
 // mpdcc_common: the MPDCC scheduler's common terms (paper 001, Sec. V-A,
-// eq. 14), drive::mpdcc::fpga::common_terms of the frozen core bit for bit:
+// eq. 14), models::mpdcc::fpga::common_terms of the frozen core bit for bit:
 // output errors at k, the switch-independent error changes at the nodes
 // k + 8, 16, 32, 64 and over one step, and the capacitor-current products.
 // The inputs are held stable by the caller from the start_i cycle on. The
@@ -12,7 +12,7 @@
 // v_ph_ref Q2.13; psi_ab and the L-step coefficients Q1.14; the one-step
 // coefficients c_tau1, c_r1, c_w1, c_s1 f17; wide sums exact (f28 L-step,
 // f31 one step); mul(a, b) = sat16(rnd(a b, s)), rnd = round half up
-// ((x >>> s) + x[s-1]), as drive::mpdcc::fixed::mul.
+// ((x >>> s) + x[s-1]), as models::mpdcc::fixed::mul.
 //
 // Stages (at most one multiplier or one adder between registers; a
 // saturation is a compare and mux on a registered sum; a "product" is a

@@ -1,8 +1,8 @@
 // mpdcc_core: the MPDCC core of paper 001 (Algorithm 1) with a central
 // scheduler and N pipelined explorers, bit-exact with the decision of
-// drive::mpdcc::fpga (FpgaMpdcc::decide_raw, frozen core Structure::CORE).
+// models::mpdcc::fpga (FpgaMpdcc::decide_raw, frozen core Structure::CORE).
 //
-// Inputs are the state registers (drive::mpdcc::fpga::Inputs, already
+// Inputs are the state registers (models::mpdcc::fpga::Inputs, already
 // quantized) and the design constants (Coeffs), held stable from start_i to
 // done_o. On start_i the scheduler starts the common terms (mpdcc_common,
 // eq. 14, on MULS shared multipliers) and, once the terms the explorers read
@@ -24,7 +24,7 @@
 // Decision: kept (lazy check passes: s(k-1), no candidates), optimal (best),
 // or deadlock (best_dl). done_o is high for one cycle with the decision;
 // cycles_o counts the clock edges from the start_i cycle to the done_o cycle:
-//   20 + ceil(|S| / n_use) + 41 + 3 + 1   (drive::mpdcc::cycles::pipelined_core_cycles)
+//   20 + ceil(|S| / n_use) + 41 + 3 + 1   (models::mpdcc::cycles::pipelined_core_cycles)
 // The search always runs (a kept decision takes as long): the lazy check
 // costs no separate pass.
 `default_nettype none
@@ -38,7 +38,7 @@ module mpdcc_core #(
     output wire               busy_o,
     input  wire        [2:0]  n_use_i,    // explorers used, 1..N (clamped)
     input  wire        [8:0]  s_prev_i,   // {c, b, a}
-    // state registers (raw, drive::mpdcc::fpga::Inputs)
+    // state registers (raw, models::mpdcc::fpga::Inputs)
     input  wire signed [15:0] i_a_i,
     input  wire signed [15:0] i_b_i,
     input  wire signed [15:0] psi_a_i,
@@ -49,7 +49,7 @@ module mpdcc_core #(
     input  wire signed [15:0] ir_b_i,
     input  wire signed [15:0] omega_r_i,
     input  wire signed [15:0] omega_s_i,
-    // design constants (drive::mpdcc::fpga::Coeffs)
+    // design constants (models::mpdcc::fpga::Coeffs)
     input  wire signed [15:0] c_tau_i,
     input  wire signed [15:0] c_r_i,
     input  wire signed [15:0] c_w_i,
@@ -378,9 +378,9 @@ module mpdcc_core #(
     end
 
     // ------------------------------------ S(s(k-1)), written independently
-    // Level of a position (drive::mpdcc::anpc::TABLE): -2, -1, -1, 0, 0, 1,
+    // Level of a position (models::mpdcc::anpc::TABLE): -2, -1, -1, 0, 0, 1,
     // 1, 2; a candidate is admissible in a phase when its level is within
-    // one of s(k-1)'s (drive::mpdcc::anpc::admissible_phase).
+    // one of s(k-1)'s (models::mpdcc::anpc::admissible_phase).
     function automatic signed [3:0] f_level(input [2:0] x);
         case (x)
             3'd0: f_level = -4'sd2;
@@ -465,7 +465,7 @@ module mpdcc_core #(
     // are back F_LAT clocks later and leave the arg-min tree F_AM = 3 clocks
     // after that, and done_o follows one clock after the last:
     // G = f_lastclk - F_CL issue clocks, so done_o comes at clock
-    // T = F_CL + G + F_LAT + F_AM + 1 (drive::mpdcc::cycles::pipelined_core_cycles).
+    // T = F_CL + G + F_LAT + F_AM + 1 (models::mpdcc::cycles::pipelined_core_cycles).
     wire f_start = start_i && !busy_q && !rst_i;
     reg        f_busy = 1'b0, f_done = 1'b0;
     reg [8:0]  f_sp = 9'd0;

@@ -1,4 +1,4 @@
-// mpdcc_explorer: one MPDCC explorer unit (drive::mpdcc::fpga::explore of
+// mpdcc_explorer: one MPDCC explorer unit (models::mpdcc::fpga::explore of
 // the frozen core, Structure::CORE), pipelined: one candidate per clock,
 // fixed latency LATENCY = 41 cycles.
 //
@@ -19,7 +19,7 @@
 // g3, gd Q1.14; g3_1 f17; P_n, P_ph f27 (32 bits); bnd Q2.13 >= 0;
 // lambda_n UQ8.8; node changes Q4.13 in 18 bits, saturated at
 // +-(2^17 - 1); wide sums exact; every rounding is round half up,
-// rshift_round(x, s) = (x >>> s) + x[s-1], as in drive::fixedpoint.
+// rshift_round(x, s) = (x >>> s) + x[s-1], as in models::fixedpoint.
 //
 // Stages (n = register loaded at the n-th edge after in_valid_i); at most
 // one multiplier or one adder between registers:
@@ -118,7 +118,7 @@ module mpdcc_explorer (
     endfunction
 
     // ---------------------------------------------------- stage 1: positions
-    // ANPC position table (drive::mpdcc::anpc::TABLE): v0 = X +- Y with
+    // ANPC position table (models::mpdcc::anpc::TABLE): v0 = X +- Y with
     // X in {0, v_n, vdc/2, v_ph} and Y in {0, vdc/2, v_ph}; np = n_coef;
     // ph_current in {-1, 0, 1}.
     wire signed [W-1:0] v0_d [0:2];

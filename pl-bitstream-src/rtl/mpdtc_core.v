@@ -1,4 +1,4 @@
-// mpdtc_core: the fixed-point MPDTC of drive::pmsm::mpdtc_fixed::decide,
+// mpdtc_core: the fixed-point MPDTC of models::pmsm::mpdtc_fixed::decide,
 // bit for bit (formats and arithmetic rules: docs/mpdtc-fixed.md).
 //
 // Formats: CUR sQ8.16 (25 bits), COEF sQ1.16 (18), TRQ sQ3.14 (18),

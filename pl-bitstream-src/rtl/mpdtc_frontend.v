@@ -1,5 +1,5 @@
 // mpdtc_frontend: the PL front end of the MPDTC core, bit for bit
-// drive::pmsm::frontend_fixed::frontend (formats, table and error bound
+// models::pmsm::frontend_fixed::frontend (formats, table and error bound
 // there): encoder count -> electrical angle, speed -> angle step and w Ts,
 // cos/sin at the Park angle and at the core's three instants (1024-entry
 // sine table, generated sin_table.vh, with linear interpolation), ADC

@@ -48,7 +48,7 @@
 //              the strobe, at the gates 1 cycle later / after the dead time),
 //              the period counter increments and the state is SAMPLE with
 //              that boundary's sample already taken.
-// This is the timeline of drive::pmsm::sim (measurement at t_k, decision
+// This is the timeline of models::pmsm::sim (measurement at t_k, decision
 // applied during [t_k+1, t_k+2), 000 before the first decision).
 // start_i in INITIAL, MPDTC and PWM is ignored. In the autonomous loop a
 // period takes 9 (front end) + 1 + 11 (core) cycles from the boundary to

@@ -537,7 +537,7 @@ module pl_top #(
     // only right after an ADC restart, is skipped). Its inputs are captured
     // at the strobe: ADC_IA..IC, ENC_POS/SPEED, MPDTC_IN_T_REF, the
     // registers and the alignment position of this run.
-    // mpdtc_frontend's LATENCY (drive::regmap::MPDTC_FE_LATENCY_CYCLES).
+    // mpdtc_frontend's LATENCY (regmap::MPDTC_FE_LATENCY_CYCLES).
     localparam [3:0] FE_LAT = 4'd9;
     wire fe_start = mp_auto && adc_avg_valid_o && fe_busy_q == 4'd0;
     always @(posedge clk_i) begin

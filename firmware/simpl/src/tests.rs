@@ -208,7 +208,7 @@ fn event_driven_equals_cycle_by_cycle() {
 }
 
 // ------------------------------------------------- the simulated motor
-// (the closed loops through the drive's own code are in `servo::sim_tests`)
+// (the closed loops through the drive's own code are in `simpl`'s test `tests/servo.rs`)
 
 fn wr<B: RegisterBus>(bus: &mut B, b: &Block, r: &Register, v: u32) {
     assert_eq!(bus.write(b.addr(r), v), Ok(()), "{}", r.name);

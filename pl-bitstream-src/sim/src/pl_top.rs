@@ -1,6 +1,6 @@
 //! Safe wrapper of the Verilated `pl_top` (shim: `csrc/pl_top_shim.cpp`)
 //! and a cycle-level AXI4-Lite master to drive it. The shim and the port
-//! structs [`PtIn`]/[`PtOut`] are generated from `regmap::PL_TOP_PORTS`
+//! structs [`PtIn`]/[`PtOut`] are generated from `regmap_gen::ports::PL_TOP_PORTS`
 //! (`cargo run -p regmap-gen`).
 //!
 //! [`PlTopSim::step`] is one clock cycle: the inputs in [`PlTopSim::inp`]

@@ -68,7 +68,7 @@ pub struct DriveStatus {
 /// Guest instructions of the control code, measured by `debug bench`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Bench {
-    /// One FOC step (`drive::pmsm::foc`), instructions.
+    /// One FOC step (`models::pmsm::foc`), instructions.
     pub foc_step: u32,
     /// One MPDTC-mode control period on the PS (measurement, inputs, START), instructions.
     pub mpdtc_period: u32,

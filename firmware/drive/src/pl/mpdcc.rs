@@ -1,5 +1,5 @@
 //! MPDCC block: the constants and per-period state of `mpdcc_core` (the
-//! words of `drive::mpdcc::fpga::Coeffs` and `Inputs`), start, status and
+//! words of `models::mpdcc::fpga::Coeffs` and `Inputs`), start, status and
 //! the decision. Formats: docs/mpdcc-fpga.md; the page: docs/register-map.md.
 //!
 //! A decision is `write_inputs`, `start`, then `wait` (polls `MPDCC_STATUS`

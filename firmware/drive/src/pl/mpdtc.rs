@@ -37,7 +37,7 @@ fn param_err(field: &'static str, reason: &'static str) -> ParamError {
 }
 
 /// The `MPDTC_FE_*` register values of `s` (formats in
-/// `drive::pmsm::frontend_fixed`); errors for values outside the formats.
+/// `models::pmsm::frontend_fixed`); errors for values outside the formats.
 /// `cpr` and `align_pos` of the result are `ENC_CPR` and 0: the PL takes
 /// them from `ENC_CPR` and its own alignment.
 pub fn frontend_params(s: &FrontendSetup) -> Result<FrontendParams, ParamError> {
