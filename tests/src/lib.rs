@@ -1,7 +1,7 @@
 //! Harness of the system tests: boots the release firmware in QEMU (under a
 //! timeout: the session kills QEMU when dropped) and talks to its console
 //! through `drivectl`'s link, the same code users run.
-use drivectl::link::{default_elf, Qemu, Reply, Session};
+use drivectl::link::{default_elf, Final, Qemu, Reply, Session};
 use std::path::PathBuf;
 use std::time::Duration;
 
@@ -75,4 +75,25 @@ pub fn field<'a>(r: &'a Reply, key: &str) -> Option<&'a str> {
         .iter()
         .find_map(|l| l.strip_prefix(key)?.strip_prefix(": "))
         .and_then(|v| v.split_whitespace().next())
+}
+
+/// Asserts that `r` ended in `OK`.
+pub fn assert_ok(r: &Reply) {
+    assert!(r.is_ok(), "{r:?}");
+}
+
+/// Asserts that `r` ended in `ERR <want_code>`.
+pub fn assert_err(r: &Reply, want_code: &str) {
+    match &r.fin {
+        Final::Err { code, .. } => assert_eq!(code, want_code, "{r:?}"),
+        Final::Ok => panic!("expected ERR {want_code}, got {r:?}"),
+    }
+}
+
+/// The number after `key: ` in a reply line (a trailing `,` of a list
+/// ignored); panics with the reply when there is none.
+pub fn num(r: &Reply, key: &str) -> f64 {
+    field(r, key)
+        .and_then(|v| v.trim_end_matches(',').parse().ok())
+        .unwrap_or_else(|| panic!("no number for {key}: {r:?}"))
 }

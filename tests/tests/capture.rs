@@ -1,25 +1,8 @@
 //! The PL capture buffer and the frequency response under QEMU, through the
 //! console: `capture arm|trigger|status|dump` and `sweep` on the simulated
 //! PL, bad arguments included.
-use drivectl::link::{Final, Reply, Session};
-use system_tests::{boot, cmd, field};
-
-fn assert_ok(r: &Reply) {
-    assert!(r.is_ok(), "{r:?}");
-}
-
-fn assert_err(r: &Reply, want_code: &str) {
-    match &r.fin {
-        Final::Err { code, .. } => assert_eq!(code, want_code, "{r:?}"),
-        Final::Ok => panic!("expected ERR {want_code}, got {r:?}"),
-    }
-}
-
-fn num(r: &Reply, key: &str) -> f64 {
-    field(r, key)
-        .and_then(|v| v.parse().ok())
-        .unwrap_or_else(|| panic!("no number for {key}: {r:?}"))
-}
+use drivectl::link::{Reply, Session};
+use system_tests::{assert_err, assert_ok, boot, cmd, field, num};
 
 /// Polls `capture status` until the record is complete.
 fn wait_done(s: &mut Session) -> Reply {

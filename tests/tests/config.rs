@@ -1,25 +1,8 @@
 //! `config list|get|set|reset|schema` under QEMU: the table on the console,
 //! bad values refused with nothing changed, and the values reaching the
 //! drive (control rates, the MPDTC's band).
-use drivectl::link::{Final, Reply, Session};
-use system_tests::{boot, cmd, field};
-
-fn assert_ok(r: &Reply) {
-    assert!(r.is_ok(), "{r:?}");
-}
-
-fn assert_err(r: &Reply, want_code: &str) {
-    match &r.fin {
-        Final::Err { code, .. } => assert_eq!(code, want_code, "{r:?}"),
-        Final::Ok => panic!("expected ERR {want_code}, got {r:?}"),
-    }
-}
-
-fn num(r: &Reply, key: &str) -> f64 {
-    field(r, key)
-        .and_then(|v| v.parse().ok())
-        .unwrap_or_else(|| panic!("no number for {key}: {r:?}"))
-}
+use drivectl::link::Session;
+use system_tests::{assert_err, assert_ok, boot, cmd, field, num};
 
 /// `config get <name>`: the value and the unit.
 fn get(s: &mut Session, name: &str) -> (f64, String) {

@@ -1,15 +1,8 @@
 //! The firmware console under QEMU: every command, every error path, and
 //! that the console keeps answering after each error.
-use drivectl::link::{Final, PROMPT};
+use drivectl::link::PROMPT;
 use std::time::Duration;
-use system_tests::{boot, boot_with, cmd, elf, field, TIMEOUT};
-
-fn assert_err(r: &drivectl::link::Reply, want_code: &str) {
-    match &r.fin {
-        Final::Err { code, .. } => assert_eq!(code, want_code, "{r:?}"),
-        Final::Ok => panic!("expected ERR {want_code}, got {r:?}"),
-    }
-}
+use system_tests::{assert_err, boot, boot_with, cmd, elf, field, TIMEOUT};
 
 #[test]
 fn help_lists_every_command_of_the_grammar() {

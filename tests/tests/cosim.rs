@@ -7,26 +7,9 @@
 //! recovery. That the MPDTC takes the same decisions on both PLs is checked
 //! on the host (`pl-bitstream-src/sim/tests/cosim.rs`), where the decisions
 //! are visible.
-use drivectl::link::{parse_reply, Final, Reply, Session, PROMPT};
+use drivectl::link::{parse_reply, Reply, Session, PROMPT};
 use std::time::Duration;
-use system_tests::{boot, boot_rtl, cmd, field};
-
-fn assert_ok(r: &Reply) {
-    assert!(r.is_ok(), "{r:?}");
-}
-
-fn assert_err(r: &Reply, want_code: &str) {
-    match &r.fin {
-        Final::Err { code, .. } => assert_eq!(code, want_code, "{r:?}"),
-        Final::Ok => panic!("expected ERR {want_code}, got {r:?}"),
-    }
-}
-
-fn num(r: &Reply, key: &str) -> f64 {
-    field(r, key)
-        .and_then(|v| v.parse().ok())
-        .unwrap_or_else(|| panic!("no number for {key}: {r:?}"))
-}
+use system_tests::{assert_err, assert_ok, boot, boot_rtl, cmd, field, num};
 
 /// `mode mpdtc`, `enable`, `step 0.4` sent in one write: the step is
 /// armed during the 2 ms rotor alignment (however slow the host) and

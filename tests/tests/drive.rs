@@ -2,26 +2,9 @@
 //! (FOC on the PS, the MPDTC core's inputs) on the simulated PL and motor.
 //! Figures: the host simulation's settling times (README, paper 000
 //! results) plus 10 %: FOC <= 0.27 ms, MPDTC <= 0.19 ms for a 0.4 N m step.
-use drivectl::link::{Final, Reply, Session};
+use drivectl::link::Session;
 use std::time::Duration;
-use system_tests::{boot, cmd, field};
-
-fn assert_ok(r: &Reply) {
-    assert!(r.is_ok(), "{r:?}");
-}
-
-fn assert_err(r: &Reply, want_code: &str) {
-    match &r.fin {
-        Final::Err { code, .. } => assert_eq!(code, want_code, "{r:?}"),
-        Final::Ok => panic!("expected ERR {want_code}, got {r:?}"),
-    }
-}
-
-fn num(r: &Reply, key: &str) -> f64 {
-    field(r, key)
-        .and_then(|v| v.parse().ok())
-        .unwrap_or_else(|| panic!("no number for {key}: {r:?}"))
-}
+use system_tests::{assert_err, assert_ok, boot, cmd, field, num};
 
 /// `mode`, `enable`, `step 0.4`: settling within `limit_ms`, then `status`
 /// shows the torque within 0.05 N m of 0.4 and `disable` turns the gates off.

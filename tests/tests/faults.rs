@@ -1,20 +1,9 @@
 //! Faults under QEMU: each PS- and PL-detected fault latched with its name,
 //! the gates off, `fault history` with drive time, code and the samples
 //! before, `fault clear`, and the history's length.
-use drivectl::link::{Final, Reply, Session};
+use drivectl::link::{Reply, Session};
 use std::time::{Duration, Instant};
-use system_tests::{boot, cmd, field};
-
-fn assert_ok(r: &Reply) {
-    assert!(r.is_ok(), "{r:?}");
-}
-
-fn assert_err(r: &Reply, want_code: &str) {
-    match &r.fin {
-        Final::Err { code, .. } => assert_eq!(code, want_code, "{r:?}"),
-        Final::Ok => panic!("expected ERR {want_code}, got {r:?}"),
-    }
-}
+use system_tests::{assert_err, assert_ok, boot, cmd, field};
 
 /// The `fault:` line of `status` once it names `name` (the control step
 /// that sees a PS fault runs a few control periods after the command).

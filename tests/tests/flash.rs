@@ -2,13 +2,9 @@
 //! bad records ignored and reported in `status`, and saves cut by killing
 //! QEMU at random instants (a power cut) leaving the old or the new one.
 use drive::config::store::{crc32, RECORD_BYTES, SECTOR_BYTES, SLOT0_ADDR};
-use drivectl::link::{Reply, Session};
+use drivectl::link::Session;
 use std::time::Instant;
-use system_tests::{boot_with_flash, cmd, field, fresh_flash};
-
-fn assert_ok(r: &Reply) {
-    assert!(r.is_ok(), "{r:?}");
-}
+use system_tests::{assert_ok, boot_with_flash, cmd, field, fresh_flash};
 
 /// QEMU writes the flash image asynchronously (the n25q128 model's page
 /// and sector writes are queued to its block layer): a kill right after

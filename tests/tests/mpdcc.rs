@@ -13,7 +13,7 @@ use drivectl::link::{Final, Reply};
 use models::mpdcc::closed_loop::{self, LoopConfig};
 use models::mpdcc::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
 use models::mpdcc::fpga::FpgaMpdcc;
-use system_tests::{boot, boot_rtl, cmd, field};
+use system_tests::{boot, boot_rtl, cmd, field, num};
 
 /// The model, counting its decisions by kind.
 struct Counting(FpgaMpdcc, [u64; 3]);
@@ -31,12 +31,6 @@ impl MpdccController for Counting {
         }] += 1;
         Ok(d)
     }
-}
-
-fn num(r: &Reply, key: &str) -> f64 {
-    field(r, key)
-        .and_then(|v| v.trim_end_matches(',').parse().ok())
-        .unwrap_or_else(|| panic!("no number for {key}: {r:?}"))
 }
 
 /// Checks an `mpdcc run 1` reply against the host's FPGA-model loop.
