@@ -3,7 +3,9 @@
 //! `build.rs` verilates each top and links a small C++ shim per top
 //! (`csrc/*_shim.cpp`); this crate wraps the shim's `extern "C"` functions in
 //! safe types. Tests in `tests/` drive them against the cycle-exact Rust
-//! models in the `drive` crate.
+//! models of the `models` crate and the simulated PL of `simpl`. It depends
+//! on `regmap`, `models` and `simpl`, not on the product; its tests also
+//! run the product's drivers and servo (`drive`, a dev-dependency).
 
 pub mod cosim;
 pub mod gate_driver;

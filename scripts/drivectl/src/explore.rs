@@ -4,7 +4,7 @@
 //! `delta_i` scaled by 1 + 1e-4), then for each `L` and `p` the FPGA model's
 //! decision mismatch against the reference (shadow run) and the f_sw / THD
 //! of an FPGA-driven run relative to the reference. Uses the datapath
-//! structures of `drive`'s `mpdcc-research` feature (docs/mpdcc-fpga.md).
+//! structures of `models`' `mpdcc-research` feature (docs/mpdcc-fpga.md).
 use anyhow::{anyhow, Result};
 use clap::{Args as ClapArgs, ValueEnum};
 use models::mpdcc::closed_loop::{self, LoopConfig};

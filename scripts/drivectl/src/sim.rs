@@ -276,7 +276,7 @@ mod tests {
         assert!(format!("{:#}", parse_config(&bad_period).unwrap_err()).contains("line 8"));
     }
 
-    /// `MotorParams`/`DriveParams` load from TOML (feature `std` of `drive`):
+    /// `MotorParams`/`DriveParams` load from TOML (feature `std` of `models`):
     /// missing keys take the paper's defaults, unknown keys are rejected.
     #[test]
     fn library_params_load_from_toml() {
