@@ -22,6 +22,8 @@ pub mod bus;
 pub mod config;
 pub mod console;
 pub mod cosim;
+#[cfg(test)]
+mod doc_figures;
 pub mod fixedpoint;
 pub mod gates;
 pub mod mpdcc;
