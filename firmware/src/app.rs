@@ -2,7 +2,7 @@
 use crate::ps::{gic, timer, uart::Uart};
 use crate::{control, log, pl, rx::Ring};
 use core::sync::atomic::{AtomicBool, AtomicU32, Ordering};
-use drive::console::{self, Action, Context, LineEditor, PlKind, Status, PROMPT};
+use drive::console::{self, Action, Context, LineEditor, Status, PROMPT};
 
 /// Console and log line settings.
 const BAUD: u32 = 115_200;
@@ -69,20 +69,11 @@ fn banner(con: &mut Uart, boot: &control::Boot) {
         env!("FW_GIT_HASH"),
         env!("FW_PROFILE"),
     );
-    let _ = match boot.pl {
-        PlKind::Simulated => write!(con, "pl: simulated"),
-        PlKind::Bitstream(v) => {
-            let v = regmap::regs::top::VersionValue::from_bits(v);
-            write!(con, "pl: bitstream v{}.{}", v.major(), v.minor())
-        }
-        PlKind::Absent => write!(con, "pl: absent"),
-        PlKind::RtlCosim => write!(con, "pl: rtl co-simulation"),
-    };
     let _ = write!(
         con,
-        " (devcfg INT_STS 0x{:08x})\r\n\
+        "pl: {} (devcfg INT_STS 0x{:08x})\r\n\
          console on UART1 at {} 8N1; defmt log on UART0; type `help`\r\n{}",
-        boot.devcfg_int_sts, BAUD, PROMPT
+        boot.pl, boot.devcfg_int_sts, BAUD, PROMPT
     );
 }
 

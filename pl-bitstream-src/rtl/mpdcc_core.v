@@ -347,8 +347,8 @@ module mpdcc_core #(
 
 `ifdef FORMAL
     // Hand-shake properties of the scheduler (scripts/rtl-formal, N = 2),
-    // proved for ANY explorer arithmetic: the explorers are a stand-in
-    // (formal/stubs/mpdcc_explorer.v, free outputs) constrained only by the
+    // proved for ANY explorer arithmetic: the explorers are cut at their
+    // outputs (scripts/rtl-formal, free outputs) constrained only by the
     // explorer's hand-shake contract, assumed here and proved on the real
     // explorer by its own FORMAL block: out_valid_o is in_valid_i exactly
     // F_LAT clocks later, cleared by a reset. Power-up is the all-zero state

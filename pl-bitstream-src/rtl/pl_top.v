@@ -11,10 +11,6 @@
 //                    control sequence IDLE, INITIAL (rotor alignment), SAMPLE,
 //                    MPDTC, PWM around mpdtc_core (see mpdtc_seq.v); gates
 //                    only while the sequence is out of IDLE
-//   mpdtc_core    -> S[k+1] to mpdtc_seq (inputs/parameters from the MPDTC
-//                    page; started by the sequence, or by MPDTC_START while
-//                    the sequence is IDLE); PWM.SW_STATE drives the gates
-//                    instead when MPDTC_CTRL.MANUAL = 1 (reset)
 //   mpdcc_core    -> one MPDCC decision per MPDCC_START write, on a snapshot
 //                    of the MPDCC page's inputs and constants (MPDCC_N
 //                    explorers); result, cycle count, decision and deadlock

@@ -210,6 +210,11 @@ fn main() {
         }
         let src = manifest.join("csrc").join(shim_src);
         println!("cargo:rerun-if-changed={}", src.display());
+        // The port accessors a core's shim includes (generated from its RTL).
+        let ports = manifest.join("csrc").join(format!("{top}_ports.h"));
+        if ports.exists() {
+            println!("cargo:rerun-if-changed={}", ports.display());
+        }
         let mdir = verilate(&rtl, &out, top, files);
         if models.is_empty() {
             runtime(&out, &mdir, top);

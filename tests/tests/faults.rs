@@ -83,6 +83,9 @@ fn fault_cycle(s: &mut Session, mode: &str, what: &str, name: &str, code: u32) {
         rec.contains(" A, i_q ") && rec.contains(" Nm (ref "),
         "{rec}"
     );
+    // The reference the drive was following, not the 0 N m the fault's
+    // gates-off set.
+    assert!(rec.ends_with("(ref 0.2000 Nm)"), "{rec}");
     let r = cmd(s, "fault clear");
     assert_ok(&r);
     assert_eq!(r.lines[0], "fault: none", "{r:?}");

@@ -20,6 +20,8 @@
 
 pub mod config;
 pub mod console;
+#[cfg(test)]
+mod doc_figures;
 pub mod hil;
 pub mod pl;
 pub mod servo;

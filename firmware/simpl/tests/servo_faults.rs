@@ -115,3 +115,41 @@ fn mode_changes_on_the_simulated_pl_raise_no_fault() {
     }
     assert_eq!(s.fault_history().total, 0);
 }
+
+/// The snapshot of a PL fault holds the torque reference the drive was
+/// following, not the 0 N m the fault's gates-off sets afterwards: the
+/// last sample's reference matches its measured torque.
+#[test]
+fn a_pl_fault_snapshot_keeps_the_reference_before_the_gates_went_off() {
+    let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+    let mut s = Servo::new(&ServoConfig::for_plant(
+        sim.config().motor,
+        sim.config().adc_amps_per_count,
+    ))
+    .unwrap();
+    s.init(&mut sim).unwrap();
+    s.set_mode(&mut sim, Mode::Mpdtc).unwrap();
+    s.enable(&mut sim).unwrap();
+    s.set_torque_ref(0.4).unwrap();
+    // Past the MPDTC's 2 ms alignment and the torque's rise.
+    for _ in 0..400 {
+        sim.advance_to_boundary(20_000);
+        s.control_step(&mut sim).unwrap();
+    }
+    sim.set_external_fault(true);
+    sim.advance(10);
+    sim.advance_to_boundary(20_000);
+    s.control_step(&mut sim).unwrap();
+    // EXTERNAL is bit 1, code 2.
+    let codes: Vec<u32> = s.fault_history().records().map(|r| r.code()).collect();
+    assert_eq!(codes, [2]);
+    let r = s.fault_history().records().next().unwrap();
+    let last = r.snapshot.samples().last().unwrap();
+    assert_eq!(last.torque_ref_nm, 0.4, "{r:?}");
+    assert!((last.measured.torque_nm - 0.4).abs() < 0.1, "{r:?}");
+    let mut line = std::string::String::new();
+    r.write_summary(&mut line).unwrap();
+    assert!(line.ends_with("(ref 0.4000 Nm)"), "{line}");
+    // The drive itself is back at 0 N m for the next run.
+    assert_eq!(s.torque_ref_nm(), 0.0);
+}

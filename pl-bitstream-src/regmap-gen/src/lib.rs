@@ -3,11 +3,13 @@
 //! `pl-bitstream-src/rtl/pl_regs.v` ([`rtl`]), `docs/register-map.md` and the
 //! typed accessors `firmware/regmap/src/regs.rs` ([`rust`]); and from the
 //! port list [`ports::PL_TOP_PORTS`] the `pl_top` Verilator harness
-//! ([`harness`]). `cargo run -p
+//! ([`harness`]); from the RTL's own port lists the port accessors of the
+//! Verilated cores ([`core_ports`]). `cargo run -p
 //! regmap-gen` writes them; the test `tests/regmap_files.rs` fails when
 //! the committed files differ from what this produces.
 use std::fmt::Write;
 
+pub mod core_ports;
 pub mod harness;
 pub mod ports;
 pub mod rtl;
@@ -26,6 +28,9 @@ pub fn files(blocks: &[&Block]) -> Vec<(&'static str, String)> {
         (harness::RUST_PATH, harness::rust(ports::PL_TOP_PORTS)),
         (trig::SIN_TABLE_PATH, trig::sin_table()),
     ]
+    .into_iter()
+    .chain(core_ports::files())
+    .collect()
 }
 
 use regmap::{self, Access, Block, Invalid, Register};

@@ -3,7 +3,7 @@
 // constants held, start strobe, clock until done_o).
 #include <cstdint>
 
-#include "Vmpdcc_core.h"
+#include "mpdcc_core_ports.h"
 #include "verilated.h"
 
 static void tick(Vmpdcc_core* t) {
@@ -72,59 +72,59 @@ void* mk_new() {
 
 void mk_decide(void* p, const MkIn* c, int32_t n_use, MkOut* out) {
     auto* t = static_cast<MkSim*>(p)->top;
-    t->s_prev_i = (c->s_prev[0] & 7) | ((c->s_prev[1] & 7) << 3) | ((c->s_prev[2] & 7) << 6);
+    mpdcc_core_set_s_prev_i(t, (c->s_prev[0] & 7) | ((c->s_prev[1] & 7) << 3) | ((c->s_prev[2] & 7) << 6));
     for (int j = 0; j < 7; j++) put(t->bnd_i, 16 * j, 16, (uint16_t)c->bnd[j]);
     for (int ph = 0; ph < 3; ph++) put(t->v_ph_i, 16 * ph, 16, (uint16_t)c->v_ph[ph]);
-    t->i_a_i = (uint16_t)c->i_ab[0];
-    t->i_b_i = (uint16_t)c->i_ab[1];
-    t->psi_a_i = (uint16_t)c->psi_ab[0];
-    t->psi_b_i = (uint16_t)c->psi_ab[1];
-    t->v_n_i = (uint16_t)c->v_n;
-    t->ir_a_i = (uint16_t)c->i_ref_ab[0];
-    t->ir_b_i = (uint16_t)c->i_ref_ab[1];
-    t->omega_r_i = (uint16_t)c->omega_r;
-    t->omega_s_i = (uint16_t)c->omega_s;
-    t->c_tau_i = (uint16_t)c->c_tau;
-    t->c_r_i = (uint16_t)c->c_r;
-    t->c_w_i = (uint16_t)c->c_w;
-    t->c_p_i = (uint16_t)c->c_p;
-    t->c_s_i = (uint16_t)c->c_s;
-    t->c_3_i = (uint16_t)c->c_3;
-    t->c_d_i = (uint16_t)c->c_d;
-    t->c_n_i = (uint16_t)c->c_n;
-    t->c_ph_i = (uint16_t)c->c_ph;
-    t->s3h_i = (uint16_t)c->s3h;
-    t->v_ph_ref_i = (uint16_t)c->v_ph_ref;
-    t->c_tau1_i = (uint16_t)c->c_tau1;
-    t->c_r1_i = (uint16_t)c->c_r1;
-    t->c_w1_i = (uint16_t)c->c_w1;
-    t->c_s1_i = (uint16_t)c->c_s1;
-    t->vdc_half_i = (uint16_t)c->vdc_half;
-    t->g3_i = (uint16_t)c->g3;
-    t->gd_i = (uint16_t)c->gd;
-    t->g3_1_i = (uint16_t)c->g3_1;
-    t->lambda_n_i = (uint16_t)c->lambda_n;
-    t->n_use_i = n_use & 7;
+    mpdcc_core_set_i_a_i(t, c->i_ab[0]);
+    mpdcc_core_set_i_b_i(t, c->i_ab[1]);
+    mpdcc_core_set_psi_a_i(t, c->psi_ab[0]);
+    mpdcc_core_set_psi_b_i(t, c->psi_ab[1]);
+    mpdcc_core_set_v_n_i(t, c->v_n);
+    mpdcc_core_set_ir_a_i(t, c->i_ref_ab[0]);
+    mpdcc_core_set_ir_b_i(t, c->i_ref_ab[1]);
+    mpdcc_core_set_omega_r_i(t, c->omega_r);
+    mpdcc_core_set_omega_s_i(t, c->omega_s);
+    mpdcc_core_set_c_tau_i(t, c->c_tau);
+    mpdcc_core_set_c_r_i(t, c->c_r);
+    mpdcc_core_set_c_w_i(t, c->c_w);
+    mpdcc_core_set_c_p_i(t, c->c_p);
+    mpdcc_core_set_c_s_i(t, c->c_s);
+    mpdcc_core_set_c_3_i(t, c->c_3);
+    mpdcc_core_set_c_d_i(t, c->c_d);
+    mpdcc_core_set_c_n_i(t, c->c_n);
+    mpdcc_core_set_c_ph_i(t, c->c_ph);
+    mpdcc_core_set_s3h_i(t, c->s3h);
+    mpdcc_core_set_v_ph_ref_i(t, c->v_ph_ref);
+    mpdcc_core_set_c_tau1_i(t, c->c_tau1);
+    mpdcc_core_set_c_r1_i(t, c->c_r1);
+    mpdcc_core_set_c_w1_i(t, c->c_w1);
+    mpdcc_core_set_c_s1_i(t, c->c_s1);
+    mpdcc_core_set_vdc_half_i(t, c->vdc_half);
+    mpdcc_core_set_g3_i(t, c->g3);
+    mpdcc_core_set_gd_i(t, c->gd);
+    mpdcc_core_set_g3_1_i(t, c->g3_1);
+    mpdcc_core_set_lambda_n_i(t, c->lambda_n);
+    mpdcc_core_set_n_use_i(t, n_use);
     t->start_i = 1;
     t->eval();
     tick(t);
     t->start_i = 0;
     t->eval();
     int n = 1;
-    while (!t->done_o && n < 2000) {
+    while (!mpdcc_core_get_done_o(t) && n < 2000) {
         tick(t);
         n++;
     }
-    out->measured_cycles = t->done_o ? n : -1;
-    out->s[0] = t->s_o & 7;
-    out->s[1] = (t->s_o >> 3) & 7;
-    out->s[2] = (t->s_o >> 6) & 7;
-    out->kind = t->kind_o;
-    out->l_star = t->l_star_o;
-    out->cost = t->cost_o;
-    out->j_dl = (int32_t)t->j_dl_o;
-    out->candidates = t->candidates_o;
-    out->cycles = t->cycles_o;
+    out->measured_cycles = mpdcc_core_get_done_o(t) ? n : -1;
+    out->s[0] = mpdcc_core_get_s_o(t) & 7;
+    out->s[1] = (mpdcc_core_get_s_o(t) >> 3) & 7;
+    out->s[2] = (mpdcc_core_get_s_o(t) >> 6) & 7;
+    out->kind = mpdcc_core_get_kind_o(t);
+    out->l_star = mpdcc_core_get_l_star_o(t);
+    out->cost = mpdcc_core_get_cost_o(t);
+    out->j_dl = (int32_t)mpdcc_core_get_j_dl_o(t);
+    out->candidates = mpdcc_core_get_candidates_o(t);
+    out->cycles = mpdcc_core_get_cycles_o(t);
     tick(t);  // done_o falls, the core is idle again
 }
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "Vmpdcc_explorer.h"
+#include "mpdcc_explorer_ports.h"
 #include "verilated.h"
 
 static void tick(Vmpdcc_explorer* t) {
@@ -78,7 +78,7 @@ void* me_new() {
 // Candidates as s[i][3]; returns the number of results collected.
 int32_t me_run(void* p, const MeCommon* c, int32_t n, const int32_t* s, MeOut* out) {
     auto* t = static_cast<MeSim*>(p)->top;
-    t->s_prev_i = (c->s_prev[0] & 7) | ((c->s_prev[1] & 7) << 3) | ((c->s_prev[2] & 7) << 6);
+    mpdcc_explorer_set_s_prev_i(t, (c->s_prev[0] & 7) | ((c->s_prev[1] & 7) << 3) | ((c->s_prev[2] & 7) << 6));
     for (int j = 0; j < 7; j++) {
         put(t->e0_i, 16 * j, 16, (uint16_t)c->e0[j]);
         put(t->bnd_i, 16 * j, 16, (uint16_t)c->bnd[j]);
@@ -91,12 +91,12 @@ int32_t me_run(void* p, const MeCommon* c, int32_t n, const int32_t* s, MeOut* o
         put(t->pph_i, 32 * ph, 32, (uint32_t)c->pph[ph]);
         put(t->v_ph_i, 16 * ph, 16, (uint16_t)c->v_ph[ph]);
     }
-    t->v_n_i = (uint16_t)c->v_n;
-    t->vdc_half_i = (uint16_t)c->vdc_half;
-    t->g3_i = (uint16_t)c->g3;
-    t->gd_i = (uint16_t)c->gd;
-    t->g3_1_i = (uint16_t)c->g3_1;
-    t->lambda_n_i = (uint16_t)c->lambda_n;
+    mpdcc_explorer_set_v_n_i(t, c->v_n);
+    mpdcc_explorer_set_vdc_half_i(t, c->vdc_half);
+    mpdcc_explorer_set_g3_i(t, c->g3);
+    mpdcc_explorer_set_gd_i(t, c->gd);
+    mpdcc_explorer_set_g3_1_i(t, c->g3_1);
+    mpdcc_explorer_set_lambda_n_i(t, c->lambda_n);
     std::vector<int64_t> issued(n > 0 ? n : 1, 0);
     int64_t cycle = 0;
     int32_t sent = 0, got = 0;
@@ -105,7 +105,7 @@ int32_t me_run(void* p, const MeCommon* c, int32_t n, const int32_t* s, MeOut* o
         t->in_valid_i = send;
         if (send) {
             const int32_t* v = s + 3 * sent;
-            t->s_i = (v[0] & 7) | ((v[1] & 7) << 3) | ((v[2] & 7) << 6);
+            mpdcc_explorer_set_s_i(t, (v[0] & 7) | ((v[1] & 7) << 3) | ((v[2] & 7) << 6));
             issued[sent] = cycle;
         }
         t->eval();
@@ -113,15 +113,15 @@ int32_t me_run(void* p, const MeCommon* c, int32_t n, const int32_t* s, MeOut* o
         cycle++;
         if (send) sent++;
         t->eval();
-        if (t->out_valid_o && got < n) {
+        if (mpdcc_explorer_get_out_valid_o(t) && got < n) {
             MeOut& o = out[got];
-            o.s[0] = t->s_o & 7;
-            o.s[1] = (t->s_o >> 3) & 7;
-            o.s[2] = (t->s_o >> 6) & 7;
-            o.l_star = t->l_star_o;
-            o.cost = t->cost_o;
-            o.j_dl = (int32_t)t->j_dl_o;
-            o.fs = t->fs_o;
+            o.s[0] = mpdcc_explorer_get_s_o(t) & 7;
+            o.s[1] = (mpdcc_explorer_get_s_o(t) >> 3) & 7;
+            o.s[2] = (mpdcc_explorer_get_s_o(t) >> 6) & 7;
+            o.l_star = mpdcc_explorer_get_l_star_o(t);
+            o.cost = mpdcc_explorer_get_cost_o(t);
+            o.j_dl = (int32_t)mpdcc_explorer_get_j_dl_o(t);
+            o.fs = mpdcc_explorer_get_fs_o(t);
             for (int j = 0; j < 7; j++) {
                 uint32_t w = (t->d0_o[(16 * j) / 32] >> ((16 * j) % 32)) & 0xFFFFu;
                 o.d0[j] = (int16_t)w;

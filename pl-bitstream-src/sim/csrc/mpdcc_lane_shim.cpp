@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "Vmpdcc_lane.h"
+#include "mpdcc_lane_ports.h"
 #include "verilated.h"
 
 static void tick(Vmpdcc_lane* t) {
@@ -56,12 +56,12 @@ int32_t ml_run(void* p, int32_t n, const MlIn* in, MlOut* out) {
         t->in_valid_i = send;
         if (send) {
             const MlIn& v = in[sent];
-            t->e0_i = (uint16_t)v.e0;
-            t->n0_i = (uint32_t)v.n[0] & 0x3FFFFu;
-            t->n1_i = (uint32_t)v.n[1] & 0x3FFFFu;
-            t->n2_i = (uint32_t)v.n[2] & 0x3FFFFu;
-            t->n3_i = (uint32_t)v.n[3] & 0x3FFFFu;
-            t->bnd_i = (uint32_t)v.bnd & 0x7FFFu;
+            mpdcc_lane_set_e0_i(t, v.e0);
+            mpdcc_lane_set_n0_i(t, v.n[0]);
+            mpdcc_lane_set_n1_i(t, v.n[1]);
+            mpdcc_lane_set_n2_i(t, v.n[2]);
+            mpdcc_lane_set_n3_i(t, v.n[3]);
+            mpdcc_lane_set_bnd_i(t, v.bnd);
             issued_at[sent] = cycle;
         }
         t->eval();
@@ -74,8 +74,8 @@ int32_t ml_run(void* p, int32_t n, const MlIn* in, MlOut* out) {
             idle--;
         }
         t->eval();
-        if (t->out_valid_o && got < n) {
-            out[got].lj = t->lj_o;
+        if (mpdcc_lane_get_out_valid_o(t) && got < n) {
+            out[got].lj = mpdcc_lane_get_lj_o(t);
             out[got].latency = (int32_t)(cycle - issued_at[got]);
             got++;
         }

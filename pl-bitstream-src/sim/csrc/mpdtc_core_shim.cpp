@@ -3,10 +3,9 @@
 // returns every output, the next state and the measured latency.
 #include <cstdint>
 
-#include "Vmpdtc_core.h"
+#include "mpdtc_core_ports.h"
 #include "verilated.h"
 
-static uint32_t m25(int32_t v) { return (uint32_t)v & 0x1FFFFFFu; }
 static uint32_t m18(int32_t v) { return (uint32_t)v & 0x3FFFFu; }
 static int32_t sx(uint64_t v, int w) {
     uint64_t m = 1ull << (w - 1);
@@ -73,55 +72,56 @@ void* mc_new() {
 
 void mc_decide(void* p, const McState* st, const McIn* in, const McParams* pr, McOut* out) {
     auto* t = static_cast<McSim*>(p)->top;
-    t->st_s_applied_i = st->s_applied & 7;
-    t->st_s_prev_i = st->s_prev & 7;
-    t->st_eta_d_i = m25(st->eta_d);
-    t->st_eta_q_i = m25(st->eta_q);
-    t->st_x_i = m25(st->x);
-    t->st_band_i = st->band & 1;
-    t->st_iq_ref_prev_i = m25(st->iq_ref_prev);
-    t->st_i_hat_d_i = m25(st->i_hat_d);
-    t->st_i_hat_q_i = m25(st->i_hat_q);
-    t->st_nu_d_i = m25(st->nu_d);
-    t->st_nu_q_i = m25(st->nu_q);
+    mpdtc_core_set_st_s_applied_i(t, st->s_applied);
+    mpdtc_core_set_st_s_prev_i(t, st->s_prev);
+    mpdtc_core_set_st_eta_d_i(t, st->eta_d);
+    mpdtc_core_set_st_eta_q_i(t, st->eta_q);
+    mpdtc_core_set_st_x_i(t, st->x);
+    mpdtc_core_set_st_band_i(t, st->band);
+    mpdtc_core_set_st_iq_ref_prev_i(t, st->iq_ref_prev);
+    mpdtc_core_set_st_i_hat_d_i(t, st->i_hat_d);
+    mpdtc_core_set_st_i_hat_q_i(t, st->i_hat_q);
+    mpdtc_core_set_st_nu_d_i(t, st->nu_d);
+    mpdtc_core_set_st_nu_q_i(t, st->nu_q);
     t->st_load_i = 1;
     t->eval();
     tick(t);
     t->st_load_i = 0;
 
-    t->i_d_i = m25(in->i_d);
-    t->i_q_i = m25(in->i_q);
-    t->cos0_i = m18(in->cos0);
-    t->sin0_i = m18(in->sin0);
-    t->cos1_i = m18(in->cos1);
-    t->sin1_i = m18(in->sin1);
-    t->cos2_i = m18(in->cos2);
-    t->sin2_i = m18(in->sin2);
-    t->w_ts_i = m18(in->w_ts);
-    t->t_ref_i = m18(in->t_ref);
-    t->p_a_i = m18(pr->a);
-    t->p_lambda_i = m18(pr->lambda);
-    t->p_u0_i = m25(pr->u0);
-    t->p_u0_half_i = m25(pr->u0_half);
-    t->p_u0_h_i = m25(pr->u0_h);
-    t->p_psi_l_i = m25(pr->psi_l);
-    t->p_kinv_t_i = m25(pr->kinv_t);
-    t->p_tol_i = m25(pr->tol);
-    t->p_k_int_i = m18(pr->k_int);
-    t->p_int_lim_i = m25(pr->int_lim);
-    t->p_int_cond_i = pr->int_cond & 1;
-    t->p_kp_o_i = m18(pr->kp_o);
-    t->p_ki_o_i = m18(pr->ki_o);
-    t->p_eta_lim_i = m25(pr->eta_lim);
+    mpdtc_core_set_i_d_i(t, in->i_d);
+    mpdtc_core_set_i_q_i(t, in->i_q);
+    mpdtc_core_set_cos0_i(t, in->cos0);
+    mpdtc_core_set_sin0_i(t, in->sin0);
+    mpdtc_core_set_cos1_i(t, in->cos1);
+    mpdtc_core_set_sin1_i(t, in->sin1);
+    mpdtc_core_set_cos2_i(t, in->cos2);
+    mpdtc_core_set_sin2_i(t, in->sin2);
+    mpdtc_core_set_w_ts_i(t, in->w_ts);
+    mpdtc_core_set_t_ref_i(t, in->t_ref);
+    mpdtc_core_set_p_a_i(t, pr->a);
+    mpdtc_core_set_p_lambda_i(t, pr->lambda);
+    mpdtc_core_set_p_u0_i(t, pr->u0);
+    mpdtc_core_set_p_u0_half_i(t, pr->u0_half);
+    mpdtc_core_set_p_u0_h_i(t, pr->u0_h);
+    mpdtc_core_set_p_psi_l_i(t, pr->psi_l);
+    mpdtc_core_set_p_kinv_t_i(t, pr->kinv_t);
+    mpdtc_core_set_p_tol_i(t, pr->tol);
+    mpdtc_core_set_p_k_int_i(t, pr->k_int);
+    mpdtc_core_set_p_int_lim_i(t, pr->int_lim);
+    mpdtc_core_set_p_int_cond_i(t, pr->int_cond);
+    mpdtc_core_set_p_kp_o_i(t, pr->kp_o);
+    mpdtc_core_set_p_ki_o_i(t, pr->ki_o);
+    mpdtc_core_set_p_eta_lim_i(t, pr->eta_lim);
     // 72-bit port: 4 x 18 bits into 32-bit words.
-    for (int w = 0; w < 3; w++) t->p_w2_i[w] = 0;
+    uint32_t w2[3] = {0, 0, 0};
     for (int i = 0; i < 4; i++) {
         uint32_t v = m18(pr->w2[i]);
         for (int b = 0; b < 18; b++) {
             int bit = 18 * i + b;
-            if ((v >> b) & 1u) t->p_w2_i[bit / 32] |= 1u << (bit % 32);
+            if ((v >> b) & 1u) w2[bit / 32] |= 1u << (bit % 32);
         }
     }
+    mpdtc_core_set_p_w2_i(t, w2);
     t->in_valid_i = 1;
     t->eval();
     int lat = 0;
@@ -134,12 +134,12 @@ void mc_decide(void* p, const McState* st, const McIn* in, const McParams* pr, M
         lat++;
     }
     out->latency = lat;
-    out->s_next = t->s_next_o;
-    out->iq_ref = sx(t->iq_ref_o, 25);
-    out->eta_d = sx(t->eta_d_o, 25);
-    out->eta_q = sx(t->eta_q_o, 25);
-    out->i1_d = sx(t->i1_d_o, 25);
-    out->i1_q = sx(t->i1_q_o, 25);
+    out->s_next = (int32_t)mpdtc_core_get_s_next_o(t);
+    out->iq_ref = (int32_t)mpdtc_core_get_iq_ref_o(t);
+    out->eta_d = (int32_t)mpdtc_core_get_eta_d_o(t);
+    out->eta_q = (int32_t)mpdtc_core_get_eta_q_o(t);
+    out->i1_d = (int32_t)mpdtc_core_get_i1_d_o(t);
+    out->i1_q = (int32_t)mpdtc_core_get_i1_q_o(t);
     for (int s = 0; s < 8; s++) {
         out->i2_d[s] = sx(bits(t->i2_d_o, 25 * s, 25), 25);
         out->i2_q[s] = sx(bits(t->i2_q_o, 25 * s, 25), 25);
@@ -147,17 +147,17 @@ void mc_decide(void* p, const McState* st, const McIn* in, const McParams* pr, M
         uint64_t c = bits(t->cost2_o, 48 * s, 48);
         out->cost2[s] = (int64_t)((c ^ (1ull << 47)) - (1ull << 47));
     }
-    out->next.s_applied = t->st_s_applied_o;
-    out->next.s_prev = t->st_s_prev_o;
-    out->next.eta_d = sx(t->st_eta_d_o, 25);
-    out->next.eta_q = sx(t->st_eta_q_o, 25);
-    out->next.x = sx(t->st_x_o, 25);
-    out->next.band = t->st_band_o;
-    out->next.iq_ref_prev = sx(t->st_iq_ref_prev_o, 25);
-    out->next.i_hat_d = sx(t->st_i_hat_d_o, 25);
-    out->next.i_hat_q = sx(t->st_i_hat_q_o, 25);
-    out->next.nu_d = sx(t->st_nu_d_o, 25);
-    out->next.nu_q = sx(t->st_nu_q_o, 25);
+    out->next.s_applied = (int32_t)mpdtc_core_get_st_s_applied_o(t);
+    out->next.s_prev = (int32_t)mpdtc_core_get_st_s_prev_o(t);
+    out->next.eta_d = (int32_t)mpdtc_core_get_st_eta_d_o(t);
+    out->next.eta_q = (int32_t)mpdtc_core_get_st_eta_q_o(t);
+    out->next.x = (int32_t)mpdtc_core_get_st_x_o(t);
+    out->next.band = (int32_t)mpdtc_core_get_st_band_o(t);
+    out->next.iq_ref_prev = (int32_t)mpdtc_core_get_st_iq_ref_prev_o(t);
+    out->next.i_hat_d = (int32_t)mpdtc_core_get_st_i_hat_d_o(t);
+    out->next.i_hat_q = (int32_t)mpdtc_core_get_st_i_hat_q_o(t);
+    out->next.nu_d = (int32_t)mpdtc_core_get_st_nu_d_o(t);
+    out->next.nu_q = (int32_t)mpdtc_core_get_st_nu_q_o(t);
     out->ready_after = t->in_ready_o ? 0 : -1;
 }
 

@@ -857,9 +857,9 @@ mod tests {
         assert_eq!(p, DriveParams::default());
     }
 
-    /// `--json` carries the keys the issue prescribes (short windows).
+    /// `--json` carries the documented keys (short windows).
     #[test]
-    fn json_report_has_the_issue_keys() {
+    fn json_report_has_the_documented_keys() {
         let a = Args {
             json: true,
             out: None,

@@ -2,7 +2,7 @@
 //! ([`DriveOps`]) and how replies and errors are written.
 use super::{write_err, ErrorCode};
 use crate::config::store::SlotState;
-use crate::hil::{HilError, HilReport, PacedStatus};
+use crate::hil::{HilReport, PacedStatus};
 use crate::pl::capture::{CapSample, CapStatus, Trigger};
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
@@ -22,6 +22,21 @@ pub enum PlKind {
     /// No bitstream, QEMU with the co-simulation bridge: the Verilated
     /// `pl_top` and the simulated motor in a host process.
     RtlCosim,
+}
+
+/// What `status` and the boot banner print after `pl: `.
+impl fmt::Display for PlKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PlKind::Simulated => f.write_str("simulated"),
+            PlKind::Bitstream(v) => {
+                let v = regmap::regs::top::VersionValue::from_bits(*v);
+                write!(f, "bitstream v{}.{}", v.major(), v.minor())
+            }
+            PlKind::Absent => f.write_str("absent"),
+            PlKind::RtlCosim => f.write_str("rtl co-simulation"),
+        }
+    }
 }
 
 /// What the configuration store in flash held at boot and since.
@@ -315,146 +330,4 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
             ),
         ),
     }
-}
-
-/// The `mode mpdcc` lines of `status`: the paced HIL loop's progress.
-pub fn write_paced<W: Write>(out: &mut W, h: &PacedStatus) -> fmt::Result {
-    let r = &h.report;
-    write!(
-        out,
-        "mpdcc_loop: {} decisions (kept {}, optimal {}, deadlock {}), {} late, plant time \
-         {:.3} ms\r\n",
-        r.decisions,
-        r.kinds[0],
-        r.kinds[1],
-        r.kinds[2],
-        h.late,
-        h.plant_time_s * 1e3
-    )?;
-    write!(
-        out,
-        "mpdcc_cycles: mean {:.1}, worst {} PL cycles\r\n",
-        r.mean_cycles, r.worst_cycles
-    )?;
-    if r.periods == 0 {
-        out.write_str("mpdcc_period: none measured yet (the first period is the warm-up)\r\n")?;
-    } else {
-        write!(
-            out,
-            "mpdcc_period: {} measured; the last: f_sw {:.1} Hz, THD {:.2} %, max current \
-             error {:.4} pu\r\n",
-            r.periods, r.fsw_hz, r.thd_percent, r.max_i_err_pu
-        )?;
-    }
-    if let Some(e) = h.stopped {
-        out.write_str("mpdcc_stopped: ")?;
-        write_hil_error(out, e)?;
-        out.write_str(" (`mode mpdcc` restarts it)\r\n")?;
-    }
-    Ok(())
-}
-
-/// Why the HIL loop stopped, in words.
-fn write_hil_error<W: Write>(out: &mut W, e: HilError) -> fmt::Result {
-    match e {
-        HilError::Periods => out.write_str("periods out of range"),
-        HilError::Core(e) => write!(out, "the core's constants: {e:?}"),
-        HilError::Page(e) => write!(out, "MPDCC page: {e}"),
-        HilError::Loop(e) => write!(out, "plant: {e}"),
-    }
-}
-
-/// The report of an `mpdcc run`, one `key: value unit` per line.
-pub fn write_mpdcc<W: Write>(out: &mut W, r: &HilReport) -> fmt::Result {
-    write!(
-        out,
-        "mpdcc: {} measured fundamental periods after 1 warm-up (plant on the PS, core on \
-         the PL page)\r\n",
-        r.periods
-    )?;
-    write!(
-        out,
-        "decisions: {} (kept {}, optimal {}, deadlock {})\r\n",
-        r.decisions, r.kinds[0], r.kinds[1], r.kinds[2]
-    )?;
-    write!(
-        out,
-        "core_cycles: mean {:.1}, worst {} (PL clock cycles)\r\n",
-        r.mean_cycles, r.worst_cycles
-    )?;
-    write!(out, "f_sw: {:.1} Hz\r\n", r.fsw_hz)?;
-    write!(out, "thd: {:.2} %\r\n", r.thd_percent)?;
-    write!(out, "i_err_max: {:.4} pu\r\n", r.max_i_err_pu)
-}
-
-/// The drive's `status` lines.
-pub fn write_status<W: Write>(out: &mut W, s: &DriveStatus) -> fmt::Result {
-    match &s.mpdcc {
-        Some(h) => {
-            out.write_str("mode: mpdcc\r\n")?;
-            write_paced(out, h)?;
-        }
-        None => write!(out, "mode: {}\r\n", s.mode.name())?,
-    }
-    let path = if s.mpdtc_autonomous {
-        "autonomous (PL front end, PS writes the torque reference)"
-    } else {
-        "ps-fed (PS Park transform and MPDTC_START)"
-    };
-    write!(out, "mpdtc_path: {path}\r\n")?;
-    let gates = if s.gates_on { "on" } else { "off (safe state)" };
-    write!(out, "gates: {gates}\r\n")?;
-    out.write_str("fault: ")?;
-    s.faults.write_names(out)?;
-    out.write_str("\r\n")?;
-    let m = &s.measured;
-    write!(out, "torque: {:.4} Nm\r\n", m.torque_nm)?;
-    write!(out, "torque_ref: {:.4} Nm\r\n", s.torque_ref_nm)?;
-    write!(out, "i_d: {:.3} A\r\n", m.i_d_a)?;
-    write!(out, "i_q: {:.3} A\r\n", m.i_q_a)?;
-    write!(out, "speed: {:.1} rad/s\r\n", m.omega_e_rad_s)?;
-    write!(out, "control_rate: {:.0} Hz\r\n", s.control_rate_hz)?;
-    write!(out, "periods: {}\r\n", s.periods)?;
-    write!(out, "overruns: {}\r\n", s.overruns)?;
-    match s.pl {
-        PlKind::Simulated => out.write_str("pl: simulated\r\n")?,
-        PlKind::Bitstream(v) => write!(out, "pl: bitstream v{}.{}\r\n", v >> 16, v & 0xFFFF)?,
-        PlKind::Absent => out.write_str("pl: absent\r\n")?,
-        PlKind::RtlCosim => out.write_str("pl: rtl co-simulation\r\n")?,
-    }
-    if let Some(k) = s.sim_time_scale {
-        write!(out, "sim_time_scale: {k:.2}\r\n")?;
-    }
-    if let Some(st) = &s.store {
-        write!(
-            out,
-            "config_flash: slot0 {} slot1 {}, running ",
-            st.slots[0].name(),
-            st.slots[1].name()
-        )?;
-        match st.loaded {
-            Some(k) => write!(out, "slot{k}\r\n")?,
-            None => out.write_str("defaults\r\n")?,
-        }
-    }
-    Ok(())
-}
-
-/// The `step` reply lines.
-pub fn write_step<W: Write>(out: &mut W, r: &StepResult) -> fmt::Result {
-    match r.settling_s {
-        Some(t) => write!(out, "settling_time: {:.4} ms\r\n", t * 1e3)?,
-        None => write!(
-            out,
-            "settling_time: none (not settled within {:.2} ms)\r\n",
-            r.window_s * 1e3
-        )?,
-    }
-    write!(out, "overshoot: {:.1} %\r\n", r.overshoot_percent)?;
-    write!(
-        out,
-        "switching: {:.1} kHz\r\n",
-        r.switching_per_leg_per_s * 1e-3
-    )?;
-    write!(out, "final: {:.4} Nm\r\n", r.final_nm)
 }

@@ -56,9 +56,21 @@ impl<B: RegisterBus> Pwm<B> {
     }
     /// Writes the three duties (fractions of the period, clamped to
     /// `[0, 1]`, NaN as 0.5 = zero average voltage), rounded to cycles.
+    /// Each goes through the leg's `SetDutyCycle` channel, whose full scale
+    /// is `half_period` (the caller's `PWM_PERIOD`, so no read back).
     pub fn set_duties(&mut self, d: [f64; 3], half_period: u32) -> Result<(), BusError> {
+        use embedded_hal::pwm::SetDutyCycle;
+        // The PL clamps PWM_PERIOD to 2..=65535: a wider value is not a period.
+        let period = half_period.min(u32::from(u16::MAX)) as u16;
         for (i, x) in d.into_iter().enumerate() {
-            write_duty(&mut self.0, i, duty_cycles(x, half_period))?;
+            let mut leg = Leg {
+                bus: &mut self.0,
+                leg: i,
+                period,
+            };
+            // duty_cycles <= half_period, so it fits the channel's u16.
+            let c = duty_cycles(x, u32::from(period)) as u16;
+            leg.set_duty_cycle(c).map_err(|e| e.0)?;
         }
         Ok(())
     }

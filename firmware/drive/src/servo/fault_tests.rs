@@ -115,3 +115,18 @@ fn no_boundary_in_mpdtc_is_a_stuck_adc() {
     s.note_no_boundary(&mut pl, 4).unwrap();
     assert!(s.faults(&mut pl).unwrap().none());
 }
+
+/// The same on the fake PL in FOC: a PL fault that cleared `GATE_EN`.
+#[test]
+fn a_pl_fault_snapshot_on_the_fake_pl_keeps_the_reference() {
+    let (mut s, mut pl) = running(Mode::Foc);
+    s.set_torque_ref(0.25).unwrap();
+    s.control_step(&mut pl).unwrap();
+    pl.set(FAULT_STATUS_ADDR, 0b001);
+    pl.set(GATE_CTRL_ADDR, 0);
+    s.control_step(&mut pl).unwrap();
+    assert_eq!(codes(&s), [1]);
+    let r = s.fault_history().records().next().unwrap();
+    let refs: Vec<f64> = r.snapshot.samples().map(|x| x.torque_ref_nm).collect();
+    assert_eq!(refs[refs.len() - 2..], [0.25, 0.25], "{r:?}");
+}

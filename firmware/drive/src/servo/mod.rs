@@ -673,6 +673,9 @@ impl Servo {
         let enc = Encoder(&mut *bus).read()?;
         let pp = self.cfg.motor.pole_pairs;
         let gates = self.gates && Pwm(&mut *bus).gates_enabled()?;
+        // The reference this period ran with: the snapshot keeps it, not the
+        // 0 N m a fault's gates-off sets below.
+        let torque_ref_nm = self.torque_ref_nm;
         if self.gates && !gates {
             // A fault turned the gates off: the drive follows.
             self.gates_off(bus).map_err(|e| match e {
@@ -713,7 +716,7 @@ impl Servo {
         self.time_s += self.control_period_s();
         self.snapshot.push(Sample {
             measured: self.measured,
-            torque_ref_nm: self.torque_ref_nm,
+            torque_ref_nm,
         });
         let ps = self.ps_checks(adc_count, enc.pos, enc.cpr);
         let pl = Fault(&mut *bus).latched()?.0;

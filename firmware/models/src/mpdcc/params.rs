@@ -55,7 +55,7 @@
 //!   voltage, above the 5L-ANPC's 1.11 pu. At slip 0.009 the rated current
 //!   (1 pu amplitude) needs 0.99 pu voltage (torque 0.79 pu); this keeps the
 //!   experiment inside the inverter's range at rated current and frequency,
-//!   which is what the issue asks for.
+//!   which is where the project runs the experiment.
 
 pub use crate::validate::ParamError;
 use crate::validate::{check_finite as finite, check_pos as pos};

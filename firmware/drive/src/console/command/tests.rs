@@ -1,0 +1,653 @@
+//! The console grammar and replies against the real `Servo` on the fake PL.
+use super::*;
+use crate::pl::top::Mode;
+use std::string::String;
+
+fn ctx() -> Context {
+    Context {
+        version: "1.2.3",
+        git_hash: "abc1234",
+        profile: "release",
+        status: Status {
+            uptime_us: 12_000_042,
+            ticks: 12_000,
+            tick_hz: 1000,
+            lines: 5,
+            errors: 2,
+            rx_overruns: 0,
+        },
+    }
+}
+
+/// Parses and executes `line` the way the firmware does.
+fn reply(line: &str) -> String {
+    reply_on(&mut TestDrive::new(), line)
+}
+
+fn reply_on(d: &mut TestDrive, line: &str) -> String {
+    let mut out = String::new();
+    match parse(line) {
+        Ok(c) => {
+            execute(c, &ctx(), d, &mut out).unwrap();
+        }
+        Err(e) => write_parse_error(&mut out, e).unwrap(),
+    }
+    out
+}
+
+/// Every reply ends with exactly one final line.
+fn assert_one_final_line(r: &str) {
+    let finals = r
+        .split("\r\n")
+        .filter(|l| *l == "OK" || l.starts_with("ERR "))
+        .count();
+    assert_eq!(finals, 1, "{r:?}");
+    assert!(r.ends_with("\r\n"));
+    let last = r.trim_end().rsplit("\r\n").next().unwrap();
+    assert!(last == "OK" || last.starts_with("ERR "), "{r:?}");
+}
+
+#[test]
+fn help_lists_every_command_with_its_arguments() {
+    let r = reply("help");
+    for s in COMMANDS {
+        assert!(r.contains(s.name) && r.contains(s.args), "{}", s.name);
+    }
+    assert_one_final_line(&r);
+    assert!(r.ends_with("OK\r\n"));
+}
+
+#[test]
+fn help_on_one_command() {
+    assert!(reply("help status").starts_with("  status"));
+    assert_eq!(
+        reply("help nothing"),
+        "ERR bad-args help: no command `nothing`\r\n"
+    );
+}
+
+#[test]
+fn mpdcc_command() {
+    assert_eq!(
+        reply("mpdcc"),
+        "mpdcc: no run yet (`mpdcc run [<periods>]`)\r\nOK\r\n"
+    );
+    // The test drive has no MPDCC page.
+    assert_eq!(
+        reply("mpdcc run"),
+        "ERR unsupported mpdcc: not available here\r\n"
+    );
+    for bad in ["mpdcc run 0", "mpdcc run 21", "mpdcc run x", "mpdcc go"] {
+        assert!(reply(bad).starts_with("ERR bad-args mpdcc: "), "{bad}");
+    }
+    assert_eq!(parse("mpdcc run 20"), Ok(Command::Mpdcc(Some(20))));
+    let r = crate::hil::HilReport {
+        periods: 2,
+        decisions: 2400,
+        kinds: [2300, 96, 4],
+        mean_cycles: 91.96,
+        worst_cycles: 166,
+        fsw_hz: 116.72,
+        thd_percent: 7.791,
+        max_i_err_pu: 0.12345,
+    };
+    let mut out = String::new();
+    mpdcc::write_mpdcc(&mut out, &r).unwrap();
+    assert_eq!(
+        out,
+        "mpdcc: 2 measured fundamental periods after 1 warm-up (plant on the PS, core on \
+         the PL page)\r\n\
+         decisions: 2400 (kept 2300, optimal 96, deadlock 4)\r\n\
+         core_cycles: mean 92.0, worst 166 (PL clock cycles)\r\n\
+         f_sw: 116.7 Hz\r\n\
+         thd: 7.79 %\r\n\
+         i_err_max: 0.1235 pu\r\n"
+    );
+}
+
+#[test]
+fn version_reply() {
+    assert_eq!(
+        reply("version"),
+        "firmware 1.2.3 git abc1234 profile release\r\nOK\r\n"
+    );
+}
+
+#[test]
+fn status_reply_has_units() {
+    let r = reply("  status  ");
+    assert!(r.contains("uptime: 12.000042 s\r\n"), "{r}");
+    assert!(r.contains("ticks: 12000 (rate 1000 Hz)\r\n"), "{r}");
+    assert!(r.contains("gates: off (safe state)\r\n"), "{r}");
+    assert_one_final_line(&r);
+}
+
+#[test]
+fn unknown_command() {
+    assert_eq!(
+        reply("frobnicate 3"),
+        "ERR unknown-command `frobnicate` (try `help`)\r\n"
+    );
+    // Names are case-sensitive.
+    assert!(reply("HELP").starts_with("ERR unknown-command"));
+}
+
+#[test]
+fn long_unknown_word_is_clipped_on_a_char_boundary() {
+    let w = "é".repeat(40);
+    let r = reply(&w);
+    assert!(r.starts_with("ERR unknown-command `"), "{r}");
+    assert!(r.contains("...`"), "{r}");
+    assert!(r.len() < 80);
+}
+
+#[test]
+fn arguments_are_checked() {
+    assert_eq!(
+        reply("version x"),
+        "ERR bad-args version: takes no arguments\r\n"
+    );
+    assert_eq!(
+        reply("status x y"),
+        "ERR bad-args status: takes no arguments\r\n"
+    );
+    assert_eq!(
+        reply("debug"),
+        "ERR bad-args debug: expected `debug panic`, `debug stall <ms>`, `debug bench` or `debug fault <f>`\r\n"
+    );
+    assert_eq!(
+        reply("help a b"),
+        "ERR bad-args help: takes at most one argument\r\n"
+    );
+    assert_eq!(
+        reply("status 1 2 3 4 5 6"),
+        "ERR bad-args status: too many arguments\r\n"
+    );
+}
+
+#[test]
+fn debug_panic_asks_for_a_panic_and_prints_no_final_line() {
+    let mut out = String::new();
+    let a = execute(
+        parse("debug panic").unwrap(),
+        &ctx(),
+        &mut TestDrive::new(),
+        &mut out,
+    )
+    .unwrap();
+    assert_eq!(a, Action::Panic);
+    assert!(out.is_empty());
+}
+
+#[test]
+fn every_table_entry_parses() {
+    for s in COMMANDS {
+        let line = if s.args.starts_with('[') || s.args.is_empty() {
+            String::from(s.name)
+        } else {
+            std::format!("{} {}", s.name, s.args)
+        };
+        if !line.contains(['<', '|']) {
+            assert!(parse(&line).is_ok(), "{line}");
+        }
+        // Every alternative of the synopsis, placeholders filled in.
+        let args = s
+            .args
+            .replace("<Nm>", "0.1")
+            .replace("<window_ms>", "2")
+            .replace("<ms>", "5")
+            .replace("<f>", "adc-stuck")
+            .replace("<trigger>", "torque>0.2")
+            .replace("<pre_samples>", "10")
+            .replace("<f_start_hz>", "100")
+            .replace("<f_stop_hz>", "1000")
+            .replace("<amplitude_nm>", "0.1")
+            .replace("<points>", "4")
+            .replace("<periods>", "2")
+            .replace(['[', ']'], "");
+        for alt in args.split('|') {
+            let line = std::format!("{} {}", s.name, alt);
+            assert!(parse(&line).is_ok(), "{line}");
+        }
+    }
+}
+
+use crate::console::drive::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind};
+use crate::pl::fake::FakePl;
+use crate::pl::fault::Faults;
+use crate::servo::faults::FaultRecord;
+use crate::servo::{Servo, ServoConfig, StepResult};
+
+/// The console's view of a drive: the real `Servo` on the fake PL,
+/// control periods run by hand.
+struct TestDrive {
+    servo: Servo,
+    pl: FakePl,
+    stalled_ms: u32,
+    /// `mode mpdcc`'s loop (its progress set by hand).
+    hil: Option<crate::hil::PacedStatus>,
+}
+
+impl TestDrive {
+    fn new() -> Self {
+        let mut servo = Servo::new(&ServoConfig::default()).unwrap();
+        let mut pl = FakePl::new();
+        servo.init(&mut pl).unwrap();
+        Self {
+            servo,
+            pl,
+            stalled_ms: 0,
+            hil: None,
+        }
+    }
+}
+
+impl DriveOps for TestDrive {
+    fn mode(&mut self) -> Mode {
+        self.servo.mode()
+    }
+    fn set_mode(&mut self, m: Mode) -> Result<(), DriveError> {
+        self.servo.set_mode(&mut self.pl, m)?;
+        self.hil = None;
+        Ok(())
+    }
+    fn set_mpdcc_mode(&mut self) -> Result<(), DriveError> {
+        self.servo.set_mode(&mut self.pl, Mode::Off)?;
+        self.hil = Some(Default::default());
+        Ok(())
+    }
+    fn mpdcc_live(&mut self) -> Option<crate::hil::PacedStatus> {
+        self.hil
+    }
+    fn enable(&mut self) -> Result<(), DriveError> {
+        Ok(self.servo.enable(&mut self.pl)?)
+    }
+    fn disable(&mut self) -> Result<(), DriveError> {
+        Ok(self.servo.disable(&mut self.pl)?)
+    }
+    fn torque_ref(&mut self) -> f64 {
+        self.servo.torque_ref_nm()
+    }
+    fn set_torque_ref(&mut self, nm: f64) -> Result<(), DriveError> {
+        Ok(self.servo.set_torque_ref(nm)?)
+    }
+    fn step(&mut self, nm: f64, window_s: f64) -> Result<StepResult, DriveError> {
+        self.servo.begin_step(&mut self.pl, nm, window_s)?;
+        for _ in 0..2000 {
+            self.servo.control_step(&mut self.pl).unwrap();
+            if let Some(r) = self.servo.step_result() {
+                return Ok(r);
+            }
+        }
+        Err(DriveError::Timeout)
+    }
+    fn faults(&mut self) -> Result<Faults, DriveError> {
+        Ok(self.servo.faults(&mut self.pl).unwrap())
+    }
+    fn clear_faults(&mut self) -> Result<Faults, DriveError> {
+        Ok(self.servo.clear_faults(&mut self.pl)?)
+    }
+    fn stall(&mut self, ms: u32) -> Result<(), DriveError> {
+        self.stalled_ms += ms;
+        Ok(())
+    }
+    fn status(&mut self) -> DriveStatus {
+        DriveStatus {
+            mode: self.servo.mode(),
+            mpdtc_autonomous: !self.servo.config().mpdtc_ps_fed,
+            gates_on: self.servo.gates_on(&mut self.pl).unwrap(),
+            faults: self.servo.faults(&mut self.pl).unwrap(),
+            measured: self.servo.measured(),
+            torque_ref_nm: self.servo.torque_ref_nm(),
+            control_rate_hz: self.servo.control_rate_hz(),
+            periods: self.servo.periods(),
+            overruns: self.servo.overruns(),
+            pl: PlKind::Simulated,
+            sim_time_scale: Some(4.0),
+            store: None,
+            mpdcc: self.hil,
+        }
+    }
+    fn bench(&mut self) -> Result<Bench, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    fn config(&mut self) -> Result<ServoConfig, DriveError> {
+        Ok(*self.servo.config())
+    }
+    fn fault_record(&mut self, k: usize) -> Result<(Option<FaultRecord>, u32), DriveError> {
+        let h = self.servo.fault_history();
+        Ok((h.records().nth(k).copied(), h.total))
+    }
+    fn inject(&mut self, f: Injection) -> Result<(), DriveError> {
+        match f {
+            Injection::AdcStuck => {
+                crate::pl::adc::Adc(&mut self.pl)
+                    .set_enabled(false)
+                    .unwrap();
+                Ok(())
+            }
+            _ => Err(DriveError::Unsupported),
+        }
+    }
+    fn reconfigure(&mut self, cfg: &ServoConfig) -> Result<(), DriveError> {
+        Ok(self.servo.reconfigure(&mut self.pl, cfg)?)
+    }
+}
+
+#[test]
+fn status_lists_the_drive_with_units() {
+    let r = reply("status");
+    for line in [
+        "uptime: 12.000042 s",
+        "ticks: 12000 (rate 1000 Hz)",
+        "mode: off",
+        "mpdtc_path: autonomous (PL front end, PS writes the torque reference)",
+        "gates: off (safe state)",
+        "fault: none",
+        "torque: 0.0000 Nm",
+        "torque_ref: 0.0000 Nm",
+        "i_d: 0.000 A",
+        "i_q: 0.000 A",
+        "speed: 0.0 rad/s",
+        "control_rate: 63939 Hz",
+        "periods: 0",
+        "overruns: 0",
+        "pl: simulated",
+        "sim_time_scale: 4.00",
+    ] {
+        assert!(r.contains(&std::format!("{line}\r\n")), "{line}: {r}");
+    }
+    assert_one_final_line(&r);
+}
+
+#[test]
+fn mode_enable_disable() {
+    let mut d = TestDrive::new();
+    assert_eq!(reply_on(&mut d, "mode"), "mode: off\r\nOK\r\n");
+    assert_eq!(
+        reply_on(&mut d, "enable"),
+        "ERR mode-off enable: mode is off (set `mode foc` or `mode mpdtc` first)\r\n"
+    );
+    assert!(reply_on(&mut d, "mode foc").ends_with("OK\r\n"));
+    assert_eq!(reply_on(&mut d, "enable"), "gates: on\r\nOK\r\n");
+    assert!(reply_on(&mut d, "status").contains("gates: on\r\n"));
+    // A mode change turns the gates off.
+    assert_eq!(
+        reply_on(&mut d, "mode mpdtc"),
+        "mode: mpdtc\r\ngates: off (safe state)\r\nOK\r\n"
+    );
+    assert!(reply_on(&mut d, "status").contains("gates: off (safe state)\r\n"));
+    assert_eq!(
+        reply_on(&mut d, "disable"),
+        "gates: off (safe state)\r\nOK\r\n"
+    );
+}
+
+/// `mode mpdcc`: the PMSM gates go off and stay off, the MPDCC page
+/// belongs to the loop, `status` shows its progress; another mode ends it.
+#[test]
+fn mpdcc_mode_owns_the_page_and_keeps_the_gates_off() {
+    let mut d = TestDrive::new();
+    assert!(reply_on(&mut d, "mode foc").ends_with("OK\r\n"));
+    assert_eq!(reply_on(&mut d, "enable"), "gates: on\r\nOK\r\n");
+    let r = reply_on(&mut d, "mode mpdcc");
+    assert!(
+        r.starts_with("mode: mpdcc\r\ngates: off (safe state)\r\nmpdcc_loop: started"),
+        "{r}"
+    );
+    assert!(!d.servo.gates_on(&mut d.pl).unwrap());
+    assert_eq!(d.servo.mode(), Mode::Off);
+    assert_eq!(reply_on(&mut d, "mode"), "mode: mpdcc\r\nOK\r\n");
+    for (line, name) in [
+        ("enable", "enable"),
+        ("step 0.2", "step"),
+        ("sweep 10 100 0.1", "sweep"),
+        ("mpdcc run", "mpdcc"),
+    ] {
+        let r = reply_on(&mut d, line);
+        assert!(
+            r.starts_with(&format!("ERR mpdcc-mode {name}: ")),
+            "{line}: {r}"
+        );
+        assert_one_final_line(&r);
+    }
+    assert!(!d.servo.gates_on(&mut d.pl).unwrap());
+    let mut h = crate::hil::PacedStatus::default();
+    h.report.decisions = 1200;
+    h.report.kinds = [900, 290, 10];
+    h.report.mean_cycles = 99.04;
+    h.report.worst_cycles = 173;
+    h.late = 2;
+    h.plant_time_s = 0.03;
+    d.hil = Some(h);
+    let st = reply_on(&mut d, "status");
+    assert!(st.contains("\r\nmode: mpdcc\r\nmpdcc_loop: 1200 decisions (kept 900, optimal 290, deadlock 10), 2 late, plant time 30.000 ms\r\nmpdcc_cycles: mean 99.0, worst 173 PL cycles\r\nmpdcc_period: none measured yet"), "{st}");
+    h.report.periods = 3;
+    h.report.fsw_hz = 251.25;
+    h.report.thd_percent = 4.567;
+    h.report.max_i_err_pu = 0.12345;
+    h.stopped = Some(crate::hil::HilError::Page(
+        crate::pl::mpdcc::MpdccError::Timeout,
+    ));
+    d.hil = Some(h);
+    let st = reply_on(&mut d, "status");
+    assert!(st.contains("mpdcc_period: 3 measured; the last: f_sw 251.2 Hz, THD 4.57 %, max current error 0.1235 pu\r\nmpdcc_stopped: MPDCC page: "), "{st}");
+    assert!(reply_on(&mut d, "mode off").ends_with("OK\r\n"));
+    assert_eq!(reply_on(&mut d, "mode"), "mode: off\r\nOK\r\n");
+    let st = reply_on(&mut d, "status");
+    assert!(
+        st.contains("\r\nmode: off\r\n") && !st.contains("mpdcc"),
+        "{st}"
+    );
+}
+
+#[test]
+fn bad_mode_and_torque_arguments_change_nothing() {
+    let mut d = TestDrive::new();
+    assert!(reply_on(&mut d, "mode foc").ends_with("OK\r\n"));
+    assert!(reply_on(&mut d, "torque 0.25").ends_with("OK\r\n"));
+    for bad in [
+        "mode FOC",
+        "mode 1",
+        "mode foc mpdtc",
+        "torque nan",
+        "torque NaN",
+        "torque inf",
+        "torque -inf",
+        "torque infinity",
+        "torque 1.5",
+        "torque -1.0001",
+        "torque 1e3",
+        "torque abc",
+        "torque 0.1Nm",
+        "torque 0.1 0.2",
+    ] {
+        let r = reply_on(&mut d, bad);
+        assert!(r.starts_with("ERR bad-args "), "{bad}: {r}");
+        assert_one_final_line(&r);
+    }
+    assert_eq!(reply_on(&mut d, "mode"), "mode: foc\r\nOK\r\n");
+    assert_eq!(
+        reply_on(&mut d, "torque"),
+        "torque_ref: 0.2500 Nm\r\nOK\r\n"
+    );
+    assert_eq!(
+        reply_on(&mut d, "torque -1"),
+        "torque_ref: -1.0000 Nm\r\nOK\r\n"
+    );
+}
+
+#[test]
+fn step_needs_gates_and_prints_the_metrics() {
+    let mut d = TestDrive::new();
+    assert!(reply_on(&mut d, "mode foc").ends_with("OK\r\n"));
+    assert_eq!(
+        reply_on(&mut d, "step 0.4"),
+        "ERR gates-off step: gates are off (`enable` first)\r\n"
+    );
+    for bad in [
+        "step",
+        "step x",
+        "step 0.4 0",
+        "step 0.4 21",
+        "step 0.4 -1",
+        "step 2",
+    ] {
+        assert!(reply_on(&mut d, bad).starts_with("ERR bad-args "), "{bad}");
+    }
+    assert!(reply_on(&mut d, "enable").ends_with("OK\r\n"));
+    let r = reply_on(&mut d, "step 0.4 1");
+    // The fake PL has no motor: the torque stays 0, never settles.
+    assert!(
+        r.starts_with("settling_time: none (not settled within 1.00 ms)\r\n"),
+        "{r}"
+    );
+    assert!(r.contains("overshoot: 0.0 %\r\n"), "{r}");
+    assert!(r.contains("switching: ") && r.contains(" kHz\r\n"), "{r}");
+    assert!(r.ends_with("final: 0.0000 Nm\r\nOK\r\n"), "{r}");
+    assert_eq!(
+        reply_on(&mut d, "torque"),
+        "torque_ref: 0.4000 Nm\r\nOK\r\n"
+    );
+    // A step of zero (or below the resolution) has no settling time.
+    for same in ["step 0.4", "step 0.42"] {
+        let r = reply_on(&mut d, same);
+        assert!(
+            r.starts_with("ERR bad-args step: the reference is already 0.4000 Nm; a step to 0.4"),
+            "{r}"
+        );
+        assert!(
+            r.ends_with("is smaller than 0.0500 Nm and has no settling time\r\n"),
+            "{r}"
+        );
+    }
+    assert_eq!(
+        reply_on(&mut d, "torque"),
+        "torque_ref: 0.4000 Nm\r\nOK\r\n"
+    );
+}
+
+#[test]
+fn faults_are_listed_cleared_and_block_enable() {
+    let mut d = TestDrive::new();
+    d.pl.set(regmap::FAULT_STATUS_ADDR, Faults::WATCHDOG | 1);
+    assert_eq!(
+        reply_on(&mut d, "fault"),
+        "fault: OVERCURRENT WATCHDOG\r\nOK\r\n"
+    );
+    assert!(reply_on(&mut d, "mode mpdtc").ends_with("OK\r\n"));
+    assert_eq!(
+        reply_on(&mut d, "enable"),
+        "ERR fault-latched enable: fault latched: OVERCURRENT WATCHDOG (`fault clear` first)\r\n"
+    );
+    assert!(reply_on(&mut d, "status").contains("fault: OVERCURRENT WATCHDOG\r\n"));
+    assert_eq!(
+        reply_on(&mut d, "fault clear"),
+        "fault: none\r\ngates: off (safe state)\r\nOK\r\n"
+    );
+    assert_eq!(reply_on(&mut d, "fault x").lines().count(), 1);
+    assert_eq!(reply_on(&mut d, "enable"), "gates: on\r\nOK\r\n");
+}
+
+#[test]
+fn debug_stall_and_bench_arguments() {
+    let mut d = TestDrive::new();
+    assert_eq!(
+        reply_on(&mut d, "debug stall 300"),
+        "stalled: 300 ms\r\nOK\r\n"
+    );
+    assert_eq!(d.stalled_ms, 300);
+    for bad in [
+        "debug stall",
+        "debug stall 0",
+        "debug stall -5",
+        "debug stall 10001",
+        "debug stall 1.5",
+    ] {
+        assert!(reply_on(&mut d, bad).starts_with("ERR bad-args "), "{bad}");
+    }
+    assert_eq!(d.stalled_ms, 300);
+    assert_eq!(
+        reply_on(&mut d, "debug bench"),
+        "ERR unsupported debug: not available here\r\n"
+    );
+}
+
+#[test]
+fn config_list_get_set_reset_schema() {
+    let mut d = TestDrive::new();
+    let r = reply_on(&mut d, "config list");
+    let lines: std::vec::Vec<&str> = r.trim_end().split("\r\n").collect();
+    assert_eq!(lines.len(), crate::config::N_PARAMS + 1, "{r}");
+    assert!(lines.contains(&"mpdtc_t_tol = 0.08 Nm  [0..0.5]  MPDTC torque tolerance band T_tol"));
+    assert!(lines.contains(&"dead_time = 50 cycles  [0..1023]  inverter dead time (DEAD_TIME), PL clock cycles of 10 ns"));
+    assert_one_final_line(&r);
+    assert_eq!(
+        reply_on(&mut d, "config get mpdtc_t_tol"),
+        "mpdtc_t_tol = 0.08 Nm\r\nOK\r\n"
+    );
+    assert_eq!(
+        reply_on(&mut d, "config set mpdtc_t_tol 0.05"),
+        "mpdtc_t_tol = 0.05 Nm\r\nOK\r\n"
+    );
+    assert_eq!(
+        reply_on(&mut d, "config get mpdtc_t_tol"),
+        "mpdtc_t_tol = 0.05 Nm\r\nOK\r\n"
+    );
+    let r = reply_on(&mut d, "config schema");
+    assert_eq!(r.matches("\r\n").count(), 2, "{r}");
+    assert!(r.starts_with("[{\"name\":\"motor_r_s\""), "{r}");
+    assert!(r.ends_with("]\r\nOK\r\n"), "{r}");
+    assert_eq!(
+        reply_on(&mut d, "config reset"),
+        "config: defaults\r\nOK\r\n"
+    );
+    assert_eq!(
+        reply_on(&mut d, "config get mpdtc_t_tol"),
+        "mpdtc_t_tol = 0.08 Nm\r\nOK\r\n"
+    );
+}
+
+#[test]
+fn config_bad_input_changes_nothing() {
+    let mut d = TestDrive::new();
+    let before = *d.servo.config();
+    for (bad, msg) in [
+        ("config", "config: expected `config list|get <name>|set <name> <value>|reset|schema|save`"),
+        ("config set mpdtc_t_tol", "config: expected `config list|get <name>|set <name> <value>|reset|schema|save`"),
+        ("config get nothing", "config: nothing: no such parameter (see `config list`)"),
+        ("config set nothing 1", "config: nothing: no such parameter (see `config list`)"),
+        ("config set mpdtc_t_tol nan", "config: mpdtc_t_tol: expected a finite number"),
+        ("config set mpdtc_t_tol inf", "config: mpdtc_t_tol: expected a finite number"),
+        ("config set mpdtc_t_tol -inf", "config: mpdtc_t_tol: expected a finite number"),
+        ("config set mpdtc_t_tol 0.1Nm", "config: mpdtc_t_tol: expected a finite number"),
+        ("config set mpdtc_t_tol 0.6", "config: mpdtc_t_tol: out of range [0..0.5] Nm"),
+        ("config set motor_pole_pairs 7.5", "config: motor_pole_pairs: expected a whole number"),
+        ("config set obs_kp 1000", "config: obs_kp: invalid parameter `obs_kp_v_per_a`: observer unstable: roots of eq. (16) outside the unit circle"),
+    ] {
+        assert_eq!(
+            reply_on(&mut d, bad),
+            std::format!("ERR bad-args {msg}\r\n"),
+            "{bad}"
+        );
+    }
+    assert_eq!(d.servo.config(), &before);
+    // With the gates on, only the torque limit may change.
+    assert!(reply_on(&mut d, "mode foc").ends_with("OK\r\n"));
+    assert!(reply_on(&mut d, "enable").ends_with("OK\r\n"));
+    assert_eq!(
+        reply_on(&mut d, "config set mpdtc_t_tol 0.05"),
+        "ERR gates-on config: needs the gates off (`disable` first)\r\n"
+    );
+    assert_eq!(d.servo.config(), &before);
+    assert_eq!(
+        reply_on(&mut d, "config set torque_limit 0.5"),
+        "torque_limit = 0.5 Nm\r\nOK\r\n"
+    );
+    assert!(reply_on(&mut d, "torque 0.6").starts_with("ERR bad-args "));
+    assert_eq!(
+        reply_on(&mut d, "config reset"),
+        "config: defaults\r\nOK\r\n"
+    );
+    assert_eq!(d.servo.config(), &before);
+}
