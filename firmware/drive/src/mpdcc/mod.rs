@@ -6,6 +6,8 @@
 //! The 16-bit FPGA model: `fixed`, `fpga`, `binsearch`, `scheduler`,
 //! `cycles`, `fpga_eval` (tests). See docs/mpdcc-fpga.md. `hil`: the
 //! hardware-in-the-loop run of the core on its register page.
+//! `horizon`, `horizon_fixed`: longer switching horizons (SSE, SESE) for
+//! both implementations (docs/mpdcc-horizons.md).
 pub mod anpc;
 pub mod binsearch;
 pub mod closed_loop;
@@ -15,6 +17,8 @@ pub mod fixed;
 pub mod fpga;
 pub mod fpga_eval;
 pub mod hil;
+pub mod horizon;
+pub mod horizon_fixed;
 pub mod machine;
 pub mod params;
 pub mod plant;
