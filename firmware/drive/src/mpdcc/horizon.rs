@@ -219,6 +219,8 @@ pub struct Search {
     pub budget_hit: bool,
     /// No complete sequence: the SE decision was taken (deadlock rule 2).
     pub fallback: bool,
+    /// The applied position differs from the SE decision on the same state.
+    pub differs_from_se: bool,
 }
 
 /// A sequence's position codes (padded with 0) for the tie-break.
@@ -343,6 +345,7 @@ pub fn search<M: SequenceModel>(
         evaluations += issued;
         let _ = passes.push(issued);
     }
+    let se_s1 = se.as_ref().map(|b| b.s1);
     let (decision, fallback) = match (best, se, dl) {
         (Some(b), _, _) => (
             Decision {
@@ -383,6 +386,7 @@ pub fn search<M: SequenceModel>(
         ),
     };
     Search {
+        differs_from_se: se_s1.is_some_and(|s| s != decision.s),
         decision,
         passes,
         budget_hit,
@@ -408,6 +412,8 @@ pub struct HorizonStats {
     pub fallbacks: u64,
     /// Deadlock decisions.
     pub deadlocks: u64,
+    /// Searches whose applied position differs from SE's on the same state.
+    pub differs_from_se: u64,
     /// Core cycles summed over all decisions, for [`STATS_EXPLORERS`]
     /// explorers (FPGA model only).
     pub cycles: [u64; 3],
@@ -426,6 +432,7 @@ impl HorizonStats {
         self.max_evaluations = self.max_evaluations.max(s.decision.candidates);
         self.budget_hits += s.budget_hit as u64;
         self.fallbacks += s.fallback as u64;
+        self.differs_from_se += s.differs_from_se as u64;
         self.deadlocks += (s.decision.kind == DecisionKind::Deadlock) as u64;
     }
 
