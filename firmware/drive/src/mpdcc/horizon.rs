@@ -63,21 +63,22 @@
 //!   It is known before the candidate is extended, from its transition
 //!   count alone.
 //! - **Node order**: the expandable first events are visited in ascending
-//!   `(LB, code)`; the search stops at the first one with `LB > J_best`
-//!   (all later ones are worse). Inside a node, a candidate with `LB >
-//!   J_best` is skipped before it is extended (not issued to an explorer).
-//!   Pruning only on strict `>` keeps every sequence that could tie, so
-//!   with an unlimited budget the decision equals brute-force enumeration
-//!   (tested).
+//!   `(J_SE, code)`, `J_SE` = the first event's own SE cost (what the
+//!   explorers return anyway): the most promising first segments first. A
+//!   node with `LB > J_best` is skipped; inside a node, a candidate with
+//!   `LB > J_best` is skipped before it is extended (not issued to an
+//!   explorer). Pruning only on strict `>` keeps every sequence that could
+//!   tie, so with an unlimited budget the decision equals brute-force
+//!   enumeration (tested).
 //! - **Budget**: at most `max_expansions` nodes beyond the first event are
-//!   expanded (the `LB`-best ones). This bounds the candidate evaluations to
-//!   `|S| (1 + max_expansions)` per decision (`|S| <= 216`) and the core's
-//!   cycles ([`super::horizon_fixed`]); when it binds
-//!   ([`Search::budget_hit`]) the decision is the best sequence found so far.
+//!   expanded. This bounds the candidate evaluations to `|S| (1 +
+//!   max_expansions)` per decision (`|S| <= 216`) and the core's cycles
+//!   ([`super::horizon_fixed`]); when it binds ([`Search::budget_hit`]) the
+//!   decision is the best sequence found so far.
 //!
-//! In hardware the `LB` order needs no sort: the scheduler keeps the
-//! `max_expansions` smallest `(LB, code)` pairs in a sorted register list
-//! while the first-event results stream in.
+//! In hardware the order needs no sort: the scheduler keeps the
+//! `max_expansions` smallest `(J_SE, code)` entries in a sorted register
+//! list while the first-event results stream in.
 #![allow(clippy::needless_range_loop)]
 
 use super::anpc;
@@ -223,6 +224,10 @@ pub struct Search {
     pub differs_from_se: bool,
 }
 
+/// Observer of the complete feasible sequences a search evaluates: the
+/// positions, the length (steps) and the cost.
+pub type Visit<'a, C> = dyn FnMut(&[[u8; 3]], u32, C) + 'a;
+
 /// A sequence's position codes (padded with 0) for the tie-break.
 type Path = [u16; MAX_EVENTS];
 
@@ -266,7 +271,7 @@ pub fn search<M: SequenceModel>(
     root: &M::Node,
     horizon: Horizon,
     opt: SearchOptions,
-    visit: &mut dyn FnMut(&[[u8; 3]], u32, M::Cost),
+    visit: &mut Visit<'_, M::Cost>,
 ) -> Search {
     let events = horizon.events();
     let n_bar = m.n_bar();
@@ -279,7 +284,9 @@ pub fn search<M: SequenceModel>(
     let mut se: Option<Best<M::Cost>> = None;
     let mut dl: Option<([u8; 3], M::Dl)> = None;
     let mut best: Option<Best<M::Cost>> = None;
-    let mut open: heapless::Vec<(M::Cost, u16, [u8; 3], u32, u32), 216> = heapless::Vec::new();
+    // (SE cost, code, s1, steps used, turn-ons, LB) of the expandable first events.
+    type Open<C> = (C, u16, [u8; 3], u32, u32, C);
+    let mut open: heapless::Vec<Open<M::Cost>, 216> = heapless::Vec::new();
     let remaining_ext = events[1..].iter().filter(|h| **h == Hold::Extend).count() as u32;
     for &s1 in cands.iter() {
         let e = m.extend(root, s1);
@@ -302,7 +309,7 @@ pub fn search<M: SequenceModel>(
         let used = if events[0] == Hold::OneStep { 1 } else { e.l };
         let lb = m.lower_bound(fs, used + remaining_ext * n_bar);
         // Capacity 216 = the largest candidate set.
-        let _ = open.push((lb, code(s1), s1, used, fs));
+        let _ = open.push((j, code(s1), s1, used, fs, lb));
     }
     open.sort_unstable_by(|a, b| {
         a.0.partial_cmp(&b.0)
@@ -312,9 +319,9 @@ pub fn search<M: SequenceModel>(
     let budget = opt.max_expansions.min(MAX_PASSES as u32 - 1);
     let mut budget_hit = false;
     let mut expanded = 0u32;
-    for &(lb, _, s1, used, fs1) in open.iter() {
+    for &(_, _, s1, used, fs1, lb) in open.iter() {
         if opt.prune && best.as_ref().is_some_and(|b| lb > b.cost) {
-            break;
+            continue;
         }
         if opt.prune && expanded >= budget {
             budget_hit = true;
@@ -549,7 +556,7 @@ impl HorizonReference {
     pub fn search(
         &mut self,
         st: &CtrlState,
-        visit: &mut dyn FnMut(&[[u8; 3]], u32, f64),
+        visit: &mut Visit<'_, f64>,
     ) -> Result<Search, StateError> {
         st.check()?;
         let mut m = RefModel {
