@@ -487,7 +487,11 @@ mod tests {
             assert!(res.mismatch_percent() <= 1.0, "{}: {res:?}", h.name());
             // The reference's model differs from the plant by ~1e-7 pu per
             // step: a loop riding a bound may leave it by that, rarely.
-            assert!(res.steps_outside_bounds * 500 <= res.steps, "{}: {res:?}", h.name());
+            assert!(
+                res.steps_outside_bounds * 500 <= res.steps,
+                "{}: {res:?}",
+                h.name()
+            );
         }
     }
 }
