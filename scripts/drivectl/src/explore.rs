@@ -45,7 +45,7 @@ pub struct Args {
     /// Interpolation nodes (1..=4), overriding the structure's.
     #[arg(long)]
     pub nodes: Option<u32>,
-    /// Switching horizons (comma-separated: SE, SSE, SESE; eSESE = SESE):
+    /// Switching horizons (comma-separated: SE, SSE, SESE, SESESE; eSESE = SESE):
     /// sweep the f_sw-vs-THD trade-off of the horizons instead
     /// (docs/mpdcc-horizons.md).
     #[arg(long, value_delimiter = ',')]
@@ -67,12 +67,12 @@ pub struct Args {
 pub fn mpdcc(a: Args) -> Result<()> {
     if !a.horizon.is_empty() {
         let hs = horizons::parse_horizons(&a.horizon)?;
-        if a.max_expansions > 64 {
-            return Err(anyhow!("--max-expansions must be <= 64"));
+        if a.max_expansions > 512 {
+            return Err(anyhow!("--max-expansions must be <= 512"));
         }
         let opt = drive::mpdcc::horizon::SearchOptions {
             max_expansions: a.max_expansions,
-            prune: true,
+            ..Default::default()
         };
         return horizons::run(&hs, &a.delta_i, a.periods, a.target_delta_i, opt, &a.out);
     }

@@ -55,7 +55,7 @@ pub fn parse_horizons(v: &[String]) -> Result<Vec<Horizon>> {
     v.iter()
         .map(|s| {
             Horizon::parse(s).ok_or_else(|| {
-                anyhow!("unknown horizon `{s}` (implemented: SE, SSE, SESE; eSESE = SESE)")
+                anyhow!("unknown horizon `{s}` (implemented: SE, SSE, SESE, SESESE; eSESE = SESE)")
             })
         })
         .collect()
@@ -287,7 +287,7 @@ pub fn run(
     }
     write(out, "horizons_cycles.csv", cyc)?;
     // Trade-off plot.
-    const COLORS: [&str; 3] = ["#1f77b4", "#2ca02c", "#d62728"];
+    const COLORS: [&str; 4] = ["#1f77b4", "#2ca02c", "#d62728", "#9467bd"];
     let mut series = Vec::new();
     for (i, &h) in horizons.iter().enumerate() {
         for fpga in [false, true] {
