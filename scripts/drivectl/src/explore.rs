@@ -67,6 +67,9 @@ pub struct Args {
 pub fn mpdcc(a: Args) -> Result<()> {
     if !a.horizon.is_empty() {
         let hs = horizons::parse_horizons(&a.horizon)?;
+        if a.periods == 0 {
+            return Err(anyhow!("--periods must be >= 1"));
+        }
         if a.max_expansions > 512 {
             return Err(anyhow!("--max-expansions must be <= 512"));
         }
