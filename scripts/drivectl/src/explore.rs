@@ -12,6 +12,8 @@ use models::mpdcc::fpga::{self, FpgaConfig, FpgaMpdcc, Structure, P_PAPER};
 use models::mpdcc::params::DriveParams;
 use models::mpdcc::reference::Reference;
 
+pub mod horizons;
+
 /// Datapath structure of the explored core.
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum Which {
@@ -43,10 +45,40 @@ pub struct Args {
     /// Interpolation nodes (1..=4), overriding the structure's.
     #[arg(long)]
     pub nodes: Option<u32>,
+    /// Switching horizons (comma-separated: SE, SSE, SESE, SESESE; eSESE = SESE):
+    /// sweep the f_sw-vs-THD trade-off of the horizons instead
+    /// (docs/mpdcc-horizons.md).
+    #[arg(long, value_delimiter = ',')]
+    pub horizon: Vec<String>,
+    /// Horizon sweep: output directory for the CSV and SVG files.
+    #[arg(long, default_value = "target/explore-horizons")]
+    pub out: std::path::PathBuf,
+    /// Horizon sweep: the SE reference's THD at this `delta_i` (pu) is the
+    /// equal-THD target.
+    #[arg(long, default_value_t = 0.12)]
+    pub target_delta_i: f64,
+    /// Horizon sweep: nodes expanded beyond the first switching event at
+    /// most (the branch-and-bound budget).
+    #[arg(long, default_value_t = models::mpdcc::horizon::DEFAULT_MAX_EXPANSIONS)]
+    pub max_expansions: u32,
 }
 
 /// Runs the sweep and prints one line per design.
 pub fn mpdcc(a: Args) -> Result<()> {
+    if !a.horizon.is_empty() {
+        let hs = horizons::parse_horizons(&a.horizon)?;
+        if a.periods == 0 {
+            return Err(anyhow!("--periods must be >= 1"));
+        }
+        if a.max_expansions > 512 {
+            return Err(anyhow!("--max-expansions must be <= 512"));
+        }
+        let opt = models::mpdcc::horizon::SearchOptions {
+            max_expansions: a.max_expansions,
+            ..Default::default()
+        };
+        return horizons::run(&hs, &a.delta_i, a.periods, a.target_delta_i, opt, &a.out);
+    }
     let base = DriveParams::default();
     let cfg = LoopConfig {
         warmup_periods: 1,

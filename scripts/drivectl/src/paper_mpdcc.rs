@@ -25,7 +25,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 mod anatomy;
-mod svg;
+pub(crate) mod svg;
 
 #[derive(clap::Args)]
 pub struct Args {

@@ -447,7 +447,7 @@ impl Coeffs {
 fn recip_rom(n_bar: u32) -> Result<heapless::Vec<u32, 1025>, FpgaError> {
     let mut recip = heapless::Vec::new();
     for l in 0..=n_bar {
-        let r = ((1u32 << F_RECIP) + l / 2).checked_div(l).unwrap_or(0);
+        let r = recip_word(l);
         recip
             .push(r)
             .map_err(|_| FpgaError::CoefficientRange("recip"))?;
@@ -920,11 +920,8 @@ pub fn explore(k: &Coeffs, c: &Common, s_prev: [u8; 3], s: [u8; 3]) -> ExplorerR
     let cost = if l_star == 0 {
         COST_INF
     } else {
-        let jsw = fs as u64 * k.recip[l_star as usize] as u64; // f17
         let evn = sat16(c.e0[3] as i64 + v_n_change(k, &nodes, l_star));
-        let sq = evn as i64 * evn as i64; // f26
-        let jl = rshift_round(sq * k.lambda_n as i64, 2 * F_I + F_LAMBDA - F_COST) as u64;
-        (jsw + jl).min(COST_INF as u64 - 1) as u32
+        sequence_cost(k, fs, l_star, evn)
     };
     ExplorerResult {
         s,
@@ -940,9 +937,38 @@ pub fn explore(k: &Coeffs, c: &Common, s_prev: [u8; 3], s: [u8; 3]) -> ExplorerR
 /// Interpolated change of the `v_n` error after `l` steps (for the terminal
 /// weight), on the piece that contains `l` (the last piece extended).
 fn v_n_change(k: &Coeffs, nodes: &Nodes, l: u32) -> i64 {
+    lane_change(k, nodes, l, 3)
+}
+
+// --- switching-horizon hooks (used by `super::horizon_fixed`) ---
+
+/// `J = f_s / l + lambda_n e_vn^2` (UQ15.17, saturated below
+/// [`COST_INF`]) for `f_s` device turn-ons over `l >= 1` steps and the
+/// terminal neutral-point error `e_vn` (Q2.13): `1/l` is
+/// [`recip_word`]`(l)`, the reciprocal ROM's entry for `l <= N_bar`.
+pub fn sequence_cost(k: &Coeffs, fs: u32, l: u32, evn: i16) -> u32 {
+    let r = match k.recip.get(l as usize) {
+        Some(&r) => r,
+        None => recip_word(l),
+    };
+    let jsw = fs as u64 * r as u64; // f17
+    let sq = evn as i64 * evn as i64; // f26
+    let jl = rshift_round(sq * k.lambda_n as i64, 2 * F_I + F_LAMBDA - F_COST) as u64;
+    (jsw + jl).min(COST_INF as u64 - 1) as u32
+}
+
+/// `round(2^17 / l)` (UQ1.17), 0 for `l = 0`: one word of the reciprocal ROM.
+pub fn recip_word(l: u32) -> u32 {
+    ((1u32 << F_RECIP) + l / 2).checked_div(l).unwrap_or(0)
+}
+
+/// Interpolated change of output lane `j` over `l` steps (Q2.13, not
+/// saturated): the chord through `k` and node 0 up to `L`, then the piece
+/// of the node polyline containing `l` (the search lanes' own model).
+pub fn lane_change(k: &Coeffs, nodes: &Nodes, l: u32, j: usize) -> i64 {
     let lam = k.lambda;
     let big_l = 1u32 << lam;
-    let n = |i: usize| nodes[i][3] as i64;
+    let n = |i: usize| nodes[i][j] as i64;
     if k.nodes == 1 || l <= big_l {
         return rshift_round(l as i64 * n(0), lam);
     }
@@ -955,6 +981,8 @@ fn v_n_change(k: &Coeffs, nodes: &Nodes, l: u32) -> i64 {
     let ls = lam + i as u32 - 1;
     n(i - 1) + rshift_round((l - start) as i64 * (n(i) - n(i - 1)), ls)
 }
+
+// --- end of switching-horizon hooks ---
 
 /// The FPGA MPDCC core: coefficients, the scheduler and `n` explorers.
 #[derive(Debug, Clone)]

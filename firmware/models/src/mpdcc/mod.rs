@@ -4,7 +4,9 @@
 //! `controller` (the interface both implementations share), `reference`,
 //! `plant`, `closed_loop`, `stats`. See docs/mpdcc.md.
 //! The 16-bit FPGA model: `fixed`, `fpga`, `binsearch`, `scheduler`,
-//! `cycles`, `fpga_eval` (tests). See docs/mpdcc-fpga.md. The
+//! `cycles`, `fpga_eval` (tests). See docs/mpdcc-fpga.md.
+//! `horizon`, `horizon_fixed`: longer switching horizons (SSE, SESE) for
+//! both implementations (docs/mpdcc-horizons.md). The
 //! hardware-in-the-loop run of the core on its register page is the
 //! product's (`drive::hil`).
 pub mod anpc;
@@ -15,6 +17,8 @@ pub mod cycles;
 pub mod fixed;
 pub mod fpga;
 pub mod fpga_eval;
+pub mod horizon;
+pub mod horizon_fixed;
 pub mod machine;
 pub mod params;
 pub mod plant;

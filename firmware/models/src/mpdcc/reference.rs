@@ -106,7 +106,6 @@ impl Reference {
     /// Extends candidate `s` from `st` for at most `max_l` steps (needs
     /// `prepare` for `st` first).
     fn extend(&self, st: &CtrlState, s: [u8; 3], max_l: u32) -> Extension {
-        let inv = &self.p.inverter;
         let mut xm = st.x_m;
         let mut xi = [st.v_n_pu, st.v_ph_pu[0], st.v_ph_pu[1], st.v_ph_pu[2]];
         let i0 = inv_clarke([xm[0], xm[1]]);
@@ -121,12 +120,9 @@ impl Reference {
             v_n_end: xi[0],
             excess_k1: f64::INFINITY,
         };
-        let mut i_abc = i0;
         for l in 1..=max_l as usize {
-            let v = anpc::output_voltages(s, inv.v_dc_pu, xi[0], [xi[1], xi[2], xi[3]]);
-            anpc::inverter_euler_step(&mut xi, s, i_abc, self.ts_pu, inv.c_dc_pu, inv.c_ph_pu);
-            xm = self.disc.step(&xm, clarke(v));
-            i_abc = inv_clarke([xm[0], xm[1]]);
+            self.model_step(&mut xm, &mut xi, s);
+            let i_abc = inv_clarke([xm[0], xm[1]]);
             let r = &self.iref[l];
             let e = [r[0] - i_abc[0], r[1] - i_abc[1], r[2] - i_abc[2]];
             let w = self.bounds.worst_excess(e, xi[0], [xi[1], xi[2], xi[3]]);
@@ -142,6 +138,44 @@ impl Reference {
         }
         ext
     }
+
+    /// One step of the controller model with `s` held: exact machine step
+    /// with `v_abc(s, v_n, v_ph)`, eq. (2) for the inverter states
+    /// `[v_n, v_ph,abc]` (currents held over the step).
+    fn model_step(&self, xm: &mut [f64; 4], xi: &mut [f64; 4], s: [u8; 3]) {
+        let inv = &self.p.inverter;
+        let i_abc = inv_clarke([xm[0], xm[1]]);
+        let v = anpc::output_voltages(s, inv.v_dc_pu, xi[0], [xi[1], xi[2], xi[3]]);
+        anpc::inverter_euler_step(xi, s, i_abc, self.ts_pu, inv.c_dc_pu, inv.c_ph_pu);
+        *xm = self.disc.step(xm, clarke(v));
+    }
+
+    // --- switching-horizon hook (used by `super::horizon`) ---
+
+    /// The controller model's state `l` steps after `st` with `s` held:
+    /// machine and inverter states from [`Self::model_step`], the current
+    /// reference rotated by `omega_s l T_s`, `s_prev = s` (the start of the
+    /// next switching event of a longer horizon).
+    pub fn predict(&mut self, st: &CtrlState, s: [u8; 3], l: u32) -> Result<CtrlState, StateError> {
+        st.check()?;
+        self.prepare(st);
+        let mut xm = st.x_m;
+        let mut xi = [st.v_n_pu, st.v_ph_pu[0], st.v_ph_pu[1], st.v_ph_pu[2]];
+        for _ in 0..l {
+            self.model_step(&mut xm, &mut xi, s);
+        }
+        let th = st.omega_s_pu * self.ts_pu * l as f64;
+        Ok(CtrlState {
+            x_m: xm,
+            v_n_pu: xi[0],
+            v_ph_pu: [xi[1], xi[2], xi[3]],
+            i_ref_ab_pu: rotate(st.i_ref_ab_pu, libm::cos(th), libm::sin(th)),
+            s_prev: s,
+            ..*st
+        })
+    }
+
+    // --- end of switching-horizon hook ---
 
     /// Cost of eqs. (10)-(12) of moving from `s_prev` to `s` with extension
     /// `e`: `f_s / L* + lambda_n v_n(k+L*)^2` (transitions per step), `+inf`
