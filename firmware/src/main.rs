@@ -1,6 +1,6 @@
 //! Bare-metal PS application of the predictive servo drive.
 //!
-//! Boot: VBAR, UART0 (defmt log) and UART1 (console) at 115200 8N1, GIC,
+//! Boot: VBAR, UART0 (defmt log, 115200 8N1) and UART1 (console, 921600 8N1), GIC,
 //! private timer tick at [`TICK_HZ`], then the console loop. Everything that
 //! can be tested on the host lives in the `drive` crate; this crate only
 //! moves bytes and touches registers.
@@ -31,6 +31,8 @@ mod ps;
 mod rx;
 #[cfg(target_os = "none")]
 mod semihosting;
+#[cfg(target_os = "none")]
+mod telemetry;
 
 /// The firmware only runs on the target; on the host this crate is an empty
 /// binary so that `cargo build --workspace` and clippy work everywhere.

@@ -12,6 +12,7 @@
 //! - [`servo`]: the drive on the PS: modes, gates, control step, `step`.
 //! - [`pmsm`]: paper 000 (PMSM + 2-level inverter, FOC baseline, MPDTC).
 //! - [`mpdcc`]: paper 001 (induction machine + 5L-ANPC, MPDCC).
+//! - [`telemetry`]: the live channel stream on the console UART.
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 
@@ -36,5 +37,6 @@ pub mod regs;
 mod regs_tests;
 pub mod servo;
 pub mod simpl;
+pub mod telemetry;
 pub mod validate;
 pub mod zynq;

@@ -116,6 +116,15 @@ pub const COMMANDS: &[Spec] = &[
                without arguments the last run: decisions (kept, optimal, deadlock), core \
                cycles mean/worst [PL cycles], f_sw [Hz], THD [%], max current error [pu]",
     },
+    // Telemetry (`console/tel.rs`).
+    Spec {
+        name: "tel",
+        args: "list|start <rate_hz> <channels>|stop|status",
+        help: "live telemetry: `list` the channels with units, `start` a stream of up to 8 \
+               comma-separated <channels> at <rate_hz> of drive time (1..=10000, one control period's value \
+               per sample) as binary frames between the replies, `stop`, `status` (samples \
+               taken, sent, dropped)",
+    },
 ];
 
 /// What `mode` selects: a PL mode of the PMSM drive, or paper 001's HIL
@@ -204,6 +213,8 @@ pub enum Command<'a> {
     },
     /// `mpdcc` (the last report) or `mpdcc run [periods]`.
     Mpdcc(Option<u32>),
+    /// `tel ...`.
+    Tel(super::tel::TelCmd),
 }
 
 /// Default pre-trigger length of `capture arm`, samples.
@@ -336,6 +347,8 @@ pub enum ParseError<'a> {
     Unknown(&'a str),
     /// The command exists; its arguments are wrong.
     BadArgs(&'static str, &'static str),
+    /// `tel start` refused.
+    Tel(crate::telemetry::SpecError<'a>),
 }
 
 /// What the caller must do after the reply.
@@ -500,6 +513,7 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
             )),
         },
         "capture" => parse_capture(args.as_slice()),
+        "tel" => super::tel::parse(args.as_slice()).map(Command::Tel),
         "sweep" => parse_sweep(args.as_slice()),
         "mpdcc" => match args.as_slice() {
             [] => Ok(Command::Mpdcc(None)),
@@ -550,6 +564,7 @@ pub fn write_parse_error<W: Write>(out: &mut W, e: ParseError<'_>) -> fmt::Resul
         ParseError::BadArgs(cmd, why) => {
             write_err(out, ErrorCode::BadArgs, format_args!("{cmd}: {why}"))
         }
+        ParseError::Tel(e) => write_err(out, ErrorCode::BadArgs, format_args!("tel: {e}")),
     }
 }
 
@@ -877,6 +892,7 @@ pub fn execute<W: Write>(
             };
             drive::write_mpdcc(out, &r)?;
         }
+        Command::Tel(c) => return super::tel::execute(c, drv.telemetry(), out),
     }
     out.write_str("OK\r\n")?;
     Ok(Action::None)
@@ -1088,6 +1104,8 @@ mod tests {
                 .replace("<amplitude_nm>", "0.1")
                 .replace("<points>", "4")
                 .replace("<periods>", "2")
+                .replace("<rate_hz>", "1000")
+                .replace("<channels>", "torque,i_q")
                 .replace(['[', ']'], "");
             for alt in args.split('|') {
                 let line = std::format!("{} {}", s.name, alt);

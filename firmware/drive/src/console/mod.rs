@@ -13,6 +13,7 @@
 mod command;
 pub mod drive;
 mod editor;
+mod tel;
 
 pub use command::{
     execute, parse, write_parse_error, Action, Command, Context, ParseError, Spec, Status,
@@ -20,6 +21,7 @@ pub use command::{
 };
 pub use drive::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
 pub use editor::{LineEditor, LineError, LINE_MAX};
+pub use tel::{TelCmd, TelOps};
 
 /// Printed when the console is ready for a line.
 pub const PROMPT: &str = "drive> ";
