@@ -10,6 +10,7 @@ mod explore;
 mod paper_mpdcc;
 mod paper_mpdtc;
 mod sim;
+mod tel_cmd;
 
 #[derive(Parser)]
 #[command(
@@ -51,6 +52,8 @@ enum Cmd {
     /// Design exploration (research sweeps).
     #[command(subcommand)]
     Explore(ExploreCmd),
+    /// Record the live telemetry stream to CSV (lost frames reported).
+    Tel(tel_cmd::TelArgs),
 }
 
 #[derive(Subcommand)]
@@ -129,5 +132,6 @@ fn dispatch(cmd: Cmd) -> Result<()> {
         Cmd::Experiment(ExperimentCmd::Sweep(a)) => experiment::sweep(a),
         Cmd::Capture(a) => experiment::capture(a),
         Cmd::Explore(ExploreCmd::Mpdcc(a)) => explore::mpdcc(a),
+        Cmd::Tel(a) => tel_cmd::run(a),
     }
 }
