@@ -11,6 +11,7 @@ mod paper_mpdcc;
 mod paper_mpdtc;
 mod sim;
 mod tel_cmd;
+mod ui;
 
 #[derive(Parser)]
 #[command(
@@ -54,6 +55,9 @@ enum Cmd {
     Explore(ExploreCmd),
     /// Record the live telemetry stream to CSV (lost frames reported).
     Tel(tel_cmd::TelArgs),
+    /// Local web page: live plots, status, console, configuration editor,
+    /// experiments (loopback only unless --allow-remote).
+    Ui(ui::UiArgs),
 }
 
 #[derive(Subcommand)]
@@ -133,5 +137,6 @@ fn dispatch(cmd: Cmd) -> Result<()> {
         Cmd::Capture(a) => experiment::capture(a),
         Cmd::Explore(ExploreCmd::Mpdcc(a)) => explore::mpdcc(a),
         Cmd::Tel(a) => tel_cmd::run(a),
+        Cmd::Ui(a) => ui::run(a),
     }
 }

@@ -131,6 +131,11 @@ impl Stream {
             &format!("tel start {rate_hz} {}", channels.join(",")),
             timeout,
         )?;
+        Self::start_from_reply(&r, rate_hz, channels)
+    }
+
+    /// The stream that a `tel start` reply `r` announced.
+    pub fn start_from_reply(r: &Reply, rate_hz: u32, channels: &[String]) -> Result<Self> {
         let number = r
             .lines
             .iter()
