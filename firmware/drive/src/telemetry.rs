@@ -788,6 +788,18 @@ mod tests {
     }
 
     #[test]
+    fn the_docs_list_every_channel_with_its_unit() {
+        let doc = include_str!("../../../docs/telemetry.md");
+        for c in CHANNELS {
+            let row = doc
+                .lines()
+                .find(|l| l.starts_with('|') && l.contains(&std::format!("`{}`", c.name)))
+                .unwrap_or_else(|| panic!("docs/telemetry.md: no row for {}", c.name));
+            assert!(row.contains(&std::format!("| {} |", c.unit)), "{row}");
+        }
+    }
+
+    #[test]
     fn eight_channels_at_one_khz_fit_the_console_uart() {
         // 45-byte frames at 1 kHz: 45,000 B/s of the 92,160 B/s that
         // 921600 baud 8N1 carries; 115200 baud (11,520 B/s) would not do.
