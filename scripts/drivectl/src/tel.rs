@@ -7,7 +7,7 @@ use anyhow::{bail, Context as _, Result};
 use drive::telemetry::{Demux, Demuxed, Sample, CHANNELS};
 use std::io::Write;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
+use std::sync::mpsc::{self, Receiver, Sender};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
@@ -65,10 +65,8 @@ impl Frames {
 
     /// The next frame, waiting at most `timeout`.
     pub fn next(&self, timeout: Duration) -> Option<Sample> {
-        match self.rx.recv_timeout(timeout) {
-            Ok(s) => Some(s),
-            Err(RecvTimeoutError::Timeout | RecvTimeoutError::Disconnected) => None,
-        }
+        // Timeout or a closed link: nothing more now.
+        self.rx.recv_timeout(timeout).ok()
     }
 
     /// Every frame received so far.

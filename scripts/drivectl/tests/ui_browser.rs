@@ -324,6 +324,7 @@ fn the_page_drives_the_firmware_in_a_real_browser() {
 
     // The screenshot the README shows.
     b.wait_for("more points after the step", 60, |b| points(b) > 100);
+    b.js("window.scrollTo(0, 0)");
     let png = b.call("GET", "/screenshot", None);
     let png = decode_base64(png.as_str().expect("base64 PNG"));
     assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
