@@ -199,3 +199,22 @@ pub fn run(a: UiArgs) -> Result<()> {
     }
     server::serve(http, shared)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::check_listen;
+
+    #[test]
+    fn only_loopback_addresses_unless_asked() {
+        for ok in ["127.0.0.1:8750", "127.0.0.2:1", "[::1]:8750"] {
+            assert!(check_listen(&ok.parse().unwrap(), false).is_ok(), "{ok}");
+        }
+        for remote in ["0.0.0.0:8750", "192.168.1.20:8750", "[::]:8750"] {
+            let a = remote.parse().unwrap();
+            let e = check_listen(&a, false).unwrap_err().to_string();
+            assert!(e.contains("not a loopback address"), "{e}");
+            assert!(e.contains("--allow-remote"), "{e}");
+            assert!(check_listen(&a, true).is_ok(), "{remote}");
+        }
+    }
+}
