@@ -394,9 +394,11 @@ pub enum Demuxed {
 /// Splits the console byte stream into text and frames (host side).
 ///
 /// Outside a frame, a zero opens one; inside, a zero closes it. A frame
-/// that fails its checks is dropped and its closing zero taken as the
-/// opening of the next one: after a lost delimiter the receiver is back in
-/// step at the next good frame.
+/// that fails its checks is dropped. If its length is a frame's length, a
+/// byte was corrupted and the receiver is in step; otherwise a delimiter
+/// was lost (text or another frame ran into it), and its closing zero is
+/// taken as the opening of the next frame: the receiver is back in step at
+/// the next good frame.
 #[derive(Clone, Debug, Default)]
 pub struct Demux {
     in_frame: bool,
@@ -440,6 +442,11 @@ impl Demux {
         } else {
             decode(&self.buf)
         };
+        let len = if self.overlong {
+            usize::MAX / 2
+        } else {
+            self.buf.len()
+        };
         self.buf.clear();
         self.overlong = false;
         match r {
@@ -447,7 +454,12 @@ impl Demux {
                 self.in_frame = false;
                 Demuxed::Frame(s)
             }
-            None => Demuxed::Bad,
+            None => {
+                // COBS adds one byte to the payload of 8 + 4 n + 2 bytes.
+                let n4 = (len as isize) - 11;
+                self.in_frame = !(0..=4 * MAX_CHANNELS as isize).contains(&n4) || n4 % 4 != 0;
+                Demuxed::Bad
+            }
         }
     }
 }
@@ -683,7 +695,7 @@ mod tests {
         let mut wire = std::vec::Vec::new();
         let len = sample(1, 1).encode(&mut out);
         wire.extend_from_slice(&out[..len - 1]); // closing zero lost
-        wire.extend_from_slice(b"OK\r\n");
+        wire.extend_from_slice(b"OK\r\ndrive> ");
         for seq in 2..=3 {
             let len = sample(1, seq).encode(&mut out);
             wire.extend_from_slice(&out[..len]);
