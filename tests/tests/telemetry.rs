@@ -12,7 +12,7 @@ fn assert_ok(r: &Reply) {
     assert!(r.is_ok(), "{r:?}");
 }
 
-/// The acceptance run: torque, i_q and torque_ref at 1 kHz for 0.5 s of
+/// Torque, i_q and torque_ref at 1 kHz for 0.5 s of
 /// drive time with the FOC holding 0.2 N m, `status` every 50 ms of wall
 /// time over the same link.
 #[test]
