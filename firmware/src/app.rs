@@ -4,8 +4,10 @@ use crate::{control, log, pl, rx::Ring};
 use core::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 use drive::console::{self, Action, Context, LineEditor, Status, PROMPT};
 
-/// Console and log line settings.
-const BAUD: u32 = 115_200;
+/// Console line: fast enough for the telemetry stream (docs/telemetry.md).
+const BAUD: u32 = drive::telemetry::CONSOLE_BAUD;
+/// Log line (defmt on UART0).
+const LOG_BAUD: u32 = 115_200;
 /// UART reference clock set by the FSBL, from the board file.
 const UART_REF_CLK_HZ: u32 = crate::board::UART_REF_CLK_HZ;
 /// Rate of the periodic timer interrupt, Hz.
@@ -39,7 +41,8 @@ fn main() -> ! {
     // a build error in disguise, caught by the host test of the same call.
     let div = drive::zynq::uart_divisors(UART_REF_CLK_HZ, BAUD).expect("baud divisors");
     CONSOLE.init(div, true);
-    log::init(div);
+    let log_div = drive::zynq::uart_divisors(UART_REF_CLK_HZ, LOG_BAUD).expect("baud divisors");
+    log::init(log_div);
     timer::start_global();
     gic::init();
     gic::enable(gic::IRQ_PRIVATE_TIMER);
@@ -72,8 +75,8 @@ fn banner(con: &mut Uart, boot: &control::Boot) {
     let _ = write!(
         con,
         "pl: {} (devcfg INT_STS 0x{:08x})\r\n\
-         console on UART1 at {} 8N1; defmt log on UART0; type `help`\r\n{}",
-        boot.pl, boot.devcfg_int_sts, BAUD, PROMPT
+         console on UART1 at {} 8N1; defmt log on UART0 at {} 8N1; type `help`\r\n{}",
+        boot.pl, boot.devcfg_int_sts, BAUD, LOG_BAUD, PROMPT
     );
 }
 
@@ -145,6 +148,10 @@ fn next_byte() -> Option<u8> {
     }
     if let Some(b) = RX.pop() {
         return Some(b);
+    }
+    // Nothing typed: telemetry frames go out now, between replies.
+    if crate::telemetry::pump(&CONSOLE, 4) {
+        return None;
     }
     // Check and sleep with IRQs masked so that a byte arriving in between
     // still wakes the WFI (a pending IRQ ends WFI even while masked).

@@ -300,7 +300,9 @@ pub fn on_control() {
             s.servo.note_skipped();
         } else {
             // A bus error leaves the gates to the PL's own fault logic.
+            let start = timer::global_count();
             let _ = s.servo.control_step(&mut s.bus);
+            crate::telemetry::on_step(&s.servo, timer::global_count() - start);
         }
         let end = timer::global_count();
         if let Backend::Cosim(_) = s.bus {
@@ -385,6 +387,8 @@ pub struct FwDrive {
     hil: Option<Paced>,
     /// `Servo::periods` when the loop was last served.
     hil_seen: u64,
+    /// The telemetry stream.
+    tel: crate::telemetry::Ops,
 }
 
 impl FwDrive {
@@ -393,6 +397,7 @@ impl FwDrive {
         Self {
             hil: None,
             hil_seen: 0,
+            tel: crate::telemetry::Ops,
         }
     }
 
@@ -702,6 +707,9 @@ impl DriveOps for FwDrive {
     }
     fn mpdcc_report(&mut self) -> Option<HilReport> {
         console(|s| s.mpdcc_last).flatten()
+    }
+    fn telemetry(&mut self) -> Option<&mut dyn drive::console::TelOps> {
+        Some(&mut self.tel)
     }
 }
 

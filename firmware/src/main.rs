@@ -1,6 +1,7 @@
 //! Bare-metal PS application of the predictive servo drive.
 //!
-//! Boot: VBAR, UART0 (defmt log) and UART1 (console) at 115200 8N1, GIC,
+//! Boot: VBAR, UART0 (defmt log, 115200 8N1) and UART1 (console, 921600
+//! 8N1), GIC,
 //! private timer tick at [`TICK_HZ`], then the console loop. This crate only
 //! moves bytes, touches registers and chooses the backend the drive's
 //! `RegisterBus` is answered by (`control`: GP0 with a bitstream, else the
@@ -43,6 +44,8 @@ mod ps;
 mod rx;
 #[cfg(target_os = "none")]
 mod semihosting;
+#[cfg(target_os = "none")]
+mod telemetry;
 
 /// The firmware only runs on the target; on the host this crate is an empty
 /// binary so that `cargo build --workspace` and clippy work everywhere.

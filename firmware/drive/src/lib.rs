@@ -15,6 +15,7 @@
 //! - [`console`]: the UART console line editor and command grammar.
 //! - [`zynq`]: arithmetic of the Zynq-7000 PS peripherals (UART divisors,
 //!   timer loads), tested on the host.
+//! - [`telemetry`]: the live channel stream on the console UART.
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 
@@ -25,4 +26,5 @@ mod doc_figures;
 pub mod hil;
 pub mod pl;
 pub mod servo;
+pub mod telemetry;
 pub mod zynq;

@@ -15,8 +15,8 @@ pub struct Target {
     /// is booted in QEMU.
     #[arg(long)]
     pub port: Option<String>,
-    /// Baud rate of --port, 8N1.
-    #[arg(long, default_value_t = 115_200)]
+    /// Baud rate of --port, 8N1 (the firmware's console UART runs at 921600).
+    #[arg(long, default_value_t = drive::telemetry::CONSOLE_BAUD)]
     pub baud: u32,
     /// Firmware ELF booted in QEMU (default: this checkout's release build).
     #[arg(long)]
@@ -121,7 +121,7 @@ pub struct LogArgs {
     pub input: PathBuf,
 }
 
-fn timeout(s: f64) -> Result<Duration> {
+pub fn timeout(s: f64) -> Result<Duration> {
     if !(s.is_finite() && s > 0.0 && s <= 3600.0) {
         bail!("--timeout-s must be in (0, 3600] s, got {s}");
     }

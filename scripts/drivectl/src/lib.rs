@@ -5,3 +5,4 @@ pub mod config_file;
 pub mod cosim;
 pub mod defmt_log;
 pub mod link;
+pub mod tel;

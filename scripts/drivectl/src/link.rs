@@ -186,6 +186,8 @@ pub struct Session {
     child: Option<Child>,
     tx: Box<dyn Write + Send>,
     rx: Receiver<Vec<u8>>,
+    /// Telemetry frames split off the byte stream (`drive::telemetry`).
+    pub frames: crate::tel::Frames,
     /// Received and not yet consumed.
     pending: Vec<u8>,
     /// Everything received so far (for diagnostics).
@@ -201,13 +203,17 @@ impl Session {
         mut reader: Box<dyn Read + Send>,
     ) -> Self {
         let (send, rx) = mpsc::channel();
+        // Telemetry frames are taken out here: the console's text (and
+        // `transcript`) is what it would be without a stream.
+        let (frames, mut demux) = crate::tel::Frames::new();
         std::thread::spawn(move || {
             let mut buf = [0u8; 4096];
             loop {
                 match reader.read(&mut buf) {
                     Ok(0) => break,
                     Ok(n) => {
-                        if send.send(buf[..n].to_vec()).is_err() {
+                        let text = demux.split(&buf[..n]);
+                        if !text.is_empty() && send.send(text).is_err() {
                             break;
                         }
                     }
@@ -221,6 +227,7 @@ impl Session {
             child,
             tx,
             rx,
+            frames,
             pending: Vec::new(),
             transcript: Vec::new(),
             bridge: None,

@@ -10,6 +10,8 @@ mod explore;
 mod paper_mpdcc;
 mod paper_mpdtc;
 mod sim;
+mod tel_cmd;
+mod ui;
 
 #[derive(Parser)]
 #[command(
@@ -51,6 +53,11 @@ enum Cmd {
     /// Design exploration (research sweeps).
     #[command(subcommand)]
     Explore(ExploreCmd),
+    /// Record the live telemetry stream to CSV (lost frames reported).
+    Tel(tel_cmd::TelArgs),
+    /// Local web page: live plots, status, console, configuration editor,
+    /// experiments (loopback only unless --allow-remote).
+    Ui(ui::UiArgs),
 }
 
 #[derive(Subcommand)]
@@ -129,5 +136,7 @@ fn dispatch(cmd: Cmd) -> Result<()> {
         Cmd::Experiment(ExperimentCmd::Sweep(a)) => experiment::sweep(a),
         Cmd::Capture(a) => experiment::capture(a),
         Cmd::Explore(ExploreCmd::Mpdcc(a)) => explore::mpdcc(a),
+        Cmd::Tel(a) => tel_cmd::run(a),
+        Cmd::Ui(a) => ui::run(a),
     }
 }

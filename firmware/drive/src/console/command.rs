@@ -33,6 +33,7 @@ mod info;
 mod motion;
 mod mpdcc;
 mod sweep;
+mod tel;
 #[cfg(test)]
 mod tests;
 
@@ -43,6 +44,7 @@ pub use fault::FaultCmd;
 pub use info::InfoCmd;
 pub use motion::{ModeSel, MotionCmd, STEP_WINDOW_DEFAULT_S, STEP_WINDOW_MAX_S};
 pub use sweep::Sweep;
+pub use tel::{TelCmd, TelOps};
 
 /// One console command: its name, its arguments (with units) and what it does.
 pub struct Spec {
@@ -70,6 +72,7 @@ pub const COMMANDS: &[&Spec] = &[
     &capture::CAPTURE,
     &sweep::SWEEP,
     &mpdcc::MPDCC,
+    &tel::TEL,
 ];
 
 /// A parsed command line: the family that owns its first word and what
@@ -94,6 +97,8 @@ pub enum Command<'a> {
     Sweep(Sweep),
     /// `mpdcc` (the last report) or `mpdcc run [periods]`.
     Mpdcc(Option<u32>),
+    /// `tel ...`.
+    Tel(TelCmd),
 }
 
 /// Why a line is not a valid command.
@@ -103,6 +108,8 @@ pub enum ParseError<'a> {
     Unknown(&'a str),
     /// The command exists; its arguments are wrong.
     BadArgs(&'static str, &'static str),
+    /// `tel start` refused.
+    Tel(crate::telemetry::SpecError<'a>),
 }
 
 /// What the caller must do after the reply.
@@ -190,6 +197,7 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
         "capture" => capture::parse(args).map(Command::Capture),
         "sweep" => sweep::parse(args).map(Command::Sweep),
         "mpdcc" => mpdcc::parse(args).map(Command::Mpdcc),
+        "tel" => tel::parse(args).map(Command::Tel),
         _ => Err(ParseError::Unknown(name)),
     }
 }
@@ -211,6 +219,7 @@ pub fn execute<W: Write>(
         Command::Capture(c) => capture::execute(c, drv, out)?,
         Command::Sweep(c) => sweep::execute(c, drv, out)?,
         Command::Mpdcc(run) => mpdcc::execute(run, drv, out)?,
+        Command::Tel(c) => tel::execute(c, drv.telemetry(), out)?,
     };
     match done {
         Outcome::Ok => {
@@ -279,6 +288,7 @@ pub fn write_parse_error<W: Write>(out: &mut W, e: ParseError<'_>) -> fmt::Resul
         ParseError::BadArgs(cmd, why) => {
             write_err(out, ErrorCode::BadArgs, format_args!("{cmd}: {why}"))
         }
+        ParseError::Tel(e) => write_err(out, ErrorCode::BadArgs, format_args!("tel: {e}")),
     }
 }
 

@@ -239,6 +239,10 @@ pub trait DriveOps {
     fn mpdcc_live(&mut self) -> Option<PacedStatus> {
         None
     }
+    /// The telemetry stream's owner, if the build has one.
+    fn telemetry(&mut self) -> Option<&mut dyn super::TelOps> {
+        None
+    }
 }
 
 /// Writes the final `ERR` line of a failed drive command.

@@ -39,6 +39,8 @@ mod step;
 use faults::{FaultHistory, FaultRecord, Sample, Snapshot};
 pub use step::{StepRecorder, StepResult, STEP_SAMPLES_MAX};
 mod sweep;
+// Telemetry: the channels of one control period.
+mod tel;
 pub use sweep::{bandwidth_hz, record_response, tone_response, Sine, SweepPoint};
 
 /// Control periods without a new ADC result that latch `ADC_STUCK`: two.
@@ -238,6 +240,8 @@ pub struct Servo {
     missed: u64,
     /// Sine torque reference (`sweep`), while the gates are on.
     sine: Option<Sine>,
+    /// FOC: the duties of the last step (telemetry).
+    duties: [f64; 3],
 }
 
 impl Servo {
@@ -304,6 +308,7 @@ impl Servo {
             last_pos: None,
             missed: 0,
             sine: None,
+            duties: [0.0; 3],
         })
     }
 
@@ -756,6 +761,7 @@ impl Servo {
     fn foc_step<B: RegisterBus>(&mut self, bus: &mut B, m: &Measurement) -> Result<(), BusError> {
         let half = self.cfg.foc_half_period_cycles;
         if let Actuation::DutyAbc(d) = self.foc.step(m, self.torque_ref_nm) {
+            self.duties = d;
             Pwm(&mut *bus).set_duties(d, half)?;
             // Centre-aligned PWM: a leg strictly between 0 and 100 % makes
             // two transitions per period.

@@ -204,6 +204,8 @@ fn every_table_entry_parses() {
             .replace("<amplitude_nm>", "0.1")
             .replace("<points>", "4")
             .replace("<periods>", "2")
+            .replace("<rate_hz>", "1000")
+            .replace("<channels>", "torque,i_q")
             .replace(['[', ']'], "");
         for alt in args.split('|') {
             let line = std::format!("{} {}", s.name, alt);

@@ -1,0 +1,375 @@
+// drivectl ui: the page's logic. Every drive action is a console command
+// sent through POST /api/cmd; the telemetry samples come from GET /api/tel.
+"use strict";
+
+const $ = (id) => document.getElementById(id);
+const COLORS = ["#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"];
+
+// ---- console link ----------------------------------------------------------
+
+const history = [];
+let histPos = 0;
+
+function logConsole(line, reply) {
+  const log = $("console-log");
+  let t = "> " + line + "\n";
+  if (reply.error) {
+    t += "link error: " + reply.error + "\n";
+  } else {
+    for (const l of reply.lines) t += l + "\n";
+    t += reply.ok ? "OK\n" : "ERR " + reply.code + " " + reply.message + "\n";
+  }
+  log.textContent += t;
+  log.scrollTop = log.scrollHeight;
+}
+
+// Sends one command line; resolves to {lines, ok, code, message} or {error}.
+async function cmd(line, quiet) {
+  let reply;
+  try {
+    const r = await fetch("/api/cmd", { method: "POST", body: line });
+    reply = await r.json();
+    $("link-state").textContent = "connected";
+  } catch (e) {
+    reply = { error: String(e) };
+    $("link-state").textContent = "link lost";
+  }
+  if (!quiet) logConsole(line, reply);
+  return reply;
+}
+
+// The drive's own refusal, in its words.
+function errText(r) {
+  return r.error ? "link error: " + r.error : "ERR " + r.code + " " + r.message;
+}
+
+function field(r, key) {
+  for (const l of r.lines || []) {
+    if (l.startsWith(key + ": ")) return l.slice(key.length + 2);
+  }
+  return null;
+}
+
+$("console-input").addEventListener("keydown", async (e) => {
+  const inp = $("console-input");
+  if (e.key === "ArrowUp" && histPos > 0) {
+    inp.value = history[--histPos];
+    e.preventDefault();
+  } else if (e.key === "ArrowDown" && histPos < history.length) {
+    histPos++;
+    inp.value = histPos < history.length ? history[histPos] : "";
+    e.preventDefault();
+  } else if (e.key === "Enter") {
+    const line = inp.value.trim();
+    inp.value = "";
+    if (!line) return;
+    history.push(line);
+    histPos = history.length;
+    await cmd(line);
+  }
+});
+
+// ---- live telemetry --------------------------------------------------------
+
+const tel = { plot: null, channels: [], t: [], v: [], next: 0, paused: false, total: 0 };
+
+async function loadChannels() {
+  const r = await cmd("tel list", true);
+  const box = $("tel-channels");
+  box.textContent = "";
+  for (const l of r.lines || []) {
+    const m = l.match(/^(\S+) \[([^\]]*)\] (.*)$/);
+    if (!m) continue;
+    const lab = document.createElement("label");
+    lab.title = m[3];
+    const cb = document.createElement("input");
+    cb.type = "checkbox";
+    cb.id = "tel-ch-" + m[1];
+    cb.value = m[1];
+    cb.dataset.unit = m[2];
+    cb.checked = ["torque", "torque_ref", "i_q"].includes(m[1]);
+    lab.append(cb, " " + m[1] + " [" + m[2] + "]");
+    box.append(lab);
+  }
+}
+
+function makeTelPlot(channels, units) {
+  if (tel.plot) tel.plot.destroy();
+  const series = [{ label: "drive time [s]" }];
+  channels.forEach((c, k) => series.push({ label: c + " [" + units[k] + "]", stroke: COLORS[k % COLORS.length], width: 1 }));
+  tel.plot = new uPlot({
+    width: $("tel").clientWidth - 30,
+    height: 300,
+    scales: { x: { time: false } },
+    series,
+    axes: [{ label: "drive time [s]" }, {}],
+  }, [[], ...channels.map(() => [])], $("tel-plot"));
+}
+
+$("tel-start").onclick = async () => {
+  const boxes = [...document.querySelectorAll("#tel-channels input:checked")];
+  const channels = boxes.map((b) => b.value);
+  const units = boxes.map((b) => b.dataset.unit);
+  const rate = $("tel-rate").value;
+  const r = await fetch("/api/tel/start?rate=" + encodeURIComponent(rate) + "&channels=" + channels.join(","), { method: "POST" }).then((x) => x.json());
+  logConsole("tel start " + rate + " " + channels.join(","), r);
+  if (!r.ok) {
+    $("tel-msg").textContent = errText(r);
+    return;
+  }
+  $("tel-msg").textContent = "streaming";
+  tel.channels = channels;
+  tel.t = [];
+  tel.v = channels.map(() => []);
+  tel.next = 0;
+  tel.total = 0;
+  makeTelPlot(channels, units);
+};
+
+$("tel-stop").onclick = async () => {
+  const r = await fetch("/api/tel/stop", { method: "POST" }).then((x) => x.json());
+  logConsole("tel stop", r);
+  $("tel-msg").textContent = r.ok ? "stopped" : errText(r);
+};
+
+$("tel-pause").onclick = () => {
+  tel.paused = !tel.paused;
+  $("tel-pause").textContent = tel.paused ? "resume" : "pause";
+};
+
+function download(name, text) {
+  const a = document.createElement("a");
+  a.href = URL.createObjectURL(new Blob([text], { type: "text/csv" }));
+  a.download = name;
+  a.click();
+}
+
+// The samples in the rolling window as CSV.
+function telCsv() {
+  let s = "time_s," + tel.channels.join(",") + "\n";
+  tel.t.forEach((t, i) => { s += t + "," + tel.v.map((col) => col[i]).join(",") + "\n"; });
+  return s;
+}
+$("tel-export").onclick = () => download("telemetry.csv", telCsv());
+
+async function pollTel() {
+  try {
+    const d = await fetch("/api/tel?since=" + tel.next).then((x) => x.json());
+    if (d.channels.join(",") === tel.channels.join(",") && d.t.length) {
+      tel.next = d.next;
+      tel.total += d.t.length;
+      for (let i = 0; i < d.t.length; i++) {
+        tel.t.push(d.t[i]);
+        d.v[i].forEach((x, k) => tel.v[k].push(x));
+      }
+      const win = Number($("tel-window").value) || 0.5;
+      const last = tel.t[tel.t.length - 1];
+      let cut = 0;
+      while (cut < tel.t.length && tel.t[cut] < last - win) cut++;
+      if (cut) {
+        tel.t.splice(0, cut);
+        tel.v.forEach((col) => col.splice(0, cut));
+      }
+      if (tel.plot && !tel.paused) tel.plot.setData([tel.t, ...tel.v]);
+    }
+    $("tel-points").textContent = tel.total;
+    $("tel-lost").textContent = d.lost;
+    $("tel-bad").textContent = d.bad;
+  } catch (e) { /* the next poll retries */ }
+  setTimeout(pollTel, 100);
+}
+
+// ---- status and faults -----------------------------------------------------
+
+let busy = 0; // experiments in flight: the status poll waits for them
+
+async function pollStatus() {
+  if (!busy) {
+    const r = await cmd("status", true);
+    if (r.lines) $("status").textContent = r.lines.join("\n");
+    const f = await cmd("fault", true);
+    if (f.lines) $("faults").textContent = f.lines.join("\n") + (f.ok ? "" : "\n" + errText(f));
+    const h = await cmd("fault history", true);
+    if (h.lines) $("fault-history").textContent = h.lines.join("\n");
+  }
+  setTimeout(pollStatus, 1000);
+}
+
+$("mode-set").onclick = () => cmd("mode " + $("mode").value);
+$("enable").onclick = () => cmd("enable");
+$("disable").onclick = () => cmd("disable");
+$("fault-clear").onclick = () => cmd("fault clear");
+
+// ---- configuration ---------------------------------------------------------
+
+let schema = [];
+
+// The page's own check: a number, whole for integers, within the range.
+function checkValue(p, text) {
+  if (text.trim() === "" || !isFinite(Number(text))) return "not a number";
+  const x = Number(text);
+  if (p.integer && !Number.isInteger(x)) return "must be a whole number";
+  if (x < p.min || x > p.max) return "out of range [" + p.min + ", " + p.max + "] " + p.unit;
+  return null;
+}
+
+async function loadConfig() {
+  const s = await cmd("config schema", true);
+  if (!s.ok) { $("cfg-msg").textContent = errText(s); return; }
+  schema = JSON.parse(s.lines[0]);
+  const body = $("cfg-table").querySelector("tbody");
+  body.textContent = "";
+  for (const p of schema) {
+    const tr = document.createElement("tr");
+    const inp = document.createElement("input");
+    inp.id = "cfg-" + p.name;
+    const btn = document.createElement("button");
+    btn.id = "cfg-set-" + p.name;
+    btn.textContent = "set";
+    const msg = document.createElement("span");
+    msg.id = "cfg-msg-" + p.name;
+    msg.className = "small";
+    btn.onclick = async () => {
+      const why = checkValue(p, inp.value);
+      if (why) {
+        msg.textContent = "refused: " + why;
+        msg.className = "small refused";
+        return;
+      }
+      const r = await cmd("config set " + p.name + " " + inp.value.trim());
+      msg.textContent = r.ok ? "set" : errText(r);
+      msg.className = "small " + (r.ok ? "accepted" : "refused");
+    };
+    const cells = [p.name, inp, p.unit, (p.integer ? "integer " : "") + p.min + " .. " + p.max + (p.gates_off ? ", gates off" : ""), btn, p.description];
+    for (const c of cells) {
+      const td = document.createElement("td");
+      td.append(c);
+      tr.append(td);
+    }
+    tr.children[4].append(" ", msg);
+    body.append(tr);
+  }
+  await loadValues();
+}
+
+async function loadValues() {
+  for (const p of schema) {
+    const r = await cmd("config get " + p.name, true);
+    const m = r.ok && r.lines[0] && r.lines[0].match(/= (\S+)/);
+    if (m) $("cfg-" + p.name).value = m[1];
+  }
+}
+
+$("cfg-reload").onclick = loadValues;
+$("cfg-save").onclick = async () => {
+  const r = await cmd("config save");
+  $("cfg-msg").textContent = r.ok ? "saved" : errText(r);
+};
+$("cfg-reset").onclick = async () => {
+  const r = await cmd("config reset");
+  $("cfg-msg").textContent = r.ok ? "defaults restored" : errText(r);
+  await loadValues();
+};
+
+// ---- experiments -----------------------------------------------------------
+
+function plotInto(el, xLabel, series, data, opts) {
+  el.textContent = "";
+  const s = [{ label: xLabel }];
+  series.forEach((name, k) => s.push({ label: name, stroke: COLORS[k % COLORS.length], width: 1.5 }));
+  return new uPlot(Object.assign({
+    width: $("experiments").clientWidth - 30,
+    height: 220,
+    scales: { x: { time: false } },
+    series: s,
+    axes: [{ label: xLabel }, {}],
+  }, opts || {}), data, el);
+}
+
+// `capture dump`'s CSV: t_ms, i_d, i_q, torque, torque_ref, sw, adc.
+function parseDump(r) {
+  const cols = [[], [], [], [], []];
+  for (const l of r.lines.slice(1)) {
+    const v = l.split(",").map(Number);
+    for (let k = 0; k < 5; k++) cols[k].push(v[k]);
+  }
+  return cols;
+}
+
+async function waitCapture() {
+  for (let k = 0; k < 600; k++) {
+    const st = await cmd("capture status", true);
+    if (!st.ok) return st;
+    if (field(st, "capture") === "done") return cmd("capture dump", true);
+    await new Promise((res) => setTimeout(res, 100));
+  }
+  return { error: "capture not complete after 60 s" };
+}
+
+function plotCapture(el, r) {
+  const c = parseDump(r);
+  plotInto(el, "time from trigger [ms]", ["torque [Nm]", "torque_ref [Nm]", "i_d [A]", "i_q [A]"], [c[0], c[3], c[4], c[1], c[2]]);
+  el.dataset.points = c[0].length;
+}
+
+$("step-run").onclick = async () => {
+  busy++;
+  try {
+    const out = $("step-result");
+    out.textContent = "running";
+    const arm = await cmd("capture arm step 64");
+    if (!arm.ok) { out.textContent = errText(arm); return; }
+    const r = await cmd("step " + $("step-nm").value.trim());
+    if (!r.ok) { out.textContent = errText(r); return; }
+    out.textContent = r.lines.join(", ");
+    const d = await waitCapture();
+    if (!d.ok) { out.textContent += " " + errText(d); return; }
+    plotCapture($("step-plot"), d);
+  } finally { busy--; }
+};
+
+$("capture-run").onclick = async () => {
+  busy++;
+  try {
+    const out = $("capture-result");
+    const trig = $("capture-trigger").value;
+    const arm = await cmd("capture arm " + trig + " 64");
+    if (!arm.ok) { out.textContent = errText(arm); return; }
+    if (trig === "manual") await cmd("capture trigger");
+    out.textContent = "waiting for the trigger";
+    const d = await waitCapture();
+    if (!d.ok) { out.textContent = errText(d); return; }
+    out.textContent = (d.lines.length - 1) + " samples";
+    plotCapture($("capture-plot"), d);
+  } finally { busy--; }
+};
+
+$("sweep-run").onclick = async () => {
+  busy++;
+  try {
+    const out = $("sweep-result");
+    out.textContent = "running";
+    const line = ["sweep", $("sweep-f0").value, $("sweep-f1").value, $("sweep-amp").value, $("sweep-points").value].join(" ");
+    const r = await cmd(line);
+    if (!r.ok) { out.textContent = errText(r); return; }
+    const f = [], g = [], ph = [];
+    for (const l of r.lines) {
+      const v = l.trim().split(/\s+/).map(Number);
+      if (v.length === 3 && v.every(isFinite)) { f.push(v[0]); g.push(v[1]); ph.push(v[2]); }
+    }
+    out.textContent = r.lines.filter((l) => l.startsWith("bandwidth")).join("");
+    const log = { scales: { x: { time: false, distr: 3 } } };
+    plotInto($("sweep-gain"), "frequency [Hz]", ["gain [dB]"], [f, g], log);
+    plotInto($("sweep-phase"), "frequency [Hz]", ["phase [deg]"], [f, ph], log);
+  } finally { busy--; }
+};
+
+// ---- start -----------------------------------------------------------------
+
+(async () => {
+  await loadChannels();
+  await loadConfig();
+  pollTel();
+  pollStatus();
+  document.body.dataset.ready = "1";
+})();

@@ -1,0 +1,220 @@
+//! `drivectl ui`: a local web server with one page (live telemetry plots,
+//! status and faults, console, configuration editor, experiments) for the
+//! firmware in QEMU or on a board.
+//!
+//! The page and its scripts are compiled into the binary; uPlot (MIT) is
+//! vendored under `ui/vendor/uplot` with its licence. The server listens on
+//! a loopback address unless `--allow-remote` is given: the page drives
+//! the motor.
+//!
+//! HTTP API (JSON):
+//! - `POST /api/cmd` (body: one command line): the reply, `{"lines": [...],
+//!   "ok": bool, "code": "...", "message": "..."}`;
+//! - `POST /api/tel/start?rate=<hz>&channels=<a,b>` and `POST /api/tel/stop`:
+//!   the stream (the reply as for `/api/cmd`);
+//! - `GET /api/tel?since=<k>`: the samples from index `k` on, `{"channels",
+//!   "rate_hz", "next", "lost", "bad", "t": [...], "v": [[...], ...]}`.
+use crate::console::Target;
+use anyhow::{bail, Context as _, Result};
+use drivectl::link::{Final, Reply, Session};
+use drivectl::tel::{Frames, Stream};
+use serde_json::json;
+use std::net::SocketAddr;
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
+
+mod server;
+
+#[derive(clap::Args)]
+pub struct UiArgs {
+    #[command(flatten)]
+    pub target: Target,
+    /// Address to serve on. Loopback only unless --allow-remote.
+    #[arg(long, default_value = "127.0.0.1:8750")]
+    pub listen: SocketAddr,
+    /// Serve on a non-loopback address (anyone who reaches it can run
+    /// the drive).
+    #[arg(long)]
+    pub allow_remote: bool,
+    /// Seconds to wait for boot.
+    #[arg(long, default_value_t = 20.0)]
+    pub timeout_s: f64,
+}
+
+/// Samples kept for the page (the rolling window is the page's).
+const TEL_KEEP: usize = 200_000;
+
+/// The stream's samples as the page reads them.
+#[derive(Default)]
+struct TelBuf {
+    stream: Option<Stream>,
+    /// Index of `t[0]` since the start of the stream.
+    first: usize,
+    t: Vec<f64>,
+    v: Vec<Vec<f32>>,
+}
+
+impl TelBuf {
+    fn push(&mut self, t: f64, v: &[f32]) {
+        self.t.push(t);
+        self.v.push(v.to_vec());
+        if self.t.len() > TEL_KEEP {
+            let cut = self.t.len() - TEL_KEEP / 2;
+            self.t.drain(..cut);
+            self.v.drain(..cut);
+            self.first += cut;
+        }
+    }
+}
+
+/// What the request handlers share.
+pub(crate) struct Shared {
+    session: Mutex<Session>,
+    tel: Mutex<TelBuf>,
+    bad: Mutex<u64>,
+}
+
+/// Checks the address: loopback, or remote with the flag.
+pub fn check_listen(addr: &SocketAddr, allow_remote: bool) -> Result<()> {
+    if !addr.ip().is_loopback() && !allow_remote {
+        bail!(
+            "refusing to listen on {addr}: not a loopback address, and the page runs the \
+             drive (gates, torque, configuration). Pass --allow-remote to serve other machines."
+        );
+    }
+    Ok(())
+}
+
+fn reply_json(r: &Reply) -> serde_json::Value {
+    match &r.fin {
+        Final::Ok => json!({"lines": r.lines, "ok": true}),
+        Final::Err { code, message } => {
+            json!({"lines": r.lines, "ok": false, "code": code, "message": message})
+        }
+    }
+}
+
+impl Shared {
+    /// One console command; long ones (`sweep`) get a long timeout.
+    fn command(&self, line: &str) -> Result<serde_json::Value> {
+        let line = line.trim();
+        if line.is_empty() || line.contains(['\r', '\n']) {
+            bail!("a command is one non-empty line");
+        }
+        let mut s = self.session.lock().expect("session lock");
+        let r = s.command(line, Duration::from_secs(600))?;
+        Ok(reply_json(&r))
+    }
+
+    fn tel_start(&self, rate: u32, channels: &[String]) -> Result<serde_json::Value> {
+        let mut s = self.session.lock().expect("session lock");
+        let line = format!("tel start {rate} {}", channels.join(","));
+        let r = s.command(&line, Duration::from_secs(20))?;
+        if r.is_ok() {
+            // The reply's stream number; the frames that follow are its.
+            let mut st = Stream::start_from_reply(&r, rate, channels)?;
+            st.received = 0;
+            let mut tel = self.tel.lock().expect("tel lock");
+            *tel = TelBuf {
+                stream: Some(st),
+                ..TelBuf::default()
+            };
+        }
+        Ok(reply_json(&r))
+    }
+
+    fn tel_since(&self, since: usize) -> serde_json::Value {
+        let tel = self.tel.lock().expect("tel lock");
+        let from = since.max(tel.first) - tel.first;
+        let from = from.min(tel.t.len());
+        let (channels, rate, lost) = match &tel.stream {
+            Some(s) => (s.channels.clone(), s.rate_hz, s.lost),
+            None => (Vec::new(), 0, 0),
+        };
+        json!({
+            "channels": channels,
+            "rate_hz": rate,
+            "next": tel.first + tel.t.len(),
+            "lost": lost,
+            "bad": *self.bad.lock().expect("bad lock"),
+            "t": &tel.t[from..],
+            "v": &tel.v[from..],
+        })
+    }
+}
+
+/// Moves the link's frames into the page's buffer.
+fn pump_frames(shared: Arc<Shared>, frames: Frames) {
+    loop {
+        let Some(f) = frames.next(Duration::from_millis(100)) else {
+            *shared.bad.lock().expect("bad lock") = frames.bad();
+            continue;
+        };
+        let mut tel = shared.tel.lock().expect("tel lock");
+        for f in std::iter::once(f).chain(frames.drain()) {
+            let Some(st) = tel.stream.as_mut() else {
+                continue;
+            };
+            if let Some((t, v)) = st.accept(&f) {
+                let v = v.to_vec();
+                tel.push(t, &v);
+            }
+        }
+    }
+}
+
+pub fn run(a: UiArgs) -> Result<()> {
+    check_listen(&a.listen, a.allow_remote)?;
+    let t = crate::console::timeout(a.timeout_s)?;
+    let mut s = match &a.target.port {
+        Some(p) => Session::open_serial(p, a.target.baud, t)?,
+        None => Session::spawn_qemu(&a.target.qemu(), t)?,
+    };
+    // The frames go to their own thread; the session keeps the text.
+    let frames = std::mem::replace(&mut s.frames, Frames::new().0);
+    let shared = Arc::new(Shared {
+        session: Mutex::new(s),
+        tel: Mutex::new(TelBuf::default()),
+        bad: Mutex::new(0),
+    });
+    let http = tiny_http::Server::http(a.listen)
+        .map_err(|e| anyhow::anyhow!("cannot listen on {}: {e}", a.listen))?;
+    let addr = http
+        .server_addr()
+        .to_ip()
+        .context("server address is not an IP socket")?;
+    let scope = if addr.ip().is_loopback() {
+        "loopback only: other machines cannot reach it"
+    } else {
+        "REMOTE ACCESS: anyone who reaches this address can run the drive"
+    };
+    let target = match &a.target.port {
+        Some(p) => format!("the board on {p}"),
+        None => "the firmware in QEMU".to_string(),
+    };
+    println!("drivectl ui: serving {target} on http://{addr}/ ({scope}); Ctrl-C ends");
+    {
+        let shared = shared.clone();
+        std::thread::spawn(move || pump_frames(shared, frames));
+    }
+    server::serve(http, shared)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::check_listen;
+
+    #[test]
+    fn only_loopback_addresses_unless_asked() {
+        for ok in ["127.0.0.1:8750", "127.0.0.2:1", "[::1]:8750"] {
+            assert!(check_listen(&ok.parse().unwrap(), false).is_ok(), "{ok}");
+        }
+        for remote in ["0.0.0.0:8750", "192.168.1.20:8750", "[::]:8750"] {
+            let a = remote.parse().unwrap();
+            let e = check_listen(&a, false).unwrap_err().to_string();
+            assert!(e.contains("not a loopback address"), "{e}");
+            assert!(e.contains("--allow-remote"), "{e}");
+            assert!(check_listen(&a, true).is_ok(), "{remote}");
+        }
+    }
+}

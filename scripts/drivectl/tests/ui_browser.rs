@@ -1,0 +1,338 @@
+//! `drivectl ui` in a real browser: Debian's Chromium (headless) through
+//! chromedriver's WebDriver protocol (W3C, plain HTTP/JSON), against the
+//! release firmware in QEMU. The page loads; the live plot's point count
+//! grows while telemetry streams; a value set in the configuration editor
+//! reads back with `config get` typed into the page's console; an
+//! out-of-range value and a non-number are refused in the page and the
+//! drive keeps its value; a `step` run from the page plots its record; a
+//! console command gets its reply. Saves a screenshot to
+//! `target/ui/drive-page.png`.
+//!
+//! Needs `chromium`, `chromium-driver` (scripts/setup) and the release
+//! firmware; `scripts/test` runs it (`--include-ignored`).
+use serde_json::{json, Value};
+use std::io::{BufRead, BufReader, Read, Write};
+use std::net::TcpStream;
+use std::os::unix::process::CommandExt;
+use std::path::PathBuf;
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// Kills a process group when dropped (the test's children and theirs:
+/// QEMU under `drivectl ui`, Chromium under chromedriver).
+struct Group(Child);
+
+impl Drop for Group {
+    fn drop(&mut self) {
+        // SAFETY: kill(2) on the group this test created.
+        unsafe { libc::kill(-(self.0.id() as i32), libc::SIGKILL) };
+        let _ = self.0.wait();
+    }
+}
+
+fn spawn_group(c: &mut Command) -> Group {
+    Group(
+        c.process_group(0)
+            .spawn()
+            .unwrap_or_else(|e| panic!("{c:?}: {e} (run scripts/setup)")),
+    )
+}
+
+fn free_port() -> u16 {
+    let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    l.local_addr().unwrap().port()
+}
+
+/// One HTTP/1.1 request to chromedriver; the JSON body of the answer.
+fn http(port: u16, method: &str, path: &str, body: Option<&Value>) -> std::io::Result<Value> {
+    let mut s = TcpStream::connect(("127.0.0.1", port))?;
+    s.set_read_timeout(Some(Duration::from_secs(120)))?;
+    let body = body.map(Value::to_string).unwrap_or_default();
+    write!(
+        s,
+        "{method} {path} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nContent-Type: application/json\r\n\
+         Content-Length: {}\r\nConnection: close\r\n\r\n{body}",
+        body.len()
+    )?;
+    // chromedriver keeps the connection open: read by Content-Length.
+    let mut r = BufReader::new(s);
+    let mut len = None;
+    loop {
+        let mut line = String::new();
+        if r.read_line(&mut line)? == 0 || line == "\r\n" {
+            break;
+        }
+        let l = line.to_ascii_lowercase();
+        if let Some(v) = l.strip_prefix("content-length:") {
+            len = v.trim().parse::<usize>().ok();
+        }
+    }
+    let mut body = vec![0u8; len.unwrap_or(0)];
+    r.read_exact(&mut body)?;
+    let payload = String::from_utf8_lossy(&body);
+    Ok(serde_json::from_str(&payload).unwrap_or(Value::Null))
+}
+
+struct Browser {
+    port: u16,
+    session: String,
+}
+
+impl Browser {
+    fn call(&self, method: &str, path: &str, body: Option<Value>) -> Value {
+        let p = format!("/session/{}{path}", self.session);
+        let v = http(self.port, method, &p, body.as_ref()).expect("chromedriver answers");
+        if v["value"].get("error").is_some() {
+            panic!("{method} {path}: {}", v["value"]);
+        }
+        v["value"].clone()
+    }
+    fn js(&self, script: &str) -> Value {
+        self.call(
+            "POST",
+            "/execute/sync",
+            Some(json!({"script": script, "args": []})),
+        )
+    }
+    fn el(&self, css: &str) -> String {
+        let v = self.call(
+            "POST",
+            "/element",
+            Some(json!({"using": "css selector", "value": css})),
+        );
+        v.as_object()
+            .and_then(|o| o.values().next())
+            .and_then(Value::as_str)
+            .unwrap_or_else(|| panic!("no element {css}"))
+            .to_string()
+    }
+    fn click(&self, css: &str) {
+        let e = self.el(css);
+        self.call("POST", &format!("/element/{e}/click"), Some(json!({})));
+    }
+    fn type_into(&self, css: &str, text: &str) {
+        let e = self.el(css);
+        self.call("POST", &format!("/element/{e}/clear"), Some(json!({})));
+        self.call(
+            "POST",
+            &format!("/element/{e}/value"),
+            Some(json!({"text": text})),
+        );
+    }
+    fn text(&self, css: &str) -> String {
+        let e = self.el(css);
+        self.call("GET", &format!("/element/{e}/text"), None)
+            .as_str()
+            .unwrap_or("")
+            .to_string()
+    }
+    /// Waits until `f` holds (at most `secs` seconds).
+    fn wait_for(&self, what: &str, secs: u64, mut f: impl FnMut(&Self) -> bool) {
+        let end = Instant::now() + Duration::from_secs(secs);
+        while !f(self) {
+            assert!(Instant::now() < end, "timeout waiting for {what}");
+            std::thread::sleep(Duration::from_millis(200));
+        }
+    }
+    /// Types `line` into the page's console and waits for its final line.
+    fn console(&self, line: &str) -> String {
+        let before = self.js("return document.getElementById('console-log').textContent.length");
+        let before = before.as_u64().unwrap_or(0) as usize;
+        self.type_into("#console-input", &format!("{line}\n"));
+        let mut out = String::new();
+        self.wait_for(&format!("reply to {line}"), 60, |b| {
+            let log = b
+                .js("return document.getElementById('console-log').textContent")
+                .as_str()
+                .unwrap_or("")
+                .to_string();
+            out = log.get(before..).unwrap_or("").to_string();
+            out.starts_with(&format!("> {line}\n"))
+                && (out.contains("\nOK\n") || out.contains("\nERR "))
+        });
+        out
+    }
+}
+
+fn decode_base64(s: &str) -> Vec<u8> {
+    let val = |c: u8| match c {
+        b'A'..=b'Z' => c - b'A',
+        b'a'..=b'z' => c - b'a' + 26,
+        b'0'..=b'9' => c - b'0' + 52,
+        b'+' => 62,
+        _ => 63,
+    };
+    let bytes: Vec<u8> = s.bytes().filter(|&c| c != b'=' && c != b'\n').collect();
+    let mut out = Vec::with_capacity(bytes.len() * 3 / 4);
+    for ch in bytes.chunks(4) {
+        let v: Vec<u32> = ch.iter().map(|&c| u32::from(val(c))).collect();
+        let w = v.iter().fold(0u32, |a, &x| a << 6 | x) << (6 * (4 - v.len()));
+        out.extend_from_slice(&w.to_be_bytes()[1..v.len()]);
+    }
+    out
+}
+
+#[test]
+#[ignore = "needs chromium and chromium-driver (scripts/setup); scripts/test runs it"]
+fn the_page_drives_the_firmware_in_a_real_browser() {
+    // Canonical: Chromium's profile path must not hold `..` (chromedriver
+    // then cannot find the DevTools port file).
+    let target = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../target")
+        .canonicalize()
+        .expect("target directory");
+    let elf = drivectl::link::default_elf();
+    assert!(elf.is_file(), "build the firmware first (cargo fw-build)");
+    let flash = target.join("run/tests/ui-browser.img");
+    let _ = std::fs::remove_file(&flash);
+    std::fs::create_dir_all(flash.parent().unwrap()).unwrap();
+
+    // The page's server against QEMU, on a free loopback port.
+    let mut ui = spawn_group(
+        Command::new(env!("CARGO_BIN_EXE_drivectl"))
+            .args(["ui", "--listen", "127.0.0.1:0", "--flash"])
+            .arg(&flash)
+            .arg("--elf")
+            .arg(&elf)
+            .stdout(Stdio::piped())
+            .stdin(Stdio::null()),
+    );
+    let mut first = String::new();
+    // Kept open to the end: drivectl dies of SIGPIPE on a closed stdout.
+    let mut ui_out = BufReader::new(ui.0.stdout.take().unwrap());
+    ui_out.read_line(&mut first).unwrap();
+    assert!(first.contains("loopback only"), "{first}");
+    let url = first
+        .split_whitespace()
+        .find(|w| w.starts_with("http://127.0.0.1:"))
+        .unwrap_or_else(|| panic!("no address in {first:?}"))
+        .to_string();
+
+    // Chromium through chromedriver, headless, a fresh profile.
+    let port = free_port();
+    let _driver = spawn_group(
+        Command::new("chromedriver")
+            .arg(format!("--port={port}"))
+            .stdout(Stdio::null())
+            .stderr(Stdio::null()),
+    );
+    let t0 = Instant::now();
+    while http(port, "GET", "/status", None).map_or(true, |v| v["value"]["ready"] != true) {
+        assert!(
+            t0.elapsed() < Duration::from_secs(20),
+            "chromedriver not ready"
+        );
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    let profile = target.join(format!("ui/chromium-profile-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&profile);
+    std::fs::create_dir_all(&profile).unwrap();
+    // Debian's /usr/bin/chromium is a shell wrapper; the browser itself:
+    let chromium = ["/usr/lib/chromium/chromium", "/usr/bin/chromium"]
+        .into_iter()
+        .find(|p| std::path::Path::new(p).is_file())
+        .expect("chromium installed (scripts/setup)");
+    let caps = json!({"capabilities": {"alwaysMatch": {
+        "browserName": "chrome",
+        "goog:chromeOptions": {
+            "binary": chromium,
+            "args": [
+                "--headless=new", "--no-sandbox", "--disable-gpu",
+                "--disable-background-networking", "--disable-component-update",
+                "--disable-sync", "--no-first-run", "--window-size=1500,1900",
+                format!("--user-data-dir={}", profile.display()),
+            ],
+        },
+    }}});
+    let v = http(port, "POST", "/session", Some(&caps)).expect("new session");
+    let session = v["value"]["sessionId"]
+        .as_str()
+        .unwrap_or_else(|| panic!("no session: {v}"))
+        .to_string();
+    let b = Browser { port, session };
+
+    // The page loads: channels from `tel list`, the editor from the schema.
+    b.call("POST", "/url", Some(json!({"url": url})));
+    b.wait_for("the page to load", 60, |b| {
+        b.js("return document.body.dataset.ready") == json!("1")
+    });
+    assert_eq!(b.js("return typeof uPlot"), json!("function"));
+    assert!(b.text("#cfg-table").contains("torque_limit"));
+
+    // Live plot: the point count grows while the stream runs.
+    b.click("#tel-start");
+    let points = |b: &Browser| {
+        b.js("return tel.plot ? tel.plot.data[0].length : 0")
+            .as_u64()
+            .unwrap_or(0)
+    };
+    b.wait_for("telemetry points", 60, |b| points(b) > 20);
+    let n1: u64 = b.text("#tel-points").parse().unwrap();
+    b.wait_for("more telemetry points", 60, |b| {
+        b.text("#tel-points").parse::<u64>().unwrap_or(0) > n1 + 20
+    });
+    assert_eq!(b.text("#tel-lost"), "0");
+
+    // A parameter set in the editor reads back through the console.
+    b.type_into("#cfg-torque_limit", "0.8");
+    b.click("#cfg-set-torque_limit");
+    b.wait_for("the set to be acknowledged", 30, |b| {
+        b.text("#cfg-msg-torque_limit") == "set"
+    });
+    let r = b.console("config get torque_limit");
+    assert!(r.contains("torque_limit = 0.8 Nm"), "{r}");
+
+    // Out of range (the schema says 0.01..5 Nm) and not a number: refused
+    // in the page, nothing sent,
+    // the drive keeps 0.8.
+    for bad in ["6", "abc"] {
+        b.type_into("#cfg-torque_limit", bad);
+        b.click("#cfg-set-torque_limit");
+        let m = b.text("#cfg-msg-torque_limit");
+        assert!(m.starts_with("refused:"), "{bad}: {m}");
+        let log = b.text("#console-log");
+        assert!(
+            !log.contains(&format!("config set torque_limit {bad}")),
+            "{log}"
+        );
+    }
+    let r = b.console("config get torque_limit");
+    assert!(r.contains("torque_limit = 0.8 Nm"), "{r}");
+
+    // A step from the page: FOC, gates on, then the record's plot.
+    b.js("document.getElementById('mode').value = 'foc'");
+    b.click("#mode-set");
+    b.click("#enable");
+    b.wait_for("gates on", 30, |b| b.text("#status").contains("gates: on"));
+    b.type_into("#step-nm", "0.4");
+    b.click("#step-run");
+    b.wait_for("the step's plot", 120, |b| {
+        b.js("return Number(document.getElementById('step-plot').dataset.points || 0)")
+            .as_u64()
+            .unwrap_or(0)
+            > 100
+    });
+    assert!(
+        b.text("#step-result").contains("settling"),
+        "{}",
+        b.text("#step-result")
+    );
+
+    // A console command typed in the page gets its reply.
+    let r = b.console("version");
+    assert!(r.contains("firmware") && r.ends_with("OK\n"), "{r}");
+
+    // The screenshot the README shows.
+    b.wait_for("more points after the step", 60, |b| points(b) > 100);
+    b.js("window.scrollTo(0, 0)");
+    let png = b.call("GET", "/screenshot", None);
+    let png = decode_base64(png.as_str().expect("base64 PNG"));
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let shot = target.join("ui/drive-page.png");
+    std::fs::write(&shot, &png).unwrap();
+    eprintln!("screenshot: {} ({} bytes)", shot.display(), png.len());
+    b.call("DELETE", "", None);
+    let _ = std::fs::remove_dir_all(&profile);
+    drop(ui);
+    drop(ui_out);
+}
