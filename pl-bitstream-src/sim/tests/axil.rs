@@ -3,22 +3,8 @@
 //! rejection, byte strobes), unmapped addresses, and the handshake cases:
 //! simultaneous AW/W, either one first, back to back, stalled responses.
 use regmap::{self, Access, Register, BLOCKS};
+use rtl_sim::mpdtc_vectors::Rng;
 use rtl_sim::pl_top::{axi_addr, PlTopSim, OKAY, SLVERR};
-
-/// SplitMix64: small seedable generator (no dependency).
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn u32(&mut self) -> u32 {
-        self.next() as u32
-    }
-}
 
 /// Registers whose value moves on its own (not comparable to a constant).
 fn is_live(r: &Register) -> bool {
@@ -54,8 +40,8 @@ fn rw_registers_read_back_as_the_table_says() {
             // Corner values, then random ones of all magnitudes.
             let mut values = vec![0, 1, r.mask(), r.mask().wrapping_add(1), u32::MAX];
             for _ in 0..12 {
-                let shift = rng.next() % 32;
-                values.push(rng.u32() >> shift);
+                let shift = rng.next_u64() % 32;
+                values.push((rng.next_u64() as u32) >> shift);
             }
             for v in values {
                 // Keep the watchdog far away: it would latch a fault and
@@ -298,19 +284,19 @@ fn random_handshakes_against_a_scoreboard() {
     };
     let mut model: Vec<u32> = regs.iter().map(|r| r.reset).collect();
     for _ in 0..400 {
-        let k = (rng.next() % regs.len() as u64) as usize;
-        let v = rng.u32() >> (rng.next() % 32);
-        if rng.next() % 2 == 0 {
-            let (d_aw, d_w) = ((rng.next() % 4) as u32, (rng.next() % 4) as u32);
+        let k = (rng.next_u64() % regs.len() as u64) as usize;
+        let v = (rng.next_u64() as u32) >> (rng.next_u64() % 32);
+        if rng.next_u64() % 2 == 0 {
+            let (d_aw, d_w) = ((rng.next_u64() % 4) as u32, (rng.next_u64() % 4) as u32);
             assert_eq!(sim.write_skewed(addr(regs[k]), v, 0xF, d_aw, d_w), OKAY);
             model[k] = regs[k].apply_write(model[k], v).unwrap();
         } else {
             assert_eq!(sim.read_ok(addr(regs[k])), model[k], "{}", regs[k].name);
         }
         // Random idle gaps with random READYs (no transfer in flight).
-        for _ in 0..rng.next() % 3 {
-            sim.inp.bready = (rng.next() % 2) as u8;
-            sim.inp.rready = (rng.next() % 2) as u8;
+        for _ in 0..rng.next_u64() % 3 {
+            sim.inp.bready = (rng.next_u64() % 2) as u8;
+            sim.inp.rready = (rng.next_u64() % 2) as u8;
             sim.step();
         }
     }

@@ -2,22 +2,8 @@
 //! bit-exact on every output of every cycle, plus directed cases checked
 //! against hand-computed expectations (independent of the model).
 use rtl_sim::gate_driver::GateDriverSim;
+use rtl_sim::mpdtc_vectors::Rng;
 use simpl::gates::{DeadTime, GateDriver, GateInputs, GateOutputs};
-
-/// SplitMix64: a small, seedable generator (no dependency).
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn chance(&mut self, one_in: u64) -> bool {
-        self.next() % one_in == 0
-    }
-}
 
 fn inp(rst: bool, en: bool, fault: bool, state: u8, dt: u16) -> GateInputs {
     GateInputs {
@@ -41,20 +27,20 @@ fn random_run(seed: u64, cycles: usize) -> usize {
     for cycle in 0..cycles {
         // Inputs change rarely enough that dead times complete, often
         // enough to hit every interleaving.
-        cur.rst = rng.chance(2000);
-        cur.fault = rng.chance(300);
-        if rng.chance(500) {
+        cur.rst = rng.next_u64() % 2000 == 0;
+        cur.fault = rng.next_u64() % 300 == 0;
+        if rng.next_u64() % 500 == 0 {
             cur.en = !cur.en;
         }
-        if rng.chance(6) {
-            cur.state = (rng.next() & 7) as u8;
+        if rng.next_u64() % 6 == 0 {
+            cur.state = (rng.next_u64() & 7) as u8;
         }
-        if rng.chance(400) {
-            let dt = match rng.next() % 8 {
+        if rng.next_u64() % 400 == 0 {
+            let dt = match rng.next_u64() % 8 {
                 0 => 0,
                 1 => 1023,
-                2 => (rng.next() % 1024) as u16,
-                _ => (rng.next() % 12) as u16,
+                2 => (rng.next_u64() % 1024) as u16,
+                _ => (rng.next_u64() % 12) as u16,
             };
             cur.dead_time = DeadTime::new(dt).unwrap();
         }

@@ -5,9 +5,9 @@
 //! The metrics assume the plant starts at rest at the step's start value.
 //! Right after `enable` (or a mode change) the current of the previous run
 //! may still be decaying through the diodes: 0.37 N m one FOC period after
-//! leaving a 0.4 N m MPDTC run, gone after three (`simpl`'s test `tests/servo.rs`). A
-//! step started then is scored from the wrong start (its first sample can
-//! already be in the band: a settling time of 0). So an armed step waits
+//! leaving a 0.4 N m MPDTC run, gone after three (`simpl`'s test
+//! `tests/servo.rs`). A step started then is scored from the wrong start
+//! (its first sample can already be in the band: a settling time of 0). So an armed step waits
 //! until the measured torque is within the settling band of its start
 //! value, at most one window (a steady offset larger than the band is not
 //! a transient), and only then applies the new reference.
