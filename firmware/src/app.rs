@@ -1,5 +1,5 @@
 //! Boot sequence, interrupt dispatch and the console loop.
-use crate::ps::{gic, timer, uart::Uart};
+use crate::ps::{gic, mmu, timer, uart::Uart};
 use crate::{control, log, pl, rx::Ring};
 use core::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 use drive::console::{self, Action, Context, LineEditor, Status, PROMPT};
@@ -37,6 +37,11 @@ fn set_vbar() {
 fn main() -> ! {
     pl::gates_safe();
     set_vbar();
+    mmu::enable();
+    // Asynchronous (imprecise) aborts, e.g. a bus error on a GP0 store,
+    // are taken, not left pending: the abort handler turns the gates off.
+    // SAFETY: the vector table is in place (VBAR above).
+    unsafe { core::arch::asm!("cpsie a", options(nomem, nostack)) };
     // The divisors are a compile-time fact of the board: a failure here is
     // a build error in disguise, caught by the host test of the same call.
     let div = drive::zynq::uart_divisors(UART_REF_CLK_HZ, BAUD).expect("baud divisors");

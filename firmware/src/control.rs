@@ -142,6 +142,18 @@ fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
     Some(r)
 }
 
+/// From the panic and exception handlers (IRQs masked): every gate off on
+/// whatever backend answers the drivers (`pl::gates_safe` has already
+/// written GP0), and `GATE_EN` read back; `None` when there is no drive or
+/// the handler interrupted a holder of the drive state.
+pub fn gates_off_read_back() -> Option<bool> {
+    let mut st = STATE.0.try_borrow_mut().ok()?;
+    let s = st.as_mut()?;
+    let mut pwm = drive::pl::pwm::Pwm(&mut s.bus);
+    pwm.set_gates(false).ok()?;
+    pwm.gates_enabled().ok()
+}
+
 /// What the PL check found, for the banner: `pl: ...` and devcfg's word.
 pub struct Boot {
     /// `PlKind` chosen.
@@ -710,6 +722,16 @@ impl DriveOps for FwDrive {
     }
     fn telemetry(&mut self) -> Option<&mut dyn drive::console::TelOps> {
         Some(&mut self.tel)
+    }
+    fn mmu(&mut self) -> Result<drive::console::MmuReport, DriveError> {
+        Ok(crate::ps::mmu::report())
+    }
+    fn provoke_abort(&mut self) -> Result<(), DriveError> {
+        crate::ps::mmu::read_unmapped();
+        Ok(())
+    }
+    fn gp0_guard(&mut self) -> Option<drive::pl::presence::Guard> {
+        Some(pl::guard())
     }
 }
 

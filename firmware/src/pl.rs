@@ -2,10 +2,12 @@
 //! register pages (docs/register-map.md) as a `RegisterBus`.
 //!
 //! GP0 is touched only after `drive::pl::presence` found our bitstream:
-//! on a real Zynq an access to an unconfigured PL hangs the bus. The panic
-//! handler's gate write obeys the same rule ([`gates_safe`]).
+//! on a real Zynq an access to an unconfigured PL (or with the level
+//! shifters off, or the PL in reset) hangs the bus. The one exception is
+//! [`gates_safe`], which writes `GATE_CTRL` = 0 whenever the GP0 guard
+//! passes, also before detection (first thing at boot).
 use core::sync::atomic::{AtomicBool, Ordering};
-use drive::pl::presence::{self, Presence};
+use drive::pl::presence::{self, Guard, Presence};
 use regmap::bus::{BusError, RegisterBus};
 use regmap::regs::pwm::{GateCtrl, GateCtrlValue};
 use volatile_register::RW;
@@ -23,10 +25,20 @@ pub fn devcfg_int_sts() -> u32 {
     reg(presence::DEVCFG_INT_STS).read()
 }
 
-/// Decides what is in the PL; GP0 is read only when devcfg says the PL is
-/// configured. Remembers whether GP0 may be used from now on.
+/// The GP0 guard's words: devcfg `INT_STS`, SLCR `LVL_SHFTR_EN` and
+/// `FPGA_RST_CTRL` (PS registers: always safe to read).
+pub fn guard() -> Guard {
+    Guard {
+        int_sts: devcfg_int_sts(),
+        lvl_shftr_en: reg(presence::SLCR_LVL_SHFTR_EN).read(),
+        fpga_rst_ctrl: reg(presence::SLCR_FPGA_RST_CTRL).read(),
+    }
+}
+
+/// Decides what is in the PL; GP0 is read only when the guard passes.
+/// Remembers whether GP0 may be used from now on.
 pub fn detect() -> Presence {
-    let p = presence::detect(devcfg_int_sts(), &mut Gp0);
+    let p = presence::detect(&guard(), &mut Gp0);
     GP0_OK.store(p.usable(), Ordering::Release);
     p
 }
@@ -52,10 +64,13 @@ impl RegisterBus for Gp0 {
 }
 
 /// Turns every gate of a configured PL off (clears `GATE_EN`): one store, no
-/// read-modify-write, safe from any context including the panic handler.
-/// Does nothing before presence detection or without our bitstream.
+/// read-modify-write, safe from any context including the panic and abort
+/// handlers. With our bitstream found, at once; otherwise (before detection,
+/// or a design detection did not recognise) only when the GP0 guard passes,
+/// so that the store cannot hang the bus. A foreign design may see a 0
+/// written at `GATE_CTRL`'s offset: the price of not waiting for `ID`.
 pub fn gates_safe() {
-    if GP0_OK.load(Ordering::Acquire) {
+    if GP0_OK.load(Ordering::Acquire) || guard().check().is_ok() {
         // Only GATE_EN is writable in GATE_CTRL: all gates off.
         let _ = GateCtrl::write(&mut Gp0, GateCtrlValue::ZERO.with_gate_en(false));
     }

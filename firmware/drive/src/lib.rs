@@ -16,6 +16,7 @@
 //! - [`zynq`]: arithmetic of the Zynq-7000 PS peripherals (UART divisors,
 //!   timer loads), tested on the host.
 //! - [`telemetry`]: the live channel stream on the console UART.
+//! - [`mmu`]: the flat translation table (memory types of the address map).
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 
@@ -24,6 +25,7 @@ pub mod console;
 #[cfg(test)]
 mod doc_figures;
 pub mod hil;
+pub mod mmu;
 pub mod pl;
 pub mod servo;
 pub mod telemetry;

@@ -54,6 +54,32 @@ pub fn private_timer_load(clk_hz: u32, rate_hz: u32) -> Option<u32> {
     Some(clk_hz / rate_hz - 1)
 }
 
+/// The fault of an ARMv7-A short-descriptor fault status register (DFSR or
+/// IFSR): FS = bits 10 and 3:0 (ARMv7-A ARM B4.1.52, table B3-23), in
+/// words for the abort report.
+pub fn fault_status_name(fsr: u32) -> &'static str {
+    match ((fsr >> 6) & 0x10) | (fsr & 0xF) {
+        0b00001 => "alignment fault",
+        0b00010 => "debug event",
+        0b00011 | 0b00110 => "access flag fault",
+        0b00101 => "translation fault (section: address unmapped)",
+        0b00111 => "translation fault (page)",
+        0b01000 => "synchronous external abort (bus error on a load)",
+        0b01001 | 0b01011 => "domain fault",
+        0b01101 | 0b01111 => "permission fault",
+        0b01100 | 0b01110 => "external abort on a table walk",
+        0b10110 => "asynchronous external abort (bus error on a store, imprecise)",
+        0b11000 => "asynchronous parity error",
+        0b00100 => "instruction cache maintenance fault",
+        _ => "unknown fault status",
+    }
+}
+
+/// DFSR.WnR (bit 11): the aborted access was a write.
+pub fn fault_was_write(dfsr: u32) -> bool {
+    dfsr & (1 << 11) != 0
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -91,5 +117,21 @@ mod tests {
         assert_eq!(private_timer_load(333_333_333, 1000), Some(333_332));
         assert_eq!(private_timer_load(1000, 0), None);
         assert_eq!(private_timer_load(1000, 2000), None);
+    }
+
+    #[test]
+    fn fault_status_words() {
+        // A load from a section the table leaves unmapped: FS 0b00101.
+        assert_eq!(
+            fault_status_name(0x005),
+            "translation fault (section: address unmapped)"
+        );
+        // FS[4] is bit 10: an imprecise external abort on a store (WnR set).
+        let dfsr = (1 << 10) | (1 << 11) | 0b0110;
+        assert!(fault_status_name(dfsr).starts_with("asynchronous external abort"));
+        assert!(fault_was_write(dfsr));
+        assert!(!fault_was_write(0x005));
+        assert_eq!(fault_status_name(0x008), "synchronous external abort (bus error on a load)");
+        assert_eq!(fault_status_name(0x400), "unknown fault status");
     }
 }

@@ -4,6 +4,8 @@
 //! a size check; they are reached through `&'static` references built from
 //! the documented base address, never `&mut`.
 pub mod gic;
+pub mod l2c;
+pub mod mmu;
 pub mod qspi;
 pub mod timer;
 pub mod uart;

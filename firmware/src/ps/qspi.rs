@@ -20,8 +20,14 @@ const RXD: usize = 0x20;
 const TXD1: usize = 0x80;
 
 /// `CONFIG`: master mode, 32-bit FIFO width (required), baud divisor /8,
-/// manual chip select, flash interface mode.
-const CONFIG_BASE: u32 = 1 | (0b11 << 6) | (0b010 << 3) | (1 << 14) | (1 << 31);
+/// manual chip select, `Holdb_dr` (bit 19: the controller drives HOLD#/IO3
+/// high in I/O mode; `ps7_init` sets it, and without it HOLD# floats low
+/// with the JTAG boot straps and the flash ignores every command), flash
+/// interface mode.
+const CONFIG_BASE: u32 =
+    1 | (0b11 << 6) | (0b010 << 3) | (1 << 14) | HOLDB_DR | (1 << 31);
+/// `CONFIG.Holdb_dr`.
+pub const HOLDB_DR: u32 = 1 << 19;
 /// `CONFIG.PCS` (bits 13:10): all ones releases the chip select, bit 10
 /// low selects CS 0.
 const CS_MASK: u32 = 0xF << 10;
@@ -54,8 +60,8 @@ impl Qspi {
     }
 
     fn set_cs(&mut self, cs: u32) {
-        // SAFETY: as in `init`.
-        unsafe { reg(CONFIG).modify(|c| (c & !CS_MASK) | cs) };
+        // SAFETY: as in `init`; `Holdb_dr` kept set whatever was read.
+        unsafe { reg(CONFIG).modify(|c| (c & !CS_MASK) | cs | HOLDB_DR) };
     }
 
     fn drain_rx(&mut self) {

@@ -97,6 +97,31 @@ pub struct Bench {
     pub runs: u32,
 }
 
+/// What `debug mmu` reads back from the CPU.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct MmuReport {
+    /// SCTLR.
+    pub sctlr: u32,
+    /// PL310 `CACHE_ID` (0: no PL310, as under QEMU 7.2).
+    pub l2_id: u32,
+    /// PL310 `CTRL` (bit 0: L2 on).
+    pub l2_ctrl: u32,
+    /// TTBR0.
+    pub ttbr0: u32,
+    /// For each of [`crate::mmu::USED`]: the table entry and the MMU's
+    /// translation of the address (PAR, bit 0 set: fault).
+    pub regions: [(u32, u32); crate::mmu::USED.len()],
+}
+
+impl MmuReport {
+    /// MMU, L1 caches and branch prediction on, and the L2 on where there
+    /// is one.
+    pub fn caches_on(&self) -> bool {
+        self.sctlr & crate::mmu::SCTLR_ON == crate::mmu::SCTLR_ON
+            && (self.l2_id == 0 || self.l2_ctrl & 1 != 0)
+    }
+}
+
 /// A fault `debug fault` makes happen.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Injection {
@@ -237,6 +262,19 @@ pub trait DriveOps {
     }
     /// The paced HIL loop's progress while `mode mpdcc` is active.
     fn mpdcc_live(&mut self) -> Option<PacedStatus> {
+        None
+    }
+    /// MMU and cache state (`debug mmu`).
+    fn mmu(&mut self) -> Result<MmuReport, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Reads an address the translation table leaves unmapped: a data
+    /// abort on purpose (`debug abort`); returns only where unsupported.
+    fn provoke_abort(&mut self) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// The GP0 guard's words (`status`), if the firmware reads them.
+    fn gp0_guard(&mut self) -> Option<crate::pl::presence::Guard> {
         None
     }
     /// The telemetry stream's owner, if the build has one.

@@ -19,7 +19,9 @@ pub use command::{
     FaultCmd, InfoCmd, ModeSel, MotionCmd, ParseError, Spec, Status, Sweep, TelCmd, TelOps,
     COMMANDS, STALL_MAX_MS, STEP_WINDOW_DEFAULT_S, STEP_WINDOW_MAX_S,
 };
-pub use drive::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
+pub use drive::{
+    Bench, DriveError, DriveOps, DriveStatus, Injection, MmuReport, PlKind, StoreStatus,
+};
 pub use editor::{LineEditor, LineError, LINE_MAX};
 
 /// Printed when the console is ready for a line.

@@ -1,10 +1,15 @@
 //! Is our bitstream in the PL? Decided before the first GP0 access.
 //!
-//! On a real Zynq an AXI GP0 access while the PL is unconfigured never
-//! completes and hangs the interconnect, so the order is fixed:
-//! 1. the PS's device-configuration block (devcfg, UG585 ch. 6) says the PL
-//!    is configured: `INT_STS.PCFG_DONE` (bit 2 of `0xF800_700C`); this read
-//!    is on the PS side and always safe;
+//! On a real Zynq an AXI GP0 access while the PL is unconfigured, while the
+//! PS-PL level shifters are off or while the PL's AXI slave is held in
+//! reset never completes and hangs the interconnect, so the order is fixed:
+//! 1. the GP0 guard ([`Guard`]), three PS-side reads that are always safe:
+//!    the device-configuration block (devcfg, UG585 ch. 6) says the PL is
+//!    configured (`INT_STS.PCFG_DONE`, bit 2 of `0xF800_700C`), the SLCR's
+//!    `LVL_SHFTR_EN` (`0xF800_0900`) is `0xF` (all PS-PL level shifters
+//!    on), and `FPGA_RST_CTRL` (`0xF800_0240`) does not hold
+//!    `FCLK_RESET0_N`, the reset of the design's AXI interconnect and
+//!    `pl_top` (bit 0, `FPGA0_OUT_RST`);
 //! 2. only then `ID` and `VERSION` are read over GP0; `ID` must be
 //!    [`regmap::ID_VALUE`] and the major version of `VERSION` the one this
 //!    firmware was built against.
@@ -20,12 +25,86 @@ use regmap::regs::top::{Id, Version, VersionValue};
 pub const DEVCFG_INT_STS: usize = 0xF800_7000 + 0x0C;
 /// `INT_STS.PCFG_DONE`: the PL has been configured.
 pub const PCFG_DONE: u32 = 1 << 2;
+/// Absolute address of SLCR `LVL_SHFTR_EN`.
+pub const SLCR_LVL_SHFTR_EN: usize = 0xF800_0900;
+/// `LVL_SHFTR_EN` with every PS-PL level shifter enabled.
+pub const LVL_SHFTR_ALL: u32 = 0xF;
+/// Absolute address of SLCR `FPGA_RST_CTRL`.
+pub const SLCR_FPGA_RST_CTRL: usize = 0xF800_0240;
+/// `FPGA_RST_CTRL.FPGA0_OUT_RST`: `FCLK_RESET0_N` held (the PL's AXI slave
+/// in reset).
+pub const FPGA0_OUT_RST: u32 = 1 << 0;
+
+/// The three PS-side words the GP0 guard reads.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Guard {
+    /// devcfg `INT_STS`.
+    pub int_sts: u32,
+    /// SLCR `LVL_SHFTR_EN`.
+    pub lvl_shftr_en: u32,
+    /// SLCR `FPGA_RST_CTRL`.
+    pub fpga_rst_ctrl: u32,
+}
+
+/// The first check of the GP0 guard that failed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GuardFailure {
+    /// `INT_STS.PCFG_DONE` clear: the PL is not configured.
+    Unconfigured,
+    /// `LVL_SHFTR_EN` is not `0xF` (its value).
+    LevelShifters(u32),
+    /// `FPGA_RST_CTRL` holds `FCLK_RESET0_N` (its value).
+    PlReset(u32),
+}
+
+impl Guard {
+    /// Whether GP0 may be touched; the first failed check otherwise.
+    pub fn check(&self) -> Result<(), GuardFailure> {
+        if self.int_sts & PCFG_DONE == 0 {
+            Err(GuardFailure::Unconfigured)
+        } else if self.lvl_shftr_en & LVL_SHFTR_ALL != LVL_SHFTR_ALL {
+            Err(GuardFailure::LevelShifters(self.lvl_shftr_en))
+        } else if self.fpga_rst_ctrl & FPGA0_OUT_RST != 0 {
+            Err(GuardFailure::PlReset(self.fpga_rst_ctrl))
+        } else {
+            Ok(())
+        }
+    }
+}
+
+/// What `status` prints after `gp0_guard: `.
+impl core::fmt::Display for Guard {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.check() {
+            Ok(()) => f.write_str("pass")?,
+            Err(GuardFailure::Unconfigured) => {
+                f.write_str("fail: devcfg INT_STS.PCFG_DONE clear (PL not configured)")?
+            }
+            Err(GuardFailure::LevelShifters(v)) => write!(
+                f,
+                "fail: SLCR LVL_SHFTR_EN 0x{v:x} (needs 0xf: PS-PL level shifters off)"
+            )?,
+            Err(GuardFailure::PlReset(v)) => write!(
+                f,
+                "fail: SLCR FPGA_RST_CTRL 0x{v:08x} (FCLK_RESET0_N held: PL in reset)"
+            )?,
+        }
+        write!(
+            f,
+            " (INT_STS 0x{:08x}, LVL_SHFTR_EN 0x{:x}, FPGA_RST_CTRL 0x{:08x})",
+            self.int_sts, self.lvl_shftr_en, self.fpga_rst_ctrl
+        )
+    }
+}
 
 /// What is in the PL.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Presence {
     /// devcfg says the PL is not configured: GP0 must not be touched.
     Unconfigured,
+    /// The PL is configured but the level shifters are off or it is held
+    /// in reset: GP0 must not be touched.
+    Blocked(GuardFailure),
     /// The PL is configured but `ID` is not ours (another design).
     Foreign {
         /// What `ID` read.
@@ -55,12 +134,14 @@ pub const fn major(version: u32) -> u32 {
     VersionValue::from_bits(version).major()
 }
 
-/// Decides from devcfg's `INT_STS` (read by the caller from
-/// [`DEVCFG_INT_STS`]) and, only when `PCFG_DONE` is set, `ID`/`VERSION`
-/// over `bus`. A bus error on `ID` counts as a foreign design.
-pub fn detect<B: RegisterBus>(devcfg_int_sts: u32, bus: &mut B) -> Presence {
-    if devcfg_int_sts & PCFG_DONE == 0 {
-        return Presence::Unconfigured;
+/// Decides from the guard's words (read by the caller) and, only when the
+/// guard passes, `ID`/`VERSION` over `bus`. A bus error on `ID` counts as
+/// a foreign design.
+pub fn detect<B: RegisterBus>(guard: &Guard, bus: &mut B) -> Presence {
+    match guard.check() {
+        Ok(()) => {}
+        Err(GuardFailure::Unconfigured) => return Presence::Unconfigured,
+        Err(f) => return Presence::Blocked(f),
     }
     let id = Id::read(bus).map_or(0, |v| v.value());
     if id != regmap::ID_VALUE {
@@ -91,35 +172,82 @@ mod tests {
         }
     }
 
+    /// Configured, level shifters on, out of reset.
+    const READY: Guard = Guard {
+        int_sts: PCFG_DONE,
+        lvl_shftr_en: 0xF,
+        fpga_rst_ctrl: 0,
+    };
+
     #[test]
     fn unconfigured_pl_is_never_touched() {
         // What QEMU reports (0) and every other value without bit 2.
         for sts in [0, !PCFG_DONE] {
-            assert_eq!(detect(sts, &mut Untouchable), Presence::Unconfigured);
+            let g = Guard {
+                int_sts: sts,
+                ..READY
+            };
+            assert_eq!(detect(&g, &mut Untouchable), Presence::Unconfigured);
         }
         assert!(!Presence::Unconfigured.usable());
+    }
+
+    #[test]
+    fn level_shifters_off_or_pl_in_reset_block_gp0() {
+        // The SLCR reset values: level shifters off, every FCLK reset held.
+        for lvl in [0x0, 0x3, 0xA, 0x7] {
+            let g = Guard {
+                lvl_shftr_en: lvl,
+                ..READY
+            };
+            assert_eq!(
+                detect(&g, &mut Untouchable),
+                Presence::Blocked(GuardFailure::LevelShifters(lvl))
+            );
+        }
+        let g = Guard {
+            fpga_rst_ctrl: 0x01F3_3F0F,
+            ..READY
+        };
+        assert_eq!(
+            detect(&g, &mut Untouchable),
+            Presence::Blocked(GuardFailure::PlReset(0x01F3_3F0F))
+        );
+        // Resets of the other FCLK domains do not reach GP0's slave.
+        let g = Guard {
+            fpga_rst_ctrl: 0b1110,
+            ..READY
+        };
+        assert!(detect(&g, &mut FakePl::new()).usable());
+        // The status line names the first failed check.
+        let s = std::format!("{}", Guard { lvl_shftr_en: 0, ..READY });
+        assert!(s.starts_with("fail: SLCR LVL_SHFTR_EN 0x0 "), "{s}");
+        let s = std::format!("{READY}");
+        assert!(s.starts_with("pass (INT_STS 0x00000004"), "{s}");
+        let s = std::format!("{}", Guard::default());
+        assert!(s.starts_with("fail: devcfg INT_STS.PCFG_DONE clear"), "{s}");
     }
 
     #[test]
     fn our_bitstream_is_recognised_by_id_and_major_version() {
         let mut pl = FakePl::new();
         let v = regmap::VERSION.reset;
-        assert_eq!(detect(PCFG_DONE, &mut pl), Presence::Ours { version: v });
+        assert_eq!(detect(&READY, &mut pl), Presence::Ours { version: v });
         assert!(Presence::Ours { version: v }.usable());
         // A newer minor version still speaks our map.
         pl.set(regmap::TOP.addr(&regmap::VERSION), v + 1);
-        assert!(detect(PCFG_DONE, &mut pl).usable());
+        assert!(detect(&READY, &mut pl).usable());
         // Another major version does not.
         pl.set(regmap::TOP.addr(&regmap::VERSION), v + 0x1_0000);
         assert_eq!(
-            detect(PCFG_DONE, &mut pl),
+            detect(&READY, &mut pl),
             Presence::Incompatible {
                 version: v + 0x1_0000
             }
         );
         pl.set(regmap::TOP.addr(&regmap::ID), 0xDEAD_BEEF);
         assert_eq!(
-            detect(PCFG_DONE, &mut pl),
+            detect(&READY, &mut pl),
             Presence::Foreign { id: 0xDEAD_BEEF }
         );
     }

@@ -1,4 +1,4 @@
-//! `debug panic|stall <ms>|bench|fault <f>`: diagnostics.
+//! `debug panic|abort|mmu|stall <ms>|bench|fault <f>`: diagnostics.
 use super::super::drive::{self, DriveOps};
 use super::{Outcome, ParseError, Spec};
 use core::fmt::{self, Write};
@@ -6,8 +6,10 @@ use core::fmt::{self, Write};
 /// The `debug` command.
 pub const DEBUG: Spec = Spec {
     name: "debug",
-    args: "panic|stall <ms>|bench|fault <f>",
+    args: "panic|abort|mmu|stall <ms>|bench|fault <f>",
     help: "diagnostics: `panic` forces a firmware panic (gates off, message, halt); \
+           `abort` reads an unmapped address (data abort: gates off, DFSR/DFAR, halt); \
+           `mmu` reads back SCTLR, the L2 and the translation table's memory types; \
            `stall <ms>` stops the control loop and heartbeat for <ms> of PL time (the \
            simulated PL's under QEMU); `bench` counts guest instructions of the control \
            code; `fault <f>` makes a fault happen (<f>: external, adc-stuck or overrun)",
@@ -21,6 +23,10 @@ pub const STALL_MAX_MS: u32 = 10_000;
 pub enum DebugCmd {
     /// `debug panic`.
     Panic,
+    /// `debug abort`.
+    Abort,
+    /// `debug mmu`.
+    Mmu,
     /// `debug fault <f>`.
     Fault(drive::Injection),
     /// `debug stall <ms>`.
@@ -33,6 +39,8 @@ pub enum DebugCmd {
 pub fn parse<'a>(args: &[&'a str]) -> Result<DebugCmd, ParseError<'a>> {
     match args {
         ["panic"] => Ok(DebugCmd::Panic),
+        ["abort"] => Ok(DebugCmd::Abort),
+        ["mmu"] => Ok(DebugCmd::Mmu),
         ["bench"] => Ok(DebugCmd::Bench),
         ["fault", f] => {
             drive::Injection::from_name(f)
@@ -51,7 +59,8 @@ pub fn parse<'a>(args: &[&'a str]) -> Result<DebugCmd, ParseError<'a>> {
         },
         _ => Err(ParseError::BadArgs(
             "debug",
-            "expected `debug panic`, `debug stall <ms>`, `debug bench` or `debug fault <f>`",
+            "expected `debug panic`, `debug abort`, `debug mmu`, `debug stall <ms>`, \
+             `debug bench` or `debug fault <f>`",
         )),
     }
 }
@@ -64,6 +73,13 @@ pub fn execute<W: Write>(
 ) -> Result<Outcome, fmt::Error> {
     match c {
         DebugCmd::Panic => return Ok(Outcome::Panic),
+        DebugCmd::Abort => {
+            try_drive!(out, "debug", drv.provoke_abort());
+        }
+        DebugCmd::Mmu => {
+            let m = try_drive!(out, "debug", drv.mmu());
+            write_mmu(out, &m)?;
+        }
         DebugCmd::Fault(f) => {
             try_drive!(out, "debug", drv.inject(f));
             out.write_str("injected\r\n")?;
@@ -82,4 +98,44 @@ pub fn execute<W: Write>(
         }
     }
     Ok(Outcome::Ok)
+}
+
+/// The lines of `debug mmu`.
+fn write_mmu<W: Write>(out: &mut W, m: &drive::MmuReport) -> fmt::Result {
+    use crate::mmu::{self, SCTLR_C, SCTLR_I, SCTLR_M, SCTLR_Z};
+    let on = |b: bool| if b { "on" } else { "off" };
+    write!(
+        out,
+        "caches: {}\r\n",
+        if m.caches_on() { "on" } else { "off" }
+    )?;
+    write!(
+        out,
+        "sctlr: 0x{:08x} (mmu {}, d-cache {}, i-cache {}, branch prediction {})\r\n",
+        m.sctlr,
+        on(m.sctlr & SCTLR_M != 0),
+        on(m.sctlr & SCTLR_C != 0),
+        on(m.sctlr & SCTLR_I != 0),
+        on(m.sctlr & SCTLR_Z != 0)
+    )?;
+    let l2 = match (m.l2_id, m.l2_ctrl & 1 != 0) {
+        (0, _) => "absent",
+        (_, b) => on(b),
+    };
+    write!(
+        out,
+        "l2: {l2} (PL310 CACHE_ID 0x{:08x}, CTRL 0x{:08x})\r\n",
+        m.l2_id, m.l2_ctrl
+    )?;
+    write!(out, "ttbr0: 0x{:08x}\r\n", m.ttbr0)?;
+    for (&(name, addr), &(entry, par)) in mmu::USED.iter().zip(m.regions.iter()) {
+        let kind = mmu::decode(entry).map_or("not a section of this map", |r| r.name());
+        write!(out, "region {name} 0x{addr:08x}: {kind} (entry 0x{entry:08x}, ")?;
+        if par & 1 != 0 {
+            write!(out, "translation faults)\r\n")?;
+        } else {
+            write!(out, "pa 0x{:08x})\r\n", (par & !0xFFF) | (addr & 0xFFF))?;
+        }
+    }
+    Ok(())
 }

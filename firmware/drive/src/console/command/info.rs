@@ -67,6 +67,9 @@ pub fn execute<W: Write>(
                 s.lines, s.errors, s.rx_overruns
             )?;
             write_status(out, &drv.status())?;
+            if let Some(g) = drv.gp0_guard() {
+                write!(out, "gp0_guard: {g}\r\n")?;
+            }
         }
     }
     Ok(Outcome::Ok)
