@@ -1,11 +1,11 @@
 //! The PL310 L2 cache controller of the A9 MPCore (UG585 ch. 3.4, PL310
 //! TRM r3p2), at 0xF8F0_2000.
-use volatile_register::RW;
-
 //!
 //! QEMU 7.2's `xilinx-zynq-a9` has no PL310: its registers are unassigned
 //! (reads 0, writes dropped), so `CACHE_ID` tells a real controller apart
 //! and the L2 reports itself absent there.
+use volatile_register::RW;
+
 const BASE: usize = 0xF8F0_2000;
 const CACHE_ID: usize = 0x000;
 const CTRL: usize = 0x100;
