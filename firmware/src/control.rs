@@ -35,6 +35,7 @@ use drive::pl::mpdcc::{Mpdcc, MpdccError};
 use drive::pl::presence::Presence;
 use drive::pl::top::Mode;
 use drive::servo::faults::FaultRecord;
+use drive::servo::sensors::{PlTime, SensorReport};
 use drive::servo::{
     record_response, Servo, ServoConfig, ServoError, StepRecorder, StepResult, SweepPoint,
 };
@@ -71,6 +72,23 @@ impl RegisterBus for Backend {
             Backend::Gp0(b) => b.write(addr, value),
             Backend::Sim(b) => b.write(addr, value),
             Backend::Cosim(b) => b.write(addr, value),
+        }
+    }
+}
+
+impl PlTime for Backend {
+    fn wait_cycles(&mut self, cycles: u64) {
+        match self {
+            // The boundaries crossed are no control step's: dropped.
+            Backend::Sim(sim) => {
+                let _ = sim.advance(cycles);
+            }
+            // The PL runs on its own (in co-simulation up to the guest time
+            // of the next access): the PS waits.
+            Backend::Gp0(_) | Backend::Cosim(_) => {
+                let until = timer::global_count() + guest_counts(cycles);
+                while timer::global_count() < until {}
+            }
         }
     }
 }
@@ -333,6 +351,15 @@ pub fn on_control() {
 }
 
 impl State {
+    /// The sensor check held the control loop off for milliseconds of PL
+    /// time with the gates off: the boundaries it crossed are no overruns.
+    fn after_sensor_check(&mut self) {
+        if let Backend::Cosim(c) = &mut self.bus {
+            let _ = c.sync();
+        }
+        self.control_pending = false;
+    }
+
     /// Co-simulation: runs the PL to `now` (a global-timer count), plans
     /// the next tick just after the next boundary with the period now set,
     /// and returns the boundaries crossed since the previous sync.
@@ -483,7 +510,21 @@ impl DriveOps for FwDrive {
         self.hil.as_ref().map(Paced::status)
     }
     fn enable(&mut self) -> Result<(), DriveError> {
-        run(|s| s.servo.enable(&mut s.bus))
+        run(|s| {
+            let checked = s.servo.sensor_check_due();
+            let r = s.servo.enable_checked(&mut s.bus);
+            if checked {
+                s.after_sensor_check();
+            }
+            r
+        })
+    }
+    fn sensor_check(&mut self) -> Result<SensorReport, DriveError> {
+        run(|s| {
+            let r = s.servo.check_sensors(&mut s.bus);
+            s.after_sensor_check();
+            r
+        })
     }
     fn disable(&mut self) -> Result<(), DriveError> {
         run(|s| s.servo.disable(&mut s.bus))
@@ -598,6 +639,20 @@ impl DriveOps for FwDrive {
                     sim.set_external_fault(true);
                     let _ = sim.advance(1000);
                     sim.set_external_fault(false);
+                    Ok(())
+                }
+                Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
+            })
+            .unwrap_or(Err(DriveError::Absent)),
+            Injection::AdcSwap | Injection::AdcInvert => console(|s| match &mut s.bus {
+                Backend::Sim(sim) => {
+                    let mut w = simpl::AdcWiring::default();
+                    if f == Injection::AdcSwap {
+                        w.source = [1, 0, 2];
+                    } else {
+                        w.inverted[0] = true;
+                    }
+                    sim.set_adc_wiring(w);
                     Ok(())
                 }
                 Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
@@ -729,6 +784,9 @@ impl DriveOps for FwDrive {
     fn provoke_abort(&mut self) -> Result<(), DriveError> {
         crate::ps::mmu::read_unmapped();
         Ok(())
+    }
+    fn sensor_check_due(&mut self) -> Option<bool> {
+        console(|s| s.servo.sensor_check_due())
     }
     fn gp0_guard(&mut self) -> Option<drive::pl::presence::Guard> {
         Some(pl::guard())

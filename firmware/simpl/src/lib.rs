@@ -33,7 +33,7 @@ pub mod regs;
 pub mod seq;
 pub mod simdrive;
 
-pub use simdrive::{Advance, PlModel, SimConfig, SimDrive, Truth, Work};
+pub use simdrive::{AdcWiring, Advance, PlModel, SimConfig, SimDrive, Truth, Work};
 
 /// "No event ahead" for the closed-form spans (any span is capped by the
 /// cycles asked for).

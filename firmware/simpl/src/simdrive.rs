@@ -97,6 +97,40 @@ impl SimConfig {
     }
 }
 
+/// How the three current sensors are wired to the ADC's channels: a
+/// wiring fault injected to test the drive's sensor check (default: each
+/// channel measures its own phase with the right sign).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct AdcWiring {
+    /// The phase (0 = a) each channel a, b, c measures.
+    pub source: [usize; 3],
+    /// Each channel reads its phase's current negated.
+    pub inverted: [bool; 3],
+}
+
+impl Default for AdcWiring {
+    fn default() -> Self {
+        Self {
+            source: [0, 1, 2],
+            inverted: [false; 3],
+        }
+    }
+}
+
+impl AdcWiring {
+    /// The channels' currents from the phase currents `i`, A.
+    pub fn apply(&self, i: [f64; 3]) -> [f64; 3] {
+        core::array::from_fn(|ch| {
+            let x = i[self.source[ch].min(2)];
+            if self.inverted[ch] {
+                -x
+            } else {
+                x
+            }
+        })
+    }
+}
+
 /// What one [`SimDrive::advance`] did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Advance {
@@ -213,6 +247,7 @@ pub struct SimDrive<P = SimPl> {
     transitions: [u64; 3],
     carried: Advance,
     segments: u64,
+    adc_wiring: AdcWiring,
 }
 
 impl SimDrive {
@@ -241,6 +276,7 @@ impl<P: PlModel> SimDrive<P> {
             transitions: [0; 3],
             carried: Advance::default(),
             segments: 0,
+            adc_wiring: AdcWiring::default(),
         };
         s.update_encoder_pins();
         Ok(s)
@@ -321,6 +357,12 @@ impl<P: PlModel> SimDrive<P> {
         }
     }
 
+    /// Rewires the current sensors to the ADC's channels (a fault for the
+    /// sensor check to find), from the next conversion on.
+    pub fn set_adc_wiring(&mut self, w: AdcWiring) {
+        self.adc_wiring = w;
+    }
+
     /// Control-period boundaries that register accesses crossed since the
     /// last advance (reported by the next one).
     pub fn boundaries_crossed(&self) -> u32 {
@@ -374,7 +416,7 @@ impl<P: PlModel> SimDrive<P> {
         }
         if ev.adc_convert {
             self.flush();
-            let i = self.plant.i_abc_a();
+            let i = self.adc_wiring.apply(self.plant.i_abc_a());
             self.pl.pins_mut().adc_word = adc_word(i.map(|x| self.cfg.adc_counts(x)));
         }
         let foc = self.pl.mode() == mode::FOC_PWM;

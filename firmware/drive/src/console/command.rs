@@ -32,6 +32,7 @@ mod help;
 mod info;
 mod motion;
 mod mpdcc;
+mod selftest;
 mod sweep;
 mod tel;
 #[cfg(test)]
@@ -73,6 +74,7 @@ pub const COMMANDS: &[&Spec] = &[
     &sweep::SWEEP,
     &mpdcc::MPDCC,
     &tel::TEL,
+    &selftest::SELFTEST,
 ];
 
 /// A parsed command line: the family that owns its first word and what
@@ -99,6 +101,8 @@ pub enum Command<'a> {
     Mpdcc(Option<u32>),
     /// `tel ...`.
     Tel(TelCmd),
+    /// `selftest sensors`.
+    SelftestSensors,
 }
 
 /// Why a line is not a valid command.
@@ -198,6 +202,7 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
         "sweep" => sweep::parse(args).map(Command::Sweep),
         "mpdcc" => mpdcc::parse(args).map(Command::Mpdcc),
         "tel" => tel::parse(args).map(Command::Tel),
+        "selftest" => selftest::parse(args).map(|()| Command::SelftestSensors),
         _ => Err(ParseError::Unknown(name)),
     }
 }
@@ -220,6 +225,7 @@ pub fn execute<W: Write>(
         Command::Sweep(c) => sweep::execute(c, drv, out)?,
         Command::Mpdcc(run) => mpdcc::execute(run, drv, out)?,
         Command::Tel(c) => tel::execute(c, drv.telemetry(), out)?,
+        Command::SelftestSensors => selftest::execute(drv, out)?,
     };
     match done {
         Outcome::Ok => {

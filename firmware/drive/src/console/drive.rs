@@ -131,6 +131,12 @@ pub enum Injection {
     AdcStuck,
     /// Two control periods pass without a control step (simulated PL only).
     Overrun,
+    /// Current channels a and b swapped in the simulated PL's ADC path
+    /// (until reboot).
+    AdcSwap,
+    /// Current channel a inverted in the simulated PL's ADC path (until
+    /// reboot).
+    AdcInvert,
 }
 
 impl Injection {
@@ -140,6 +146,8 @@ impl Injection {
             "external" => Some(Injection::External),
             "adc-stuck" => Some(Injection::AdcStuck),
             "overrun" => Some(Injection::Overrun),
+            "adc-swap" => Some(Injection::AdcSwap),
+            "adc-invert" => Some(Injection::AdcInvert),
             _ => None,
         }
     }
@@ -264,6 +272,15 @@ pub trait DriveOps {
     fn mpdcc_live(&mut self) -> Option<PacedStatus> {
         None
     }
+    /// Runs the sensor check (`selftest sensors`; gates off, no fault).
+    fn sensor_check(&mut self) -> Result<crate::servo::sensors::SensorReport, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Whether the next `enable` runs the sensor check (`status`); `None`
+    /// where there is no drive.
+    fn sensor_check_due(&mut self) -> Option<bool> {
+        None
+    }
     /// MMU and cache state (`debug mmu`).
     fn mmu(&mut self) -> Result<MmuReport, DriveError> {
         Err(DriveError::Unsupported)
@@ -337,6 +354,11 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
                 "{cmd}: {f} Hz is outside (0, control rate / 4] or below one period per \
                  capture record"
             ),
+        ),
+        DriveError::Servo(ServoError::SensorCheck(f)) => write_err(
+            out,
+            ErrorCode::SensorCheck,
+            format_args!("{cmd}: {f}; gates off"),
         ),
         DriveError::Servo(ServoError::Bus(b)) => write_err(
             out,

@@ -60,6 +60,8 @@ pub enum ErrorCode {
     FlashError,
     /// A PMSM or page command while `mode mpdcc` runs the MPDCC HIL loop.
     MpdccMode,
+    /// The sensor check found a wrong current channel or encoder.
+    SensorCheck,
 }
 
 impl ErrorCode {
@@ -81,6 +83,7 @@ impl ErrorCode {
             ErrorCode::Unsupported => "unsupported",
             ErrorCode::GatesOn => "gates-on",
             ErrorCode::FlashError => "flash-error",
+            ErrorCode::SensorCheck => "sensor-check",
         }
     }
 }

@@ -42,6 +42,8 @@ mod sweep;
 // Telemetry: the channels of one control period.
 mod tel;
 pub use sweep::{bandwidth_hz, record_response, tone_response, Sine, SweepPoint};
+pub mod sensors;
+use sensors::{PlTime, SensorFault, SensorReport};
 
 /// Control periods without a new ADC result that latch `ADC_STUCK`: two.
 /// A control period holds at least one averaged result (`Config::check`
@@ -180,6 +182,8 @@ pub enum ServoError {
     /// A sine frequency outside (0, control rate / 4], or too low for one
     /// period in a capture record, Hz.
     BadFrequency(f64),
+    /// The sensor check before the first closed loop failed (gates off).
+    SensorCheck(SensorFault),
 }
 
 impl From<BusError> for ServoError {
@@ -242,6 +246,8 @@ pub struct Servo {
     sine: Option<Sine>,
     /// FOC: the duties of the last step (telemetry).
     duties: [f64; 3],
+    /// The sensor check passed with this configuration's motor and sensors.
+    sensors_ok: bool,
 }
 
 impl Servo {
@@ -309,6 +315,7 @@ impl Servo {
             missed: 0,
             sine: None,
             duties: [0.0; 3],
+            sensors_ok: false,
         })
     }
 
@@ -364,6 +371,11 @@ impl Servo {
             }
             self.cfg.torque_limit_nm = cfg.torque_limit_nm;
             return Ok(());
+        }
+        // New motor or sensor facts: the next `enable` checks the sensors.
+        let sensed = |c: &ServoConfig| (c.motor, c.adc, c.enc_cpr, c.enc_zero, c.current_limit_a);
+        if sensed(&next.cfg) != sensed(&self.cfg) {
+            self.sensors_ok = false;
         }
         self.cfg = next.cfg;
         self.foc_params = next.foc_params;
@@ -446,6 +458,61 @@ impl Servo {
         Pwm(&mut *bus).set_gates(true)?;
         self.gates = true;
         Ok(())
+    }
+
+    /// Whether the next [`Servo::enable_checked`] runs the sensor check
+    /// (none passed since boot or since the motor or sensor configuration
+    /// changed).
+    pub fn sensor_check_due(&self) -> bool {
+        !self.sensors_ok
+    }
+
+    /// Runs the sensor check ([`sensors`]): refused with the gates on and
+    /// while a fault is latched. The gates are off and the mode restored
+    /// afterwards whatever happened; a pass is remembered until the motor or
+    /// sensor configuration changes.
+    pub fn check_sensors<B: PlTime>(&mut self, bus: &mut B) -> Result<SensorReport, ServoError> {
+        if self.gates {
+            return Err(ServoError::GatesOn);
+        }
+        let f = self.faults(bus)?;
+        if !f.none() {
+            return Err(ServoError::FaultLatched(f));
+        }
+        let half = self.cfg.foc_half_period_cycles;
+        let target = sensors::target_a(self.cfg.current_limit_a, self.cfg.adc.amps_per_count);
+        let mut run = sensors::Run {
+            bus: &mut *bus,
+            beat: &mut self.beat,
+            cycles: 0,
+            amps_per_count: self.cfg.adc.amps_per_count,
+        };
+        let r = run.sequence(half, target, u64::from(4 * self.cfg.adc_period_cycles));
+        // Whatever happened: gates off, duties neutral, the mode back.
+        let off = Pwm(&mut *bus).set_gates(false);
+        let duties = Pwm(&mut *bus).set_duties([0.5; 3], half);
+        let mode = Top(&mut *bus).set_mode(self.mode);
+        self.note_skipped();
+        let r = r?;
+        off?;
+        duties?;
+        mode?;
+        self.sensors_ok = r.result.is_ok();
+        Ok(r)
+    }
+
+    /// [`Servo::enable`], after the sensor check when one is due; a failed
+    /// check leaves the gates off and answers [`ServoError::SensorCheck`].
+    pub fn enable_checked<B: PlTime>(&mut self, bus: &mut B) -> Result<(), ServoError> {
+        if self.mode == Mode::Off {
+            return Err(ServoError::ModeOff);
+        }
+        if self.sensor_check_due() && !self.gates {
+            if let Err(e) = self.check_sensors(bus)?.result {
+                return Err(ServoError::SensorCheck(e));
+            }
+        }
+        self.enable(bus)
     }
 
     /// Gates off (always allowed).

@@ -12,7 +12,9 @@ pub const DEBUG: Spec = Spec {
            `mmu` reads back SCTLR, the L2 and the translation table's memory types; \
            `stall <ms>` stops the control loop and heartbeat for <ms> of PL time (the \
            simulated PL's under QEMU); `bench` counts guest instructions of the control \
-           code; `fault <f>` makes a fault happen (<f>: external, adc-stuck or overrun)",
+           code; `fault <f>` makes a fault happen (<f>: external, adc-stuck, overrun; \
+           adc-swap or adc-invert: current channels a and b swapped, or a inverted, in the \
+           simulated PL's ADC path until reboot)",
 };
 
 /// Longest `debug stall`, ms.
@@ -47,7 +49,7 @@ pub fn parse<'a>(args: &[&'a str]) -> Result<DebugCmd, ParseError<'a>> {
                 .map(DebugCmd::Fault)
                 .ok_or(ParseError::BadArgs(
                     "debug",
-                    "fault takes external, adc-stuck or overrun",
+                    "fault takes external, adc-stuck, overrun, adc-swap or adc-invert",
                 ))
         }
         ["stall", ms] => match ms.parse::<u32>() {

@@ -67,6 +67,11 @@ pub fn execute<W: Write>(
                 s.lines, s.errors, s.rx_overruns
             )?;
             write_status(out, &drv.status())?;
+            match drv.sensor_check_due() {
+                Some(true) => out.write_str("sensor_check: due (runs at the next enable)\r\n")?,
+                Some(false) => out.write_str("sensor_check: passed\r\n")?,
+                None => {}
+            }
             if let Some(g) = drv.gp0_guard() {
                 write!(out, "gp0_guard: {g}\r\n")?;
             }
