@@ -154,7 +154,7 @@ pub fn target_a(current_limit_a: f64, amps_per_count: f64) -> f64 {
 /// vector along phase k) and the encoder movement.
 pub fn judge(r: &[[f64; 3]; 3], target: f64, enc_counts: i64) -> Result<(), SensorFault> {
     let largest = r.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
-    if !(largest >= 0.5 * target) {
+    if largest < 0.5 * target {
         return Err(SensorFault::NoCurrent(largest));
     }
     for ch in 0..3 {
