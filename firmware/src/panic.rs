@@ -110,7 +110,11 @@ fn data_abort(addr: usize) -> ! {
         con,
         "\r\nDATA ABORT at 0x{addr:08x}: DFSR 0x{dfsr:08x} ({}, {}), DFAR 0x{dfar:08x}\r\n",
         fault_status_name(dfsr),
-        if fault_was_write(dfsr) { "write" } else { "read" },
+        if fault_was_write(dfsr) {
+            "write"
+        } else {
+            "read"
+        },
     );
     halt(&mut con)
 }

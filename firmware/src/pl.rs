@@ -73,5 +73,9 @@ pub fn gates_safe() {
     if GP0_OK.load(Ordering::Acquire) || guard().check().is_ok() {
         // Only GATE_EN is writable in GATE_CTRL: all gates off.
         let _ = GateCtrl::write(&mut Gp0, GateCtrlValue::ZERO.with_gate_en(false));
+        // GP0 is device memory: the store may wait in the write buffer;
+        // the barrier makes it reach the PL before anything else.
+        // SAFETY: a barrier only.
+        unsafe { core::arch::asm!("dsb", options(nostack)) };
     }
 }

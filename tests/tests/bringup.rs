@@ -19,8 +19,8 @@ fn caches_on_and_the_drivers_regions_have_their_memory_types() {
     assert_ok(&r);
     assert_eq!(field(&r, "caches"), Some("on"), "{r:?}");
     // SCTLR read back from CP15: M (0), C (2), Z (11), I (12) set.
-    let sctlr = u32::from_str_radix(field(&r, "sctlr").unwrap().trim_start_matches("0x"), 16)
-        .unwrap();
+    let sctlr =
+        u32::from_str_radix(field(&r, "sctlr").unwrap().trim_start_matches("0x"), 16).unwrap();
     assert_eq!(sctlr & 0x1805, 0x1805, "{sctlr:#x}");
     // On: the board's PL310; absent: QEMU 7.2 has none (CACHE_ID reads 0).
     // Never off.
@@ -30,8 +30,18 @@ fn caches_on_and_the_drivers_regions_have_their_memory_types() {
     // off): TEX 001 C B = normal write-back write-allocate; TEX 000 B with
     // XN = device; the entry's base is the address itself (flat map).
     let expect = [
-        ("ddr-code", "normal write-back", "0x00101c0e", "pa 0x00100000"),
-        ("ddr-data", "normal write-back", "0x00901c0e", "pa 0x00900000"),
+        (
+            "ddr-code",
+            "normal write-back",
+            "0x00101c0e",
+            "pa 0x00100000",
+        ),
+        (
+            "ddr-data",
+            "normal write-back",
+            "0x00901c0e",
+            "pa 0x00900000",
+        ),
         ("gp0-pl-regs", "device", "0x43c10c16", "pa 0x43c00000"),
         ("uart1", "device", "0xe0010c16", "pa 0xe0001000"),
         ("qspi", "device", "0xe0010c16", "pa 0xe000d000"),
@@ -68,7 +78,10 @@ fn a_data_abort_turns_the_gates_off_and_reports_its_fault_status() {
     assert!(text.contains("read), DFAR 0x80000000"), "{text}");
     // GATE_EN read back from the simulated PL after the handler's write.
     assert!(text.contains("gate_en: 0 (read back)"), "{text}");
-    assert!(text.contains("gates: off (safe state); firmware halted"), "{text}");
+    assert!(
+        text.contains("gates: off (safe state); firmware halted"),
+        "{text}"
+    );
     // Halted: no answer.
     s.send(b"version\r").unwrap();
     let after = s

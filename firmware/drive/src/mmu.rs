@@ -203,7 +203,13 @@ mod tests {
         assert_eq!(at(0x0FFF_FFFF), Region::Cached);
         assert_eq!(at(0x1000_0000), Region::Fault);
         assert_eq!(at(regmap::BASE_ADDR as u32), Region::Device);
-        for a in [0xE000_1000, 0xE000_D000, 0xF800_700C, 0xF8F0_0200, 0xF8F0_2100] {
+        for a in [
+            0xE000_1000,
+            0xE000_D000,
+            0xF800_700C,
+            0xF8F0_0200,
+            0xF8F0_2100,
+        ] {
             assert_eq!(at(a), Region::Device, "{a:#x}");
         }
         assert_eq!(at(0xFFFF_0000), Region::Uncached);

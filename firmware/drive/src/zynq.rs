@@ -80,6 +80,17 @@ pub fn fault_was_write(dfsr: u32) -> bool {
     dfsr & (1 << 11) != 0
 }
 
+/// QSPI `CONFIG.Holdb_dr` (bit 19): the controller drives HOLD# (IO3) high
+/// in I/O mode. `ps7_init` sets it; without it HOLD# floats low with the
+/// JTAG boot straps and the flash ignores every command (UG585 B.20).
+pub const QSPI_HOLDB_DR: u32 = 1 << 19;
+
+/// QSPI `CONFIG` the firmware writes (chip-select bits 13:10 clear, the
+/// driver adds them): master mode (0), baud divisor /8 (5:3 = 0b010),
+/// 32-bit FIFO width (7:6 = 0b11, required), manual chip select (14),
+/// `Holdb_dr` (19), flash interface mode (31).
+pub const QSPI_CONFIG: u32 = 1 | (0b010 << 3) | (0b11 << 6) | (1 << 14) | QSPI_HOLDB_DR | (1 << 31);
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -131,7 +142,20 @@ mod tests {
         assert!(fault_status_name(dfsr).starts_with("asynchronous external abort"));
         assert!(fault_was_write(dfsr));
         assert!(!fault_was_write(0x005));
-        assert_eq!(fault_status_name(0x008), "synchronous external abort (bus error on a load)");
+        assert_eq!(
+            fault_status_name(0x008),
+            "synchronous external abort (bus error on a load)"
+        );
         assert_eq!(fault_status_name(0x400), "unknown fault status");
+    }
+
+    #[test]
+    fn qspi_config_keeps_holdb_dr() {
+        // Hand-assembled from UG585 B.20: 0x8000_0000 | 0x0008_0000 |
+        // 0x0000_4000 | 0x0000_00C0 | 0x0000_0010 | 0x0000_0001.
+        assert_eq!(QSPI_CONFIG, 0x8008_40D1);
+        assert_ne!(QSPI_CONFIG & QSPI_HOLDB_DR, 0);
+        // No chip select bits: the driver owns them.
+        assert_eq!(QSPI_CONFIG & (0xF << 10), 0);
     }
 }

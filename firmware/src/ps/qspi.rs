@@ -19,15 +19,11 @@ const EN: usize = 0x14;
 const RXD: usize = 0x20;
 const TXD1: usize = 0x80;
 
-/// `CONFIG`: master mode, 32-bit FIFO width (required), baud divisor /8,
-/// manual chip select, `Holdb_dr` (bit 19: the controller drives HOLD#/IO3
-/// high in I/O mode; `ps7_init` sets it, and without it HOLD# floats low
-/// with the JTAG boot straps and the flash ignores every command), flash
-/// interface mode.
-const CONFIG_BASE: u32 =
-    1 | (0b11 << 6) | (0b010 << 3) | (1 << 14) | HOLDB_DR | (1 << 31);
+/// `CONFIG` without a chip select (`drive::zynq::QSPI_CONFIG`, host
+/// tested: `Holdb_dr` set).
+const CONFIG_BASE: u32 = drive::zynq::QSPI_CONFIG;
 /// `CONFIG.Holdb_dr`.
-pub const HOLDB_DR: u32 = 1 << 19;
+const HOLDB_DR: u32 = drive::zynq::QSPI_HOLDB_DR;
 /// `CONFIG.PCS` (bits 13:10): all ones releases the chip select, bit 10
 /// low selects CS 0.
 const CS_MASK: u32 = 0xF << 10;

@@ -220,7 +220,13 @@ mod tests {
         };
         assert!(detect(&g, &mut FakePl::new()).usable());
         // The status line names the first failed check.
-        let s = std::format!("{}", Guard { lvl_shftr_en: 0, ..READY });
+        let s = std::format!(
+            "{}",
+            Guard {
+                lvl_shftr_en: 0,
+                ..READY
+            }
+        );
         assert!(s.starts_with("fail: SLCR LVL_SHFTR_EN 0x0 "), "{s}");
         let s = std::format!("{READY}");
         assert!(s.starts_with("pass (INT_STS 0x00000004"), "{s}");

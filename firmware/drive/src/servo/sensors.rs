@@ -299,12 +299,18 @@ mod tests {
         for row in r.iter_mut() {
             row.swap(0, 1);
         }
-        assert_eq!(judge(&r, 1.4, 0), Err(SensorFault::Order { ch: 0, phase: 1 }));
+        assert_eq!(
+            judge(&r, 1.4, 0),
+            Err(SensorFault::Order { ch: 0, phase: 1 })
+        );
         let mut r = ideal(1.4);
         for row in r.iter_mut() {
             row.swap(1, 2);
         }
-        assert_eq!(judge(&r, 1.4, 0), Err(SensorFault::Order { ch: 1, phase: 2 }));
+        assert_eq!(
+            judge(&r, 1.4, 0),
+            Err(SensorFault::Order { ch: 1, phase: 2 })
+        );
     }
 
     #[test]
@@ -315,7 +321,10 @@ mod tests {
         }
         assert_eq!(
             judge(&r, 1.4, 0),
-            Err(SensorFault::Inverted { ch: 2, read_a: -1.4 })
+            Err(SensorFault::Inverted {
+                ch: 2,
+                read_a: -1.4
+            })
         );
         let text = std::format!("{}", judge(&r, 1.4, 0).unwrap_err());
         assert!(text.starts_with("current channel c inverted"), "{text}");

@@ -132,7 +132,10 @@ fn write_mmu<W: Write>(out: &mut W, m: &drive::MmuReport) -> fmt::Result {
     write!(out, "ttbr0: 0x{:08x}\r\n", m.ttbr0)?;
     for (&(name, addr), &(entry, par)) in mmu::USED.iter().zip(m.regions.iter()) {
         let kind = mmu::decode(entry).map_or("not a section of this map", |r| r.name());
-        write!(out, "region {name} 0x{addr:08x}: {kind} (entry 0x{entry:08x}, ")?;
+        write!(
+            out,
+            "region {name} 0x{addr:08x}: {kind} (entry 0x{entry:08x}, "
+        )?;
         if par & 1 != 0 {
             write!(out, "translation faults)\r\n")?;
         } else {

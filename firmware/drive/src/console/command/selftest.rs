@@ -18,7 +18,10 @@ pub const SELFTEST: Spec = Spec {
 pub fn parse<'a>(args: &[&'a str]) -> Result<(), ParseError<'a>> {
     match args {
         ["sensors"] => Ok(()),
-        _ => Err(ParseError::BadArgs("selftest", "expected `selftest sensors`")),
+        _ => Err(ParseError::BadArgs(
+            "selftest",
+            "expected `selftest sensors`",
+        )),
     }
 }
 
