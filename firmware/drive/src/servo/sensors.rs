@@ -157,17 +157,18 @@ pub fn judge(r: &[[f64; 3]; 3], target: f64, enc_counts: i64) -> Result<(), Sens
     if largest < 0.5 * target {
         return Err(SensorFault::NoCurrent(largest));
     }
-    for ch in 0..3 {
+    // Row `ch` is the vector along phase `ch`; its own reading is `row[ch]`.
+    for (ch, row) in r.iter().enumerate() {
         let k = (0..3)
             .max_by(|&x, &y| r[x][ch].abs().total_cmp(&r[y][ch].abs()))
             .unwrap_or(ch);
         if k != ch {
             return Err(SensorFault::Order { ch, phase: k });
         }
-        if r[ch][ch] <= 0.0 {
+        if row[ch] <= 0.0 {
             return Err(SensorFault::Inverted {
                 ch,
-                read_a: r[ch][ch],
+                read_a: row[ch],
             });
         }
     }
