@@ -103,7 +103,7 @@ pub fn execute<W: Write>(
 }
 
 /// The lines of `debug mmu`.
-fn write_mmu<W: Write>(out: &mut W, m: &drive::MmuReport) -> fmt::Result {
+pub(super) fn write_mmu<W: Write>(out: &mut W, m: &drive::MmuReport) -> fmt::Result {
     use crate::mmu::{self, SCTLR_C, SCTLR_I, SCTLR_M, SCTLR_Z};
     let on = |b: bool| if b { "on" } else { "off" };
     write!(

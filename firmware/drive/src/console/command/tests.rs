@@ -653,3 +653,73 @@ fn config_bad_input_changes_nothing() {
     );
     assert_eq!(d.servo.config(), &before);
 }
+
+#[test]
+fn selftest_debug_mmu_and_abort_where_unsupported() {
+    assert_eq!(
+        reply("selftest"),
+        "ERR bad-args selftest: expected `selftest sensors`\r\n"
+    );
+    assert_eq!(
+        reply("selftest sensors now"),
+        "ERR bad-args selftest: expected `selftest sensors`\r\n"
+    );
+    // The test drive has no sensor check, MMU or abort: refused, nothing
+    // printed before the final line.
+    for line in ["selftest sensors", "debug mmu", "debug abort"] {
+        let r = reply(line);
+        assert!(r.starts_with("ERR unsupported "), "{line}: {r}");
+        assert_one_final_line(&r);
+    }
+    assert_eq!(parse("debug abort"), Ok(Command::Debug(DebugCmd::Abort)));
+    assert_eq!(parse("debug mmu"), Ok(Command::Debug(DebugCmd::Mmu)));
+}
+
+#[test]
+fn debug_mmu_lines_by_hand() {
+    use crate::mmu::{section_entry, Region, USED};
+    let regions = core::array::from_fn(|i| {
+        let a = USED[i].1;
+        let r = crate::mmu::region_of(a);
+        let par = if r == Region::Fault { 0xB } else { a & !0xFFF };
+        (section_entry(a >> 20, r), par)
+    });
+    let m = drive::MmuReport {
+        // M, C, Z, I and the reset-one bits QEMU shows.
+        sctlr: 0x00c5_187d,
+        l2_id: 0,
+        l2_ctrl: 0,
+        ttbr0: 0x0090_8048,
+        regions,
+    };
+    let mut out = String::new();
+    debug::write_mmu(&mut out, &m).unwrap();
+    let lines: std::vec::Vec<&str> = out.split("\r\n").collect();
+    assert_eq!(lines[0], "caches: on");
+    assert_eq!(
+        lines[1],
+        "sctlr: 0x00c5187d (mmu on, d-cache on, i-cache on, branch prediction on)"
+    );
+    assert_eq!(
+        lines[2],
+        "l2: absent (PL310 CACHE_ID 0x00000000, CTRL 0x00000000)"
+    );
+    assert!(out.contains(
+        "region uart1 0xe0001000: device, execute-never (entry 0xe0010c16, pa 0xe0001000)"
+    ));
+    assert!(out.contains(
+        "region gp1-unused 0x80000000: fault (unmapped) (entry 0x00000000, translation faults)"
+    ));
+    // A PL310 left off is not `caches: on`; the D-cache off neither.
+    let off = drive::MmuReport {
+        l2_id: 0x4100_00C8,
+        ..m
+    };
+    assert!(!off.caches_on());
+    assert!(!drive::MmuReport {
+        sctlr: 0x00c5_1879,
+        ..m
+    }
+    .caches_on());
+    assert!(drive::MmuReport { l2_ctrl: 1, ..off }.caches_on());
+}
