@@ -1,4 +1,4 @@
-//! `debug panic|stall <ms>|bench|fault <f>`: diagnostics.
+//! `debug panic|stall <ms>|bench|fault <f>|flash-pace <ms>`: diagnostics.
 use super::super::drive::{self, DriveOps};
 use super::{Outcome, ParseError, Spec};
 use core::fmt::{self, Write};
@@ -6,15 +6,20 @@ use core::fmt::{self, Write};
 /// The `debug` command.
 pub const DEBUG: Spec = Spec {
     name: "debug",
-    args: "panic|stall <ms>|bench|fault <f>",
+    args: "panic|stall <ms>|bench|fault <f>|flash-pace <ms>",
     help: "diagnostics: `panic` forces a firmware panic (gates off, message, halt); \
            `stall <ms>` stops the control loop and heartbeat for <ms> of PL time (the \
            simulated PL's under QEMU); `bench` counts guest instructions of the control \
-           code; `fault <f>` makes a fault happen (<f>: external, adc-stuck or overrun)",
+           code; `fault <f>` makes a fault happen (<f>: external, adc-stuck or overrun); \
+           `flash-pace <ms>` holds each flash erase and program of a `config save` \
+           <ms> longer (0 ends it), so that a power cut lands inside the write",
 };
 
 /// Longest `debug stall`, ms.
 pub const STALL_MAX_MS: u32 = 10_000;
+
+/// Longest `debug flash-pace`, ms.
+pub const FLASH_PACE_MAX_MS: u32 = 2_000;
 
 /// A `debug` subcommand.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -27,6 +32,8 @@ pub enum DebugCmd {
     Stall(u32),
     /// `debug bench`.
     Bench,
+    /// `debug flash-pace <ms>`.
+    FlashPace(u32),
 }
 
 /// Parses the arguments of `debug`.
@@ -49,9 +56,16 @@ pub fn parse<'a>(args: &[&'a str]) -> Result<DebugCmd, ParseError<'a>> {
                 "stall takes a whole number of ms in 1..=10000",
             )),
         },
+        ["flash-pace", ms] => match ms.parse::<u32>() {
+            Ok(ms) if ms <= FLASH_PACE_MAX_MS => Ok(DebugCmd::FlashPace(ms)),
+            _ => Err(ParseError::BadArgs(
+                "debug",
+                "flash-pace takes a whole number of ms in 0..=2000",
+            )),
+        },
         _ => Err(ParseError::BadArgs(
             "debug",
-            "expected `debug panic`, `debug stall <ms>`, `debug bench` or `debug fault <f>`",
+            "expected `debug panic`, `debug stall <ms>`, `debug bench`, `debug fault <f>` or `debug flash-pace <ms>`",
         )),
     }
 }
@@ -79,6 +93,10 @@ pub fn execute<W: Write>(
             write!(out, "mpdcc_boundary: {} instructions\r\n", b.mpdcc_boundary)?;
             write!(out, "mpdcc_expm: {} instructions\r\n", b.mpdcc_expm)?;
             write!(out, "runs: {}\r\n", b.runs)?;
+        }
+        DebugCmd::FlashPace(ms) => {
+            try_drive!(out, "debug", drv.flash_pace(ms));
+            write!(out, "flash_pace: {ms} ms\r\n")?;
         }
     }
     Ok(Outcome::Ok)
