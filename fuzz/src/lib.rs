@@ -392,33 +392,80 @@ pub fn config_push(data: &[u8]) {
 mod tests {
     use super::*;
 
-    /// Each target over its seed corpus (`fuzz/seeds/<target>/`).
-    fn seeds(target: &str, f: fn(&[u8])) {
+    /// A target's seed corpus (`fuzz/seeds/<target>/`).
+    fn seeds(target: &str) -> Vec<Vec<u8>> {
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("seeds")
             .join(target);
-        let mut n = 0;
-        for e in std::fs::read_dir(&dir).unwrap() {
-            f(&std::fs::read(e.unwrap().path()).unwrap());
-            n += 1;
+        let mut v: Vec<(std::path::PathBuf, Vec<u8>)> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| {
+                let p = e.unwrap().path();
+                let b = std::fs::read(&p).unwrap();
+                (p, b)
+            })
+            .collect();
+        v.sort();
+        assert!(!v.is_empty(), "no seeds in {}", dir.display());
+        v.into_iter().map(|(_, b)| b).collect()
+    }
+
+    /// Runs `f` on every seed, then on `FUZZ_RUNS` (default 2000) inputs
+    /// mutated from them with a fixed random sequence: byte flips,
+    /// insertions, deletions, splices of two seeds. No coverage feedback
+    /// (`scripts/fuzz` has it); a quick check that `cargo test` can run.
+    fn run(target: &str, f: fn(&[u8])) {
+        let seeds = seeds(target);
+        for s in &seeds {
+            f(s);
         }
-        assert!(n > 0, "no seeds in {}", dir.display());
+        let runs: usize = std::env::var("FUZZ_RUNS")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(2000);
+        let mut x: u64 = 0x243F_6A88_85A3_08D3;
+        let mut rnd = |n: usize| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x % n.max(1) as u64) as usize
+        };
+        for _ in 0..runs {
+            let mut d = seeds[rnd(seeds.len())].clone();
+            for _ in 0..1 + rnd(4) {
+                let at = rnd(d.len() + 1);
+                match rnd(4) {
+                    0 if at < d.len() => d[at] ^= 1 << rnd(8),
+                    1 => d.insert(at, rnd(256) as u8),
+                    2 if at < d.len() => {
+                        d.remove(at);
+                    }
+                    _ => {
+                        let o = &seeds[rnd(seeds.len())];
+                        let from = rnd(o.len() + 1);
+                        let len = rnd(o.len() - from + 1);
+                        d.splice(at..at, o[from..from + len].iter().copied());
+                    }
+                }
+            }
+            f(&d);
+        }
     }
 
     #[test]
-    fn console_seeds() {
-        seeds("console", console);
+    fn console_seeds_and_mutants() {
+        run("console", console);
     }
     #[test]
-    fn record_seeds() {
-        seeds("record", record);
+    fn record_seeds_and_mutants() {
+        run("record", record);
     }
     #[test]
-    fn config_set_seeds() {
-        seeds("config_set", config_set);
+    fn config_set_seeds_and_mutants() {
+        run("config_set", config_set);
     }
     #[test]
-    fn config_push_seeds() {
-        seeds("config_push", config_push);
+    fn config_push_seeds_and_mutants() {
+        run("config_push", config_push);
     }
 }
