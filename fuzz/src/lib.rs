@@ -280,12 +280,12 @@ pub fn record(data: &[u8]) {
     let l = store::load(&mut f, &base).expect("memory flash");
     assert!(f == before, "load wrote to the flash");
     let mut seqs = [None; 2];
-    for k in 0..2 {
+    for (k, seq_k) in seqs.iter_mut().enumerate() {
         let (st, c) = store::decode(&f.0[k], &base);
         assert_eq!(st, l.slots[k]);
         if let SlotState::Valid(seq) = st {
             assert_in_range(&c.expect("a valid slot's values"), &base);
-            seqs[k] = Some(seq);
+            *seq_k = Some(seq);
         }
     }
     match l.config {
