@@ -481,6 +481,9 @@ fn run<T>(f: impl FnOnce(&mut State) -> Result<T, ServoError>) -> Result<T, Driv
     }
 }
 
+/// `debug flash-pace`: extra time around each flash erase and program, ms.
+static FLASH_PACE_MS: core::sync::atomic::AtomicU32 = core::sync::atomic::AtomicU32::new(0);
+
 /// Sleeps until an interrupt.
 fn wait() {
     // SAFETY: WFI has no memory effects.
@@ -671,13 +674,27 @@ impl DriveOps for FwDrive {
     fn config(&mut self) -> Result<ServoConfig, DriveError> {
         run(|s| Ok(*s.servo.config()))
     }
+    fn flash_pace(&mut self, ms: u32) -> Result<(), DriveError> {
+        FLASH_PACE_MS.store(ms, core::sync::atomic::Ordering::Relaxed);
+        Ok(())
+    }
     fn save_config(&mut self) -> Result<usize, DriveError> {
         let sc = run(|s| Ok(*s.servo.config()))?;
         // The flash is the console's alone: no need to hold off the
         // control loop while it is written.
-        let mut flash = SpiNor(Qspi);
-        let slot = store::save(&mut flash, &Config::from_servo(&sc), &sc)
+        let pace_us = u64::from(FLASH_PACE_MS.load(core::sync::atomic::Ordering::Relaxed)) * 1000;
+        let mut paced = store::PacedFlash {
+            flash: SpiNor(Qspi),
+            pause: || {
+                let end = timer::uptime_us() + pace_us;
+                while timer::uptime_us() < end {
+                    core::hint::spin_loop();
+                }
+            },
+        };
+        let slot = store::save(&mut paced, &Config::from_servo(&sc), &sc)
             .map_err(|_| DriveError::Flash)?;
+        let mut flash = paced.flash;
         let l = store::load(&mut flash, &sc).map_err(|_| DriveError::Flash)?;
         console(|s| {
             s.store.slots = l.slots;

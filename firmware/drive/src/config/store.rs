@@ -228,6 +228,36 @@ pub fn save<F: NorFlash>(
     Ok(slot)
 }
 
+/// A flash whose erases and programs each take longer: `pause` runs before
+/// and after every one. QEMU's flash model erases and programs at once,
+/// where a part takes up to seconds per sector erase and milliseconds per
+/// page; held apart, the steps of a save are wide enough for a power cut
+/// to land between any two of them.
+pub struct PacedFlash<F, P> {
+    /// The flash.
+    pub flash: F,
+    /// Waits.
+    pub pause: P,
+}
+
+impl<F: NorFlash, P: FnMut()> NorFlash for PacedFlash<F, P> {
+    fn read(&mut self, addr: u32, buf: &mut [u8]) -> Result<(), FlashError> {
+        self.flash.read(addr, buf)
+    }
+    fn erase_sector(&mut self, addr: u32) -> Result<(), FlashError> {
+        (self.pause)();
+        let r = self.flash.erase_sector(addr);
+        (self.pause)();
+        r
+    }
+    fn program(&mut self, addr: u32, data: &[u8]) -> Result<(), FlashError> {
+        (self.pause)();
+        let r = self.flash.program(addr, data);
+        (self.pause)();
+        r
+    }
+}
+
 impl Config {
     /// A configuration from stored values, checked like [`Config::set`].
     pub fn from_values(values: [f64; N_PARAMS], base: &ServoConfig) -> Result<Self, ConfigError> {

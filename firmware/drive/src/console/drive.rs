@@ -213,6 +213,11 @@ pub trait DriveOps {
     fn inject(&mut self, _f: Injection) -> Result<(), DriveError> {
         Err(DriveError::Unsupported)
     }
+    /// Holds each flash erase and program of later saves `ms` longer
+    /// (`debug flash-pace`; 0 ends it).
+    fn flash_pace(&mut self, _ms: u32) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
     /// Saves the running configuration to flash; returns the slot.
     fn save_config(&mut self) -> Result<usize, DriveError> {
         Err(DriveError::Unsupported)

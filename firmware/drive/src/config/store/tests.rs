@@ -185,3 +185,21 @@ fn sequence_numbers_wrap() {
         Some((cfg_with(0.02), 1))
     );
 }
+
+/// The pauses bracket each erase and program of a save: three writes
+/// (erase, values, CRC), so six pauses, and the record is the same.
+#[test]
+fn paced_flash_pauses_around_every_write_and_changes_nothing_else() {
+    let base = ServoConfig::default();
+    let mut pauses = 0;
+    let mut f = PacedFlash {
+        flash: FakeFlash::new(),
+        pause: || pauses += 1,
+    };
+    let c = cfg_with(0.05);
+    assert_eq!(save(&mut f, &c, &base), Ok(0));
+    let l = load(&mut f, &base).unwrap();
+    assert_eq!(l.config, Some((c, 0)));
+    drop(f);
+    assert_eq!(pauses, 6);
+}

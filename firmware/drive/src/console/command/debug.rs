@@ -1,4 +1,4 @@
-//! `debug panic|abort|mmu|stall <ms>|bench|fault <f>`: diagnostics.
+//! `debug panic|abort|mmu|stall <ms>|bench|fault <f>|flash-pace <ms>`: diagnostics.
 use super::super::drive::{self, DriveOps};
 use super::{Outcome, ParseError, Spec};
 use core::fmt::{self, Write};
@@ -6,7 +6,7 @@ use core::fmt::{self, Write};
 /// The `debug` command.
 pub const DEBUG: Spec = Spec {
     name: "debug",
-    args: "panic|abort|mmu|stall <ms>|bench|fault <f>",
+    args: "panic|abort|mmu|stall <ms>|bench|fault <f>|flash-pace <ms>",
     help: "diagnostics: `panic` forces a firmware panic (gates off, message, halt); \
            `abort` reads an unmapped address (data abort: gates off, DFSR/DFAR, halt); \
            `mmu` reads back SCTLR, the L2 and the translation table's memory types; \
@@ -14,11 +14,16 @@ pub const DEBUG: Spec = Spec {
            simulated PL's under QEMU); `bench` counts guest instructions of the control \
            code; `fault <f>` makes a fault happen (<f>: external, adc-stuck, overrun; \
            adc-swap or adc-invert: current channels a and b swapped, or a inverted, in the \
-           simulated PL's ADC path until reboot)",
+           simulated PL's ADC path until reboot); `flash-pace <ms>` holds each flash \
+           erase and program of a `config save` <ms> longer (0 ends it), so that a power \
+           cut lands inside the write",
 };
 
 /// Longest `debug stall`, ms.
 pub const STALL_MAX_MS: u32 = 10_000;
+
+/// Longest `debug flash-pace`, ms.
+pub const FLASH_PACE_MAX_MS: u32 = 2_000;
 
 /// A `debug` subcommand.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -35,6 +40,8 @@ pub enum DebugCmd {
     Stall(u32),
     /// `debug bench`.
     Bench,
+    /// `debug flash-pace <ms>`.
+    FlashPace(u32),
 }
 
 /// Parses the arguments of `debug`.
@@ -59,10 +66,17 @@ pub fn parse<'a>(args: &[&'a str]) -> Result<DebugCmd, ParseError<'a>> {
                 "stall takes a whole number of ms in 1..=10000",
             )),
         },
+        ["flash-pace", ms] => match ms.parse::<u32>() {
+            Ok(ms) if ms <= FLASH_PACE_MAX_MS => Ok(DebugCmd::FlashPace(ms)),
+            _ => Err(ParseError::BadArgs(
+                "debug",
+                "flash-pace takes a whole number of ms in 0..=2000",
+            )),
+        },
         _ => Err(ParseError::BadArgs(
             "debug",
             "expected `debug panic`, `debug abort`, `debug mmu`, `debug stall <ms>`, \
-             `debug bench` or `debug fault <f>`",
+             `debug bench`, `debug fault <f>` or `debug flash-pace <ms>`",
         )),
     }
 }
@@ -97,6 +111,10 @@ pub fn execute<W: Write>(
             write!(out, "mpdcc_boundary: {} instructions\r\n", b.mpdcc_boundary)?;
             write!(out, "mpdcc_expm: {} instructions\r\n", b.mpdcc_expm)?;
             write!(out, "runs: {}\r\n", b.runs)?;
+        }
+        DebugCmd::FlashPace(ms) => {
+            try_drive!(out, "debug", drv.flash_pace(ms));
+            write!(out, "flash_pace: {ms} ms\r\n")?;
         }
     }
     Ok(Outcome::Ok)
