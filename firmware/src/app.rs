@@ -74,9 +74,9 @@ fn banner(con: &mut Uart, boot: &control::Boot) {
     );
     let _ = write!(
         con,
-        "pl: {} (devcfg INT_STS 0x{:08x})\r\n\
+        "pl: {} (devcfg INT_STS 0x{:08x}, PSS_IDCODE 0x{:08x})\r\n\
          console on UART1 at {} 8N1; defmt log on UART0 at {} 8N1; type `help`\r\n{}",
-        boot.pl, boot.devcfg_int_sts, BAUD, LOG_BAUD, PROMPT
+        boot.pl, boot.devcfg_int_sts, boot.pss_idcode, BAUD, LOG_BAUD, PROMPT
     );
 }
 

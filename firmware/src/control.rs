@@ -32,7 +32,7 @@ use drive::hil::{self, HilError, HilReport, Paced, PacedStatus};
 use drive::pl::capture::{CapSample, CapState, CapStatus, Trigger};
 use drive::pl::fault::Faults;
 use drive::pl::mpdcc::{Mpdcc, MpdccError};
-use drive::pl::presence::Presence;
+use drive::pl::presence::{self, Selection};
 use drive::pl::top::Mode;
 use drive::servo::faults::FaultRecord;
 use drive::servo::{
@@ -142,39 +142,46 @@ fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
     Some(r)
 }
 
-/// What the PL check found, for the banner: `pl: ...` and devcfg's word.
+/// What the PL check found, for the banner: `pl: ...` and the PS's words.
 pub struct Boot {
     /// `PlKind` chosen.
     pub pl: PlKind,
     /// devcfg `INT_STS` as read.
     pub devcfg_int_sts: u32,
+    /// SLCR `PSS_IDCODE` as read.
+    pub pss_idcode: u32,
 }
 
 /// Presence check, then the drive on what was found. Call once, IRQs off.
+/// A simulated PL only where `PSS_IDCODE` says QEMU
+/// (`drive::pl::presence`): a board without our bitstream gets none.
 pub fn init() -> Boot {
     let sts = pl::devcfg_int_sts();
-    let presence = pl::detect();
+    let idcode = pl::pss_idcode();
+    let selection = presence::select(pl::detect(), presence::platform(idcode));
     let mut cfg = ServoConfig::default();
-    let (pl_kind, bus) = match presence {
-        Presence::Ours { version } => (PlKind::Bitstream(version), Some(Backend::Gp0(pl::Gp0))),
-        Presence::Unconfigured => match cosim::Cosim::open() {
-            // No bitstream, but QEMU runs the bridge: the Verilated PL with
-            // the same simulated motor.
+    let bus = match selection {
+        Selection::Bitstream { .. } => Some(Backend::Gp0(pl::Gp0)),
+        // The semihosting probe runs only here: an emulator answers it.
+        Selection::Simulated => match cosim::Cosim::open() {
+            // QEMU runs the bridge: the Verilated PL with the same
+            // simulated motor.
             Some(c) => {
                 let sim = SimConfig::default();
                 cfg = ServoConfig::for_plant(sim.motor, sim.adc_amps_per_count);
-                (PlKind::RtlCosim, Some(Backend::Cosim(c)))
+                Some(Backend::Cosim(c))
             }
-            // No bitstream: the simulated PL (the paper's motor, held at
-            // standstill), read through the same drivers.
+            // The simulated PL (the paper's motor, held at standstill),
+            // read through the same drivers.
             None => {
                 let sim = SimDrive::new(&SimConfig::default()).expect("paper motor parameters");
                 cfg = ServoConfig::for_plant(sim.config().motor, sim.config().adc_amps_per_count);
-                (PlKind::Simulated, Some(Backend::Sim(sim)))
+                Some(Backend::Sim(sim))
             }
         },
-        _ => (PlKind::Absent, None),
+        Selection::Absent(_) => None,
     };
+    let pl_kind = PlKind::of(selection, matches!(bus, Some(Backend::Cosim(_))));
     // The saved configuration, if the flash holds a valid one.
     let mut store = StoreStatus {
         slots: [store::SlotState::Empty; 2],
@@ -224,6 +231,7 @@ pub fn init() -> Boot {
     Boot {
         pl: pl_kind,
         devcfg_int_sts: sts,
+        pss_idcode: idcode,
     }
 }
 
@@ -551,21 +559,7 @@ impl DriveOps for FwDrive {
             },
             store: Some(s.store),
         })
-        .unwrap_or(DriveStatus {
-            mode: Mode::Off,
-            mpdtc_autonomous: true,
-            gates_on: false,
-            faults: Faults::default(),
-            measured: Default::default(),
-            torque_ref_nm: 0.0,
-            control_rate_hz: 0.0,
-            periods: 0,
-            overruns: 0,
-            pl: PlKind::Absent,
-            sim_time_scale: None,
-            store: None,
-            mpdcc,
-        })
+        .unwrap_or(DriveStatus::absent(mpdcc))
     }
     fn bench(&mut self) -> Result<Bench, DriveError> {
         crate::bench::run().ok_or(DriveError::Unsupported)

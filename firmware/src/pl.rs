@@ -23,6 +23,12 @@ pub fn devcfg_int_sts() -> u32 {
     reg(presence::DEVCFG_INT_STS).read()
 }
 
+/// SLCR `PSS_IDCODE` (a PS register: always safe to read); tells a Zynq
+/// from QEMU (`drive::pl::presence::platform`).
+pub fn pss_idcode() -> u32 {
+    reg(presence::SLCR_PSS_IDCODE).read()
+}
+
 /// Decides what is in the PL; GP0 is read only when devcfg says the PL is
 /// configured. Remembers whether GP0 may be used from now on.
 pub fn detect() -> Presence {

@@ -653,3 +653,85 @@ fn config_bad_input_changes_nothing() {
     );
     assert_eq!(d.servo.config(), &before);
 }
+
+/// A board booted without a usable PL: what the firmware's drive answers
+/// when presence detection found nothing it may drive.
+struct NoPl;
+
+impl DriveOps for NoPl {
+    fn mode(&mut self) -> Mode {
+        Mode::Off
+    }
+    fn set_mode(&mut self, _m: Mode) -> Result<(), DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn enable(&mut self) -> Result<(), DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn disable(&mut self) -> Result<(), DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn torque_ref(&mut self) -> f64 {
+        0.0
+    }
+    fn set_torque_ref(&mut self, _nm: f64) -> Result<(), DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn step(&mut self, _nm: f64, _window_s: f64) -> Result<StepResult, DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn faults(&mut self) -> Result<Faults, DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn clear_faults(&mut self) -> Result<Faults, DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn stall(&mut self, _ms: u32) -> Result<(), DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn status(&mut self) -> DriveStatus {
+        DriveStatus::absent(None)
+    }
+    fn bench(&mut self) -> Result<Bench, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+}
+
+#[test]
+fn board_without_bitstream_says_pl_absent_and_refuses_drive_commands() {
+    use crate::pl::presence::{detect, platform, select, PCFG_DONE};
+    // A ZedBoard booted without our bitstream: devcfg says unconfigured,
+    // PSS_IDCODE is an XC7Z020's (GP0 is not read: no bus is passed).
+    let mut gp0 = FakePl::new();
+    let sel = select(detect(0, &mut gp0), platform(0x3372_7093));
+    assert_eq!(PlKind::of(sel, false), PlKind::Absent);
+    assert_eq!(PlKind::of(sel, false).to_string(), "absent");
+    // The same reads under QEMU (PSS_IDCODE 0): the simulated PL.
+    let qemu = select(detect(0, &mut gp0), platform(0));
+    assert_eq!(PlKind::of(qemu, false), PlKind::Simulated);
+    assert_eq!(PlKind::of(qemu, true), PlKind::RtlCosim);
+    // A foreign bitstream on the board: absent as well.
+    gp0.set(regmap::TOP.addr(&regmap::ID), 0x1234_5678);
+    let foreign = select(detect(PCFG_DONE, &mut gp0), platform(0x3372_7093));
+    assert_eq!(PlKind::of(foreign, false), PlKind::Absent);
+
+    let mut d = NoPl;
+    let mut out = String::new();
+    execute(parse("status").unwrap(), &ctx(), &mut d, &mut out).unwrap();
+    assert!(out.contains("pl: absent\r\n"), "{out:?}");
+    assert!(!out.contains("simulated"), "{out:?}");
+    for line in [
+        "enable",
+        "mode foc",
+        "torque 0.1",
+        "step 0.2",
+        "fault",
+        "debug stall 5",
+    ] {
+        let mut out = String::new();
+        execute(parse(line).unwrap(), &ctx(), &mut d, &mut out).unwrap();
+        assert_one_final_line(&out);
+        assert!(out.starts_with("ERR pl-absent "), "{line}: {out:?}");
+        assert!(out.contains("bitstream"), "{line}: the hint: {out:?}");
+    }
+}
