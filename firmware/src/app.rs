@@ -177,7 +177,7 @@ fn irq_handler() {
                 TICKS.fetch_add(1, Ordering::Relaxed);
             }
             gic::IRQ_GLOBAL_TIMER => control::on_pl_tick(),
-            control::SGI_CONTROL => control::on_control(),
+            control::IRQ_CONTROL => control::on_control(),
             gic::IRQ_UART1 => {
                 let isr = CONSOLE.take_isr();
                 if isr & crate::ps::uart::ISR_ROVR != 0 {

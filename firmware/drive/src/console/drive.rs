@@ -84,6 +84,10 @@ pub struct DriveStatus {
     pub periods: u64,
     /// Control periods missed.
     pub overruns: u64,
+    /// Control interrupts (GIC SPI 61) taken.
+    pub control_irq: u64,
+    /// The control step's start latency after the boundary.
+    pub control_latency: crate::pl::irq::Latency,
     /// What drives the registers.
     pub pl: PlKind,
     /// Guest time / simulated time (simulated PL only).
@@ -107,6 +111,8 @@ impl DriveStatus {
             control_rate_hz: 0.0,
             periods: 0,
             overruns: 0,
+            control_irq: 0,
+            control_latency: Default::default(),
             pl: PlKind::Absent,
             sim_time_scale: None,
             store: None,

@@ -304,6 +304,13 @@ impl DriveOps for TestDrive {
             control_rate_hz: self.servo.control_rate_hz(),
             periods: self.servo.periods(),
             overruns: self.servo.overruns(),
+            control_irq: self.servo.periods(),
+            control_latency: crate::pl::irq::Latency {
+                n: 2,
+                min: 3,
+                max: 9,
+                sum: 12,
+            },
             pl: PlKind::Simulated,
             sim_time_scale: Some(4.0),
             store: None,
@@ -354,6 +361,8 @@ fn status_lists_the_drive_with_units() {
         "control_rate: 63939 Hz",
         "periods: 0",
         "overruns: 0",
+        "control_irq: 0",
+        "control_latency: min 3 mean 6.0 max 9 PL cycles (10 ns) after the boundary",
         "pl: simulated",
         "sim_time_scale: 4.00",
     ] {
