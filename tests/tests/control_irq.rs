@@ -1,0 +1,83 @@
+//! The control step paced by the PL's interrupt (GIC SPI 61, `IRQ_F2P[0]`)
+//! under QEMU: the PL model's line pends it through the distributor, the
+//! handler acknowledges `IRQ_STATUS` and reads `BOUNDARY_AGE`. Every
+//! control-period boundary of 1 s of PL time (simulated PL) or 0.1 s
+//! (co-simulated RTL) gets its interrupt and its step: `control_irq` equals
+//! `periods`, no overrun.
+use drivectl::link::{Reply, Session};
+use std::time::{Duration, Instant};
+use system_tests::{assert_ok, boot, boot_rtl, cmd, field, num};
+
+/// `control_latency: min <a> mean <b> max <c> PL cycles ...` as (a, b, c).
+fn latency(r: &Reply) -> (f64, f64, f64) {
+    let line = r
+        .lines
+        .iter()
+        .find_map(|l| l.strip_prefix("control_latency: "))
+        .unwrap_or_else(|| panic!("no control_latency: {r:?}"));
+    let w: Vec<&str> = line.split_whitespace().collect();
+    assert_eq!((w[0], w[2], w[4], w[6]), ("min", "mean", "max", "PL"), "{line}");
+    let n = |i: usize| w[i].parse::<f64>().unwrap();
+    (n(1), n(3), n(5))
+}
+
+/// Runs `mode` with the gates on and 0.2 N m until `periods` control
+/// periods passed (at most `wall` of wall time); returns the last status.
+fn run_periods(s: &mut Session, mode: &str, periods: f64, wall: Duration) -> Reply {
+    assert_ok(&cmd(s, &format!("mode {mode}")));
+    assert_ok(&cmd(s, "enable"));
+    assert_ok(&cmd(s, "torque 0.2"));
+    let start = Instant::now();
+    loop {
+        std::thread::sleep(Duration::from_millis(500));
+        let st = cmd(s, "status");
+        assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+        assert_eq!(num(&st, "overruns"), 0.0, "{mode}: {st:?}");
+        if num(&st, "periods") >= periods {
+            return st;
+        }
+        assert!(start.elapsed() < wall, "{mode}: too slow: {st:?}");
+    }
+}
+
+/// Every boundary an interrupt, every interrupt a step: the counts agree
+/// (a status line is one snapshot), and the step started within `max_lat`
+/// PL cycles of its boundary.
+fn check(st: &Reply, max_lat: f64) {
+    let (irq, periods) = (num(st, "control_irq"), num(st, "periods"));
+    assert_eq!(irq, periods, "{st:?}");
+    let (min, mean, max) = latency(st);
+    assert!(min <= mean && mean <= max && max <= max_lat, "{st:?}");
+}
+
+#[test]
+fn simulated_pl_paces_foc_and_mpdtc_for_one_second_of_pl_time() {
+    let mut s = boot();
+    let st = cmd(&mut s, "status");
+    assert_eq!(num(&st, "control_irq"), num(&st, "periods"), "{st:?}");
+    // FOC at 16 kHz, then MPDTC at 64 kHz: 1 s of PL time each.
+    let foc = run_periods(&mut s, "foc", 16_000.0, Duration::from_secs(240));
+    // The simulated PL's time stands while the guest handles the
+    // interrupt: the step starts in the boundary's cycle.
+    check(&foc, 0.0);
+    let before = num(&foc, "periods");
+    let mpdtc = run_periods(&mut s, "mpdtc", before + 64_000.0, Duration::from_secs(400));
+    check(&mpdtc, 0.0);
+}
+
+#[test]
+fn cosimulated_rtl_paces_foc_and_mpdtc_for_a_tenth_of_a_second() {
+    let mut s = boot_rtl();
+    let foc = run_periods(&mut s, "foc", 1_600.0, Duration::from_secs(300));
+    // The RTL runs in guest time: the latency is the PS's interrupt entry
+    // and the register reads of the bridge, well inside a period.
+    check(&foc, 2_000.0);
+    let before = num(&foc, "periods");
+    let mpdtc = run_periods(&mut s, "mpdtc", before + 6_400.0, Duration::from_secs(300));
+    check(&mpdtc, 1_000.0);
+    let stats = s
+        .finish_bridge()
+        .expect("a bridge")
+        .expect("its statistics");
+    assert!(stats.contains("\"mismatches\":0"), "{stats}");
+}
