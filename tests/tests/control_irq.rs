@@ -16,7 +16,11 @@ fn latency(r: &Reply) -> (f64, f64, f64) {
         .find_map(|l| l.strip_prefix("control_latency: "))
         .unwrap_or_else(|| panic!("no control_latency: {r:?}"));
     let w: Vec<&str> = line.split_whitespace().collect();
-    assert_eq!((w[0], w[2], w[4], w[6]), ("min", "mean", "max", "PL"), "{line}");
+    assert_eq!(
+        (w[0], w[2], w[4], w[6]),
+        ("min", "mean", "max", "PL"),
+        "{line}"
+    );
     let n = |i: usize| w[i].parse::<f64>().unwrap();
     (n(1), n(3), n(5))
 }
