@@ -1,8 +1,8 @@
 //! The control step paced by the PL's interrupt (GIC SPI 61, `IRQ_F2P[0]`)
 //! under QEMU: the PL model's line pends it through the distributor, the
 //! handler acknowledges `IRQ_STATUS` and reads `BOUNDARY_AGE`. Every
-//! control-period boundary gets its interrupt and its step (`control_irq`
-//! equals `periods`, no overrun): FOC and MPDTC for 1 s of PL time each on
+//! control-period boundary gets its interrupt and its step (no overrun,
+//! every step from an interrupt): FOC and MPDTC for 1 s of PL time each on
 //! the simulated PL; on the co-simulated RTL FOC for 0.1 s and MPDTC for
 //! 1,600 periods.
 use drivectl::link::{Reply, Session};
@@ -45,12 +45,13 @@ fn run_periods(s: &mut Session, mode: &str, periods: f64, wall: Duration) -> Rep
     }
 }
 
-/// Every boundary an interrupt, every interrupt a step: the counts agree
-/// (a status line is one snapshot), and the step started within `max_lat`
-/// PL cycles of its boundary.
-fn check(st: &Reply, max_lat: f64) {
+/// Every step came from an interrupt (`control_irq` >= `periods`; an
+/// interrupt whose `IRQ_STATUS` holds no boundary runs no step, at most
+/// `spurious` of them), and each step started within `max_lat` PL cycles
+/// of its boundary.
+fn check(st: &Reply, max_lat: f64, spurious: f64) {
     let (irq, periods) = (num(st, "control_irq"), num(st, "periods"));
-    assert_eq!(irq, periods, "{st:?}");
+    assert!(irq >= periods && irq - periods <= spurious, "{st:?}");
     let (min, mean, max) = latency(st);
     assert!(min <= mean && mean <= max && max <= max_lat, "{st:?}");
 }
@@ -60,14 +61,15 @@ fn simulated_pl_paces_foc_and_mpdtc_for_one_second_of_pl_time() {
     let mut s = boot();
     let st = cmd(&mut s, "status");
     assert_eq!(num(&st, "control_irq"), num(&st, "periods"), "{st:?}");
+    // The simulated PL pends SPI 61 only on its line: no spurious one.
     // FOC at 16 kHz, then MPDTC at 64 kHz: 1 s of PL time each.
     let foc = run_periods(&mut s, "foc", 16_000.0, Duration::from_secs(240));
     // The simulated PL's time stands while the guest handles the
     // interrupt: the step starts in the boundary's cycle.
-    check(&foc, 0.0);
+    check(&foc, 0.0, 0.0);
     let before = num(&foc, "periods");
     let mpdtc = run_periods(&mut s, "mpdtc", before + 64_000.0, Duration::from_secs(400));
-    check(&mpdtc, 0.0);
+    check(&mpdtc, 0.0, 0.0);
 }
 
 #[test]
@@ -79,12 +81,12 @@ fn cosimulated_rtl_paces_foc_and_mpdtc() {
     // and the bridge's register reads (about 45 cycles), or a console
     // critical section that held the interrupt off; always inside the
     // period, or the next boundary would count as an overrun.
-    check(&foc, 6_256.0);
+    check(&foc, 6_256.0, 2.0);
     // MPDTC: 1,600 periods of 1,564 cycles (25 ms of PL time: the
     // co-simulation runs tens of periods per wall second here).
     let before = num(&foc, "periods");
     let mpdtc = run_periods(&mut s, "mpdtc", before + 1_600.0, Duration::from_secs(900));
-    check(&mpdtc, 1_564.0);
+    check(&mpdtc, 1_564.0, 2.0);
     let stats = s
         .finish_bridge()
         .expect("a bridge")
