@@ -79,9 +79,9 @@ fn banner(con: &mut Uart, boot: &control::Boot) {
     );
     let _ = write!(
         con,
-        "pl: {} (devcfg INT_STS 0x{:08x})\r\n\
+        "pl: {} (devcfg INT_STS 0x{:08x}, PSS_IDCODE 0x{:08x})\r\n\
          console on UART1 at {} 8N1; defmt log on UART0 at {} 8N1; type `help`\r\n{}",
-        boot.pl, boot.devcfg_int_sts, BAUD, LOG_BAUD, PROMPT
+        boot.pl, boot.devcfg_int_sts, boot.pss_idcode, BAUD, LOG_BAUD, PROMPT
     );
 }
 
@@ -182,7 +182,7 @@ fn irq_handler() {
                 TICKS.fetch_add(1, Ordering::Relaxed);
             }
             gic::IRQ_GLOBAL_TIMER => control::on_pl_tick(),
-            control::SGI_CONTROL => control::on_control(),
+            control::IRQ_CONTROL => control::on_control(),
             gic::IRQ_UART1 => {
                 let isr = CONSOLE.take_isr();
                 if isr & crate::ps::uart::ISR_ROVR != 0 {

@@ -3,24 +3,30 @@
 //! pace it.
 //!
 //! Interrupts (one core, handlers do not nest):
-//! - the *PL tick* (global-timer comparator, IRQ 27) advances the simulated
-//!   PL by one control period of PL time and raises the control interrupt
-//!   when the PL reports a control-period boundary; with a bitstream it
-//!   raises it at the control rate. It is rescheduled so that the PL model
-//!   and the control step take at most about half of the CPU (the rest is
-//!   the console's): under QEMU the simulated PL may run slower than real
-//!   time, `status` reports the ratio as `sim_time_scale`.
-//!   With the co-simulated RTL (`cosim`) the PL runs in guest time on the
-//!   host: the tick syncs it to now and is set just after the next
-//!   control-period boundary the host reported.
-//! - the *control interrupt* (software-generated interrupt 1) runs
-//!   `Servo::control_step`: heartbeat, measurement, FOC or MPDTC inputs.
+//! - the *control interrupt* is the PL's: `irq_o` of `pl_top` on
+//!   `IRQ_F2P[0]`, GIC SPI 61, raised at each control-period boundary once
+//!   the step's sample is ready (`drive::pl::irq`). It runs
+//!   `Servo::control_step`: it reads `BOUNDARY_AGE` (the start latency),
+//!   acknowledges `IRQ_STATUS`, then heartbeat, measurement, FOC or MPDTC
+//!   inputs. With a bitstream the line is the board's; no PS timer paces
+//!   the loop. Under QEMU the PL model's line (the simulated PL's `irq_o`,
+//!   or a boundary the co-simulation reported) sets SPI 61 pending through
+//!   the distributor (`GICD_ISPENDR`): the same handler and acknowledge.
 //!   A boundary that finds the previous one still pending is an overrun.
 //!   `debug stall` makes it return early (no step, no heartbeat), so the
 //!   PL's watchdog trips while the simulated PL keeps running. The stall
 //!   is measured in PL time (the simulated PL's under QEMU: the drive's
 //!   own clock, independent of how fast the host runs the guest); while it
 //!   lasts the console waits, so the PL tick may use the whole CPU.
+//! - the *PL tick* (global-timer comparator, IRQ 27; QEMU only) is the
+//!   simulated PL's time: it advances the PL model by up to a control
+//!   period and pends SPI 61 when the model's line is up. It is
+//!   rescheduled so that the PL model and the control step take at most
+//!   about half of the CPU (the rest is the console's): under QEMU the
+//!   simulated PL may run slower than real time, `status` reports the
+//!   ratio as `sim_time_scale`. With the co-simulated RTL (`cosim`) the PL
+//!   runs in guest time on the host: the tick syncs it to now and is set
+//!   just after the next control-period boundary the host reported.
 use crate::ps::qspi::Qspi;
 use crate::ps::{gic, timer};
 use crate::{cosim, pl};
@@ -31,8 +37,9 @@ use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind
 use drive::hil::{self, HilError, HilReport, Paced, PacedStatus};
 use drive::pl::capture::{CapSample, CapState, CapStatus, Trigger};
 use drive::pl::fault::Faults;
+use drive::pl::irq::{self as ctrl_irq, Latency};
 use drive::pl::mpdcc::{Mpdcc, MpdccError};
-use drive::pl::presence::Presence;
+use drive::pl::presence::{self, Selection};
 use drive::pl::top::Mode;
 use drive::servo::faults::FaultRecord;
 use drive::servo::sensors::{PlTime, SensorReport};
@@ -43,8 +50,8 @@ use models::mpdcc::fpga::Inputs;
 use regmap::bus::{BusError, RegisterBus};
 use simpl::{SimConfig, SimDrive};
 
-/// Software-generated interrupt of the control step.
-pub const SGI_CONTROL: u32 = 1;
+/// The control interrupt: the PL's `IRQ_F2P[0]`.
+pub const IRQ_CONTROL: u32 = gic::IRQ_F2P0;
 
 /// What answers the drivers' register accesses.
 // The state lives in one static (no heap): the size difference is the point.
@@ -116,6 +123,10 @@ struct State {
     skip_boundaries: u32,
     /// The last `mpdcc run`.
     mpdcc_last: Option<HilReport>,
+    /// Control interrupts taken.
+    control_irq: u64,
+    /// The control step's start latency after the boundary.
+    latency: Latency,
 }
 
 /// The drive state, touched only with IRQs masked (one core).
@@ -155,7 +166,7 @@ fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
         Some((r, raise))
     })?;
     if raise {
-        gic::send_sgi_self(SGI_CONTROL);
+        gic::set_pending(IRQ_CONTROL);
     }
     Some(r)
 }
@@ -172,39 +183,46 @@ pub fn gates_off_read_back() -> Option<bool> {
     pwm.gates_enabled().ok()
 }
 
-/// What the PL check found, for the banner: `pl: ...` and devcfg's word.
+/// What the PL check found, for the banner: `pl: ...` and the PS's words.
 pub struct Boot {
     /// `PlKind` chosen.
     pub pl: PlKind,
     /// devcfg `INT_STS` as read.
     pub devcfg_int_sts: u32,
+    /// SLCR `PSS_IDCODE` as read.
+    pub pss_idcode: u32,
 }
 
 /// Presence check, then the drive on what was found. Call once, IRQs off.
+/// A simulated PL only where `PSS_IDCODE` says QEMU
+/// (`drive::pl::presence`): a board without our bitstream gets none.
 pub fn init() -> Boot {
     let sts = pl::devcfg_int_sts();
-    let presence = pl::detect();
+    let idcode = pl::pss_idcode();
+    let selection = presence::select(pl::detect(), presence::platform(idcode));
     let mut cfg = ServoConfig::default();
-    let (pl_kind, bus) = match presence {
-        Presence::Ours { version } => (PlKind::Bitstream(version), Some(Backend::Gp0(pl::Gp0))),
-        Presence::Unconfigured => match cosim::Cosim::open() {
-            // No bitstream, but QEMU runs the bridge: the Verilated PL with
-            // the same simulated motor.
+    let bus = match selection {
+        Selection::Bitstream { .. } => Some(Backend::Gp0(pl::Gp0)),
+        // The semihosting probe runs only here: an emulator answers it.
+        Selection::Simulated => match cosim::Cosim::open() {
+            // QEMU runs the bridge: the Verilated PL with the same
+            // simulated motor.
             Some(c) => {
                 let sim = SimConfig::default();
                 cfg = ServoConfig::for_plant(sim.motor, sim.adc_amps_per_count);
-                (PlKind::RtlCosim, Some(Backend::Cosim(c)))
+                Some(Backend::Cosim(c))
             }
-            // No bitstream: the simulated PL (the paper's motor, held at
-            // standstill), read through the same drivers.
+            // The simulated PL (the paper's motor, held at standstill),
+            // read through the same drivers.
             None => {
                 let sim = SimDrive::new(&SimConfig::default()).expect("paper motor parameters");
                 cfg = ServoConfig::for_plant(sim.config().motor, sim.config().adc_amps_per_count);
-                (PlKind::Simulated, Some(Backend::Sim(sim)))
+                Some(Backend::Sim(sim))
             }
         },
-        _ => (PlKind::Absent, None),
+        Selection::Absent(_) => None,
     };
+    let pl_kind = PlKind::of(selection, matches!(bus, Some(Backend::Cosim(_))));
     // The saved configuration, if the flash holds a valid one.
     let mut store = StoreStatus {
         slots: [store::SlotState::Empty; 2],
@@ -226,7 +244,7 @@ pub fn init() -> Boot {
     }
     if let Some(mut bus) = bus {
         let mut servo = Servo::new(&cfg).expect("servo configuration");
-        if servo.init(&mut bus).is_ok() {
+        if servo.init(&mut bus).is_ok() && ctrl_irq::enable(&mut bus).is_ok() {
             if let Backend::Cosim(c) = &mut bus {
                 // The boundaries crossed during the set-up are no overruns.
                 let _ = c.sync();
@@ -243,17 +261,23 @@ pub fn init() -> Boot {
                     next_tick: 0,
                     skip_boundaries: 0,
                     mpdcc_last: None,
+                    control_irq: 0,
+                    latency: Latency::default(),
                     store,
                 });
             });
-            gic::enable(gic::IRQ_GLOBAL_TIMER);
-            gic::enable(SGI_CONTROL);
-            timer::set_compare(timer::global_count() + 1000);
+            gic::enable(IRQ_CONTROL);
+            if !matches!(pl_kind, PlKind::Bitstream(_)) {
+                // The PL model's time under QEMU.
+                gic::enable(gic::IRQ_GLOBAL_TIMER);
+                timer::set_compare(timer::global_count() + 1000);
+            }
         }
     }
     Boot {
         pl: pl_kind,
         devcfg_int_sts: sts,
+        pss_idcode: idcode,
     }
 }
 
@@ -295,17 +319,22 @@ pub fn on_pl_tick() {
                 }
                 n
             }
-            // The bitstream's PL runs on its own: the tick is the control rate.
-            Backend::Gp0(_) => 1,
+            // The bitstream's PL paces the step itself (no tick runs).
+            Backend::Gp0(_) => 0,
             // The PL runs to now; the next tick comes just after the next
             // boundary (one global-timer count per PL cycle under QEMU).
             Backend::Cosim(_) => s.cosim_sync(now),
         };
-        s.serve(boundaries)
+        // The simulated PL's line, as the board's would be sampled.
+        let line = match &s.bus {
+            Backend::Sim(sim) => sim.pl().irq_line(),
+            _ => true,
+        };
+        s.serve(boundaries) && line
     })
     .unwrap_or(false);
     if raise {
-        gic::send_sgi_self(SGI_CONTROL);
+        gic::set_pending(IRQ_CONTROL);
     } else {
         let next = with(|s| match s.bus {
             Backend::Cosim(_) => s.next_tick,
@@ -325,16 +354,37 @@ const COSIM_TICK_LAG: u64 = 4;
 pub fn on_control() {
     with(|s| {
         s.control_pending = false;
+        s.control_irq += 1;
+        // Latency first: the age counts on while the step runs.
+        let boundary = match ctrl_irq::take(&mut s.bus) {
+            Ok(t) if t.status.boundary() => {
+                s.latency.add(t.age);
+                if t.status.missed() {
+                    if let Backend::Gp0(_) = s.bus {
+                        // The PL saw a boundary the step did not.
+                        s.servo.note_overruns(1);
+                    }
+                }
+                true
+            }
+            // A fault flag alone: no step.
+            Ok(_) => false,
+            Err(_) => true,
+        };
         let stalled = s.stalled();
         if stalled {
             s.servo.note_skipped();
-        } else {
+        } else if boundary {
             // A bus error leaves the gates to the PL's own fault logic.
             let start = timer::global_count();
             let _ = s.servo.control_step(&mut s.bus);
             crate::telemetry::on_step(&s.servo, timer::global_count() - start);
         }
         let end = timer::global_count();
+        if let Backend::Gp0(_) = s.bus {
+            // The PL paces the next step.
+            return;
+        }
         if let Backend::Cosim(_) = s.bus {
             // The PL runs in guest time: the next boundary, or at once
             // when the step ran past it (counted as an overrun there).
@@ -597,6 +647,8 @@ impl DriveOps for FwDrive {
             control_rate_hz: s.servo.control_rate_hz(),
             periods: s.servo.periods(),
             overruns: s.servo.overruns(),
+            control_irq: s.control_irq,
+            control_latency: s.latency,
             pl: s.pl,
             sim_time_scale: match &s.bus {
                 Backend::Sim(sim) => {
@@ -607,21 +659,7 @@ impl DriveOps for FwDrive {
             },
             store: Some(s.store),
         })
-        .unwrap_or(DriveStatus {
-            mode: Mode::Off,
-            mpdtc_autonomous: true,
-            gates_on: false,
-            faults: Faults::default(),
-            measured: Default::default(),
-            torque_ref_nm: 0.0,
-            control_rate_hz: 0.0,
-            periods: 0,
-            overruns: 0,
-            pl: PlKind::Absent,
-            sim_time_scale: None,
-            store: None,
-            mpdcc,
-        })
+        .unwrap_or(DriveStatus::absent(mpdcc))
     }
     fn bench(&mut self) -> Result<Bench, DriveError> {
         crate::bench::run().ok_or(DriveError::Unsupported)

@@ -25,6 +25,12 @@ pub fn devcfg_int_sts() -> u32 {
     reg(presence::DEVCFG_INT_STS).read()
 }
 
+/// SLCR `PSS_IDCODE` (a PS register: always safe to read); tells a Zynq
+/// from QEMU (`drive::pl::presence::platform`).
+pub fn pss_idcode() -> u32 {
+    reg(presence::SLCR_PSS_IDCODE).read()
+}
+
 /// The GP0 guard's words: devcfg `INT_STS`, SLCR `LVL_SHFTR_EN` and
 /// `FPGA_RST_CTRL` (PS registers: always safe to read).
 pub fn guard() -> Guard {

@@ -10,9 +10,9 @@
 //            out of reset; led_o[2] some gate was on within the last 2^23
 //            cycles (84 ms), so short PWM pulses stay visible; led_o[3] the
 //            external fault input is asserted (low)
-//   IRQ      pl_top's averaged-sample strobe, held 4 cycles (40 ns) so the
-//            PS interrupt controller's synchroniser sees it, to IRQ_F2P[0]
-//            (GIC ID 61, rising edge)
+//   IRQ      pl_top's control interrupt irq_o (a level, high until the
+//            firmware clears IRQ_STATUS) to IRQ_F2P[0] (GIC ID 61, level
+//            high): the PL paces the control step
 // Ports other than ddr_*/fixed_io_* (placed by the PS7 itself) are the
 // board's PL pins: boards/<board>.toml constrains each bit exactly once
 // (checked by scripts/board-check against this port list).
@@ -66,7 +66,6 @@ module board_top (
     wire [31:0] wdata, rdata;
     wire [ 3:0] wstrb;
     wire [ 1:0] bresp, rresp;
-    wire        avg_valid;
 
     ps_bd u_ps (
         .DDR_addr         (ddr_addr_io),
@@ -144,7 +143,8 @@ module board_top (
         .enc_b_i        (enc_b_i),
         .enc_z_i        (enc_z_i),
         .fault_ext_ni   (fault_ext_ni),
-        .adc_avg_valid_o(avg_valid)
+        .adc_avg_valid_o(),
+        .irq_o          (irq)
     );
 
     wire rst = !aresetn;
@@ -162,21 +162,17 @@ module board_top (
     end
 
     reg [22:0] gate_seen_q;
-    reg [ 3:0] irq_q;
     reg        run_q;
     always @(posedge clk) begin
         if (rst) begin
             gate_seen_q <= 23'd0;
-            irq_q       <= 4'd0;
             run_q       <= 1'b0;
         end else begin
             run_q <= 1'b1;
             if (|{gate_hi_o, gate_lo_o}) gate_seen_q <= {23{1'b1}};
             else if (gate_seen_q != 23'd0) gate_seen_q <= gate_seen_q - 23'd1;
-            irq_q <= {irq_q[2:0], avg_valid};
         end
     end
-    assign irq = |irq_q;
 
     wire fault_pin_n;
     sync2 #(

@@ -40,6 +40,15 @@ module pl_regs (
     input  wire         status_fault_i,
     output wire         heartbeat_we_o,
     output wire  [31:0] scratch_o,
+    output wire         irq_en_boundary_o,
+    output wire         irq_en_fault_o,
+    input  wire         irq_status_boundary_i,
+    input  wire         irq_status_fault_i,
+    input  wire         irq_status_missed_i,
+    output wire         irq_status_boundary_clr_o,
+    output wire         irq_status_fault_clr_o,
+    output wire         irq_status_missed_clr_o,
+    input  wire  [15:0] boundary_age_i,
     // block MPDTC
     output wire         mpdtc_ctrl_manual_o,
     output wire         mpdtc_ctrl_state_clr_o,
@@ -250,6 +259,7 @@ module pl_regs (
     reg   [1:0] err_q;
     reg  [31:0] heartbeat_q;
     reg  [31:0] scratch_q;
+    reg   [1:0] irq_en_q;
     reg   [2:0] mpdtc_ctrl_q;
     reg  [31:0] mpdtc_start_q;
     reg  [24:0] mpdtc_in_id_q;
@@ -377,6 +387,10 @@ module pl_regs (
     wire [31:0] n_heartbeat = merge(heartbeat_q, wr_data_i, wr_strb_i);
     wire w_scratch = wr_i && wr_addr_i == 15'h0018;
     wire [31:0] n_scratch = merge(scratch_q, wr_data_i, wr_strb_i);
+    wire w_irq_en = wr_i && wr_addr_i == 15'h0040;
+    wire [31:0] n_irq_en = merge({30'd0, irq_en_q}, wr_data_i, wr_strb_i);
+    wire w_irq_status = wr_i && wr_addr_i == 15'h0044;
+    wire [31:0] n_irq_status = merge(32'd0, wr_data_i, wr_strb_i);
     wire w_mpdtc_ctrl = wr_i && wr_addr_i == 15'h1000;
     wire [31:0] n_mpdtc_ctrl = merge({29'd0, mpdtc_ctrl_q}, wr_data_i, wr_strb_i);
     wire w_mpdtc_start = wr_i && wr_addr_i == 15'h1004;
@@ -621,31 +635,31 @@ module pl_regs (
     wire [31:0] n_cap_in_tref = merge({16'd0, cap_in_tref_q}, wr_data_i, wr_strb_i);
     wire w_cap_rd_index = wr_i && wr_addr_i == 15'h7040;
     wire [31:0] n_cap_rd_index = clamp(merge({22'd0, cap_rd_index_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h000003ff);
-    wire w_any_ok = w_ctrl | w_err | w_heartbeat | w_scratch | w_mpdtc_ctrl
-        | w_mpdtc_start | w_mpdtc_in_id | w_mpdtc_in_iq | w_mpdtc_in_cos0 | w_mpdtc_in_sin0
-        | w_mpdtc_in_cos1 | w_mpdtc_in_sin1 | w_mpdtc_in_cos2 | w_mpdtc_in_sin2 | w_mpdtc_in_w_ts
-        | w_mpdtc_in_t_ref | w_mpdtc_p_a | w_mpdtc_p_lambda | w_mpdtc_p_u0 | w_mpdtc_p_u0_half
-        | w_mpdtc_p_u0_h | w_mpdtc_p_psi_l | w_mpdtc_p_kinv_t | w_mpdtc_p_tol | w_mpdtc_p_k_int
-        | w_mpdtc_p_int_lim | w_mpdtc_p_int_cond | w_mpdtc_p_kp_o | w_mpdtc_p_ki_o | w_mpdtc_p_eta_lim
-        | w_mpdtc_p_w2_0 | w_mpdtc_p_w2_1 | w_mpdtc_p_w2_2 | w_mpdtc_p_w2_3 | w_mpdtc_align_vec
-        | w_mpdtc_align_period | w_mpdtc_align_on | w_mpdtc_align_time | w_mpdtc_fe_ang_scale | w_mpdtc_fe_spd_scale
-        | w_mpdtc_fe_age0 | w_mpdtc_fe_age1 | w_mpdtc_fe_age2 | w_mpdtc_fe_off_a | w_mpdtc_fe_off_b
-        | w_mpdtc_fe_off_c | w_mpdtc_fe_gain_a | w_mpdtc_fe_gain_b | w_mpdtc_fe_gain_c | w_mpdcc_start
-        | w_mpdcc_n_use | w_mpdcc_s_prev | w_mpdcc_i_a | w_mpdcc_i_b | w_mpdcc_psi_a
-        | w_mpdcc_psi_b | w_mpdcc_v_n | w_mpdcc_v_ph_a | w_mpdcc_v_ph_b | w_mpdcc_v_ph_c
-        | w_mpdcc_iref_a | w_mpdcc_iref_b | w_mpdcc_omega_r | w_mpdcc_omega_s | w_mpdcc_c_tau
-        | w_mpdcc_c_r | w_mpdcc_c_w | w_mpdcc_c_p | w_mpdcc_c_s | w_mpdcc_c_3
-        | w_mpdcc_c_d | w_mpdcc_c_n | w_mpdcc_c_ph | w_mpdcc_s3h | w_mpdcc_v_ph_ref
-        | w_mpdcc_c_tau1 | w_mpdcc_c_r1 | w_mpdcc_c_w1 | w_mpdcc_c_s1 | w_mpdcc_vdc_half
-        | w_mpdcc_g3 | w_mpdcc_gd | w_mpdcc_g3_1 | w_mpdcc_bnd_ia | w_mpdcc_bnd_ib
-        | w_mpdcc_bnd_ic | w_mpdcc_bnd_vn | w_mpdcc_bnd_vpa | w_mpdcc_bnd_vpb | w_mpdcc_bnd_vpc
-        | w_mpdcc_lambda_n | w_gate_ctrl | w_dead_time | w_pwm_period | w_duty_a
-        | w_duty_b | w_duty_c | w_sw_state | w_adc_ctrl | w_adc_period
-        | w_adc_avg_log2 | w_enc_cpr | w_enc_window | w_fault_status | w_oc_limit
-        | w_wdg_timeout | w_cap_source | w_cap_pre | w_cap_decim | w_cap_step
-        | w_cap_thr_ch | w_cap_thr_level | w_cap_thr_edge | w_cap_sel | w_cap_arm
-        | w_cap_trig | w_cap_in_id | w_cap_in_iq | w_cap_in_torque | w_cap_in_tref
-        | w_cap_rd_index;
+    wire w_any_ok = w_ctrl | w_err | w_heartbeat | w_scratch | w_irq_en
+        | w_irq_status | w_mpdtc_ctrl | w_mpdtc_start | w_mpdtc_in_id | w_mpdtc_in_iq
+        | w_mpdtc_in_cos0 | w_mpdtc_in_sin0 | w_mpdtc_in_cos1 | w_mpdtc_in_sin1 | w_mpdtc_in_cos2
+        | w_mpdtc_in_sin2 | w_mpdtc_in_w_ts | w_mpdtc_in_t_ref | w_mpdtc_p_a | w_mpdtc_p_lambda
+        | w_mpdtc_p_u0 | w_mpdtc_p_u0_half | w_mpdtc_p_u0_h | w_mpdtc_p_psi_l | w_mpdtc_p_kinv_t
+        | w_mpdtc_p_tol | w_mpdtc_p_k_int | w_mpdtc_p_int_lim | w_mpdtc_p_int_cond | w_mpdtc_p_kp_o
+        | w_mpdtc_p_ki_o | w_mpdtc_p_eta_lim | w_mpdtc_p_w2_0 | w_mpdtc_p_w2_1 | w_mpdtc_p_w2_2
+        | w_mpdtc_p_w2_3 | w_mpdtc_align_vec | w_mpdtc_align_period | w_mpdtc_align_on | w_mpdtc_align_time
+        | w_mpdtc_fe_ang_scale | w_mpdtc_fe_spd_scale | w_mpdtc_fe_age0 | w_mpdtc_fe_age1 | w_mpdtc_fe_age2
+        | w_mpdtc_fe_off_a | w_mpdtc_fe_off_b | w_mpdtc_fe_off_c | w_mpdtc_fe_gain_a | w_mpdtc_fe_gain_b
+        | w_mpdtc_fe_gain_c | w_mpdcc_start | w_mpdcc_n_use | w_mpdcc_s_prev | w_mpdcc_i_a
+        | w_mpdcc_i_b | w_mpdcc_psi_a | w_mpdcc_psi_b | w_mpdcc_v_n | w_mpdcc_v_ph_a
+        | w_mpdcc_v_ph_b | w_mpdcc_v_ph_c | w_mpdcc_iref_a | w_mpdcc_iref_b | w_mpdcc_omega_r
+        | w_mpdcc_omega_s | w_mpdcc_c_tau | w_mpdcc_c_r | w_mpdcc_c_w | w_mpdcc_c_p
+        | w_mpdcc_c_s | w_mpdcc_c_3 | w_mpdcc_c_d | w_mpdcc_c_n | w_mpdcc_c_ph
+        | w_mpdcc_s3h | w_mpdcc_v_ph_ref | w_mpdcc_c_tau1 | w_mpdcc_c_r1 | w_mpdcc_c_w1
+        | w_mpdcc_c_s1 | w_mpdcc_vdc_half | w_mpdcc_g3 | w_mpdcc_gd | w_mpdcc_g3_1
+        | w_mpdcc_bnd_ia | w_mpdcc_bnd_ib | w_mpdcc_bnd_ic | w_mpdcc_bnd_vn | w_mpdcc_bnd_vpa
+        | w_mpdcc_bnd_vpb | w_mpdcc_bnd_vpc | w_mpdcc_lambda_n | w_gate_ctrl | w_dead_time
+        | w_pwm_period | w_duty_a | w_duty_b | w_duty_c | w_sw_state
+        | w_adc_ctrl | w_adc_period | w_adc_avg_log2 | w_enc_cpr | w_enc_window
+        | w_fault_status | w_oc_limit | w_wdg_timeout | w_cap_source | w_cap_pre
+        | w_cap_decim | w_cap_step | w_cap_thr_ch | w_cap_thr_level | w_cap_thr_edge
+        | w_cap_sel | w_cap_arm | w_cap_trig | w_cap_in_id | w_cap_in_iq
+        | w_cap_in_torque | w_cap_in_tref | w_cap_rd_index;
     // Access errors of this cycle (set ERR).
     wire bad_value = (w_ctrl && bad_ctrl) || (w_mpdcc_bnd_ia && bad_mpdcc_bnd_ia) || (w_mpdcc_bnd_ib && bad_mpdcc_bnd_ib) || (w_mpdcc_bnd_ic && bad_mpdcc_bnd_ic) || (w_mpdcc_bnd_vn && bad_mpdcc_bnd_vn) || (w_mpdcc_bnd_vpa && bad_mpdcc_bnd_vpa) || (w_mpdcc_bnd_vpb && bad_mpdcc_bnd_vpb) || (w_mpdcc_bnd_vpc && bad_mpdcc_bnd_vpc) || (w_adc_avg_log2 && bad_adc_avg_log2) || (w_cap_thr_ch && bad_cap_thr_ch) || (w_cap_sel && bad_cap_sel);
     wire bad_addr = (wr_i && !w_any_ok) || (rd_i && rd_err_o);
@@ -658,6 +672,7 @@ module pl_regs (
             err_q <= 2'h0;
             heartbeat_q <= 32'h0;
             scratch_q <= 32'h0;
+            irq_en_q <= 2'h0;
             mpdtc_ctrl_q <= 3'h3;
             mpdtc_start_q <= 32'h0;
             mpdtc_in_id_q <= 25'h0;
@@ -780,6 +795,7 @@ module pl_regs (
             err_q <= (err_q & ~(w_err ? n_err[1:0] : 2'd0)) | {bad_addr, bad_value};
             if (w_heartbeat) heartbeat_q <= n_heartbeat[31:0];
             if (w_scratch) scratch_q <= n_scratch[31:0];
+            if (w_irq_en) irq_en_q <= n_irq_en[1:0];
             if (w_mpdtc_ctrl) mpdtc_ctrl_q <= n_mpdtc_ctrl[2:0];
             if (w_mpdtc_start) mpdtc_start_q <= n_mpdtc_start[31:0];
             if (w_mpdtc_in_id) mpdtc_in_id_q <= n_mpdtc_in_id[24:0];
@@ -906,12 +922,15 @@ module pl_regs (
         rd_err_o  = 1'b0;
         case (rd_addr_i)
             15'h0000: rd_data_o = 32'h50534452;  // ID
-            15'h0004: rd_data_o = 32'h00010003;  // VERSION
+            15'h0004: rd_data_o = 32'h00010004;  // VERSION
             15'h0008: rd_data_o = {30'd0, ctrl_q};  // CTRL
             15'h000c: rd_data_o = {28'd0, status_fault_i, status_gates_active_i, status_mode_i};  // STATUS
             15'h0010: rd_data_o = {30'd0, err_q};  // ERR
             15'h0014: rd_data_o = heartbeat_q;  // HEARTBEAT
             15'h0018: rd_data_o = scratch_q;  // SCRATCH
+            15'h0040: rd_data_o = {30'd0, irq_en_q};  // IRQ_EN
+            15'h0044: rd_data_o = {29'd0, irq_status_missed_i, irq_status_fault_i, irq_status_boundary_i};  // IRQ_STATUS
+            15'h0048: rd_data_o = {16'd0, boundary_age_i};  // BOUNDARY_AGE
             15'h1000: rd_data_o = {29'd0, mpdtc_ctrl_q};  // MPDTC_CTRL
             15'h1004: rd_data_o = mpdtc_start_q;  // MPDTC_START
             15'h1008: rd_data_o = {mpdtc_status_done_count_i, 12'd0, mpdtc_status_s_next_i, mpdtc_status_busy_i};  // MPDTC_STATUS
@@ -1066,6 +1085,11 @@ module pl_regs (
     assign ctrl_mode_o = ctrl_q;
     assign heartbeat_we_o = w_heartbeat;
     assign scratch_o = scratch_q;
+    assign irq_en_boundary_o = irq_en_q[0];
+    assign irq_en_fault_o = irq_en_q[1];
+    assign irq_status_boundary_clr_o = w_irq_status ? n_irq_status[0] : 1'd0;
+    assign irq_status_fault_clr_o = w_irq_status ? n_irq_status[1] : 1'd0;
+    assign irq_status_missed_clr_o = w_irq_status ? n_irq_status[2] : 1'd0;
     assign mpdtc_ctrl_manual_o = mpdtc_ctrl_q[0];
     assign mpdtc_ctrl_state_clr_o = mpdtc_ctrl_q[1];
     assign mpdtc_ctrl_auto_o = mpdtc_ctrl_q[2];
@@ -1212,6 +1236,8 @@ module pl_regs (
             if ($past(!w_heartbeat)) assert (heartbeat_q == $past(heartbeat_q));
             // SCRATCH: changed only by a write.
             if ($past(!w_scratch)) assert (scratch_q == $past(scratch_q));
+            // IRQ_EN: changed only by a write.
+            if ($past(!w_irq_en)) assert (irq_en_q == $past(irq_en_q));
             // MPDTC_CTRL: changed only by a write.
             if ($past(!w_mpdtc_ctrl)) assert (mpdtc_ctrl_q == $past(mpdtc_ctrl_q));
             // MPDTC_START: changed only by a write.

@@ -78,7 +78,10 @@ module pl_top #(
     input  wire        fault_ext_ni,
     // one-cycle strobe: a new averaged current sample is in ADC_IA..IC
     // (trigger for a PL controller or a PS interrupt)
-    output wire        adc_avg_valid_o
+    output wire        adc_avg_valid_o,
+    // Control interrupt to the PS's IRQ_F2P[0] (GIC SPI 61), a level
+    // (ctrl_irq: IRQ_EN, IRQ_STATUS, BOUNDARY_AGE)
+    output wire        irq_o
 );
 `include "regmap.vh"
     wire rst = !s_axi_aresetn_i;
@@ -237,6 +240,9 @@ module pl_top #(
     wire [ 2:0] state_sel = sel_pwm ? pwm_s : sel_state ? mpdtc_state : 3'b000;
     wire drive_en = gate_en && (sel_pwm || (sel_state && (mp_manual || seq_drive)));
     wire fault_any = |fault_status;
+    wire [ 1:0] irq_en;
+    wire [ 2:0] irq_status, irq_clr;
+    wire [15:0] boundary_age;
     wire seq_run = sel_state && gate_en && !mp_manual && !mp_clr && !fault_any && !trip;
 
     // The generated register file: one port per field (docs/register-map.md).
@@ -259,6 +265,15 @@ module pl_top #(
         .status_fault_i             (fault_any),
         .heartbeat_we_o             (heartbeat),
         .scratch_o                  (),
+        .irq_en_boundary_o          (irq_en[0]),
+        .irq_en_fault_o             (irq_en[1]),
+        .irq_status_boundary_i      (irq_status[0]),
+        .irq_status_fault_i         (irq_status[1]),
+        .irq_status_missed_i        (irq_status[2]),
+        .irq_status_boundary_clr_o  (irq_clr[0]),
+        .irq_status_fault_clr_o     (irq_clr[1]),
+        .irq_status_missed_clr_o    (irq_clr[2]),
+        .boundary_age_i             (boundary_age),
         // MPDTC
         .mpdtc_ctrl_manual_o        (mp_manual),
         .mpdtc_ctrl_state_clr_o     (mp_clr),
@@ -458,6 +473,22 @@ module pl_top #(
             default: cap_sel_ch = enc_speed;
         endcase
     end
+
+    // The control-period boundary, when the control step's sample is ready:
+    // the PWM counter bottom in mode FOC-PWM (the duties load there; the
+    // ADC average of the period before is in), else the new ADC average.
+    wire ctrl_boundary = sel_pwm ? (pwm_down && pwm_count == 16'd0) : adc_avg_valid_o;
+    ctrl_irq u_irq (
+        .clk_i     (clk_i),
+        .rst_i     (rst),
+        .boundary_i(ctrl_boundary),
+        .fault_i   (fault_any),
+        .en_i      (irq_en),
+        .clr_i     (irq_clr),
+        .status_o  (irq_status),
+        .irq_o     (irq_o),
+        .age_o     (boundary_age)
+    );
 
 `ifdef FORMAL
     // capture_buf only observes (nothing of it reaches the gates or the

@@ -59,7 +59,7 @@ set_property -dict [list CONFIG.FREQ_HZ $fclk0_hz CONFIG.ASSOCIATED_BUSIF M_AXI_
     CONFIG.ASSOCIATED_RESET aresetn] $fclk0
 create_bd_port -dir O -type rst aresetn
 set irq [create_bd_port -dir I -type intr irq_f2p]
-set_property CONFIG.SENSITIVITY EDGE_RISING $irq
+set_property CONFIG.SENSITIVITY LEVEL_HIGH $irq
 
 connect_bd_net [get_bd_pins ps7/FCLK_CLK0] [get_bd_pins ps7/M_AXI_GP0_ACLK] \
     [get_bd_pins axi_conv/aclk] [get_bd_pins rst_fclk0/slowest_sync_clk] [get_bd_ports fclk0]

@@ -100,6 +100,7 @@ proc set_property {args} {
     foreach {k v} $kv {
         dict set ::stub_props $obj $k $v
         if {$obj eq "cell:ps7"} { fact ps7 $k $v }
+        if {[string match "port:*" $obj]} { fact portprop [string range $obj 5 end] $k $v }
     }
 }
 proc get_bd_intf_pins {p} { return "pin:$p" }
@@ -112,6 +113,7 @@ proc get_bd_ports {p} { return "port:$p" }
 proc connect_bd_intf_net {a b} {}
 proc connect_bd_net {args} {
     if {[llength $args] < 2} { error "connect_bd_net: needs two ends" }
+    fact net {*}$args
 }
 proc get_bd_addr_spaces {p} { return "space:$p" }
 proc get_bd_addr_segs {p} { return "seg:$p" }

@@ -250,7 +250,7 @@ pub const VERSION: Register = Register {
     offset: 0x004,
     access: Access::Ro,
     width: 32,
-    reset: 0x0001_0003,
+    reset: 0x0001_0004,
     format: "major.minor, 16 bits each",
     invalid: Invalid::AllValid,
     hw: Hw::Const,
@@ -362,6 +362,73 @@ pub const SCRATCH: Register = Register {
     hw: Hw::Plain,
     fields: &[],
     doc: "No effect; for bus tests.",
+};
+
+/// Top/ID: control interrupt enables (`irq_o`, the PS's `IRQ_F2P[0]`,
+/// GIC SPI 61).
+pub const IRQ_EN: Register = Register {
+    name: "IRQ_EN",
+    offset: 0x040,
+    access: Access::Rw,
+    width: 2,
+    reset: 0,
+    format: "bits",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[
+        field("BOUNDARY", 0, 1, "IRQ_STATUS.BOUNDARY raises irq_o"),
+        field("FAULT", 1, 1, "IRQ_STATUS.FAULT raises irq_o"),
+    ],
+    doc: "Which IRQ_STATUS flags drive the interrupt line (reset: none).",
+};
+/// Top/ID: control interrupt flags.
+pub const IRQ_STATUS: Register = Register {
+    name: "IRQ_STATUS",
+    offset: 0x044,
+    access: Access::W1c,
+    width: 3,
+    reset: 0,
+    format: "bits, sticky",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[
+        field(
+            "BOUNDARY",
+            0,
+            1,
+            "a control-period boundary with its sample ready: the new ADC average (modes \
+             off and MPDTC) or the PWM counter bottom (mode FOC-PWM)",
+        ),
+        field(
+            "FAULT",
+            1,
+            1,
+            "a fault was newly latched (FAULT_STATUS left 0)",
+        ),
+        field(
+            "MISSED",
+            2,
+            1,
+            "a boundary came while BOUNDARY was still set (a control step missed); no \
+             interrupt of its own",
+        ),
+    ],
+    doc: "Why irq_o is high: irq_o = |(IRQ_STATUS[1:0] & IRQ_EN), registered (one cycle \
+          late). The handler writes the flags it serves back to clear them.",
+};
+/// Top/ID: PL cycles since the last control-period boundary.
+pub const BOUNDARY_AGE: Register = Register {
+    name: "BOUNDARY_AGE",
+    offset: 0x048,
+    access: Access::Ro,
+    width: 16,
+    reset: 0,
+    format: "unsigned, PL clock cycles (10 ns), saturates at 65535",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "0 in the cycle after IRQ_STATUS.BOUNDARY is set, then counts: read at the start \
+          of the control step, the step's latency after the boundary.",
 };
 
 // ---------------------------------------------------------------- block 3
@@ -1335,7 +1402,18 @@ pub const TOP: Block = Block {
     name: "TOP",
     index: 0,
     doc: "Identification, mode, status, heartbeat.",
-    registers: &[&ID, &VERSION, &CTRL, &STATUS, &ERR, &HEARTBEAT, &SCRATCH],
+    registers: &[
+        &ID,
+        &VERSION,
+        &CTRL,
+        &STATUS,
+        &ERR,
+        &HEARTBEAT,
+        &SCRATCH,
+        &IRQ_EN,
+        &IRQ_STATUS,
+        &BOUNDARY_AGE,
+    ],
 };
 /// Block 1 (registers defined with `mpdtc_core`).
 pub const MPDTC: Block = Block {

@@ -95,7 +95,7 @@ pub mod top {
         }
     }
 
-    /// `TOP.VERSION` at `0x43C00004` (RO, 32 bits, reset `0x10003`): Version of this register map (bumped when the table changes).
+    /// `TOP.VERSION` at `0x43C00004` (RO, 32 bits, reset `0x10004`): Version of this register map (bumped when the table changes).
     ///
     /// Format: major.minor, 16 bits each. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -119,7 +119,7 @@ pub mod top {
 
     impl VersionValue {
         /// The value after reset.
-        pub const RESET: Self = Self(0x10003);
+        pub const RESET: Self = Self(0x10004);
         /// All zeros.
         pub const ZERO: Self = Self(0);
 
@@ -519,6 +519,226 @@ pub mod top {
     }
 
     impl Default for ScratchValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `TOP.IRQ_EN` at `0x43C00040` (RW, 2 bits, reset `0x0`): Which IRQ_STATUS flags drive the interrupt line (reset: none).
+    ///
+    /// Format: bits. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct IrqEn;
+
+    impl IrqEn {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C00040;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::IRQ_EN;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<IrqEnValue, BusError> {
+            bus.read(Self::ADDR).map(IrqEnValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: IrqEnValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(IrqEnValue) -> IrqEnValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`IrqEn`]; bits above bit 1 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct IrqEnValue(u32);
+
+    impl IrqEnValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `BOUNDARY` (bit 0): IRQ_STATUS.BOUNDARY raises irq_o
+        pub const fn boundary(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `BOUNDARY` (bit 0).
+        pub const fn with_boundary(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+
+        /// `FAULT` (bit 1): IRQ_STATUS.FAULT raises irq_o
+        pub const fn fault(self) -> bool {
+            (self.0 >> 1) & 1 != 0
+        }
+
+        /// Sets `FAULT` (bit 1).
+        pub const fn with_fault(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 1)) | ((v as u32) << 1))
+        }
+    }
+
+    impl Default for IrqEnValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `TOP.IRQ_STATUS` at `0x43C00044` (W1C, 3 bits, reset `0x0`): Why irq_o is high: irq_o = |(IRQ_STATUS[1:0] & IRQ_EN), registered (one cycle late). The handler writes the flags it serves back to clear them.
+    ///
+    /// Format: bits, sticky. Writes: write 1 to clear (a bit whose condition is still present stays set).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct IrqStatus;
+
+    impl IrqStatus {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C00044;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::IRQ_STATUS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<IrqStatusValue, BusError> {
+            bus.read(Self::ADDR).map(IrqStatusValue)
+        }
+
+        /// Writes `value`: every 1 bit clears that flag.
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: IrqStatusValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+    }
+
+    /// A value of [`IrqStatus`]; bits above bit 2 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct IrqStatusValue(u32);
+
+    impl IrqStatusValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `BOUNDARY` (bit 0): a control-period boundary with its sample ready: the new ADC average (modes off and MPDTC) or the PWM counter bottom (mode FOC-PWM)
+        pub const fn boundary(self) -> bool {
+            self.0 & 1 != 0
+        }
+
+        /// Sets `BOUNDARY` (bit 0).
+        pub const fn with_boundary(self, v: bool) -> Self {
+            Self((self.0 & !1) | v as u32)
+        }
+
+        /// `FAULT` (bit 1): a fault was newly latched (FAULT_STATUS left 0)
+        pub const fn fault(self) -> bool {
+            (self.0 >> 1) & 1 != 0
+        }
+
+        /// Sets `FAULT` (bit 1).
+        pub const fn with_fault(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 1)) | ((v as u32) << 1))
+        }
+
+        /// `MISSED` (bit 2): a boundary came while BOUNDARY was still set (a control step missed); no interrupt of its own
+        pub const fn missed(self) -> bool {
+            (self.0 >> 2) & 1 != 0
+        }
+
+        /// Sets `MISSED` (bit 2).
+        pub const fn with_missed(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 2)) | ((v as u32) << 2))
+        }
+    }
+
+    impl Default for IrqStatusValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `TOP.BOUNDARY_AGE` at `0x43C00048` (RO, 16 bits, reset `0x0`): 0 in the cycle after IRQ_STATUS.BOUNDARY is set, then counts: read at the start of the control step, the step's latency after the boundary.
+    ///
+    /// Format: unsigned, PL clock cycles (10 ns), saturates at 65535. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct BoundaryAge;
+
+    impl BoundaryAge {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C00048;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::BOUNDARY_AGE;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<BoundaryAgeValue, BusError> {
+            bus.read(Self::ADDR).map(BoundaryAgeValue)
+        }
+    }
+
+    /// A value of [`BoundaryAge`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct BoundaryAgeValue(u32);
+
+    impl BoundaryAgeValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, PL clock cycles (10 ns), saturates at 65535).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for BoundaryAgeValue {
         fn default() -> Self {
             Self::RESET
         }

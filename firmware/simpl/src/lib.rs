@@ -11,7 +11,7 @@
 //!
 //! Modules: [`pl`] (`SimPl`: the register file [`regs`] and the blocks
 //! [`adc`], [`capture`], [`core`], [`enc`], [`fault`], [`frontend`],
-//! [`mpdcc`], [`pwm`], [`seq`]), [`inverter`] (leg potentials),
+//! [`irq`], [`mpdcc`], [`pwm`], [`seq`]), [`inverter`] (leg potentials),
 //! [`simdrive`] (`SimDrive`: `SimPl`, inverter and PMSM plant), [`gates`],
 //! [`cosim`].
 #![cfg_attr(not(test), no_std)]
@@ -26,6 +26,7 @@ pub mod fault;
 pub mod frontend;
 pub mod gates;
 pub mod inverter;
+pub mod irq;
 pub mod mpdcc;
 pub mod pl;
 pub mod pwm;

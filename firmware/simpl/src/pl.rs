@@ -30,6 +30,7 @@ use super::regs::{slot, slot_of, Regs, WriteResult};
 use super::seq::{Seq, SeqIn};
 use super::NEVER;
 use crate::gates::{DeadTime, GateDriver, GateInputs, GateOutputs, DEAD_TIME_MAX_CYCLES};
+use crate::irq::CtrlIrq;
 use models::pmsm::frontend_fixed::{FrontendInputs, FrontendParams};
 use models::pmsm::mpdtc_fixed::{FixedInputs, FixedParams};
 use regmap::bus::BusError;
@@ -38,6 +39,8 @@ use regmap::{self as rm, mode, ADC, CAPTURE, ENC, FAULT, MPDCC, MPDTC, PWM, TOP}
 const S_CTRL: usize = slot_of(&TOP, &rm::CTRL);
 const S_ERR: usize = slot_of(&TOP, &rm::ERR);
 const S_HEARTBEAT: usize = slot_of(&TOP, &rm::HEARTBEAT);
+const S_IRQ_EN: usize = slot_of(&TOP, &rm::IRQ_EN);
+const S_IRQ_STATUS: usize = slot_of(&TOP, &rm::IRQ_STATUS);
 const S_GATE_CTRL: usize = slot_of(&PWM, &rm::GATE_CTRL);
 const S_DEAD_TIME: usize = slot_of(&PWM, &rm::DEAD_TIME);
 const S_PWM_PERIOD: usize = slot_of(&PWM, &rm::PWM_PERIOD);
@@ -98,6 +101,8 @@ const S_MPDCC_CONSTS: [usize; 27] = mc_slots(17);
 const A_ID: usize = TOP.addr(&rm::ID);
 const A_VERSION: usize = TOP.addr(&rm::VERSION);
 const A_STATUS: usize = TOP.addr(&rm::STATUS);
+const A_IRQ_STATUS: usize = TOP.addr(&rm::IRQ_STATUS);
+const A_BOUNDARY_AGE: usize = TOP.addr(&rm::BOUNDARY_AGE);
 const A_GATE_STATUS: usize = PWM.addr(&rm::GATE_STATUS);
 const A_PWM_COUNT: usize = PWM.addr(&rm::PWM_COUNT);
 const A_ADC_IA: usize = ADC.addr(&rm::ADC_IA);
@@ -254,6 +259,7 @@ pub struct SimPl {
     core_done: u16,
     cap: Capture,
     mpdcc: MpdccBlock,
+    irq: CtrlIrq,
     cycles: u64,
     /// Pin levels applied from the next cycle on.
     pub pins: Pins,
@@ -285,6 +291,7 @@ impl SimPl {
             core_done: 0,
             cap: Capture::default(),
             mpdcc: MpdccBlock::new(),
+            irq: CtrlIrq::default(),
             cycles: 0,
             pins: Pins::default(),
             stepped: 0,
@@ -300,6 +307,11 @@ impl SimPl {
     /// Gate outputs now (bit 2 = leg a).
     pub fn gates(&self) -> GateOutputs {
         self.gates.outputs()
+    }
+
+    /// The control interrupt line `irq_o` (to `IRQ_F2P[0]`).
+    pub fn irq_line(&self) -> bool {
+        self.irq.irq
     }
 
     /// `CTRL.MODE`.
@@ -510,6 +522,20 @@ impl SimPl {
             pwm_period: self.pwm.bottom(),
             ..Events::default()
         };
+        // ctrl_irq: the boundary of the mode in force (pl_top).
+        let boundary = if c.sel_pwm {
+            ev.pwm_period
+        } else {
+            ev.adc_average
+        };
+        let irq_clr = match strobe {
+            Strobe::Write(WriteResult::Cleared { slot, value }) if slot == S_IRQ_STATUS => {
+                self.irq.status & !(value as u8)
+            }
+            _ => 0,
+        };
+        self.irq
+            .step(boundary, c.fault_any, self.r(S_IRQ_EN), irq_clr);
         // Gate driver.
         let before = self.gates.outputs();
         let gi = GateInputs {
@@ -646,6 +672,7 @@ impl SimPl {
             .min(self.core.quiet(c.core_load))
             .min(self.mpdcc.quiet())
             .min(self.fe.quiet())
+            .min(self.irq.quiet(c.fault_any, self.r(S_IRQ_EN)))
     }
 
     fn skip(&mut self, k: u64) {
@@ -663,6 +690,7 @@ impl SimPl {
         self.core.skip(k);
         self.mpdcc.skip(k);
         self.fe.skip(k);
+        self.irq.skip(k);
         self.cap.skip(self.r(S_CAP_RD_INDEX));
         self.cycles += k;
         self.skips += 1;
@@ -714,6 +742,8 @@ impl SimPl {
                     | (u32::from(c.drive_en && !c.trip) << 2)
                     | self.r(S_CTRL)
             }
+            A_IRQ_STATUS => u32::from(self.irq.status),
+            A_BOUNDARY_AGE => u32::from(self.irq.age),
             A_GATE_STATUS => {
                 (u32::from(c.state_sel) << 6) | (u32::from(g.lo) << 3) | u32::from(g.hi)
             }
@@ -768,6 +798,8 @@ impl SimPl {
         let res = self.regs.decode_write(addr, value, |s| {
             if s == S_FAULT_STATUS {
                 u32::from(self.fault.status)
+            } else if s == S_IRQ_STATUS {
+                u32::from(self.irq.status)
             } else {
                 self.regs.get(s)
             }

@@ -7,9 +7,9 @@ const CPU: usize = 0xF8F0_0100;
 // Distributor offsets.
 const ICDDCR: usize = 0x000;
 const ICDISER: usize = 0x100;
+const ICDISPR: usize = 0x200;
 const ICDIPR: usize = 0x400;
 const ICDIPTR: usize = 0x800;
-const ICDSGIR: usize = 0xF00;
 // CPU interface offsets.
 const ICCICR: usize = 0x00;
 const ICCPMR: usize = 0x04;
@@ -21,6 +21,9 @@ pub const IRQ_PRIVATE_TIMER: u32 = 29;
 /// Global timer comparator.
 pub const IRQ_GLOBAL_TIMER: u32 = 27;
 pub const IRQ_UART1: u32 = 82;
+/// `IRQ_F2P[0]` from the PL (UG585 table 7-4): the control interrupt.
+/// Level-sensitive, as after reset (`ICDICFR`).
+pub const IRQ_F2P0: u32 = 61;
 /// What ICCIAR returns when nothing is pending.
 pub const SPURIOUS: u32 = 1023;
 
@@ -74,8 +77,10 @@ pub fn end(iar: u32) {
     unsafe { reg(CPU + ICCEOIR).write(iar) };
 }
 
-/// Raises software-generated interrupt `id` (0..=15) on this CPU.
-pub fn send_sgi_self(id: u32) {
-    // SAFETY: TargetListFilter = 0b10 (the requesting CPU only), SGI id.
-    unsafe { reg(DIST + ICDSGIR).write(0b10 << 24 | (id & 0xF)) };
+/// Sets interrupt `id` pending in the distributor (`GICD_ISPENDR`), as a
+/// peripheral's line would: the same acknowledge and handler follow.
+pub fn set_pending(id: u32) {
+    let id = id as usize;
+    // SAFETY: the set-pending register of a valid ID; writing 1 sets only it.
+    unsafe { reg(DIST + ICDISPR + 4 * (id / 32)).write(1 << (id % 32)) };
 }

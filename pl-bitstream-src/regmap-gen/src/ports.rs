@@ -120,4 +120,10 @@ pub const PL_TOP_PORTS: &[Port] = &[
         1,
         "Averaged-sample strobe.",
     ),
+    port_out(
+        "irq_o",
+        "irq",
+        1,
+        "Control interrupt (IRQ_F2P[0]), a level.",
+    ),
 ];

@@ -45,6 +45,7 @@ struct PtOut {
     uint8_t gate_lo;
     uint8_t adc_cnv;
     uint8_t adc_avg_valid;
+    uint8_t irq;
 };
 
 struct PlTopSim {
@@ -84,6 +85,7 @@ static void read_out(const Vpl_top* t, PtOut* out) {
     out->gate_lo = t->gate_lo_o;
     out->adc_cnv = t->adc_cnv_o;
     out->adc_avg_valid = t->adc_avg_valid_o;
+    out->irq = t->irq_o;
 }
 
 void* pt_new() {

@@ -69,6 +69,8 @@ pub struct PtOut {
     pub adc_cnv: u8,
     /// Averaged-sample strobe.
     pub adc_avg_valid: u8,
+    /// Control interrupt (IRQ_F2P[0]), a level.
+    pub irq: u8,
 }
 
 impl PtIn {

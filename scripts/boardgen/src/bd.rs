@@ -1,7 +1,9 @@
 //! The block design as the Vivado flow builds it (facts recorded by
 //! scripts/vivado/stub-run.tcl) against the RTL and the register map: the
 //! ports match the `ps_bd` stand-in that board_top is linted with, the PL
-//! window is the register map's, FCLK0 is the PL clock.
+//! window is the register map's, FCLK0 is the PL clock, and the PL's
+//! control interrupt reaches the PS: port `irq_f2p` (level high) on the
+//! net of `ps7/IRQ_F2P`, with the PS7's fabric interrupts enabled.
 use crate::verilog::{Dir, Port};
 use crate::Board;
 
@@ -16,6 +18,9 @@ pub fn problems(facts: &str, stub_ports: &[Port], board: &Board) -> Vec<String> 
     let mut top = None;
     let mut part = None;
     let mut fclk = None;
+    let mut irq_net = false;
+    let mut irq_level = None;
+    let mut f2p = (false, false);
     for line in facts.lines().filter(|l| !l.trim().is_empty()) {
         let f: Vec<&str> = line.split_whitespace().collect();
         match f.as_slice() {
@@ -28,6 +33,12 @@ pub fn problems(facts: &str, stub_ports: &[Port], board: &Board) -> Vec<String> 
             ["top", t] => top = Some(t.to_string()),
             ["part", p] => part = Some(p.to_string()),
             ["ps7", "CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ", v] => fclk = Some(v.to_string()),
+            ["ps7", "CONFIG.PCW_USE_FABRIC_INTERRUPT", v] => f2p.0 = *v == "1",
+            ["ps7", "CONFIG.PCW_IRQ_F2P_INTR", v] => f2p.1 = *v == "1",
+            ["portprop", "irq_f2p", "CONFIG.SENSITIVITY", v] => irq_level = Some(v.to_string()),
+            ["net", ends @ ..] => {
+                irq_net |= ends.contains(&"port:irq_f2p") && ends.contains(&"pin:ps7/IRQ_F2P")
+            }
             _ => {}
         }
     }
@@ -89,6 +100,19 @@ pub fn problems(facts: &str, stub_ports: &[Port], board: &Board) -> Vec<String> 
             "PS7 FCLK0 {fclk:?} MHz, the register map needs {want_fclk} MHz"
         ));
     }
+    if !irq_net {
+        out.push("port irq_f2p (pl_top's irq_o) is not connected to ps7/IRQ_F2P".into());
+    }
+    if irq_level.as_deref() != Some("LEVEL_HIGH") {
+        out.push(format!(
+            "port irq_f2p sensitivity {irq_level:?}: the control interrupt is a level (LEVEL_HIGH)"
+        ));
+    }
+    if f2p != (true, true) {
+        out.push(
+            "PS7 fabric interrupts (PCW_USE_FABRIC_INTERRUPT, PCW_IRQ_F2P_INTR) not enabled".into(),
+        );
+    }
     out
 }
 
@@ -101,7 +125,13 @@ mod tests {
     const ZEDBOARD: &str = include_str!("../../../boards/zedboard.toml");
 
     fn facts_for(stub: &[Port]) -> String {
-        let mut s = String::from("part xc7z020clg484-1\naddress 0x43C00000 32K\ntop board_top\nps7 CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ 100\n");
+        let mut s = String::from(
+            "part xc7z020clg484-1\naddress 0x43C00000 32K\ntop board_top\n\
+             ps7 CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ 100\n\
+             ps7 CONFIG.PCW_USE_FABRIC_INTERRUPT 1\nps7 CONFIG.PCW_IRQ_F2P_INTR 1\n\
+             portprop irq_f2p CONFIG.SENSITIVITY LEVEL_HIGH\n\
+             net port:irq_f2p pin:ps7/IRQ_F2P\n",
+        );
         for p in stub {
             let dir = match p.dir {
                 Dir::Input => "input",
@@ -133,6 +163,17 @@ mod tests {
             ("port irq_f2p input 1\n", "", "irq_f2p"),
             ("top board_top", "top pl_top", "synthesis top"),
             ("FREQMHZ 100", "FREQMHZ 125", "FCLK0"),
+            (
+                "net port:irq_f2p pin:ps7/IRQ_F2P",
+                "net port:irq_f2p pin:ps7/Core0_nIRQ",
+                "not connected to ps7/IRQ_F2P",
+            ),
+            ("LEVEL_HIGH", "EDGE_RISING", "sensitivity"),
+            (
+                "PCW_IRQ_F2P_INTR 1",
+                "PCW_IRQ_F2P_INTR 0",
+                "fabric interrupts",
+            ),
         ];
         for (from, to, needle) in cases {
             assert!(good.contains(from), "{from}");

@@ -39,6 +39,20 @@ impl fmt::Display for PlKind {
     }
 }
 
+impl PlKind {
+    /// The kind for what presence detection selected; `cosim`: the
+    /// simulated PL is the co-simulated RTL.
+    pub fn of(sel: crate::pl::presence::Selection, cosim: bool) -> Self {
+        use crate::pl::presence::Selection;
+        match sel {
+            Selection::Bitstream { version } => PlKind::Bitstream(version),
+            Selection::Simulated if cosim => PlKind::RtlCosim,
+            Selection::Simulated => PlKind::Simulated,
+            Selection::Absent(_) => PlKind::Absent,
+        }
+    }
+}
+
 /// What the configuration store in flash held at boot and since.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct StoreStatus {
@@ -70,6 +84,10 @@ pub struct DriveStatus {
     pub periods: u64,
     /// Control periods missed.
     pub overruns: u64,
+    /// Control interrupts (GIC SPI 61) taken.
+    pub control_irq: u64,
+    /// The control step's start latency after the boundary.
+    pub control_latency: crate::pl::irq::Latency,
     /// What drives the registers.
     pub pl: PlKind,
     /// Guest time / simulated time (simulated PL only).
@@ -78,6 +96,29 @@ pub struct DriveStatus {
     pub store: Option<StoreStatus>,
     /// `mode mpdcc`: the paced HIL loop's progress (`None` in other modes).
     pub mpdcc: Option<PacedStatus>,
+}
+
+impl DriveStatus {
+    /// `status` without a usable PL: nothing driven, `pl: absent`.
+    pub fn absent(mpdcc: Option<PacedStatus>) -> Self {
+        Self {
+            mode: Mode::Off,
+            mpdtc_autonomous: true,
+            gates_on: false,
+            faults: Faults::default(),
+            measured: Default::default(),
+            torque_ref_nm: 0.0,
+            control_rate_hz: 0.0,
+            periods: 0,
+            overruns: 0,
+            control_irq: 0,
+            control_latency: Default::default(),
+            pl: PlKind::Absent,
+            sim_time_scale: None,
+            store: None,
+            mpdcc,
+        }
+    }
 }
 
 /// Guest instructions of the control code, measured by `debug bench`.
@@ -373,7 +414,10 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
         DriveError::Absent => write_err(
             out,
             ErrorCode::PlAbsent,
-            format_args!("{cmd}: no usable PL (see `status`)"),
+            format_args!(
+                "{cmd}: no usable PL: nothing is driven without our bitstream \
+                 (boot a BOOT.BIN with it, see docs/board.md; `status` shows devcfg)"
+            ),
         ),
         DriveError::Timeout => write_err(
             out,

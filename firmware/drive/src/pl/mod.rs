@@ -25,6 +25,7 @@ pub mod adc;
 pub mod capture;
 pub mod enc;
 pub mod fault;
+pub mod irq;
 pub mod mpdcc;
 pub mod mpdtc;
 pub mod presence;

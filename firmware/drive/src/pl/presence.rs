@@ -16,8 +16,19 @@
 //!
 //! QEMU 7.2's `xilinx-zynq-a9` models devcfg; with no bitstream (QEMU cannot
 //! load one) `INT_STS` reads `0x0000_0000` after reset (measured: `status`
-//! prints it), so `PCFG_DONE` is clear and the firmware never touches GP0:
-//! it selects the simulated PL instead.
+//! prints it), so `PCFG_DONE` is clear and the firmware never touches GP0.
+//!
+//! An unconfigured PL alone does not mean QEMU: a board booted without our
+//! bitstream reads the same. The simulated PL (or the co-simulated RTL) is
+//! chosen only where [`platform`] says the firmware runs in an emulator:
+//! SLCR `PSS_IDCODE` (`0xF800_0530`, a PS register, always readable) holds
+//! the JTAG IDCODE of the die on every Zynq-7000 (UG585, register
+//! `PSS_IDCODE`: bit 0 reads 1 and bits 11:1 are Xilinx's JEDEC
+//! manufacturer code `0x049`), so a Zynq reads `0x093` in its low 12 bits.
+//! QEMU 7.2 does not model the register: it reads `0x0000_0000` (measured,
+//! the banner prints it). A board cannot fail the check; an emulator that
+//! one day models the IDCODE passes for a board and gets `pl: absent`,
+//! never a simulated motor on real gates.
 use regmap::bus::RegisterBus;
 use regmap::regs::top::{Id, Version, VersionValue};
 
@@ -94,6 +105,55 @@ impl core::fmt::Display for Guard {
             " (INT_STS 0x{:08x}, LVL_SHFTR_EN 0x{:x}, FPGA_RST_CTRL 0x{:08x})",
             self.int_sts, self.lvl_shftr_en, self.fpga_rst_ctrl
         )
+    }
+}
+
+/// Absolute address of SLCR `PSS_IDCODE` (PS side, always readable).
+pub const SLCR_PSS_IDCODE: usize = 0xF800_0000 + 0x530;
+/// Low 12 bits of every Zynq-7000's `PSS_IDCODE`: Xilinx's JEDEC
+/// manufacturer code `0x049` in bits 11:1 and the constant 1 in bit 0.
+pub const IDCODE_XILINX: u32 = (0x049 << 1) | 1;
+
+/// What the firmware runs on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Platform {
+    /// Zynq silicon: only a bitstream may be driven.
+    Zynq,
+    /// An emulator (QEMU): the simulated PL may stand in for the PL.
+    Emulator,
+}
+
+/// The platform from SLCR `PSS_IDCODE` as read (see the module docs).
+pub fn platform(pss_idcode: u32) -> Platform {
+    if pss_idcode & 0xFFF == IDCODE_XILINX {
+        Platform::Zynq
+    } else {
+        Platform::Emulator
+    }
+}
+
+/// What answers the drivers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Selection {
+    /// Our bitstream behind GP0; `VERSION` as read.
+    Bitstream {
+        /// `VERSION` (major << 16 | minor).
+        version: u32,
+    },
+    /// No bitstream in an emulator: a simulated PL (the Rust model, or the
+    /// co-simulated RTL when the emulator's command line asks for it).
+    Simulated,
+    /// Nothing the firmware may drive: no bitstream on a board, or a PL
+    /// that is not ours. The drive commands answer `ERR pl-absent`.
+    Absent(Presence),
+}
+
+/// The backend for what [`detect`] found on `platform`.
+pub fn select(presence: Presence, platform: Platform) -> Selection {
+    match (presence, platform) {
+        (Presence::Ours { version }, _) => Selection::Bitstream { version },
+        (Presence::Unconfigured, Platform::Emulator) => Selection::Simulated,
+        (p, _) => Selection::Absent(p),
     }
 }
 
@@ -190,6 +250,64 @@ mod tests {
             assert_eq!(detect(&g, &mut Untouchable), Presence::Unconfigured);
         }
         assert!(!Presence::Unconfigured.usable());
+    }
+
+    /// `PSS_IDCODE` of an XC7Z020 (UG585: revision 3, family 0x1B,
+    /// subfamily 0x9, device 0x07, manufacturer 0x049, bit 0 set).
+    const IDCODE_7Z020: u32 = 0x3372_7093;
+    /// What QEMU 7.2's `xilinx-zynq-a9` reads there (measured).
+    const IDCODE_QEMU: u32 = 0;
+
+    #[test]
+    fn idcode_tells_silicon_from_the_emulator() {
+        assert_eq!(platform(IDCODE_7Z020), Platform::Zynq);
+        // Any revision and device of the family: the low 12 bits decide.
+        for dev in [0x02u32, 0x07, 0x0C, 0x11] {
+            let id = (0x1B << 21) | (0x9 << 17) | (dev << 12) | (0x049 << 1) | 1;
+            assert_eq!(platform(id), Platform::Zynq, "{id:#x}");
+        }
+        assert_eq!(platform(IDCODE_QEMU), Platform::Emulator);
+        assert_eq!(platform(0xFFFF_FFFF), Platform::Emulator);
+    }
+
+    #[test]
+    fn a_board_without_bitstream_never_gets_a_simulated_pl() {
+        // Every case: (devcfg INT_STS, PSS_IDCODE, ID) -> selection, with
+        // GP0 read only when devcfg says the PL is configured.
+        let v = regmap::VERSION.reset;
+        let pick = |sts: u32, idcode: u32, id: u32| {
+            let mut pl = FakePl::new();
+            pl.set(regmap::TOP.addr(&regmap::ID), id);
+            let p = if sts & PCFG_DONE == 0 {
+                detect(&Guard { int_sts: sts, ..READY }, &mut Untouchable)
+            } else {
+                detect(&Guard { int_sts: sts, ..READY }, &mut pl)
+            };
+            select(p, platform(idcode))
+        };
+        let ours = regmap::ID_VALUE;
+        // Board, no bitstream: absent, never simulated.
+        assert_eq!(
+            pick(0, IDCODE_7Z020, ours),
+            Selection::Absent(Presence::Unconfigured)
+        );
+        // Board, foreign bitstream: absent.
+        assert_eq!(
+            pick(PCFG_DONE, IDCODE_7Z020, 0x1234_5678),
+            Selection::Absent(Presence::Foreign { id: 0x1234_5678 })
+        );
+        // Board, our bitstream: driven.
+        assert_eq!(
+            pick(PCFG_DONE, IDCODE_7Z020, ours),
+            Selection::Bitstream { version: v }
+        );
+        // QEMU, nothing configured: the simulated PL.
+        assert_eq!(pick(0, IDCODE_QEMU, ours), Selection::Simulated);
+        // An emulator with a configured foreign PL is not ours either.
+        assert_eq!(
+            pick(PCFG_DONE, IDCODE_QEMU, 0),
+            Selection::Absent(Presence::Foreign { id: 0 })
+        );
     }
 
     #[test]

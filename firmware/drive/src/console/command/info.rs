@@ -156,6 +156,17 @@ pub fn write_status<W: Write>(out: &mut W, s: &DriveStatus) -> fmt::Result {
     write!(out, "control_rate: {:.0} Hz\r\n", s.control_rate_hz)?;
     write!(out, "periods: {}\r\n", s.periods)?;
     write!(out, "overruns: {}\r\n", s.overruns)?;
+    write!(out, "control_irq: {}\r\n", s.control_irq)?;
+    let l = &s.control_latency;
+    if l.n > 0 {
+        write!(
+            out,
+            "control_latency: min {} mean {:.1} max {} PL cycles (10 ns) after the boundary\r\n",
+            l.min,
+            l.mean(),
+            l.max
+        )?;
+    }
     write!(out, "pl: {}\r\n", s.pl)?;
     if let Some(k) = s.sim_time_scale {
         write!(out, "sim_time_scale: {k:.2}\r\n")?;

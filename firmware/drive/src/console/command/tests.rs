@@ -304,6 +304,13 @@ impl DriveOps for TestDrive {
             control_rate_hz: self.servo.control_rate_hz(),
             periods: self.servo.periods(),
             overruns: self.servo.overruns(),
+            control_irq: self.servo.periods(),
+            control_latency: crate::pl::irq::Latency {
+                n: 2,
+                min: 3,
+                max: 9,
+                sum: 12,
+            },
             pl: PlKind::Simulated,
             sim_time_scale: Some(4.0),
             store: None,
@@ -354,6 +361,8 @@ fn status_lists_the_drive_with_units() {
         "control_rate: 63939 Hz",
         "periods: 0",
         "overruns: 0",
+        "control_irq: 0",
+        "control_latency: min 3 mean 6.0 max 9 PL cycles (10 ns) after the boundary",
         "pl: simulated",
         "sim_time_scale: 4.00",
     ] {
@@ -722,4 +731,91 @@ fn debug_mmu_lines_by_hand() {
     }
     .caches_on());
     assert!(drive::MmuReport { l2_ctrl: 1, ..off }.caches_on());
+}
+
+/// A board booted without a usable PL: what the firmware's drive answers
+/// when presence detection found nothing it may drive.
+struct NoPl;
+
+impl DriveOps for NoPl {
+    fn mode(&mut self) -> Mode {
+        Mode::Off
+    }
+    fn set_mode(&mut self, _m: Mode) -> Result<(), DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn enable(&mut self) -> Result<(), DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn disable(&mut self) -> Result<(), DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn torque_ref(&mut self) -> f64 {
+        0.0
+    }
+    fn set_torque_ref(&mut self, _nm: f64) -> Result<(), DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn step(&mut self, _nm: f64, _window_s: f64) -> Result<StepResult, DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn faults(&mut self) -> Result<Faults, DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn clear_faults(&mut self) -> Result<Faults, DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn stall(&mut self, _ms: u32) -> Result<(), DriveError> {
+        Err(DriveError::Absent)
+    }
+    fn status(&mut self) -> DriveStatus {
+        DriveStatus::absent(None)
+    }
+    fn bench(&mut self) -> Result<Bench, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+}
+
+#[test]
+fn board_without_bitstream_says_pl_absent_and_refuses_drive_commands() {
+    use crate::pl::presence::{detect, platform, select, Guard, PCFG_DONE};
+    let guard = |int_sts| Guard {
+        int_sts,
+        lvl_shftr_en: 0xF,
+        fpga_rst_ctrl: 0,
+    };
+    // A ZedBoard booted without our bitstream: devcfg says unconfigured,
+    // PSS_IDCODE is an XC7Z020's (GP0 is not read: no bus is passed).
+    let mut gp0 = FakePl::new();
+    let sel = select(detect(&guard(0), &mut gp0), platform(0x3372_7093));
+    assert_eq!(PlKind::of(sel, false), PlKind::Absent);
+    assert_eq!(PlKind::of(sel, false).to_string(), "absent");
+    // The same reads under QEMU (PSS_IDCODE 0): the simulated PL.
+    let qemu = select(detect(&guard(0), &mut gp0), platform(0));
+    assert_eq!(PlKind::of(qemu, false), PlKind::Simulated);
+    assert_eq!(PlKind::of(qemu, true), PlKind::RtlCosim);
+    // A foreign bitstream on the board: absent as well.
+    gp0.set(regmap::TOP.addr(&regmap::ID), 0x1234_5678);
+    let foreign = select(detect(&guard(PCFG_DONE), &mut gp0), platform(0x3372_7093));
+    assert_eq!(PlKind::of(foreign, false), PlKind::Absent);
+
+    let mut d = NoPl;
+    let mut out = String::new();
+    execute(parse("status").unwrap(), &ctx(), &mut d, &mut out).unwrap();
+    assert!(out.contains("pl: absent\r\n"), "{out:?}");
+    assert!(!out.contains("simulated"), "{out:?}");
+    for line in [
+        "enable",
+        "mode foc",
+        "torque 0.1",
+        "step 0.2",
+        "fault",
+        "debug stall 5",
+    ] {
+        let mut out = String::new();
+        execute(parse(line).unwrap(), &ctx(), &mut d, &mut out).unwrap();
+        assert_one_final_line(&out);
+        assert!(out.starts_with("ERR pl-absent "), "{line}: {out:?}");
+        assert!(out.contains("bitstream"), "{line}: the hint: {out:?}");
+    }
 }

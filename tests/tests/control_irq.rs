@@ -1,0 +1,97 @@
+//! The control step paced by the PL's interrupt (GIC SPI 61, `IRQ_F2P[0]`)
+//! under QEMU: the PL model's line pends it through the distributor, the
+//! handler acknowledges `IRQ_STATUS` and reads `BOUNDARY_AGE`. Every
+//! control-period boundary gets its interrupt and its step (no overrun,
+//! every step from an interrupt): FOC and MPDTC for 1 s of PL time each on
+//! the simulated PL; on the co-simulated RTL FOC for 0.1 s and MPDTC for
+//! 1,600 periods.
+use drivectl::link::{Reply, Session};
+use std::time::{Duration, Instant};
+use system_tests::{assert_ok, boot, boot_rtl, cmd, field, num};
+
+/// `control_latency: min <a> mean <b> max <c> PL cycles ...` as (a, b, c).
+fn latency(r: &Reply) -> (f64, f64, f64) {
+    let line = r
+        .lines
+        .iter()
+        .find_map(|l| l.strip_prefix("control_latency: "))
+        .unwrap_or_else(|| panic!("no control_latency: {r:?}"));
+    let w: Vec<&str> = line.split_whitespace().collect();
+    assert_eq!(
+        (w[0], w[2], w[4], w[6]),
+        ("min", "mean", "max", "PL"),
+        "{line}"
+    );
+    let n = |i: usize| w[i].parse::<f64>().unwrap();
+    (n(1), n(3), n(5))
+}
+
+/// Runs `mode` with the gates on and 0.2 N m until `periods` control
+/// periods passed (at most `wall` of wall time); returns the last status.
+fn run_periods(s: &mut Session, mode: &str, periods: f64, wall: Duration) -> Reply {
+    assert_ok(&cmd(s, &format!("mode {mode}")));
+    assert_ok(&cmd(s, "enable"));
+    assert_ok(&cmd(s, "torque 0.2"));
+    let start = Instant::now();
+    loop {
+        std::thread::sleep(Duration::from_secs(2));
+        let st = cmd(s, "status");
+        assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+        assert_eq!(num(&st, "overruns"), 0.0, "{mode}: {st:?}");
+        if num(&st, "periods") >= periods {
+            return st;
+        }
+        assert!(start.elapsed() < wall, "{mode}: too slow: {st:?}");
+    }
+}
+
+/// Every step came from an interrupt (`control_irq` >= `periods`; an
+/// interrupt whose `IRQ_STATUS` holds no boundary runs no step, at most
+/// `spurious` of them), and each step started within `max_lat` PL cycles
+/// of its boundary.
+fn check(st: &Reply, max_lat: f64, spurious: f64) {
+    let (irq, periods) = (num(st, "control_irq"), num(st, "periods"));
+    assert!(irq >= periods && irq - periods <= spurious, "{st:?}");
+    let (min, mean, max) = latency(st);
+    assert!(min <= mean && mean <= max && max <= max_lat, "{st:?}");
+}
+
+#[test]
+fn simulated_pl_paces_foc_and_mpdtc_for_one_second_of_pl_time() {
+    let mut s = boot();
+    let st = cmd(&mut s, "status");
+    assert_eq!(num(&st, "control_irq"), num(&st, "periods"), "{st:?}");
+    // The simulated PL pends SPI 61 only on its line: no spurious one.
+    // FOC at 16 kHz, then MPDTC at 64 kHz: 1 s of PL time each.
+    let foc = run_periods(&mut s, "foc", 16_000.0, Duration::from_secs(240));
+    // The simulated PL's time stands while the guest handles the
+    // interrupt: the step starts in the boundary's cycle.
+    check(&foc, 0.0, 0.0);
+    let before = num(&foc, "periods");
+    let mpdtc = run_periods(&mut s, "mpdtc", before + 64_000.0, Duration::from_secs(400));
+    check(&mpdtc, 0.0, 0.0);
+}
+
+#[test]
+fn cosimulated_rtl_paces_foc_and_mpdtc() {
+    let mut s = boot_rtl();
+    // FOC: 0.1 s of PL time (1,600 periods of 6,256 cycles).
+    let foc = run_periods(&mut s, "foc", 1_600.0, Duration::from_secs(900));
+    // The RTL runs in guest time: the latency is the PS's interrupt entry
+    // and the bridge's register reads (about 45 cycles), or a console
+    // critical section that held the interrupt off; always inside the
+    // period, or the next boundary would count as an overrun.
+    check(&foc, 6_256.0, 2.0);
+    // MPDTC: 1,600 periods of 1,564 cycles (25 ms of PL time: the
+    // co-simulation runs tens of periods per wall second here).
+    let before = num(&foc, "periods");
+    let mpdtc = run_periods(&mut s, "mpdtc", before + 1_600.0, Duration::from_secs(900));
+    // The latency figures are since boot (FOC's included); that every
+    // MPDTC step started before the next boundary is the overrun count.
+    check(&mpdtc, 6_256.0, 2.0);
+    let stats = s
+        .finish_bridge()
+        .expect("a bridge")
+        .expect("its statistics");
+    assert!(stats.contains("\"mismatches\":0"), "{stats}");
+}
