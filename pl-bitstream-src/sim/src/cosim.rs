@@ -256,7 +256,7 @@ impl Bridge {
     /// The drive with the default simulated motor (`SimConfig::default()`).
     pub fn new() -> Self {
         let cfg = SimConfig::default();
-        let pl = RtlPl::new(cfg.adc_conversion_cycles);
+        let pl = RtlPl::with_converter(cfg.converter());
         let drive = SimDrive::with_pl(&cfg, pl).expect("default motor parameters");
         Self {
             drive,
