@@ -92,7 +92,9 @@ fn an_asynchronous_converter_keeps_the_closed_loop() {
     let (r_rtl, d_rtl) = mpdtc_step(&mut rtl);
     let mut fixed = SimDrive::new(&SimConfig::default()).unwrap();
     let (r_fixed, _) = mpdtc_step(&mut fixed);
-    println!("asynchronous converter: simulated PL {r_model:?}\nRTL {r_rtl:?}\nfixed delay {r_fixed:?}");
+    println!(
+        "asynchronous converter: simulated PL {r_model:?}\nRTL {r_rtl:?}\nfixed delay {r_fixed:?}"
+    );
     let pl = rtl.pl();
     assert_eq!(pl.mismatches(), 0, "{:?}", pl.first_mismatch());
     assert!(d_rtl.len() >= 128, "{} periods recorded", d_rtl.len());
