@@ -9,12 +9,13 @@ set_property -dict {PACKAGE_PIN Y10 IOSTANDARD LVCMOS33} [get_ports {gate_hi_o[1
 set_property -dict {PACKAGE_PIN AA9 IOSTANDARD LVCMOS33} [get_ports {gate_lo_o[1]}] ;# JA4: phase b, lower switch
 set_property -dict {PACKAGE_PIN AB11 IOSTANDARD LVCMOS33} [get_ports {gate_hi_o[0]}] ;# JA7: phase c, upper switch
 set_property -dict {PACKAGE_PIN AB10 IOSTANDARD LVCMOS33} [get_ports {gate_lo_o[0]}] ;# JA8: phase c, lower switch
+set_property -dict {PACKAGE_PIN AB9 IOSTANDARD LVCMOS33} [get_ports {gate_en_o}] ;# JA9: gate-driver enable (1 = drivers may switch: GATE_EN set, no trip); wire to the drivers' enable with a pull-down
 set_property -dict {PACKAGE_PIN W12 IOSTANDARD LVCMOS33} [get_ports {enc_a_i}] ;# JB1: encoder A (3.3 V logic)
 set_property -dict {PACKAGE_PIN W11 IOSTANDARD LVCMOS33} [get_ports {enc_b_i}] ;# JB2: encoder B
 set_property -dict {PACKAGE_PIN V10 IOSTANDARD LVCMOS33} [get_ports {enc_z_i}] ;# JB3: encoder index Z
 set_property -dict {PACKAGE_PIN W8 IOSTANDARD LVCMOS33} [get_ports {fault_ext_ni}] ;# JB4: external fault, active low (gate driver FAULT/desat, e-stop); pulled up
 set_property -dict {PACKAGE_PIN M19 IOSTANDARD LVCMOS25} [get_ports {adc_cnv_o}] ;# FMC-LA00_CC_P: ADC convert start
-set_property -dict {PACKAGE_PIN M20 IOSTANDARD LVCMOS25} [get_ports {adc_drdy_i}] ;# FMC-LA00_CC_N: ADC data ready
+set_property -dict {PACKAGE_PIN M20 IOSTANDARD LVCMOS25} [get_ports {adc_drdy_i}] ;# FMC-LA00_CC_N: ADC data ready (asynchronous; pulled down: no card reads as no data)
 set_property -dict {PACKAGE_PIN N19 IOSTANDARD LVCMOS25} [get_ports {adc_data_i[35]}] ;# FMC-LA01_CC_P: ia bit 11 (MSB)
 set_property -dict {PACKAGE_PIN N20 IOSTANDARD LVCMOS25} [get_ports {adc_data_i[34]}] ;# FMC-LA01_CC_N: ia bit 10
 set_property -dict {PACKAGE_PIN P17 IOSTANDARD LVCMOS25} [get_ports {adc_data_i[33]}] ;# FMC-LA02_P: ia bit 9
@@ -56,13 +57,52 @@ set_property -dict {PACKAGE_PIN T21 IOSTANDARD LVCMOS33} [get_ports {led_o[1]}] 
 set_property -dict {PACKAGE_PIN U22 IOSTANDARD LVCMOS33} [get_ports {led_o[2]}] ;# LD2: gates switching: any gate on in the last ~84 ms
 set_property -dict {PACKAGE_PIN U21 IOSTANDARD LVCMOS33} [get_ports {led_o[3]}] ;# LD3: external fault input asserted (low)
 set_property PULLUP true [get_ports {fault_ext_ni}]
+set_property PULLDOWN true [get_ports {adc_drdy_i}]
+set_property PULLDOWN true [get_ports {adc_data_i[35]}]
+set_property PULLDOWN true [get_ports {adc_data_i[34]}]
+set_property PULLDOWN true [get_ports {adc_data_i[33]}]
+set_property PULLDOWN true [get_ports {adc_data_i[32]}]
+set_property PULLDOWN true [get_ports {adc_data_i[31]}]
+set_property PULLDOWN true [get_ports {adc_data_i[30]}]
+set_property PULLDOWN true [get_ports {adc_data_i[29]}]
+set_property PULLDOWN true [get_ports {adc_data_i[28]}]
+set_property PULLDOWN true [get_ports {adc_data_i[27]}]
+set_property PULLDOWN true [get_ports {adc_data_i[26]}]
+set_property PULLDOWN true [get_ports {adc_data_i[25]}]
+set_property PULLDOWN true [get_ports {adc_data_i[24]}]
+set_property PULLDOWN true [get_ports {adc_data_i[23]}]
+set_property PULLDOWN true [get_ports {adc_data_i[22]}]
+set_property PULLDOWN true [get_ports {adc_data_i[21]}]
+set_property PULLDOWN true [get_ports {adc_data_i[20]}]
+set_property PULLDOWN true [get_ports {adc_data_i[19]}]
+set_property PULLDOWN true [get_ports {adc_data_i[18]}]
+set_property PULLDOWN true [get_ports {adc_data_i[17]}]
+set_property PULLDOWN true [get_ports {adc_data_i[16]}]
+set_property PULLDOWN true [get_ports {adc_data_i[15]}]
+set_property PULLDOWN true [get_ports {adc_data_i[14]}]
+set_property PULLDOWN true [get_ports {adc_data_i[13]}]
+set_property PULLDOWN true [get_ports {adc_data_i[12]}]
+set_property PULLDOWN true [get_ports {adc_data_i[11]}]
+set_property PULLDOWN true [get_ports {adc_data_i[10]}]
+set_property PULLDOWN true [get_ports {adc_data_i[9]}]
+set_property PULLDOWN true [get_ports {adc_data_i[8]}]
+set_property PULLDOWN true [get_ports {adc_data_i[7]}]
+set_property PULLDOWN true [get_ports {adc_data_i[6]}]
+set_property PULLDOWN true [get_ports {adc_data_i[5]}]
+set_property PULLDOWN true [get_ports {adc_data_i[4]}]
+set_property PULLDOWN true [get_ports {adc_data_i[3]}]
+set_property PULLDOWN true [get_ports {adc_data_i[2]}]
+set_property PULLDOWN true [get_ports {adc_data_i[1]}]
+set_property PULLDOWN true [get_ports {adc_data_i[0]}]
 
 # Timing.
-# Asynchronous inputs: each passes a two-flop synchroniser (sync2).
-set_false_path -from [get_ports {enc_a_i enc_b_i enc_z_i fault_ext_ni}]
+# Asynchronous inputs: each passes a two-flop synchroniser (sync2); the ADC's
+# data-ready among them (the converter sees no PL clock).
+set_false_path -from [get_ports {adc_drdy_i enc_a_i enc_b_i enc_z_i fault_ext_ni}]
 # Outputs leave PL registers; their ns-scale skew is small against the dead
 # time (DEAD_TIME, 500 ns from reset) and the ADC period (3.9 us).
-set_false_path -to [get_ports {gate_hi_o[*] gate_lo_o[*] adc_cnv_o led_o[*]}]
-# Inputs synchronous to FCLK0 (timing.adc_in_delay_ns of the board file).
-set_input_delay -clock [get_clocks clk_fpga_0] -min 1.0 [get_ports {adc_drdy_i adc_data_i[*]}]
-set_input_delay -clock [get_clocks clk_fpga_0] -max 6.0 [get_ports {adc_drdy_i adc_data_i[*]}]
+set_false_path -to [get_ports {gate_hi_o[*] gate_lo_o[*] gate_en_o adc_cnv_o led_o[*]}]
+# Inputs captured at the clock edge after the synchronised data-ready rose
+# (adc_frontend: 2 to 3 periods after the pin's edge). Their pin-to-register
+# delay only has to be shorter than that (timing.strobed_max_delay_ns).
+set_max_delay -datapath_only -from [get_ports {adc_data_i[*]}] 10.0

@@ -2,10 +2,10 @@
 //
 //   ps_bd    the block design of scripts/vivado/bitstream.tcl: PS7 (DDR,
 //            UART0/1, FCLK0 = 100 MHz), GP0 master -> AXI protocol converter
-//            (AXI3 -> AXI4-Lite) -> M_AXI_PL at 0x43C0_0000 (32 KiB), a
-//            proc_sys_reset giving aresetn (synchronous to fclk0), IRQ_F2P[0]
+//            (AXI3 -> AXI4-Lite) -> M_AXI_PL, assigned 0x43C0_0000 (32 KiB),
+//            a proc_sys_reset giving aresetn (synchronous to fclk0), IRQ_F2P[0]
 //   pl_top   the drive's PL (register map, gates, ADC, encoder, fault)
-//   LEDs     led_o[0] blinks at 1 Hz while FCLK0 runs (needs no reset: it
+//   LEDs     led_o[0] blinks at 1 Hz (0.5 s on, 0.5 s off) while FCLK0 runs (needs no reset: it
 //            shows the bitstream is loaded and clocked); led_o[1] the PL is
 //            out of reset; led_o[2] some gate was on within the last 2^23
 //            cycles (84 ms), so short PWM pulses stay visible; led_o[3] the
@@ -41,10 +41,12 @@ module board_top (
     inout  wire        fixed_io_ps_clk_io,
     inout  wire        fixed_io_ps_porb_io,
     inout  wire        fixed_io_ps_srstb_io,
-    // inverter gates, bit 2 = leg a, 1 = switch on
+    // inverter gates, bit 2 = leg a, 1 = switch on; gate-driver enable
+    // (1 = drivers may switch: GATE_EN set and no trip)
     output wire [ 2:0] gate_hi_o,
     output wire [ 2:0] gate_lo_o,
-    // ADC (parallel interface of adc_frontend)
+    output wire        gate_en_o,
+    // ADC (asynchronous converter interface of adc_frontend)
     output wire        adc_cnv_o,
     input  wire        adc_drdy_i,
     input  wire [35:0] adc_data_i,
@@ -113,7 +115,10 @@ module board_top (
         .irq_f2p          (irq)
     );
 
-    // The interconnect decodes the 32 KiB window; pl_top sees the offset.
+    // pl_top sees the low 15 address bits. With a single slave the protocol
+    // converter does not decode: every GP0 address (0x4000_0000 ..
+    // 0x7FFF_FFFF) reaches pl_top and aliases onto its 32 KiB map
+    // (the assigned 32 KiB at 0x43C0_0000 is the one the firmware uses).
     pl_top u_pl (
         .clk_i          (clk),
         .s_axi_aresetn_i(aresetn),
@@ -136,6 +141,7 @@ module board_top (
         .s_axi_rready_i (rready),
         .gate_hi_o      (gate_hi_o),
         .gate_lo_o      (gate_lo_o),
+        .gate_en_o      (gate_en_o),
         .adc_cnv_o      (adc_cnv_o),
         .adc_drdy_i     (adc_drdy_i),
         .adc_data_i     (adc_data_i),
@@ -149,15 +155,16 @@ module board_top (
 
     wire rst = !aresetn;
 
-    // 1 Hz blink: toggles every 50,000,000 cycles of the 100 MHz FCLK0.
-    reg [25:0] blink_cnt_q;
+    // 1 Hz blink: toggles every 25,000,000 cycles (0.5 s) of the 100 MHz
+    // FCLK0, one period per second.
+    reg [24:0] blink_cnt_q;
     reg        blink_q;
     always @(posedge clk) begin
-        if (blink_cnt_q == 26'd49_999_999) begin
-            blink_cnt_q <= 26'd0;
+        if (blink_cnt_q == 25'd24_999_999) begin
+            blink_cnt_q <= 25'd0;
             blink_q     <= !blink_q;
         end else begin
-            blink_cnt_q <= blink_cnt_q + 26'd1;
+            blink_cnt_q <= blink_cnt_q + 25'd1;
         end
     end
 

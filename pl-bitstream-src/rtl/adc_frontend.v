@@ -1,18 +1,33 @@
 // adc_frontend: ADC front end for the three phase currents.
 //
-// Modelled ADC interface (documented in docs/rtl.md): a simultaneous-
-// sampling, 3-channel converter with a parallel, PL-synchronous bus.
-//   adc_cnv_o    one-cycle convert-start pulse, every period_i cycles while
-//                en_i = 1 (sample rate f_clk / period_i; reset 391 cycles =
-//                255.75 kHz, the paper's 256 kHz within 0.1 %)
-//   adc_drdy_i   one-cycle strobe from the converter when a result is ready
-//                (its conversion time must be shorter than period_i)
+// Converter interface (asynchronous: no clock leaves the PL for the
+// converter; timing in docs/rtl.md, "ADC interface"): a simultaneous-
+// sampling, 3-channel converter with a parallel output bus.
+//   adc_cnv_o    one-cycle (10 ns) convert-start pulse, every period_i cycles
+//                while en_i = 1 (sample rate f_clk / period_i; reset 391
+//                cycles = 255.75 kHz, the paper's 256 kHz within 0.1 %)
+//   adc_drdy_i   data ready, asynchronous to clk_i: a rising edge per result,
+//                high >= 15 ns and low >= 15 ns (one clock period plus
+//                margin, so the synchroniser sees every level). It passes a
+//                two-flop synchroniser (sync2) and an edge detector: one
+//                sample per rising edge, however long the level lasts
 //   adc_data_i   {ia, ib, ic}, 12-bit two's complement each, ia in [35:24],
-//                valid with adc_drdy_i
+//                not synchronised: valid at the pins from the rising edge of
+//                adc_drdy_i (setup >= 0 ns) until >= 50 ns after it; it is
+//                captured at the edge after the synchronised rise (2 to 3
+//                clock periods after the pin's edge, 4 with a metastable first
+//                flop), so it has settled for >= 10 ns through a data path of
+//                at most 10 ns (the board's set_max_delay)
+// Latency: the sample register loads 3 clock edges after the first edge
+// that sees adc_drdy_i high (sync2: 2, edge detection and capture: 1).
+// A level held high through reset is not a new result (the synchroniser and
+// the edge register reset to 1). A missing converter card reads as drdy = 0
+// (pull-downs on the board): no samples, ADC_COUNT stops, the firmware's
+// ADC-stuck check trips.
 // Outputs
-//   sample_*     the raw sample, registered one cycle after adc_drdy_i,
-//                with the one-cycle strobe sample_valid_o (to the fault
-//                block: over-current is judged on every raw sample)
+//   sample_*     the raw sample, with the one-cycle strobe sample_valid_o
+//                (to the fault block: over-current is judged on every raw
+//                sample)
 //   avg_*        floor((s0 + .. + s(n-1)) / n) of n = 2^avg_log2_i
 //                consecutive samples (n = 1, 2 or 4: arithmetic shift of the
 //                14-bit sum), sign-extended to 16 bits, updated with the
@@ -49,6 +64,19 @@ module adc_frontend (
     reg        av_q;
     reg [11:0] avg_a_q, avg_b_q, avg_c_q;
     reg [31:0] count_q;
+    reg        drdy_prev_q;
+    wire       drdy_s;
+
+    sync2 #(
+        .RESET_VAL(1'b1)
+    ) u_drdy_sync (
+        .clk_i(clk_i),
+        .rst_i(rst_i),
+        .d_i  (adc_drdy_i),
+        .q_o  (drdy_s)
+    );
+    // Rising edge of the synchronised data-ready: one result.
+    wire drdy_rise = drdy_s && !drdy_prev_q;
 
     // Index of the last sample of an average: n - 1.
     wire [ 1:0] last = (avg_log2_i == 2'd0) ? 2'd0 : (avg_log2_i == 2'd1) ? 2'd1 : 2'd3;
@@ -68,18 +96,19 @@ module adc_frontend (
 
     always @(posedge clk_i) begin
         if (rst_i) begin
-            tmr_q   <= 16'd0;
-            cnv_q   <= 1'b0;
-            sv_q    <= 1'b0;
-            n_q     <= 2'd0;
-            av_q    <= 1'b0;
-            acc_a_q <= 14'd0;
-            acc_b_q <= 14'd0;
-            acc_c_q <= 14'd0;
-            avg_a_q <= 12'd0;
-            avg_b_q <= 12'd0;
-            avg_c_q <= 12'd0;
-            count_q <= 32'd0;
+            tmr_q       <= 16'd0;
+            cnv_q       <= 1'b0;
+            sv_q        <= 1'b0;
+            drdy_prev_q <= 1'b1;
+            n_q         <= 2'd0;
+            av_q        <= 1'b0;
+            acc_a_q     <= 14'd0;
+            acc_b_q     <= 14'd0;
+            acc_c_q     <= 14'd0;
+            avg_a_q     <= 12'd0;
+            avg_b_q     <= 12'd0;
+            avg_c_q     <= 12'd0;
+            count_q     <= 32'd0;
         end else begin
             // Sample-rate timer.
             cnv_q <= 1'b0;
@@ -92,7 +121,8 @@ module adc_frontend (
                 tmr_q <= tmr_q - 16'd1;
             end
             // Capture.
-            sv_q <= adc_drdy_i;
+            drdy_prev_q <= drdy_s;
+            sv_q        <= drdy_rise;
             // Average of n = 2^avg_log2_i.
             av_q <= 1'b0;
             if (sv_q) begin
@@ -118,7 +148,7 @@ module adc_frontend (
 
     // Sample payload: no reset (datapath).
     always @(posedge clk_i) begin
-        if (adc_drdy_i) begin
+        if (drdy_rise) begin
             s_a_q <= adc_data_i[35:24];
             s_b_q <= adc_data_i[23:12];
             s_c_q <= adc_data_i[11:0];
@@ -135,6 +165,36 @@ module adc_frontend (
     assign avg_ib_o       = {{4{avg_b_q[11]}}, avg_b_q};
     assign avg_ic_o       = {{4{avg_c_q[11]}}, avg_c_q};
     assign avg_count_o    = count_q;
+`ifdef FORMAL
+    // History of the pins and of reset at the last four clock edges ([0]:
+    // the latest), and the data pins at the last edge.
+    reg        f_past_valid = 1'b0;
+    reg [ 3:0] f_pin_q = 4'd0;
+    reg [ 3:0] f_rst_q = 4'd0;
+    reg [35:0] f_data_q = 36'd0;
+    reg        f_sv_q = 1'b0;
+    always @(posedge clk_i) begin
+        f_past_valid <= 1'b1;
+        f_pin_q      <= {f_pin_q[2:0], adc_drdy_i};
+        f_rst_q      <= {f_rst_q[2:0], rst_i};
+        f_data_q     <= adc_data_i;
+        f_sv_q       <= sv_q;
+    end
+    always @(*) begin
+        if (!f_past_valid) assume (rst_i);
+        if (f_past_valid) begin
+            // Exactly one sample per rising edge of the data-ready pin, however
+            // long it stays high, three edges after the first edge that sees
+            // it high (two synchroniser flops, then the capture).
+            if (f_rst_q == 4'd0) assert (sv_q == (f_pin_q[2] && !f_pin_q[3]));
+            if (f_rst_q[0]) assert (!sv_q);
+            // The sample is the data at the pins at the capture edge.
+            if (sv_q) assert ({s_a_q, s_b_q, s_c_q} == f_data_q);
+            // An average ends only with a sample.
+            if (av_q) assert (f_sv_q);
+        end
+    end
+`endif
 endmodule
 
 `default_nettype wire

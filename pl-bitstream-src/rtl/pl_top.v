@@ -67,7 +67,11 @@ module pl_top #(
     // inverter gates, bit 2 = leg a
     output wire [ 2:0] gate_hi_o,
     output wire [ 2:0] gate_lo_o,
-    // ADC (modelled parallel interface, see adc_frontend)
+    // gate-driver enable pin: 1 only while GATE_EN = 1 and nothing trips
+    // (registered, glitch-free; low while the PL is unconfigured thanks to
+    // the power board's pull-down)
+    output wire        gate_en_o,
+    // ADC (asynchronous converter interface, see adc_frontend)
     output wire        adc_cnv_o,
     input  wire        adc_drdy_i,
     input  wire [35:0] adc_data_i,
@@ -874,6 +878,13 @@ module pl_top #(
         .gate_lo_o(gate_lo_o)
     );
 
+    reg gate_en_q;
+    always @(posedge clk_i) begin
+        if (rst) gate_en_q <= 1'b0;
+        else gate_en_q <= gate_en && !trip;
+    end
+    assign gate_en_o = gate_en_q;
+
 `ifdef FORMAL
     // Top-level safety properties. The gate_leg properties (interlock, dead
     // time, fault/disable off in the next clock) and the fault_block and
@@ -907,6 +918,9 @@ module pl_top #(
                 assert (gate_hi_o == 3'b000 && gate_lo_o == 3'b000);
             // No leg has both gates on.
             assert ((gate_hi_o & gate_lo_o) == 3'b000);
+            // The gate-driver enable pin follows GATE_EN and drops with any
+            // trip at the next clock, like the gates.
+            if ($past(trip || !gate_en)) assert (!gate_en_o);
         end
     end
 `endif

@@ -36,6 +36,8 @@ create_project -in_memory -part $board_part
 set_property target_language Verilog [current_project]
 
 # --- block design -------------------------------------------------------
+# A second run into the same directory: Vivado refuses an existing design.
+file delete -force [file join $out bd]
 create_bd_design -dir [file join $out bd] ps_bd
 
 set ps7 [create_bd_cell -type ip -vlnv xilinx.com:ip:processing_system7:5.5 ps7]

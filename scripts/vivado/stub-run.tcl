@@ -67,6 +67,12 @@ proc current_project {} { return proj }
 proc create_bd_design {args} {
     lassign [opts create_bd_design $args {} {-dir}] o pos
     if {[llength $pos] != 1} { error "create_bd_design: one name expected" }
+    # Vivado refuses a design directory that exists (a second run).
+    if {[dict exists $o -dir]} {
+        set d [file join [dict get $o -dir] [lindex $pos 0]]
+        if {[file exists $d]} { error "create_bd_design: $d exists" }
+        file mkdir $d
+    }
 }
 proc create_bd_cell {args} {
     lassign [opts create_bd_cell $args {} {-type -vlnv}] o pos
@@ -158,13 +164,23 @@ proc write_hw_platform {args} {
 # --- xsct ---------------------------------------------------------------
 namespace eval hsi {
     proc open_hw_design {xsa} { ::need_file open_hw_design $xsa; return hw }
+    proc create_sw_design {args} {
+        lassign [::opts create_sw_design $args {} {-proc -os -app}] o pos
+        if {[llength $pos] != 1} { error "create_sw_design: one name expected" }
+        return sw
+    }
+    proc get_os {} { return os }
     proc generate_app {args} {
         lassign [::opts generate_app $args {-compile} {-hw -os -proc -app -sw -dir}] o pos
+        if {![dict exists $o -dir]} { error "generate_app: -dir missing" }
         ::fact output [file join [dict get $o -dir] executable.elf]
         # What the real command leaves behind.
         close [open [file join [dict get $o -dir] executable.elf] w]
     }
     proc close_hw_design {hw} {}
+}
+namespace eval common {
+    proc set_property {name value obj} { ::fact bsp $obj $name $value }
 }
 proc connect {args} {}
 proc targets {args} {}

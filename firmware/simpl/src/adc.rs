@@ -1,14 +1,112 @@
-//! `adc_frontend` (sample-rate timer, raw sample register, average of 1, 2
-//! or 4 = 2^`ADC_AVG_LOG2`)
-//! and the converter behind it (a result `conv + 1` cycles after each
-//! convert pulse), with their closed form between events.
+//! `adc_frontend` (sample-rate timer, data-ready synchroniser and edge
+//! detector, raw sample register, average of 1, 2 or 4 = 2^`ADC_AVG_LOG2`)
+//! and the converter behind it ([`Converter`]: data-ready after each convert
+//! pulse, optionally with a random delay and width), with their closed form
+//! between events.
 //!
 //! Formats: raw samples are 12-bit two's complement ADC counts; the sum of
 //! n = 2^`ADC_AVG_LOG2` samples is kept in 14 bits (two's complement, wraps as the
 //! RTL's adder); the average is `sum[11+k:k]` (k = `ADC_AVG_LOG2`), i.e.
 //! floor(sum / n), 12 bits, read sign-extended to 16 bits.
 
+use super::enc::Sync2;
 use super::NEVER;
+
+/// The converter on the ADC bus: after the convert pulse (the edge that
+/// shows `adc_cnv_o` high) its data-ready goes high `conv + j` edges later
+/// and stays high for `w` cycles, where `j` in `0..=jitter` and `w` in
+/// `1..=width_max` are drawn per conversion from a seeded generator
+/// (xorshift64). In a cycle-level model a data-ready edge of any phase
+/// against the PL clock is first seen by the synchroniser at one of two
+/// clock edges (a metastable first flop resolves either way): a random
+/// whole-cycle delay covers every outcome, and a random width every
+/// pulse the converter's timing allows (high and low >= 1 clock period).
+/// `jitter` 0 and `width_max` 1 is the converter of a synchronous bus:
+/// a one-cycle strobe `conv + 1` cycles after the pulse. A convert pulse
+/// during a conversion restarts it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Converter {
+    conv: u32,
+    jitter: u32,
+    width_max: u32,
+    rng: u64,
+    /// Edges since the convert pulse of the conversion under way.
+    since: Option<u32>,
+    delay: u32,
+    width: u32,
+}
+
+impl Converter {
+    /// A converter whose one-cycle data-ready follows `conv + 1` cycles after
+    /// each convert pulse.
+    pub const fn new(conv: u32) -> Self {
+        Self::jittered(conv, 0, 1, 0)
+    }
+
+    /// Data-ready `conv + (0..=jitter)` edges after the pulse, high for
+    /// `1..=width_max` cycles (`width_max` 0 counts as 1), drawn from `seed`.
+    pub const fn jittered(conv: u32, jitter: u32, width_max: u32, seed: u64) -> Self {
+        Self {
+            conv,
+            jitter,
+            width_max: if width_max == 0 { 1 } else { width_max },
+            // xorshift64 must not start at 0.
+            rng: seed ^ 0x9E37_79B9_7F4A_7C15,
+            since: None,
+            delay: 0,
+            width: 0,
+        }
+    }
+
+    fn draw(&mut self, n: u32) -> u32 {
+        if n <= 1 {
+            return 0;
+        }
+        let mut x = self.rng;
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        self.rng = x;
+        (x % u64::from(n)) as u32
+    }
+
+    /// The data-ready level in this cycle.
+    pub fn drdy(&self) -> bool {
+        matches!(self.since, Some(s) if s >= self.delay && s < self.delay + self.width)
+    }
+
+    /// One clock edge; `cnv` is `adc_cnv_o` as that edge sees it.
+    pub fn edge(&mut self, cnv: bool) {
+        self.since = match self.since {
+            Some(s) if s + 1 < self.delay + self.width => Some(s + 1),
+            _ => None,
+        };
+        if cnv {
+            self.delay = self.conv + self.draw(self.jitter.saturating_add(1));
+            self.width = 1 + self.draw(self.width_max);
+            self.since = Some(0);
+        }
+    }
+
+    /// Edges from now before the data-ready level changes.
+    pub fn quiet(&self) -> u64 {
+        match self.since {
+            None => NEVER,
+            Some(s) if s < self.delay => u64::from(self.delay - s),
+            Some(s) => u64::from(self.delay + self.width - s),
+        }
+    }
+
+    /// Applies `k` <= [`Self::quiet`] edges without a convert pulse.
+    pub fn skip(&mut self, k: u64) {
+        if let Some(s) = &mut self.since {
+            *s += k as u32;
+            if *s >= self.delay + self.width {
+                self.since = None;
+            }
+        }
+    }
+}
 
 /// A 12-bit two's complement field of the ADC data word.
 fn field(word: u64, lsb: u32) -> u16 {
@@ -41,7 +139,7 @@ pub fn adc_word(counts: [i32; 3]) -> u64 {
 }
 
 /// Registers of `adc_frontend` and the converter model.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Adc {
     tmr: u16,
     /// Convert-start pulse (`adc_cnv_o`).
@@ -57,27 +155,49 @@ pub struct Adc {
     avg: [u16; 3],
     /// Averages produced (`ADC_COUNT`).
     pub count: u32,
-    /// Cycles until the converter's `drdy` (`Some(0)`: in this cycle).
-    conv_left: Option<u32>,
+    /// Data-ready synchroniser (`sync2`, reset 1) and the edge register.
+    drdy_sync: Sync2,
+    drdy_prev: bool,
+    /// The converter.
+    pub conv: Converter,
 }
 
 impl Adc {
+    /// Out of reset, with converter `conv`.
+    pub const fn new(conv: Converter) -> Self {
+        Self {
+            tmr: 0,
+            cnv: false,
+            sv: false,
+            sample: [0; 3],
+            acc: [0; 3],
+            n: 0,
+            av: false,
+            avg: [0; 3],
+            count: 0,
+            drdy_sync: Sync2::new(true),
+            drdy_prev: true,
+            conv,
+        }
+    }
+
     /// `ADC_IA..IC` as read (sign-extended to 16 bits).
     pub fn avg_reg(&self, phase: usize) -> u32 {
         u32::from(sext16(self.avg[phase]))
     }
 
-    /// The converter's data-ready strobe in this cycle.
+    /// The converter's data-ready level in this cycle.
     pub fn drdy(&self) -> bool {
-        self.conv_left == Some(0)
+        self.conv.drdy()
     }
 
     /// One clock edge: `en`, `period`, `avg_log2` (`ADC_AVG_LOG2`, 0..=2) from
-    /// the registers, `word` the converter's data (latched when `drdy`),
-    /// `conv` its conversion time in cycles. Returns `true` when the edge
-    /// raises `adc_cnv_o`.
-    pub fn step(&mut self, en: bool, period: u16, avg_log2: u32, word: u64, conv: u32) -> bool {
+    /// the registers, `word` the converter's data bus (captured at the edge
+    /// after the synchronised data-ready rises). Returns `true` when the
+    /// edge raises `adc_cnv_o`.
+    pub fn step(&mut self, en: bool, period: u16, avg_log2: u32, word: u64) -> bool {
         let drdy = self.drdy();
+        let rise = self.drdy_sync.q && !self.drdy_prev;
         let cnv_now = self.cnv;
         // Sample-rate timer.
         let mut cnv = false;
@@ -109,33 +229,27 @@ impl Adc {
                 self.n += 1;
             }
         }
-        if drdy {
+        if rise {
             self.sample = [field(word, 24), field(word, 12), field(word, 0)];
         }
-        self.sv = drdy;
+        self.sv = rise;
+        self.drdy_prev = self.drdy_sync.q;
+        self.drdy_sync.step(drdy);
         self.av = av;
         self.cnv = cnv;
-        // Converter: the result follows `conv + 1` cycles after the pulse.
-        self.conv_left = match self.conv_left {
-            Some(0) | None => None,
-            Some(c) => Some(c - 1),
-        };
-        if cnv_now {
-            self.conv_left = Some(conv);
-        }
+        self.conv.edge(cnv_now);
         cnv
     }
 
     /// Cycles from now in which only the timer and the converter count down.
     pub fn quiet(&self, en: bool) -> u64 {
-        if self.cnv || self.sv || self.av || self.drdy() {
+        let drdy = self.drdy();
+        if self.cnv || self.sv || self.av || !self.drdy_sync.settled(drdy) || self.drdy_prev != drdy
+        {
             return 0;
         }
-        let mut k = if en { u64::from(self.tmr) } else { NEVER };
-        if let Some(c) = self.conv_left {
-            k = k.min(u64::from(c));
-        }
-        k
+        let k = if en { u64::from(self.tmr) } else { NEVER };
+        k.min(self.conv.quiet())
     }
 
     /// Applies `k` quiet cycles.
@@ -143,8 +257,6 @@ impl Adc {
         if en {
             self.tmr -= k as u16;
         }
-        if let Some(c) = &mut self.conv_left {
-            *c -= k as u32;
-        }
+        self.conv.skip(k);
     }
 }

@@ -18,7 +18,7 @@
 //! a pin change through its synchroniser); it jumps over the cycles in
 //! between in closed form (each block's `quiet`/`skip`).
 
-use super::adc::Adc;
+use super::adc::{Adc, Converter};
 use super::capture::{CapIn, Capture, Sample};
 use super::core::{sext, Core};
 use super::enc::{Encoder, Sync2};
@@ -246,7 +246,6 @@ pub struct SimPl {
     pwm: Pwm,
     gates: GateDriver,
     adc: Adc,
-    conv_cycles: u32,
     enc_sync: [Sync2; 3],
     enc: Encoder,
     ext_sync: Sync2,
@@ -271,14 +270,18 @@ pub struct SimPl {
 
 impl SimPl {
     /// `pl_top` right after reset; the converter answers each convert pulse
-    /// `conv_cycles + 1` cycles later.
+    /// `conv_cycles + 1` cycles later with a one-cycle data-ready.
     pub fn new(conv_cycles: u32) -> Self {
+        Self::with_converter(Converter::new(conv_cycles))
+    }
+
+    /// `pl_top` right after reset with the converter `conv`.
+    pub fn with_converter(conv: Converter) -> Self {
         Self {
             regs: Regs::default(),
             pwm: Pwm::default(),
             gates: GateDriver::default(),
-            adc: Adc::default(),
-            conv_cycles,
+            adc: Adc::new(conv),
             enc_sync: [Sync2::new(false); 3],
             enc: Encoder::default(),
             ext_sync: Sync2::new(true),
@@ -557,7 +560,6 @@ impl SimPl {
             self.r(S_ADC_PERIOD) as u16,
             self.r(S_ADC_AVG_LOG2),
             self.pins.adc_word,
-            self.conv_cycles,
         );
         let q = self.enc_sync.map(|s| s.q);
         self.enc.step(

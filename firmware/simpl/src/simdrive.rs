@@ -10,7 +10,10 @@
 //! so the closed form is exact. A register access occupies one PL cycle (see
 //! [`super::pl`]).
 
-use super::adc::adc_word;
+use super::adc::{adc_word, Converter};
+
+/// Seed of the converter's data-ready draws ([`SimConfig::converter`]).
+const CONVERTER_SEED: u64 = 0xADC0_DA7A;
 use super::inverter::potentials;
 use super::pl::{Events, Pins, SimPl};
 use core::f64::consts::PI;
@@ -47,6 +50,14 @@ pub struct SimConfig {
     /// pulse by this many cycles plus one. Default 50 (0.5 us). Must stay
     /// below ADC_PERIOD - 1 for every result to arrive.
     pub adc_conversion_cycles: u32,
+    /// Extra delay of the converter's data-ready, drawn per conversion from
+    /// `0..=adc_drdy_jitter_cycles` (an asynchronous converter: its edge has
+    /// any phase against the PL clock). Default 0. Together with the
+    /// conversion time and the width it must stay below ADC_PERIOD - 1.
+    pub adc_drdy_jitter_cycles: u32,
+    /// Data-ready high time, drawn per conversion from
+    /// `1..=adc_drdy_width_cycles` cycles (0 counts as 1). Default 1.
+    pub adc_drdy_width_cycles: u32,
     /// Encoder quadrature counts per mechanical revolution (4 per line);
     /// the index pulse is high during count 0. Default 4096 (ENC_CPR reset).
     pub encoder_cpr: u32,
@@ -60,6 +71,8 @@ impl Default for SimConfig {
             omega_e_rad_s: 0.0,
             adc_amps_per_count: 16.0 / 2048.0,
             adc_conversion_cycles: 50,
+            adc_drdy_jitter_cycles: 0,
+            adc_drdy_width_cycles: 1,
             encoder_cpr: 4096,
         }
     }
@@ -76,6 +89,12 @@ impl SimConfig {
                 reason: "must be at most 60000 (below the longest ADC_PERIOD)",
             });
         }
+        if self.adc_drdy_jitter_cycles > 1000 || self.adc_drdy_width_cycles > 1000 {
+            return Err(ParamError {
+                field: "adc_drdy_jitter_cycles",
+                reason: "jitter and width must be at most 1000 cycles each",
+            });
+        }
         if !(4..=65_535).contains(&self.encoder_cpr) {
             return Err(ParamError {
                 field: "encoder_cpr",
@@ -83,6 +102,17 @@ impl SimConfig {
             });
         }
         Ok(())
+    }
+
+    /// The converter this configuration describes (seeded: the same draws
+    /// on every model of `pl_top` given it).
+    pub fn converter(&self) -> Converter {
+        Converter::jittered(
+            self.adc_conversion_cycles,
+            self.adc_drdy_jitter_cycles,
+            self.adc_drdy_width_cycles,
+            CONVERTER_SEED,
+        )
     }
 
     /// ADC counts of a phase current (round to nearest, saturated to the
@@ -254,14 +284,14 @@ impl SimDrive {
     /// The drive right after the PL's reset, motor at rest current, angle 0.
     pub fn new(cfg: &SimConfig) -> Result<Self, ParamError> {
         cfg.validate()?;
-        Self::with_pl(cfg, SimPl::new(cfg.adc_conversion_cycles))
+        Self::with_pl(cfg, SimPl::with_converter(cfg.converter()))
     }
 }
 
 impl<P: PlModel> SimDrive<P> {
     /// The drive on another model of `pl_top` (right after its reset; its
-    /// converter must answer `cfg.adc_conversion_cycles + 1` cycles after
-    /// each convert pulse with the word in its pins).
+    /// converter must be `cfg.converter()`, answering each convert pulse
+    /// with the word in its pins).
     pub fn with_pl(cfg: &SimConfig, pl: P) -> Result<Self, ParamError> {
         cfg.validate()?;
         let plant = Plant::new(&cfg.motor, 0.0, cfg.mechanics, cfg.omega_e_rad_s)?;

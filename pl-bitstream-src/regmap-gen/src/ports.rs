@@ -84,7 +84,12 @@ pub const PL_TOP_PORTS: &[Port] = &[
     ),
     port_in("s_axi_arvalid_i", "arvalid", 1, "AR valid."),
     port_in("s_axi_rready_i", "rready", 1, "R ready."),
-    port_in("adc_drdy_i", "adc_drdy", 1, "ADC data-ready strobe."),
+    port_in(
+        "adc_drdy_i",
+        "adc_drdy",
+        1,
+        "ADC data ready (asynchronous, one result per rising edge).",
+    ),
     port_in(
         "adc_data_i",
         "adc_data",
@@ -113,6 +118,12 @@ pub const PL_TOP_PORTS: &[Port] = &[
     port_out("s_axi_rvalid_o", "rvalid", 1, "R valid."),
     port_out("gate_hi_o", "gate_hi", 3, "Upper gates (bit 2 = leg a)."),
     port_out("gate_lo_o", "gate_lo", 3, "Lower gates."),
+    port_out(
+        "gate_en_o",
+        "gate_en",
+        1,
+        "Gate-driver enable pin (GATE_EN and no trip).",
+    ),
     port_out("adc_cnv_o", "adc_cnv", 1, "ADC convert-start pulse."),
     port_out(
         "adc_avg_valid_o",

@@ -43,6 +43,7 @@ struct PtOut {
     uint8_t rvalid;
     uint8_t gate_hi;
     uint8_t gate_lo;
+    uint8_t gate_en;
     uint8_t adc_cnv;
     uint8_t adc_avg_valid;
     uint8_t irq;
@@ -83,6 +84,7 @@ static void read_out(const Vpl_top* t, PtOut* out) {
     out->rvalid = t->s_axi_rvalid_o;
     out->gate_hi = t->gate_hi_o;
     out->gate_lo = t->gate_lo_o;
+    out->gate_en = t->gate_en_o;
     out->adc_cnv = t->adc_cnv_o;
     out->adc_avg_valid = t->adc_avg_valid_o;
     out->irq = t->irq_o;

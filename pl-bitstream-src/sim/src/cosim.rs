@@ -17,6 +17,7 @@
 use crate::pl_top::{PlTopSim, OKAY};
 use regmap::bus::BusError;
 use regmap::BASE_ADDR;
+use simpl::adc::Converter;
 use simpl::cosim::{Op, Reply, Request, Status, REQUEST_LEN};
 use simpl::gates::GateOutputs;
 use simpl::pl::{Events, Pins, SimPl};
@@ -35,7 +36,6 @@ pub struct RtlPl {
     rtl: PlTopSim,
     shadow: SimPl,
     pins: Pins,
-    conv: u32,
     cycles: u64,
     mismatches: u64,
     first_mismatch: Option<String>,
@@ -45,13 +45,18 @@ impl RtlPl {
     /// A fresh `pl_top` out of reset; the converter answers `conv + 1`
     /// cycles after each convert pulse.
     pub fn new(conv: u32) -> Self {
+        Self::with_converter(Converter::new(conv))
+    }
+
+    /// A fresh `pl_top` out of reset with converter `conv` (the shadow
+    /// model gets an identical one).
+    pub fn with_converter(conv: Converter) -> Self {
         let mut rtl = PlTopSim::new();
-        rtl.adc_echo = Some((conv, 0));
+        rtl.adc = Some(conv);
         Self {
             rtl,
-            shadow: SimPl::new(conv),
+            shadow: SimPl::with_converter(conv),
             pins: Pins::default(),
-            conv,
             cycles: 0,
             mismatches: 0,
             first_mismatch: None,
@@ -93,7 +98,7 @@ impl RtlPl {
         self.rtl.inp.enc_b = u8::from(p.enc_b);
         self.rtl.inp.enc_z = u8::from(p.enc_z);
         self.rtl.inp.fault_ext_n = u8::from(p.fault_ext_n);
-        self.rtl.adc_echo = Some((self.conv, p.adc_word));
+        self.rtl.adc_data = p.adc_word;
         self.shadow.pins = p;
         let g0 = self.rtl_gates();
         let o = self.rtl.step();
@@ -251,7 +256,7 @@ impl Bridge {
     /// The drive with the default simulated motor (`SimConfig::default()`).
     pub fn new() -> Self {
         let cfg = SimConfig::default();
-        let pl = RtlPl::new(cfg.adc_conversion_cycles);
+        let pl = RtlPl::with_converter(cfg.converter());
         let drive = SimDrive::with_pl(&cfg, pl).expect("default motor parameters");
         Self {
             drive,

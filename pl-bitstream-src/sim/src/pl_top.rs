@@ -10,6 +10,7 @@
 //! i.e. the absolute address minus `regmap::BASE_ADDR`).
 use core::ffi::c_void;
 use core::ptr::NonNull;
+use simpl::adc::Converter;
 
 pub use crate::pl_top_ports::{PtIn, PtOut};
 
@@ -35,12 +36,13 @@ pub struct PlTopSim {
     pub inp: PtIn,
     /// Clock cycles run.
     pub cycles: u64,
-    /// Built-in converter model: `Some((conv, data))` answers every
-    /// `adc_cnv_o` pulse `conv + 1` cycles later with a one-cycle
-    /// `adc_drdy_i` and `adc_data_i = data` (in every [`Self::step`], so
-    /// also during AXI transfers). `None` (default): the test drives the ADC.
-    pub adc_echo: Option<(u32, u64)>,
-    adc_pending: Option<u32>,
+    /// Built-in converter model (the simulated PL's [`Converter`]): drives
+    /// `adc_drdy_i` in every [`Self::step`] (so also during AXI transfers)
+    /// and `adc_data_i` = [`Self::adc_data`]. `None` (default): the test
+    /// drives the ADC pins.
+    pub adc: Option<Converter>,
+    /// The converter's data bus while [`Self::adc`] is set.
+    pub adc_data: u64,
 }
 
 impl PlTopSim {
@@ -52,8 +54,8 @@ impl PlTopSim {
             ptr,
             inp: PtIn::IDLE,
             cycles: 0,
-            adc_echo: None,
-            adc_pending: None,
+            adc: None,
+            adc_data: 0,
         };
         for _ in 0..4 {
             s.step();
@@ -64,26 +66,16 @@ impl PlTopSim {
 
     /// One clock cycle; returns the outputs as sampled by the rising edge.
     pub fn step(&mut self) -> PtOut {
-        if let Some((_, data)) = self.adc_echo {
-            self.inp.adc_drdy = 0;
-            match self.adc_pending {
-                Some(0) => {
-                    self.inp.adc_drdy = 1;
-                    self.inp.adc_data = data;
-                    self.adc_pending = None;
-                }
-                Some(t) => self.adc_pending = Some(t - 1),
-                None => {}
-            }
+        if let Some(c) = &self.adc {
+            self.inp.adc_drdy = u8::from(c.drdy());
+            self.inp.adc_data = self.adc_data;
         }
         let mut out = PtOut::default();
         // SAFETY: live object; both structs are repr(C) and match the shim.
         unsafe { pt_step(self.ptr.as_ptr(), &self.inp, &mut out) };
         self.cycles += 1;
-        if let Some((conv, _)) = self.adc_echo {
-            if out.adc_cnv == 1 {
-                self.adc_pending = Some(conv);
-            }
+        if let Some(c) = &mut self.adc {
+            c.edge(out.adc_cnv == 1);
         }
         out
     }

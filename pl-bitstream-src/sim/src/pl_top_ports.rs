@@ -27,7 +27,7 @@ pub struct PtIn {
     pub arvalid: u8,
     /// R ready.
     pub rready: u8,
-    /// ADC data-ready strobe.
+    /// ADC data ready (asynchronous, one result per rising edge).
     pub adc_drdy: u8,
     /// ADC data `{ia, ib, ic}`, 12 bits each, ia in bits 35..24.
     pub adc_data: u64,
@@ -65,6 +65,8 @@ pub struct PtOut {
     pub gate_hi: u8,
     /// Lower gates.
     pub gate_lo: u8,
+    /// Gate-driver enable pin (GATE_EN and no trip).
+    pub gate_en: u8,
     /// ADC convert-start pulse.
     pub adc_cnv: u8,
     /// Averaged-sample strobe.

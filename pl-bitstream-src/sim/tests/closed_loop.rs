@@ -83,7 +83,7 @@ impl RtlMpdtc {
             sim.write(axi_addr(&rm::ADC, &rm::ADC_PERIOD), ADC_PERIOD),
             OKAY
         );
-        sim.adc_echo = Some((10, 0));
+        sim.adc = Some(simpl::adc::Converter::new(10));
         assert_eq!(sim.write(t(&rm::CTRL), mode::MPDTC), OKAY);
         assert_eq!(sim.write(axi_addr(&rm::PWM, &rm::DEAD_TIME), 10), OKAY);
         assert_eq!(sim.write(axi_addr(&rm::PWM, &rm::GATE_CTRL), 1), OKAY);

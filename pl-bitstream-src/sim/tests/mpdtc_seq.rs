@@ -66,7 +66,7 @@ const QUAD: [(u8, u8); 4] = [(0, 0), (1, 0), (1, 1), (0, 1)];
 /// dead time, mode MPDTC with MANUAL = 0 and STATE_CLR = 0; GATE_EN still 0.
 fn setup() -> PlTopSim {
     let mut sim = PlTopSim::new();
-    sim.adc_echo = Some((10, 0));
+    sim.adc = Some(simpl::adc::Converter::new(10));
     w(&mut sim, &rm::ADC, &rm::ADC_PERIOD, ADC_PERIOD);
     w(&mut sim, &rm::PWM, &rm::DEAD_TIME, DT);
     w(&mut sim, &rm::MPDTC, &rm::MPDTC_ALIGN_PERIOD, ALIGN_PERIOD);

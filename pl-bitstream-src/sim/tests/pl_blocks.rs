@@ -205,9 +205,73 @@ fn over_current_trips_above_the_limit_only() {
             trip_at = Some(sim.cycles);
         }
     }
-    // Sample register at the data-ready edge, gates off at the next edge.
-    assert_eq!(trip_at.unwrap() - drdy_at.unwrap(), 1);
+    // The data-ready pin passes two synchroniser flops, the sample register
+    // loads at the next edge, the gates turn off at the one after: the
+    // first edge that sees the pin high plus three.
+    assert_eq!(trip_at.unwrap() - drdy_at.unwrap(), 3);
     assert_eq!(r(&mut sim, &regmap::FAULT, &regmap::FAULT_STATUS), 0b001);
+}
+
+/// An asynchronous converter: data-ready rises at a random edge (random
+/// phase and jitter against the PL clock, in whole cycles: a real edge of
+/// any phase is first seen at one of two edges) and stays high a random
+/// number of cycles; the data bus holds the result from the rising edge
+/// until the next conversion. Every pulse must give exactly one sample,
+/// the one on the bus, whatever its width.
+#[test]
+fn asynchronous_data_ready_gives_one_sample_per_edge() {
+    let mut sim = PlTopSim::new();
+    w(&mut sim, &regmap::ADC, &regmap::ADC_AVG_LOG2, 0);
+    let mut rng = rtl_sim::mpdtc_vectors::Rng(0xADC0_0027);
+    let mut sent: Vec<[i32; 3]> = Vec::new();
+    let mut got: Vec<[i32; 3]> = Vec::new();
+    let rd = |sim: &mut PlTopSim, reg: &regmap::Register| {
+        (r(sim, &regmap::ADC, reg) as u16 as i16) as i32
+    };
+    let count0 = r(&mut sim, &regmap::ADC, &regmap::ADC_COUNT);
+    for _ in 0..60 {
+        // Wait for the convert pulse, then the conversion time plus a
+        // random delay, then a pulse 1..8 cycles wide with new data.
+        while sim.step().adc_cnv == 0 {}
+        sim.idle(40 + (rng.next_u64() % 24) as u32);
+        let s = [0, 1, 2].map(|_| rng.range(-2048, 2047));
+        sent.push(s);
+        sim.inp.adc_data = simpl::adc::adc_word(s);
+        sim.inp.adc_drdy = 1;
+        sim.idle(1 + (rng.next_u64() % 8) as u32);
+        sim.inp.adc_drdy = 0;
+        // Data held until after the capture, then garbage on the bus.
+        sim.idle(4);
+        sim.inp.adc_data = rng.next_u64() & 0xF_FFFF_FFFF;
+        got.push([
+            rd(&mut sim, &regmap::ADC_IA),
+            rd(&mut sim, &regmap::ADC_IB),
+            rd(&mut sim, &regmap::ADC_IC),
+        ]);
+    }
+    assert_eq!(got, sent);
+    assert_eq!(r(&mut sim, &regmap::ADC, &regmap::ADC_COUNT) - count0, 60);
+}
+
+/// No converter card: the pull-downs hold data-ready and the data low. No
+/// sample is taken, `ADC_COUNT` stays at 0 (the firmware's ADC-stuck check
+/// trips) and the over-current trip stays quiet; a data-ready held high
+/// through reset is not a result either.
+#[test]
+fn missing_converter_gives_no_samples() {
+    let mut sim = PlTopSim::new();
+    drive_on(&mut sim);
+    sim.idle(5000);
+    assert_eq!(r(&mut sim, &regmap::ADC, &regmap::ADC_COUNT), 0);
+    assert_eq!(r(&mut sim, &regmap::ADC, &regmap::ADC_IA), 0);
+    assert!(!gates_off(&sim));
+    let mut sim = PlTopSim::new();
+    sim.inp.adc_drdy = 1;
+    sim.inp.aresetn = 0;
+    sim.idle(10);
+    sim.inp.aresetn = 1;
+    sim.idle(5000);
+    assert_eq!(r(&mut sim, &regmap::ADC, &regmap::ADC_COUNT), 0);
 }
 
 #[test]

@@ -2,7 +2,8 @@
 //! Verilated `pl_top`: the same random sequence of register accesses (every
 //! register of the map, valid and invalid values, unmapped and unaligned
 //! addresses), ADC converter data, encoder and fault pin levels and idle
-//! PL cycles goes into both; every read must return the same data and
+//! PL cycles goes into both, with an asynchronous converter (data-ready of
+//! random delay and width, the same seeded `simpl::adc::Converter` in both); every read must return the same data and
 //! response, every write the same response, and the gate outputs must
 //! change at the same PL cycles to the same levels. Fails on the first
 //! mismatch and prints the seed (`SIMPL_SEED=<n>` replays one).
@@ -17,11 +18,15 @@ use regmap::bus::{BusError, RegisterBus};
 use regmap::{self as rm, Access, Register, BASE_ADDR, BLOCKS};
 use rtl_sim::mpdtc_vectors::Rng;
 use rtl_sim::pl_top::{PlTopSim, PtOut, OKAY, SLVERR};
-use simpl::adc::adc_word;
+use simpl::adc::{adc_word, Converter};
 use simpl::pl::{Events, SimPl};
 
-/// Converter time of both models: `drdy` 11 cycles after `adc_cnv`.
+/// Converter time of both models: `drdy` rises 10 to 10 + `JITTER` edges
+/// after `adc_cnv` and stays high 1 to `WIDTH` cycles (random per
+/// conversion): the synchroniser sees every phase of an asynchronous edge.
 const CONV: u32 = 10;
+const JITTER: u32 = 5;
+const WIDTH: u32 = 4;
 /// Cycles the harness spends in reset before `SimPl`'s cycle 0.
 const RESET_CYCLES: u64 = 4;
 
@@ -59,13 +64,14 @@ struct Pair {
 }
 
 impl Pair {
-    fn new() -> Self {
+    fn new(seed: u64) -> Self {
+        let conv = Converter::jittered(CONV, JITTER, WIDTH, seed);
         let mut rtl = PlTopSim::new();
-        rtl.adc_echo = Some((CONV, 0));
+        rtl.adc = Some(conv);
         assert_eq!(rtl.cycles, RESET_CYCLES);
         Self {
             rtl,
-            sim: SimPl::new(CONV),
+            sim: SimPl::with_converter(conv),
             rtl_gates: (0, 0),
             rtl_edges: Vec::new(),
             sim_edges: Vec::new(),
@@ -213,7 +219,7 @@ impl Pair {
     }
 
     fn set_adc(&mut self, word: u64) {
-        self.rtl.adc_echo = Some((CONV, word));
+        self.rtl.adc_data = word;
         self.sim.pins.adc_word = word;
     }
 
@@ -415,7 +421,7 @@ fn adc_data(rng: &mut Rng) -> u64 {
 
 fn run(seed: u64, ops: usize) -> Pair {
     let mut rng = Rng(seed);
-    let mut p = Pair::new();
+    let mut p = Pair::new(seed);
     // The MPDCC page has its own operation and random stream (below).
     let mut mc_rng = Rng(seed ^ 0x4D50_4443);
     let mc_states = rtl_sim::mpdcc_vectors::closed_loop_states();

@@ -72,10 +72,13 @@ pub struct Ps {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Timing {
-    /// [min, max] input delay of the ADC bus relative to FCLK0, ns.
-    pub adc_in_delay_ns: [String; 2],
-    /// Input ports synchronous to FCLK0; all other inputs are asynchronous.
-    pub sync_inputs: Vec<String>,
+    /// Input ports captured only at the clock edge after a synchronised
+    /// strobe rose (the ADC data bus); every other input is asynchronous.
+    pub strobed_inputs: Vec<String>,
+    /// Largest pin-to-register delay of the strobed inputs, ns
+    /// (`set_max_delay -datapath_only`): shorter than the strobe's
+    /// synchroniser delay, so the data has settled when it is captured.
+    pub strobed_max_delay_ns: String,
 }
 
 #[derive(Debug, Clone, Deserialize)]
@@ -91,6 +94,8 @@ pub struct Pin {
     pub io: String,
     #[serde(default)]
     pub pullup: bool,
+    #[serde(default)]
+    pub pulldown: bool,
     pub note: String,
 }
 
@@ -251,22 +256,23 @@ impl Board {
                     .iter()
                     .map(|v| ("ps.ddr_dqs_to_clk_delay_ns", v)),
             )
-            .chain(
-                self.timing
-                    .adc_in_delay_ns
-                    .iter()
-                    .map(|v| ("timing.adc_in_delay_ns", v)),
-            );
+            .chain(std::iter::once((
+                "timing.strobed_max_delay_ns",
+                &self.timing.strobed_max_delay_ns,
+            )));
         for (name, v) in decimals {
             if !is_decimal(v) {
                 return err(format!("{name}: `{v}` is not a decimal number"));
             }
         }
-        let [lo, hi] = &self.timing.adc_in_delay_ns;
-        // Both are decimals (checked above), so they parse.
-        let (lo, hi): (f64, f64) = (lo.parse().unwrap_or(0.0), hi.parse().unwrap_or(0.0));
-        if lo > hi {
-            return err("timing.adc_in_delay_ns: expected [min, max] with min <= max");
+        // A decimal (checked above), so it parses.
+        let max_delay: f64 = self.timing.strobed_max_delay_ns.parse().unwrap_or(0.0);
+        // The strobe's synchroniser gives the data 2 FCLK0 periods.
+        let two_periods_ns = 2e9 / f64::from(ps.fclk0_hz);
+        if max_delay <= 0.0 || max_delay >= two_periods_ns {
+            return err(format!(
+                "timing.strobed_max_delay_ns: expected more than 0 and less than two FCLK0 periods ({two_periods_ns} ns)"
+            ));
         }
 
         let mut by_port: BTreeMap<PortBit, &Pin> = BTreeMap::new();
@@ -296,6 +302,9 @@ impl Board {
                     "package pin {} is used twice (ports {} and {})",
                     p.pin, prev.port, p.port
                 ));
+            }
+            if p.pullup && p.pulldown {
+                return err(format!("port `{}`: pullup and pulldown", p.port));
             }
             if !IO_STANDARDS.contains(&p.io.as_str()) {
                 return err(format!(
@@ -334,8 +343,10 @@ mod tests {
         // 666.667 MHz / 2, the constant the firmware used before board files.
         assert_eq!(b.periphclk_hz(), 333_333_333);
         assert_eq!(b.ps.uart_ref_hz, 50_000_000);
-        // 6 gates + cnv + drdy + 36 data + A/B/Z + fault + 4 LEDs.
-        assert_eq!(b.pins.len(), 6 + 2 + 36 + 3 + 1 + 4);
+        // 6 gates + gate enable + cnv + drdy + 36 data + A/B/Z + fault + 4 LEDs.
+        assert_eq!(b.pins.len(), 6 + 1 + 2 + 36 + 3 + 1 + 4);
+        // The ADC inputs read 0 without a converter card.
+        assert_eq!(b.pins.iter().filter(|p| p.pulldown).count(), 37);
     }
 
     #[test]
@@ -381,9 +392,14 @@ mod tests {
             ),
             ("ddr_mhz = \"533.333313\"", "ddr_mhz = \"533,3\"", "ddr_mhz"),
             (
-                "adc_in_delay_ns = [\"1.0\", \"6.0\"]",
-                "adc_in_delay_ns = [\"7.0\", \"6.0\"]",
-                "adc_in_delay_ns",
+                "strobed_max_delay_ns = \"10.0\"",
+                "strobed_max_delay_ns = \"20.0\"",
+                "strobed_max_delay_ns",
+            ),
+            (
+                "pullup = true",
+                "pullup = true\npulldown = true",
+                "pullup and pulldown",
             ),
             ("io = \"LVCMOS33\"", "io = \"LVDS_25\"", "IO standard"),
             ("pin = \"Y11\"", "pin = \"y11\"", "package pin"),

@@ -81,12 +81,12 @@ pub fn port_problems(board: &Board, ports: &[Port]) -> Vec<String> {
             }
         }
     }
-    for name in &board.timing.sync_inputs {
+    for name in &board.timing.strobed_inputs {
         match by_name.get(name.as_str()) {
             Some(p) if p.dir == Dir::Input => {}
-            Some(_) => problems.push(format!("timing.sync_inputs: `{name}` is not an input")),
+            Some(_) => problems.push(format!("timing.strobed_inputs: `{name}` is not an input")),
             None => problems.push(format!(
-                "timing.sync_inputs: board_top has no port `{name}`"
+                "timing.strobed_inputs: board_top has no port `{name}`"
             )),
         }
     }
@@ -150,16 +150,16 @@ mod tests {
     }
 
     #[test]
-    fn ps_ports_and_sync_inputs_are_checked() {
+    fn ps_ports_and_strobed_inputs_are_checked() {
         let board = ZEDBOARD.replace("port = \"led_o[3]\"", "port = \"ddr_cke_io\"");
         assert!(problems(&board, TOP).iter().any(|p| p.contains("PS port")));
         let board = ZEDBOARD.replace(
-            "sync_inputs = [\"adc_drdy_i\"",
-            "sync_inputs = [\"adc_cnv_o\"",
+            "strobed_inputs = [\"adc_data_i\"",
+            "strobed_inputs = [\"adc_cnv_o\"",
         );
         assert_eq!(
             problems(&board, TOP),
-            ["timing.sync_inputs: `adc_cnv_o` is not an input"]
+            ["timing.strobed_inputs: `adc_cnv_o` is not an input"]
         );
     }
 }

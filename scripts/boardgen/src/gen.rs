@@ -17,9 +17,10 @@ pub fn mhz(hz: u32) -> String {
     s.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
-/// The XDC: one PACKAGE_PIN/IOSTANDARD line per constrained bit, pull-ups,
-/// and the I/O timing (false paths for asynchronous inputs and for
-/// outputs, input delays for the FCLK0-synchronous ADC bus).
+/// The XDC: one PACKAGE_PIN/IOSTANDARD line per constrained bit, pull-ups
+/// and pull-downs, and the I/O timing (false paths for asynchronous inputs
+/// and for outputs, a datapath-only maximum delay for the strobed ADC bus;
+/// no input delay: no clock of the PL reaches the converter).
 pub fn xdc(b: &Board, ports: &[Port]) -> String {
     let mut s = header(b, "#");
     let _ = writeln!(
@@ -45,6 +46,9 @@ pub fn xdc(b: &Board, ports: &[Port]) -> String {
     for p in b.pins.iter().filter(|p| p.pullup) {
         let _ = writeln!(s, "set_property PULLUP true [get_ports {{{}}}]", p.port);
     }
+    for p in b.pins.iter().filter(|p| p.pulldown) {
+        let _ = writeln!(s, "set_property PULLDOWN true [get_ports {{{}}}]", p.port);
+    }
     let pl: Vec<&Port> = ports
         .iter()
         .filter(|p| !crate::check::is_ps_port(&p.name))
@@ -53,7 +57,7 @@ pub fn xdc(b: &Board, ports: &[Port]) -> String {
         Some(_) => format!("{}[*]", p.name),
         None => p.name.clone(),
     };
-    let is_sync = |p: &Port| b.timing.sync_inputs.contains(&p.name);
+    let is_sync = |p: &Port| b.timing.strobed_inputs.contains(&p.name);
     let async_in: Vec<String> = pl
         .iter()
         .filter(|p| p.dir == Dir::Input && !is_sync(p))
@@ -71,7 +75,10 @@ pub fn xdc(b: &Board, ports: &[Port]) -> String {
         .collect();
     s.push_str("\n# Timing.\n");
     if !async_in.is_empty() {
-        s.push_str("# Asynchronous inputs: each passes a two-flop synchroniser (sync2).\n");
+        s.push_str(
+            "# Asynchronous inputs: each passes a two-flop synchroniser (sync2); the ADC's\n\
+             # data-ready among them (the converter sees no PL clock).\n",
+        );
         let _ = writeln!(
             s,
             "set_false_path -from [get_ports {{{}}}]",
@@ -86,15 +93,17 @@ pub fn xdc(b: &Board, ports: &[Port]) -> String {
         let _ = writeln!(s, "set_false_path -to [get_ports {{{}}}]", outs.join(" "));
     }
     if !sync_in.is_empty() {
-        let [lo, hi] = &b.timing.adc_in_delay_ns;
-        s.push_str("# Inputs synchronous to FCLK0 (timing.adc_in_delay_ns of the board file).\n");
-        for (kind, v) in [("min", lo), ("max", hi)] {
-            let _ = writeln!(
-                s,
-                "set_input_delay -clock [get_clocks clk_fpga_0] -{kind} {v} [get_ports {{{}}}]",
-                sync_in.join(" ")
-            );
-        }
+        s.push_str(
+            "# Inputs captured at the clock edge after the synchronised data-ready rose\n\
+             # (adc_frontend: 2 to 3 periods after the pin's edge). Their pin-to-register\n\
+             # delay only has to be shorter than that (timing.strobed_max_delay_ns).\n",
+        );
+        let _ = writeln!(
+            s,
+            "set_max_delay -datapath_only -from [get_ports {{{}}}] {}",
+            sync_in.join(" "),
+            b.timing.strobed_max_delay_ns
+        );
     }
     s
 }
@@ -178,7 +187,13 @@ pub fn pins_md(b: &Board) -> String {
     let _ = writeln!(s, "# Pins of the {}, {}\n", b.board.title, b.board.part);
     s.push_str("| signal (board_top port) | connector pin | package pin | IO standard | use |\n|---|---|---|---|---|\n");
     for p in &b.pins {
-        let pull = if p.pullup { " (internal pull-up)" } else { "" };
+        let pull = if p.pullup {
+            " (internal pull-up)"
+        } else if p.pulldown {
+            " (internal pull-down)"
+        } else {
+            ""
+        };
         let _ = writeln!(
             s,
             "| `{}` | {} | {} | {} | {}{} |",
@@ -248,13 +263,17 @@ mod tests {
             "set_property -dict {PACKAGE_PIN Y11 IOSTANDARD LVCMOS33} [get_ports {gate_hi_o[2]}]"
         ));
         assert!(x.contains("set_property PULLUP true [get_ports {fault_ext_ni}]"));
-        assert!(
-            x.contains("set_false_path -from [get_ports {enc_a_i enc_b_i enc_z_i fault_ext_ni}]")
-        );
+        assert!(x.contains("set_property PULLDOWN true [get_ports {adc_drdy_i}]"));
+        assert!(x.contains("set_property PULLDOWN true [get_ports {adc_data_i[35]}]"));
         assert!(x.contains(
-            "set_false_path -to [get_ports {gate_hi_o[*] gate_lo_o[*] adc_cnv_o led_o[*]}]"
+            "set_false_path -from [get_ports {adc_drdy_i enc_a_i enc_b_i enc_z_i fault_ext_ni}]"
         ));
-        assert!(x.contains("-max 6.0 [get_ports {adc_drdy_i adc_data_i[*]}]"));
+        assert!(x.contains(
+            "set_false_path -to [get_ports {gate_hi_o[*] gate_lo_o[*] gate_en_o adc_cnv_o led_o[*]}]"
+        ));
+        assert!(x.contains("set_max_delay -datapath_only -from [get_ports {adc_data_i[*]}] 10.0"));
+        // No clock of the PL reaches the converter: no input delays.
+        assert!(!x.contains("set_input_delay"));
         // PS pins are the PS7's business.
         assert!(!x.contains("ddr_") && !x.contains("fixed_io"));
     }
