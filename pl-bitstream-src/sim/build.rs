@@ -100,6 +100,19 @@ const CELLS_ENV: &str = "RTL_SIM_XILINX_CELLS";
 /// how many a decision uses, so one model serves `--explorers 1..=6`).
 const MPDCC_CORE_EXPLORERS: u32 = 6;
 
+/// C++ optimisation of a model's per-cycle code (Verilator's `OPT_FAST`
+/// files; the `OPT_SLOW` constructors stay at -O1). `pl_top` runs millions
+/// of cycles in the co-simulation, where -O2 evaluates a cycle markedly
+/// faster (`scripts/bench cosim`, docs/speed.md); the cores' checks are short and keep
+/// the quicker -O1 build.
+fn opt_fast(top: &str) -> &'static str {
+    if top == "pl_top" {
+        "-O2"
+    } else {
+        "-O1"
+    }
+}
+
 fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
     let netlist = (top == "mpdtc_core")
         .then(|| env::var(NETLIST_ENV).ok())
@@ -115,7 +128,10 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         .arg("--Mdir")
         .arg(&mdir)
         .args(["-CFLAGS", "-fPIC -O1"])
-        .args(["-MAKEFLAGS", "OPT_FAST=-O1 OPT_SLOW=-O1 OPT_GLOBAL=-O1"])
+        .args([
+            "-MAKEFLAGS",
+            &format!("OPT_FAST={} OPT_SLOW=-O1 OPT_GLOBAL=-O1", opt_fast(top)),
+        ])
         .arg("-Wno-fatal")
         .arg(format!("-I{}", rtl.display()));
     if top == "mpdcc_core" {
