@@ -7,7 +7,16 @@
 //! `libverilated.a` (the runtime) is linked once. The shims in `csrc/` are
 //! compiled with the `cc` crate. Cargo reruns this only when an RTL file, a
 //! shim or this script changes, so an unchanged tree builds in no time.
+//!
+//! Each Verilated model is also kept under `<target>/verilated/<top>-<key>`,
+//! `<key>` a hash of its RTL files' contents, its options and the Verilator
+//! version: the profiles and commands that run this script with their own
+//! `OUT_DIR` (`cargo clippy`, `cargo test`, `cargo build --release`) and an
+//! edit that leaves a model's files alone reuse it instead of compiling it
+//! again.
+use std::collections::hash_map::DefaultHasher;
 use std::env;
+use std::hash::{Hash, Hasher};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -100,11 +109,41 @@ const CELLS_ENV: &str = "RTL_SIM_XILINX_CELLS";
 /// how many a decision uses, so one model serves `--explorers 1..=6`).
 const MPDCC_CORE_EXPLORERS: u32 = 6;
 
+/// C++ optimisation of a model's per-cycle code (Verilator's `OPT_FAST`
+/// files; the `OPT_SLOW` constructors stay at -O1). `pl_top` runs millions
+/// of cycles in the co-simulation, where -O2 takes about 5 % less CPU per
+/// cycle (docs/speed.md); the cores' checks are short and keep the quicker
+/// -O1 build.
+fn opt_fast(top: &str) -> &'static str {
+    if top == "pl_top" {
+        "-O2"
+    } else {
+        "-O1"
+    }
+}
+
 fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
     let netlist = (top == "mpdtc_core")
         .then(|| env::var(NETLIST_ENV).ok())
         .flatten();
-    let mdir = out.join(format!("obj_{top}"));
+    // The cached model, when there is no netlist and a target directory.
+    let cached = match (&netlist, cache_root(out)) {
+        (None, Some(root)) => Some(root.join(format!("{top}-{:016x}", model_key(rtl, top, files)))),
+        _ => None,
+    };
+    if let Some(dir) = cached.as_ref().filter(|d| d.join(DONE).exists()) {
+        copy_model(out, dir, top);
+        return dir.clone();
+    }
+    // Built in a fresh directory, moved into the cache when complete.
+    let mdir = match &cached {
+        Some(dir) => dir.with_extension(format!("tmp{}", std::process::id())),
+        None => out.join(format!("obj_{top}")),
+    };
+    if cached.is_some() {
+        let _ = std::fs::remove_dir_all(&mdir);
+        std::fs::create_dir_all(&mdir).expect("create the model directory");
+    }
     let mut cmd = Command::new("verilator");
     cmd.arg("--cc")
         .arg("--build")
@@ -115,7 +154,10 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         .arg("--Mdir")
         .arg(&mdir)
         .args(["-CFLAGS", "-fPIC -O1"])
-        .args(["-MAKEFLAGS", "OPT_FAST=-O1 OPT_SLOW=-O1 OPT_GLOBAL=-O1"])
+        .args([
+            "-MAKEFLAGS",
+            &format!("OPT_FAST={} OPT_SLOW=-O1 OPT_GLOBAL=-O1", opt_fast(top)),
+        ])
         .arg("-Wno-fatal")
         .arg(format!("-I{}", rtl.display()));
     if top == "mpdcc_core" {
@@ -153,15 +195,82 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         }
     }
     run(&mut cmd);
+    let Some(dir) = cached else {
+        copy_model(out, &mdir, top);
+        return mdir;
+    };
+    // The Verilator runtime is built in the first model's directory.
+    if top == TOPS[0].0 {
+        runtime_objs(&mdir, top);
+    }
+    std::fs::write(mdir.join(DONE), "").expect("mark the model complete");
+    // Another build may have stored the same model meanwhile: keep theirs.
+    if std::fs::rename(&mdir, &dir).is_err() {
+        let _ = std::fs::remove_dir_all(&mdir);
+    }
+    copy_model(out, &dir, top);
+    dir
+}
+
+/// Marks a complete model directory in the cache.
+const DONE: &str = "complete";
+
+/// `<target>/verilated`: `OUT_DIR` is `<target>/<profile>/build/<pkg>/out`
+/// (`None` if that is not so: then nothing is cached).
+fn cache_root(out: &Path) -> Option<PathBuf> {
+    let target = out.ancestors().nth(4)?;
+    target
+        .join("CACHEDIR.TAG")
+        .exists()
+        .then(|| target.join("verilated"))
+}
+
+/// The cache key of a model: its name, options, RTL file contents and the
+/// Verilator version.
+fn model_key(rtl: &Path, top: &str, files: &[&str]) -> u64 {
+    let mut h = DefaultHasher::new();
+    (top, opt_fast(top), MPDCC_CORE_EXPLORERS, KEY_VERSION).hash(&mut h);
+    for f in files {
+        f.hash(&mut h);
+        std::fs::read(rtl.join(f))
+            .unwrap_or_else(|e| panic!("{}: {e}", rtl.join(f).display()))
+            .hash(&mut h);
+    }
+    let version = Command::new("verilator")
+        .arg("--version")
+        .output()
+        .expect("verilator not found (run scripts/setup)")
+        .stdout;
+    version.hash(&mut h);
+    h.finish()
+}
+
+/// Bumped when the way a model is built changes (options not in the key).
+const KEY_VERSION: u32 = 1;
+
+fn copy_model(out: &Path, mdir: &Path, top: &str) {
     let lib = out.join(format!("libvtop_{top}.a"));
     std::fs::copy(mdir.join(format!("V{top}__ALL.a")), &lib).expect("copy model archive");
-    mdir
 }
 
 /// The Verilator runtime (`verilated.o`, `verilated_threads.o`), built once
 /// with the flags of Verilator's makefile, as `libverilated.a`.
 fn runtime(out: &Path, mdir: &Path, top: &str) {
-    let objs = ["verilated.o", "verilated_threads.o"];
+    runtime_objs(mdir, top);
+    let lib = out.join("libverilated.a");
+    let _ = std::fs::remove_file(&lib);
+    run(Command::new("ar")
+        .arg("rcs")
+        .arg(&lib)
+        .args(RUNTIME_OBJS.iter().map(|o| mdir.join(o))));
+}
+
+const RUNTIME_OBJS: [&str; 2] = ["verilated.o", "verilated_threads.o"];
+
+/// Compiles the runtime's objects in a model's directory (nothing to do
+/// when they are there).
+fn runtime_objs(mdir: &Path, top: &str) {
+    let objs = RUNTIME_OBJS;
     run(Command::new("make")
         .args(["-j", "2", "-s", "-C"])
         .arg(mdir)
@@ -169,12 +278,6 @@ fn runtime(out: &Path, mdir: &Path, top: &str) {
         .arg("OPT_GLOBAL=-O1")
         .arg("VM_USER_CFLAGS=-fPIC")
         .args(objs));
-    let lib = out.join("libverilated.a");
-    let _ = std::fs::remove_file(&lib);
-    run(Command::new("ar")
-        .arg("rcs")
-        .arg(&lib)
-        .args(objs.iter().map(|o| mdir.join(o))));
 }
 
 fn main() {

@@ -49,7 +49,10 @@ pub fn shim(ports: &[Port]) -> String {
          // pt_step applies the inputs with the clock low, settles the combinational\n\
          // logic, copies the outputs as the rising edge will sample them (so a Rust\n\
          // AXI master sees READY exactly as the slave presents it), then gives one\n\
-         // rising edge. pt_peek reads the outputs after the edge.\n\
+         // rising edge: two evaluations per cycle. No logic of pl_top uses the falling\n\
+         // edge, so the clock returns low in the next cycle's first evaluation, with\n\
+         // that cycle's inputs (a third evaluation would settle nothing new).\n\
+         // pt_peek reads the outputs after the edge.\n\
          #include <cstdint>\n\n\
          #include \"Vpl_top.h\"\n\
          #include \"verilated.h\"\n\n\
@@ -83,9 +86,8 @@ pub fn shim(ports: &[Port]) -> String {
     s.push_str(
         "    sim->top->eval();\n    return sim;\n}\n\n\
          void pt_step(void* p, const PtIn* in, PtOut* before_edge) {\n    \
-         auto* t = static_cast<PlTopSim*>(p)->top;\n    apply(t, in);\n    t->eval();\n    \
-         read_out(t, before_edge);\n    t->clk_i = 1;\n    t->eval();\n    t->clk_i = 0;\n    \
-         t->eval();\n}\n\n\
+         auto* t = static_cast<PlTopSim*>(p)->top;\n    apply(t, in);\n    t->clk_i = 0;\n    \
+         t->eval();\n    read_out(t, before_edge);\n    t->clk_i = 1;\n    t->eval();\n}\n\n\
          void pt_peek(void* p, PtOut* out) { read_out(static_cast<PlTopSim*>(p)->top, out); }\n\n\
          void pt_free(void* p) {\n    auto* sim = static_cast<PlTopSim*>(p);\n    \
          sim->top->final();\n    delete sim->top;\n    delete sim;\n}\n}\n",

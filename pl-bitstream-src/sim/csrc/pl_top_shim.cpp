@@ -5,7 +5,10 @@
 // pt_step applies the inputs with the clock low, settles the combinational
 // logic, copies the outputs as the rising edge will sample them (so a Rust
 // AXI master sees READY exactly as the slave presents it), then gives one
-// rising edge. pt_peek reads the outputs after the edge.
+// rising edge: two evaluations per cycle. No logic of pl_top uses the falling
+// edge, so the clock returns low in the next cycle's first evaluation, with
+// that cycle's inputs (a third evaluation would settle nothing new).
+// pt_peek reads the outputs after the edge.
 #include <cstdint>
 
 #include "Vpl_top.h"
@@ -117,11 +120,10 @@ void* pt_new() {
 void pt_step(void* p, const PtIn* in, PtOut* before_edge) {
     auto* t = static_cast<PlTopSim*>(p)->top;
     apply(t, in);
+    t->clk_i = 0;
     t->eval();
     read_out(t, before_edge);
     t->clk_i = 1;
-    t->eval();
-    t->clk_i = 0;
     t->eval();
 }
 
