@@ -148,7 +148,8 @@ impl MpdccBlock {
             (DecisionKind::Deadlock, Some(r)) => (mpdcc_kind::DEADLOCK, r.cost, r.j_dl),
             _ => (mpdcc_kind::KEPT, 0, 0),
         };
-        let core_cycles = cycles::pipelined_core_cycles(n, candidates(s_prev).len() as u32);
+        let core_cycles =
+            cycles::pipelined_core_cycles_ii(n, rm::MPDCC_II, candidates(s_prev).len() as u32);
         Outputs {
             decision: u32::from(d.s[0])
                 | (u32::from(d.s[1]) << 3)
