@@ -39,7 +39,7 @@ fn simulated_pl_run_is_the_model_loop() {
     .unwrap();
     let mut m = Mpdcc(Bus(SimPl::new(10)));
     m.load_coeffs(f.coeffs()).unwrap();
-    let r = run(&p, 1, &mut |x| m.decide(x, 400)).unwrap();
+    let r = run(&p, 1, &mut |x| m.decide(x, 1000)).unwrap();
     assert_eq!(r.fsw_hz, want.fsw_hz);
     assert_eq!(r.thd_percent, want.thd_percent);
     assert_eq!(r.max_i_err_pu, want.max_i_err_pu);
