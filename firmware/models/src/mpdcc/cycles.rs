@@ -1179,7 +1179,7 @@ pub const fn pipelined_explorer_latency(ii: u32) -> u32 {
     } else {
         ii
     };
-    PIPELINED_EXPLORER_LATENCY + if ii > 3 { ii - 3 } else { 0 }
+    PIPELINED_EXPLORER_LATENCY + ii.saturating_sub(3)
 }
 
 /// [`pipelined_core_cycles`] of a core whose explorers take one candidate
