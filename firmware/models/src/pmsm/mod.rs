@@ -3,6 +3,7 @@
 //! - [`params`]: motor and drive parameters (paper defaults, validation).
 //! - [`frames`]: Clarke/Park transforms and switch states `SaSbSc`.
 //! - [`plant`]: exact (zero-order hold) surface PMSM + inverter model.
+//! - [`mechanics`]: rotor and joint mechanics (inertia, friction, load, spring).
 //! - [`measure`]: 256 kHz sampling and averaging (the measurement chain).
 //! - [`sim`]: the `Controller` trait and the closed-loop runner.
 //! - [`svpwm`], [`foc`]: the FOC baseline (PI + centre-aligned SVPWM).
@@ -18,6 +19,7 @@ pub mod foc;
 pub mod frames;
 pub mod frontend_fixed;
 pub mod measure;
+pub mod mechanics;
 pub mod metrics;
 pub mod mpdtc_ctrl;
 pub mod mpdtc_fixed;
