@@ -116,7 +116,11 @@ mod tests {
             // The plant is now one step on.
             worst = worst.max((tr.at((k + 1) as f64 * dt).p - p).abs());
         }
-        assert!(worst * 4096.0 < 1.0, "following error {} counts", worst * 4096.0);
+        assert!(
+            worst * 4096.0 < 1.0,
+            "following error {} counts",
+            worst * 4096.0
+        );
         assert!((p - 1.0).abs() * 4096.0 < 0.01);
     }
 }

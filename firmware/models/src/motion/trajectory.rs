@@ -73,7 +73,11 @@ impl Trapezoid {
         } else if t_s < t_a {
             (0.5 * a * t_s * t_s, a * t_s, a)
         } else if t_s < t_a + t_c {
-            (0.5 * a * t_a * t_a + self.v_peak * (t_s - t_a), self.v_peak, 0.0)
+            (
+                0.5 * a * t_a * t_a + self.v_peak * (t_s - t_a),
+                self.v_peak,
+                0.0,
+            )
         } else if t_s < self.duration_s() {
             let r = self.duration_s() - t_s;
             (self.dist - 0.5 * a * r * r, a * r, -a)
@@ -102,7 +106,14 @@ mod tests {
         assert!((s.p - 0.4).abs() < 1e-12 && (s.v - 20.0).abs() < 1e-12);
         assert!((t.at(0.045).p - 0.5).abs() < 1e-12);
         assert_eq!(t.at(0.09).p, 1.0);
-        assert_eq!(t.at(1.0), Setpoint { p: 1.0, v: 0.0, a: 0.0 });
+        assert_eq!(
+            t.at(1.0),
+            Setpoint {
+                p: 1.0,
+                v: 0.0,
+                a: 0.0
+            }
+        );
         // Velocity is the derivative of position everywhere.
         for k in 1..899 {
             let x = k as f64 * 1e-4;
@@ -120,7 +131,10 @@ mod tests {
         assert!((mid.p - 1.95).abs() < 1e-12);
         assert!(mid.v < 0.0);
         assert!((t.at(10.0).p - 1.9).abs() < 1e-12);
-        assert_eq!(Trapezoid::new(0.0, 0.0, 1.0, 1.0).unwrap().duration_s(), 0.0);
+        assert_eq!(
+            Trapezoid::new(0.0, 0.0, 1.0, 1.0).unwrap().duration_s(),
+            0.0
+        );
         assert!(Trapezoid::new(0.0, 1.0, 0.0, 1.0).is_err());
         assert!(Trapezoid::new(0.0, f64::NAN, 1.0, 1.0).is_err());
     }

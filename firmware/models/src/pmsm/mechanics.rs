@@ -59,11 +59,7 @@ impl Mechanics {
         if w == 0.0 && libm::fabs(drive) <= tc {
             return 0.0;
         }
-        let sign = if w != 0.0 {
-            w.signum()
-        } else {
-            drive.signum()
-        };
+        let sign = if w != 0.0 { w.signum() } else { drive.signum() };
         let net = drive - self.b_nm_s_per_rad * w - tc * sign;
         let w1 = w + net / self.j_kg_m2 * h_s;
         if tc > 0.0 && w != 0.0 && w1.signum() != w.signum() {
@@ -139,10 +135,22 @@ mod tests {
         assert!(ok.validate().is_ok());
         for bad in [
             Mechanics { j_kg_m2: 0.0, ..ok },
-            Mechanics { b_nm_s_per_rad: -1.0, ..ok },
-            Mechanics { coulomb_nm: f64::NAN, ..ok },
-            Mechanics { load_torque_nm: f64::INFINITY, ..ok },
-            Mechanics { spring_nm_per_rad: -0.1, ..ok },
+            Mechanics {
+                b_nm_s_per_rad: -1.0,
+                ..ok
+            },
+            Mechanics {
+                coulomb_nm: f64::NAN,
+                ..ok
+            },
+            Mechanics {
+                load_torque_nm: f64::INFINITY,
+                ..ok
+            },
+            Mechanics {
+                spring_nm_per_rad: -0.1,
+                ..ok
+            },
         ] {
             assert!(bad.validate().is_err(), "{bad:?}");
         }

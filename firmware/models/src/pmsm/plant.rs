@@ -463,7 +463,9 @@ impl Plant {
 fn check_mode(mode: &MechanicalMode) -> Result<(), ParamError> {
     match mode {
         MechanicalMode::ConstantSpeed => Ok(()),
-        MechanicalMode::Inertia { load_torque_nm } => check_finite("load_torque_nm", *load_torque_nm),
+        MechanicalMode::Inertia { load_torque_nm } => {
+            check_finite("load_torque_nm", *load_torque_nm)
+        }
         MechanicalMode::Joint(m) => m.validate(),
     }
 }
