@@ -300,6 +300,9 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
                  capture record"
             ),
         ),
+        DriveError::Servo(ServoError::Motion(e)) => {
+            write_err(out, ErrorCode::BadArgs, format_args!("{cmd}: {e}"))
+        }
         DriveError::Servo(ServoError::Bus(b)) => write_err(
             out,
             ErrorCode::BusError,
