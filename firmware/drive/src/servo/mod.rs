@@ -37,9 +37,9 @@ use regmap::{self, seq_state};
 pub mod faults;
 pub mod motion;
 mod step;
-use motion::{LoopKind, Motion, MotionConfig, MotionError, MotionStatus, MoveResult};
-use models::motion::law::Impedance;
 use faults::{FaultHistory, FaultRecord, Sample, Snapshot};
+use models::motion::law::Impedance;
+use motion::{LoopKind, Motion, MotionConfig, MotionError, MotionStatus, MoveResult};
 pub use step::{StepRecorder, StepResult, STEP_SAMPLES_MAX};
 mod sweep;
 // Telemetry: the channels of one control period.
@@ -831,7 +831,8 @@ impl Servo {
         // The torque the last period asked for (0 with the gates off).
         let t_last = if gates { self.torque_ref_nm } else { 0.0 };
         let j = self.cfg.motion.load_inertia_kg_m2;
-        self.motion.measure(enc.pos, self.control_period_s(), t_last, j);
+        self.motion
+            .measure(enc.pos, self.control_period_s(), t_last, j);
         let mut ps = self.ps_checks(adc_count, enc.pos, enc.cpr);
         if gates {
             let (pos, speed) = self.motion.limits_violated(&self.cfg.motion);

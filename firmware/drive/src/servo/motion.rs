@@ -371,7 +371,11 @@ impl Motion {
             return Err(MotionError::Gain("kd", imp.kd, c.imp_kd_max));
         }
         if libm::fabs(imp.t_ff) > torque_limit_nm {
-            return Err(MotionError::Gain("|torque_ff| (Nm)", imp.t_ff, torque_limit_nm));
+            return Err(MotionError::Gain(
+                "|torque_ff| (Nm)",
+                imp.t_ff,
+                torque_limit_nm,
+            ));
         }
         self.start(LoopKind::Impedance);
         self.imp = *imp;
@@ -547,7 +551,10 @@ mod tests {
         let mut m = Motion::new(4096).unwrap();
         m.set_velocity(&c, 5.0).unwrap();
         let before = m;
-        assert_eq!(m.set_velocity(&c, 60.0), Err(MotionError::Velocity(60.0, 50.0)));
+        assert_eq!(
+            m.set_velocity(&c, 60.0),
+            Err(MotionError::Velocity(60.0, 50.0))
+        );
         assert!(m.set_velocity(&c, f64::NAN).is_err());
         assert!(m.set_position(&c, 1e4).is_err());
         assert!(m.begin_move(&c, 1.0, 0.0).is_err());
