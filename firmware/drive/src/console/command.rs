@@ -29,13 +29,18 @@ mod config;
 mod debug;
 mod fault;
 mod help;
+mod imp;
 mod info;
 mod motion;
+mod r#move;
 mod mpdcc;
+mod pos;
+mod sim;
 mod sweep;
 mod tel;
 #[cfg(test)]
 mod tests;
+mod vel;
 
 pub use capture::CaptureCmd;
 pub use config::ConfigCmd;
@@ -43,6 +48,8 @@ pub use debug::{DebugCmd, STALL_MAX_MS};
 pub use fault::FaultCmd;
 pub use info::InfoCmd;
 pub use motion::{ModeSel, MotionCmd, STEP_WINDOW_DEFAULT_S, STEP_WINDOW_MAX_S};
+pub use pos::PosCmd;
+pub use sim::SimCmd;
 pub use sweep::Sweep;
 pub use tel::{TelCmd, TelOps};
 
@@ -66,6 +73,10 @@ pub const COMMANDS: &[&Spec] = &[
     &motion::DISABLE,
     &motion::TORQUE,
     &motion::STEP,
+    &vel::VEL,
+    &pos::POS,
+    &imp::IMP,
+    &r#move::MOVE,
     &fault::FAULT,
     &config::CONFIG,
     &debug::DEBUG,
@@ -73,6 +84,7 @@ pub const COMMANDS: &[&Spec] = &[
     &sweep::SWEEP,
     &mpdcc::MPDCC,
     &tel::TEL,
+    &sim::SIM,
 ];
 
 /// A parsed command line: the family that owns its first word and what
@@ -99,6 +111,16 @@ pub enum Command<'a> {
     Mpdcc(Option<u32>),
     /// `tel ...`.
     Tel(TelCmd),
+    /// `sim ...`.
+    Sim(SimCmd<'a>),
+    /// `vel <rev/s>`.
+    Vel(f64),
+    /// `pos <rev>|zero`.
+    Pos(PosCmd),
+    /// `imp ...`.
+    Imp(models::motion::law::Impedance),
+    /// `move <rev> [<window_ms>]`: distance rev, window s.
+    Move(f64, f64),
 }
 
 /// Why a line is not a valid command.
@@ -175,7 +197,7 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
     let Some(s) = spec(name) else {
         return Err(ParseError::Unknown(name));
     };
-    let args: heapless::Vec<&str, 4> = {
+    let args: heapless::Vec<&str, 5> = {
         let mut v = heapless::Vec::new();
         for w in words {
             if v.push(w).is_err() {
@@ -198,6 +220,11 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
         "sweep" => sweep::parse(args).map(Command::Sweep),
         "mpdcc" => mpdcc::parse(args).map(Command::Mpdcc),
         "tel" => tel::parse(args).map(Command::Tel),
+        "sim" => sim::parse(args).map(Command::Sim),
+        "vel" => vel::parse(args).map(Command::Vel),
+        "pos" => pos::parse(args).map(Command::Pos),
+        "imp" => imp::parse(args).map(Command::Imp),
+        "move" => r#move::parse(args).map(|(d, w)| Command::Move(d, w)),
         _ => Err(ParseError::Unknown(name)),
     }
 }
@@ -220,6 +247,11 @@ pub fn execute<W: Write>(
         Command::Sweep(c) => sweep::execute(c, drv, out)?,
         Command::Mpdcc(run) => mpdcc::execute(run, drv, out)?,
         Command::Tel(c) => tel::execute(c, drv.telemetry(), out)?,
+        Command::Sim(c) => sim::execute(c, drv, out)?,
+        Command::Vel(v) => vel::execute(v, drv, out)?,
+        Command::Pos(c) => pos::execute(c, drv, out)?,
+        Command::Imp(c) => imp::execute(c, drv, out)?,
+        Command::Move(d, w) => r#move::execute((d, w), drv, out)?,
     };
     match done {
         Outcome::Ok => {

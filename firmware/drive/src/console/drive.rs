@@ -7,8 +7,11 @@ use crate::pl::capture::{CapSample, CapStatus, Trigger};
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
 use crate::servo::faults::FaultRecord;
+use crate::servo::motion::{MotionStatus, MoveResult};
 use crate::servo::{Measured, ServoConfig, ServoError, StepResult, SweepPoint};
 use core::fmt::{self, Write};
+use models::motion::law::Impedance;
+use models::pmsm::sim_motor::{SimMotor, SimSetError};
 
 /// What is behind the drivers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -78,6 +81,8 @@ pub struct DriveStatus {
     pub store: Option<StoreStatus>,
     /// `mode mpdcc`: the paced HIL loop's progress (`None` in other modes).
     pub mpdcc: Option<PacedStatus>,
+    /// Position, velocity and the outer loop.
+    pub motion: MotionStatus,
 }
 
 /// Guest instructions of the control code, measured by `debug bench`.
@@ -242,6 +247,38 @@ pub trait DriveOps {
     /// The telemetry stream's owner, if the build has one.
     fn telemetry(&mut self) -> Option<&mut dyn super::TelOps> {
         None
+    }
+    /// The simulated motor's parameters (simulated PL only).
+    fn sim_motor(&mut self) -> Result<SimMotor, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Sets one of them: the inner error when the value is refused.
+    fn sim_set(&mut self, _name: &str, _v: f64) -> Result<Result<(), SimSetError>, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Their defaults.
+    fn sim_reset(&mut self) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// `vel`.
+    fn set_velocity(&mut self, _v: f64) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// `pos <rev>`.
+    fn set_position(&mut self, _p: f64) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// `pos zero`.
+    fn zero_position(&mut self) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// `imp`.
+    fn set_impedance(&mut self, _c: &Impedance) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// `move`: blocks until the window after the trajectory is over.
+    fn run_move(&mut self, _distance_rev: f64, _window_s: f64) -> Result<MoveResult, DriveError> {
+        Err(DriveError::Unsupported)
     }
 }
 
