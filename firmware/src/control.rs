@@ -35,14 +35,14 @@ use drive::pl::mpdcc::{Mpdcc, MpdccError};
 use drive::pl::presence::Presence;
 use drive::pl::top::Mode;
 use drive::servo::faults::FaultRecord;
+use drive::servo::motion::MoveResult;
 use drive::servo::{
     record_response, Servo, ServoConfig, ServoError, StepRecorder, StepResult, SweepPoint,
 };
-use models::mpdcc::fpga::Inputs;
-use regmap::bus::{BusError, RegisterBus};
-use drive::servo::motion::MoveResult;
 use models::motion::law::Impedance;
+use models::mpdcc::fpga::Inputs;
 use models::pmsm::sim_motor::{SimMotor, SimSetError};
+use regmap::bus::{BusError, RegisterBus};
 use simpl::{SimConfig, SimDrive};
 
 /// Software-generated interrupt of the control step.

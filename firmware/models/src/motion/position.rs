@@ -7,19 +7,23 @@
 //! 10^6 revolutions of a 65535-count encoder are 6.6e10 counts, exact in
 //! an `i64` and in the `f64` of the reading.
 //!
-//! Velocity: a tracking loop (a type-2 phase-locked loop on the count) whose
-//! estimate `p^` follows the count `p` with
-//! `p^' = v^ + 2 zeta w_n (p - p^)`, `v^' = w_n^2 (p - p^)`, stepped by
-//! forward Euler at the update rate. It has no error at constant speed
-//! (standstill to no-load speed), a lag of `a / w_n^2` counts in position
-//! and `2 a / w_n` in velocity under a constant acceleration `a`, and it smooths the count's quantisation (a
-//! difference of two counts over one period would be 4096 x 16 kHz = 3.9
-//! rev/s per count at 16 kHz). The estimate is kept relative to the count
-//! (`p^ - p`), so it stays small however far the rotor turns.
+//! Velocity: a tracking observer on the count with three states, the
+//! estimate `p^`, its velocity `v^` and an acceleration `d^` that the
+//! drive's expectation does not explain (a load, friction, an inertia
+//! error): `e = p - p^`, `p^' = v^ + 3 w_n e`, `v^' = a_exp + d^ + 3 w_n^2 e`,
+//! `d^' = w_n^3 e` (a triple pole at `-w_n`), stepped by forward Euler at
+//! the update rate. `a_exp` is the acceleration the drive expects from its
+//! torque reference. It has no velocity error at constant speed (standstill
+//! to no-load speed) nor under a constant acceleration, whether expected or
+//! not (a constant load under a torque that holds it reads 0 rev/s), and it
+//! smooths the count's quantisation (a difference of two counts over one
+//! period would be 4096 x 16 kHz = 3.9 rev/s per count at 16 kHz). The
+//! estimate is kept relative to the count (`p^ - p`), so it stays small
+//! however far the rotor turns.
 use crate::validate::{check_pos, ParamError};
 
-/// Tracking-loop bandwidth `w_n`, rad/s: 2 pi 250 Hz. At 16 kHz its
-/// Euler step is stable with margin (`2 zeta w_n dt` = 0.2).
+/// Tracking bandwidth `w_n`, rad/s: 2 pi 250 Hz. At 16 kHz its Euler step
+/// is stable with margin (`3 w_n dt` = 0.29).
 pub const TRACKING_BANDWIDTH_RAD_S: f64 = 2.0 * core::f64::consts::PI * 250.0;
 
 /// Multi-turn position and tracking-loop velocity of one encoder.
@@ -33,6 +37,8 @@ pub struct PositionEstimator {
     lead: f64,
     /// Velocity estimate, counts/s.
     v: f64,
+    /// Unexplained acceleration, counts/s^2.
+    d: f64,
     w_n: f64,
 }
 
@@ -53,6 +59,7 @@ impl PositionEstimator {
             total: 0,
             lead: 0.0,
             v: 0.0,
+            d: 0.0,
             w_n: w_n_rad_s,
         })
     }
@@ -64,10 +71,9 @@ impl PositionEstimator {
     }
 
     /// [`Self::update`] with the acceleration the drive expects over the
-    /// step, rev/s^2 (its torque over the inertia): the loop integrates it
-    /// as a model input (`v^' = w_n^2 e + a`), so a right expectation
-    /// removes the velocity lag `2 a / w_n` under acceleration, and a wrong
-    /// one still leaves no error at constant speed.
+    /// step, rev/s^2 (its torque over the inertia): a right expectation
+    /// leaves the observer's third state nothing to learn, so a change of
+    /// acceleration shows in the velocity without the observer's lag.
     pub fn update_with_accel(&mut self, pos: u32, dt_s: f64, accel_rev_s2: f64) {
         let cpr = i64::from(self.cpr);
         let pos = i64::from(pos % self.cpr);
@@ -91,8 +97,10 @@ impl PositionEstimator {
         } else {
             0.0
         };
-        self.lead += dt_s * (self.v + 2.0 * self.w_n * e + 0.5 * a * dt_s);
-        self.v += dt_s * (self.w_n * self.w_n * e + a);
+        let w = self.w_n;
+        self.lead += dt_s * (self.v + 3.0 * w * e);
+        self.v += dt_s * (a + self.d + 3.0 * w * w * e);
+        self.d += dt_s * w * w * w * e;
     }
 
     /// Counts since the last zero.
@@ -166,52 +174,61 @@ mod tests {
         let (cpr, dt) = (4096, 1.0 / 16_000.0);
         for want in [0.0, 0.05, -1.0, 10.0, -68.0] {
             let mut e = PositionEstimator::new(cpr, TRACKING_BANDWIDTH_RAD_S).unwrap();
-            let mut worst: f64 = 0.0;
+            let (mut worst, mut sum): (f64, f64) = (0.0, 0.0);
             for k in 0..16_000 {
                 e.update(count(want * k as f64 * dt, cpr), dt);
                 if k >= 8000 {
                     worst = worst.max((e.velocity_rev_s() - want).abs());
+                    sum += e.velocity_rev_s() - want;
                 }
             }
-            // Quantisation ripple: a count is 1/4096 rev; the loop's
-            // bandwidth turns it into well under 1 % of 10 rev/s.
-            assert!(worst < 0.1, "{want} rev/s: worst error {worst} rev/s");
+            // Quantisation ripple: a count (1/4096 rev) seen by a 250 Hz
+            // observer is at most about 3 w_n / 4096 = 1.2 rev/s; measured
+            // well under that (largest where the counts come slowest), and
+            // no mean error.
+            assert!(worst < 0.35, "{want} rev/s: worst error {worst} rev/s");
+            let mean = sum / 8000.0;
+            assert!(mean.abs() < 2e-3, "{want} rev/s: mean error {mean} rev/s");
             let p = want * 15_999.0 * dt;
             assert!((e.position_rev() - p).abs() <= 1.0 / 4096.0 + 1e-12);
         }
     }
 
-    #[test]
-    fn velocity_lags_by_2_a_over_w_n_under_acceleration() {
-        let (cpr, dt) = (4096, 1.0 / 64_000.0);
-        let a = 500.0; // rev/s^2
-        let mut e = PositionEstimator::new(cpr, TRACKING_BANDWIDTH_RAD_S).unwrap();
-        let n = 6400; // 0.1 s
-        for k in 0..=n {
-            let t = k as f64 * dt;
-            e.update(count(0.5 * a * t * t, cpr), dt);
-        }
-        let t = n as f64 * dt;
-        // In steady state under a constant acceleration the estimate lags
-        // by e = a / w_n^2 in position, and as p^' = v, v^ = v - 2 zeta w_n e
-        // = v - 2 a / w_n in velocity (0.64 rev/s at 500 rev/s^2).
-        let lag = 2.0 * a / TRACKING_BANDWIDTH_RAD_S;
-        let got = e.velocity_rev_s();
-        assert!((got - (a * t - lag)).abs() < 0.05, "{got}");
-    }
-
-    #[test]
-    fn the_expected_acceleration_removes_the_velocity_lag() {
+    /// Constant acceleration from rest at 64 kHz for 0.1 s: the velocity
+    /// at the end within quantisation, with the acceleration expected, not
+    /// expected, or expected wrongly by a constant (a load the torque holds).
+    fn accelerate(expected: f64) -> f64 {
         let (cpr, dt, a) = (4096, 1.0 / 64_000.0, 500.0);
         let mut e = PositionEstimator::new(cpr, TRACKING_BANDWIDTH_RAD_S).unwrap();
         let n = 6400;
         for k in 0..=n {
             let t = k as f64 * dt;
-            e.update_with_accel(count(0.5 * a * t * t, cpr), dt, a);
+            e.update_with_accel(count(0.5 * a * t * t, cpr), dt, expected);
         }
-        let got = e.velocity_rev_s();
-        // Only the count's quantisation is left (1/4096 rev is 0.02 % here).
-        assert!((got - a * n as f64 * dt).abs() < 0.05, "{got}");
+        e.velocity_rev_s() - a * n as f64 * dt
+    }
+
+    #[test]
+    fn no_velocity_error_under_constant_acceleration() {
+        for expected in [500.0, 0.0, 893.0] {
+            let err = accelerate(expected);
+            assert!(
+                err.abs() < 0.05,
+                "expected {expected} rev/s^2: error {err} rev/s"
+            );
+        }
+    }
+
+    #[test]
+    fn a_held_load_reads_standstill() {
+        // The torque holds a load: the drive expects 393 rev/s^2 that never
+        // comes; the rotor stays at count 100.
+        let mut e = PositionEstimator::new(4096, TRACKING_BANDWIDTH_RAD_S).unwrap();
+        for _ in 0..16_000 {
+            e.update_with_accel(100, 1.0 / 16_000.0, 393.0);
+        }
+        assert!(e.velocity_rev_s().abs() < 1e-6, "{}", e.velocity_rev_s());
+        assert_eq!(e.counts(), 0);
     }
 
     #[test]
