@@ -719,14 +719,18 @@ impl DriveOps for FwDrive {
     fn sim_motor(&mut self) -> Result<SimMotor, DriveError> {
         console(|s| match &s.bus {
             Backend::Sim(sim) => Ok(sim.sim_motor()),
-            Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
+            Backend::Cosim(c) => Ok(c.motor),
+            Backend::Gp0(_) => Err(DriveError::Unsupported),
         })
         .unwrap_or(Err(DriveError::Absent))
     }
     fn sim_set(&mut self, name: &str, v: f64) -> Result<Result<(), SimSetError>, DriveError> {
         console(|s| match &mut s.bus {
             Backend::Sim(sim) => Ok(sim.sim_set(name, v)),
-            Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
+            Backend::Cosim(c) => c
+                .sim_set(name, v)
+                .map_err(|e| DriveError::Servo(ServoError::Bus(e))),
+            Backend::Gp0(_) => Err(DriveError::Unsupported),
         })
         .unwrap_or(Err(DriveError::Absent))
     }
@@ -735,7 +739,10 @@ impl DriveOps for FwDrive {
             Backend::Sim(sim) => sim
                 .apply_sim_motor(&SimMotor::default())
                 .map_err(|_| DriveError::Unsupported),
-            Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
+            Backend::Cosim(c) => c
+                .sim_reset()
+                .map_err(|e| DriveError::Servo(ServoError::Bus(e))),
+            Backend::Gp0(_) => Err(DriveError::Unsupported),
         })
         .unwrap_or(Err(DriveError::Absent))
     }

@@ -215,3 +215,65 @@ fn leaving_the_soft_limits_latches_position_limit_with_the_gates_off() {
     );
     assert_err(&cmd(&mut s, "enable"), "fault-latched");
 }
+
+/// `sim set locked 0`, `mode mpdtc`, `enable`, `move 1 5` sent in one
+/// write (the move is armed during the rotor alignment and starts at its
+/// end on both PLs); the move's reply.
+fn move_in_one_write(s: &mut Session) -> drivectl::link::Reply {
+    s.send(b"sim set locked 0\rmode mpdtc\renable\rmove 1 5\r")
+        .unwrap();
+    let mut last = None;
+    for _ in 0..4 {
+        let text = s
+            .read_until(drivectl::link::PROMPT.as_bytes(), SLOW)
+            .unwrap_or_else(|e| panic!("{e:#}: {}", String::from_utf8_lossy(&s.transcript)));
+        let r = drivectl::link::parse_reply(&String::from_utf8_lossy(&text)).unwrap();
+        assert_ok(&r);
+        last = Some(r);
+    }
+    last.unwrap()
+}
+
+/// The same move on the Verilated `pl_top` (co-simulation) as on the
+/// simulated PL: the figures within 5 % (a count where they are counts
+/// near 0). Its PL time is the alignment, the 90 ms move and a 5 ms
+/// window: the longest co-simulation test (about 100 ms of PL time).
+#[test]
+fn move_one_revolution_on_the_rtl_matches_the_simulated_pl() {
+    let mut rtl = system_tests::boot_rtl();
+    let t0 = Instant::now();
+    let r_rtl = move_in_one_write(&mut rtl);
+    let wall = t0.elapsed().as_secs_f64();
+    let mut sim = boot();
+    let r_sim = move_in_one_write(&mut sim);
+    println!("move 1 on the RTL in {wall:.1} s wall: {:?}", r_rtl.lines);
+    println!("move 1 on the simulated PL: {:?}", r_sim.lines);
+    assert!(num(&r_rtl, "final_error").abs() <= 1.0, "{r_rtl:?}");
+    assert!(num(&r_rtl, "settling_time") <= 5.0, "{r_rtl:?}");
+    assert_eq!(num(&r_rtl, "move_time"), num(&r_sim, "move_time"));
+    for key in [
+        "max_following_error",
+        "final_error",
+        "overshoot",
+        "settling_time",
+    ] {
+        let (a, b) = (num(&r_rtl, key), num(&r_sim, key));
+        assert!(
+            (a - b).abs() <= 0.05 * b.abs() || (a - b).abs() <= 1.0,
+            "{key}: RTL {a}, simulated PL {b}"
+        );
+    }
+    let fe = num(&r_sim, "max_following_error");
+    assert!(
+        (num(&r_rtl, "max_following_error") / fe - 1.0).abs() <= 0.05,
+        "{r_rtl:?} {r_sim:?}"
+    );
+    let st = cmd(&mut rtl, "status");
+    assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+    assert_eq!(num(&st, "overruns"), 0.0, "{st:?}");
+    let stats = rtl
+        .finish_bridge()
+        .expect("a bridge")
+        .expect("its statistics");
+    assert!(stats.contains("\"mismatches\":0"), "{stats}");
+}
