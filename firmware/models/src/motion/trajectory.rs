@@ -68,7 +68,7 @@ impl Trapezoid {
     /// The reference at `t_s` seconds after the start (held at the ends).
     pub fn at(&self, t_s: f64) -> Setpoint {
         let (a, t_a, t_c) = (self.accel, self.t_a, self.t_c);
-        let (s, v, acc) = if !(t_s > 0.0) {
+        let (s, v, acc) = if t_s.is_nan() || t_s <= 0.0 {
             (0.0, 0.0, 0.0)
         } else if t_s < t_a {
             (0.5 * a * t_s * t_s, a * t_s, a)
