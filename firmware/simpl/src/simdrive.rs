@@ -361,6 +361,12 @@ impl<P: PlModel> SimDrive<P> {
         Ok(())
     }
 
+    /// The plant, to set a state in a test.
+    #[cfg(test)]
+    pub(crate) fn plant_mut_for_tests(&mut self) -> &mut Plant {
+        &mut self.plant
+    }
+
     /// Drives the external fault input (active low at the pin): `true`
     /// asserts the fault from the next cycle on.
     pub fn set_external_fault(&mut self, asserted: bool) {
