@@ -43,10 +43,13 @@ use drive::pl::presence::{self, Selection};
 use drive::pl::top::Mode;
 use drive::servo::faults::FaultRecord;
 use drive::servo::sensors::{PlTime, SensorReport};
+use drive::servo::motion::MoveResult;
 use drive::servo::{
     record_response, Servo, ServoConfig, ServoError, StepRecorder, StepResult, SweepPoint,
 };
+use models::motion::law::Impedance;
 use models::mpdcc::fpga::Inputs;
+use models::pmsm::sim_motor::{SimMotor, SimSetError};
 use regmap::bus::{BusError, RegisterBus};
 use simpl::{SimConfig, SimDrive};
 
@@ -658,6 +661,7 @@ impl DriveOps for FwDrive {
                 Backend::Gp0(_) | Backend::Cosim(_) => None,
             },
             store: Some(s.store),
+            motion: s.servo.motion_status(),
         })
         .unwrap_or(DriveStatus::absent(mpdcc))
     }
@@ -845,6 +849,68 @@ impl DriveOps for FwDrive {
     }
     fn gp0_guard(&mut self) -> Option<drive::pl::presence::Guard> {
         Some(pl::guard())
+    }
+    fn sim_motor(&mut self) -> Result<SimMotor, DriveError> {
+        console(|s| match &s.bus {
+            Backend::Sim(sim) => Ok(sim.sim_motor()),
+            Backend::Cosim(c) => Ok(c.motor),
+            Backend::Gp0(_) => Err(DriveError::Unsupported),
+        })
+        .unwrap_or(Err(DriveError::Absent))
+    }
+    fn sim_set(&mut self, name: &str, v: f64) -> Result<Result<(), SimSetError>, DriveError> {
+        console(|s| match &mut s.bus {
+            Backend::Sim(sim) => Ok(sim.sim_set(name, v)),
+            Backend::Cosim(c) => c
+                .sim_set(name, v)
+                .map_err(|e| DriveError::Servo(ServoError::Bus(e))),
+            Backend::Gp0(_) => Err(DriveError::Unsupported),
+        })
+        .unwrap_or(Err(DriveError::Absent))
+    }
+    fn sim_reset(&mut self) -> Result<(), DriveError> {
+        console(|s| match &mut s.bus {
+            Backend::Sim(sim) => sim
+                .apply_sim_motor(&SimMotor::default())
+                .map_err(|_| DriveError::Unsupported),
+            Backend::Cosim(c) => c
+                .sim_reset()
+                .map_err(|e| DriveError::Servo(ServoError::Bus(e))),
+            Backend::Gp0(_) => Err(DriveError::Unsupported),
+        })
+        .unwrap_or(Err(DriveError::Absent))
+    }
+    fn set_velocity(&mut self, v: f64) -> Result<(), DriveError> {
+        run(|s| s.servo.set_velocity(&mut s.bus, v))
+    }
+    fn set_position(&mut self, p: f64) -> Result<(), DriveError> {
+        run(|s| s.servo.set_position(&mut s.bus, p))
+    }
+    fn zero_position(&mut self) -> Result<(), DriveError> {
+        run(|s| s.servo.zero_position())
+    }
+    fn set_impedance(&mut self, c: &Impedance) -> Result<(), DriveError> {
+        run(|s| s.servo.set_impedance(&mut s.bus, c))
+    }
+    fn run_move(&mut self, distance_rev: f64, window_s: f64) -> Result<MoveResult, DriveError> {
+        run(|s| s.servo.begin_move(&mut s.bus, distance_rev, window_s))?;
+        // Generous: the trajectory and the window at any sim_time_scale seen.
+        let deadline = timer::uptime_us() + 600_000_000;
+        loop {
+            let (result, pending) = console(|s| (s.servo.move_result(), s.servo.move_pending()))
+                .ok_or(DriveError::Absent)?;
+            if let Some(r) = result {
+                return Ok(r);
+            }
+            if !pending {
+                // The gates went off (fault) or another command took over.
+                return Err(DriveError::Servo(ServoError::GatesOff));
+            }
+            if timer::uptime_us() > deadline {
+                return Err(DriveError::Timeout);
+            }
+            wait();
+        }
     }
 }
 

@@ -9,6 +9,7 @@
 //! (both 100 MHz; see `simpl::cosim`).
 use crate::ps::timer;
 use crate::semihosting::{self, HostFile};
+use models::pmsm::sim_motor::{SimMotor, SimSetError, SIM_PARAMS};
 use regmap::bus::{BusError, RegisterBus};
 use simpl::cosim::{Op, Reply, Request, Status, REPLY_LEN};
 
@@ -18,7 +19,14 @@ pub struct Cosim {
     rep: HostFile,
     /// The last reply (PL time, boundaries).
     pub last: Reply,
+    /// The simulated motor's parameters as the host was told them (it
+    /// checks them with the same code).
+    pub motor: SimMotor,
 }
+
+/// Counts per revolution of the bridge's simulated encoder
+/// (`simpl::SimConfig`'s default).
+const SIM_CPR: u32 = 4096;
 
 /// Longest `<dir>` accepted, bytes.
 const DIR_MAX: usize = 200;
@@ -61,6 +69,7 @@ impl Cosim {
                 since_boundary: u32::MAX,
                 pl_cycles: 0,
             },
+            motor: SimMotor::default(),
         };
         c.sync().ok()?;
         Some(c)
@@ -82,6 +91,43 @@ impl Cosim {
         self.last = reply;
         match reply.status {
             Status::Ok => Ok(reply),
+            Status::SlaveError | Status::BadRequest => Err(BusError::SlaveError),
+        }
+    }
+
+    /// `sim set`: checked here, then on the host; nothing changes when
+    /// either refuses.
+    pub fn sim_set(&mut self, name: &str, v: f64) -> Result<Result<(), SimSetError>, BusError> {
+        let mut next = self.motor;
+        if let Err(e) = next.set(name, v, SIM_CPR) {
+            return Ok(Err(e));
+        }
+        let row = SIM_PARAMS.iter().position(|p| p.name == name).unwrap_or(0);
+        self.sim_request(Op::SimSet, row, v.to_bits())?;
+        self.motor = next;
+        Ok(Ok(()))
+    }
+
+    /// `sim reset`.
+    pub fn sim_reset(&mut self) -> Result<(), BusError> {
+        self.sim_request(Op::SimReset, 0, 0)?;
+        self.motor = SimMotor::default();
+        Ok(())
+    }
+
+    fn sim_request(&mut self, op: Op, addr: usize, bits: u64) -> Result<(), BusError> {
+        let r = Request {
+            op,
+            addr: addr as u32,
+            data: 0,
+            guest: bits,
+        };
+        let mut b = [0u8; REPLY_LEN];
+        if !(self.req.write_all(&r.encode()) && self.rep.read_exact(&mut b)) {
+            return Err(BusError::Absent);
+        }
+        match Reply::decode(&b).map_err(|_| BusError::Absent)?.status {
+            Status::Ok => Ok(()),
             Status::SlaveError | Status::BadRequest => Err(BusError::SlaveError),
         }
     }

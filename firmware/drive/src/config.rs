@@ -115,7 +115,18 @@ mod ix {
     pub const CURRENT_LIMIT: usize = 21;
     pub const WATCHDOG_TIMEOUT: usize = 22;
     pub const MPDTC_PS_FED: usize = 23;
-    pub const N: usize = 24;
+    pub const VEL_KP: usize = 24;
+    pub const VEL_KI: usize = 25;
+    pub const POS_KP: usize = 26;
+    pub const LOAD_INERTIA: usize = 27;
+    pub const TRAJ_VEL_LIMIT: usize = 28;
+    pub const TRAJ_ACCEL_LIMIT: usize = 29;
+    pub const VEL_LIMIT: usize = 30;
+    pub const POS_MIN: usize = 31;
+    pub const POS_MAX: usize = 32;
+    pub const IMP_KP_MAX: usize = 33;
+    pub const IMP_KD_MAX: usize = 34;
+    pub const N: usize = 35;
 }
 
 /// Number of parameters.
@@ -321,6 +332,94 @@ pub const PARAMS: [Param; N_PARAMS] = [
          the PS writes only the torque reference), 1 = PS-fed debug path (Park and angles \
          on the PS, MPDTC_IN_* and MPDTC_START every period)",
     ),
+    real(
+        "vel_kp",
+        "Nm s/rev",
+        0.0,
+        10.0,
+        0.25,
+        "velocity loop proportional gain (vel, pos, move)",
+    ),
+    real(
+        "vel_ki",
+        "Nm/rev",
+        0.0,
+        10_000.0,
+        30.0,
+        "velocity loop integral gain (anti-windup: conditional integration)",
+    ),
+    real(
+        "pos_kp",
+        "1/s",
+        0.0,
+        2000.0,
+        100.0,
+        "position loop gain: velocity command per position error, (rev/s)/rev",
+    ),
+    real(
+        "load_inertia",
+        "kg m^2",
+        1e-7,
+        1.0,
+        8.1e-5,
+        "total inertia on the rotor for the acceleration feedforward",
+    ),
+    real(
+        "traj_vel_limit",
+        "rev/s",
+        0.01,
+        100.0,
+        20.0,
+        "trajectory velocity limit (pos, move)",
+    ),
+    real(
+        "traj_accel_limit",
+        "rev/s^2",
+        1.0,
+        100_000.0,
+        500.0,
+        "trajectory acceleration limit (pos, move) and vel's acceleration limit",
+    ),
+    real(
+        "vel_limit",
+        "rev/s",
+        0.1,
+        100.0,
+        50.0,
+        "largest velocity command; OVERSPEED latches 10 % above it",
+    ),
+    real(
+        "pos_min",
+        "rev",
+        -1e6,
+        1e6,
+        -1000.0,
+        "soft limit: POSITION_LIMIT latches below it (gates on)",
+    ),
+    real(
+        "pos_max",
+        "rev",
+        -1e6,
+        1e6,
+        1000.0,
+        "soft limit: POSITION_LIMIT latches above it (gates on)",
+    ),
+    real(
+        "imp_kp_max",
+        "Nm/rev",
+        0.0,
+        1000.0,
+        20.0,
+        "largest imp stiffness kp",
+    ),
+    real(
+        "imp_kd_max",
+        "Nm s/rev",
+        0.0,
+        100.0,
+        1.0,
+        "largest imp damping kd",
+    ),
 ];
 
 /// The row of `name`, with its index.
@@ -473,6 +572,18 @@ impl Config {
         v[ix::CURRENT_LIMIT] = sc.current_limit_a;
         v[ix::WATCHDOG_TIMEOUT] = f64::from(sc.watchdog_cycles);
         v[ix::MPDTC_PS_FED] = f64::from(u8::from(sc.mpdtc_ps_fed));
+        let m = &sc.motion;
+        v[ix::VEL_KP] = m.vel_kp;
+        v[ix::VEL_KI] = m.vel_ki;
+        v[ix::POS_KP] = m.pos_kp;
+        v[ix::LOAD_INERTIA] = m.load_inertia_kg_m2;
+        v[ix::TRAJ_VEL_LIMIT] = m.traj_vel_limit;
+        v[ix::TRAJ_ACCEL_LIMIT] = m.traj_accel_limit;
+        v[ix::VEL_LIMIT] = m.vel_limit;
+        v[ix::POS_MIN] = m.pos_min;
+        v[ix::POS_MAX] = m.pos_max;
+        v[ix::IMP_KP_MAX] = m.imp_kp_max;
+        v[ix::IMP_KD_MAX] = m.imp_kd_max;
         Self { values: v }
     }
 
@@ -507,6 +618,18 @@ impl Config {
         sc.current_limit_a = v[ix::CURRENT_LIMIT];
         sc.watchdog_cycles = u(ix::WATCHDOG_TIMEOUT);
         sc.mpdtc_ps_fed = u(ix::MPDTC_PS_FED) != 0;
+        let m = &mut sc.motion;
+        m.vel_kp = v[ix::VEL_KP];
+        m.vel_ki = v[ix::VEL_KI];
+        m.pos_kp = v[ix::POS_KP];
+        m.load_inertia_kg_m2 = v[ix::LOAD_INERTIA];
+        m.traj_vel_limit = v[ix::TRAJ_VEL_LIMIT];
+        m.traj_accel_limit = v[ix::TRAJ_ACCEL_LIMIT];
+        m.vel_limit = v[ix::VEL_LIMIT];
+        m.pos_min = v[ix::POS_MIN];
+        m.pos_max = v[ix::POS_MAX];
+        m.imp_kp_max = v[ix::IMP_KP_MAX];
+        m.imp_kd_max = v[ix::IMP_KD_MAX];
         sc
     }
 

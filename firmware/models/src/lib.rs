@@ -14,6 +14,8 @@
 //!   with its frames (Clarke/Park), measurement chain and metrics.
 //! - [`mpdcc`]: paper 001 (induction machine + five-level ANPC, MPDCC) and
 //!   its 16-bit FPGA model.
+//! - [`motion`]: the servo's outer loops (position and velocity from the
+//!   encoder, velocity PI, trajectory, position loop, impedance).
 //! - [`fixedpoint`]: the rounding shift shared by every fixed-point model.
 //! - [`validate`]: the parameter error type and checks every model's
 //!   `validate()` uses.
@@ -24,6 +26,7 @@
 extern crate std;
 
 pub mod fixedpoint;
+pub mod motion;
 pub mod mpdcc;
 pub mod pmsm;
 pub mod validate;

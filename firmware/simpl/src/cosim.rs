@@ -29,6 +29,13 @@ pub enum Op {
     Write,
     /// Only run the PL to the guest time and report the boundaries.
     Sync,
+    /// Set a parameter of the simulated motor (`sim set`): `addr` is its
+    /// row in `models::pmsm::sim_motor::SIM_PARAMS`, `guest` carries the
+    /// value's `f64` bits (the PL does not run). SLVERR: refused, nothing
+    /// changed.
+    SimSet,
+    /// The simulated motor's defaults (`sim reset`); the PL does not run.
+    SimReset,
 }
 
 impl Op {
@@ -37,6 +44,8 @@ impl Op {
             Op::Read => 1,
             Op::Write => 2,
             Op::Sync => 3,
+            Op::SimSet => 4,
+            Op::SimReset => 5,
         }
     }
 }
@@ -80,6 +89,8 @@ impl Request {
             1 => Op::Read,
             2 => Op::Write,
             3 => Op::Sync,
+            4 => Op::SimSet,
+            5 => Op::SimReset,
             x => return Err(WireError::BadOp(x)),
         };
         Ok(Self {

@@ -18,8 +18,10 @@ use super::inverter::potentials;
 use super::pl::{Events, Pins, SimPl};
 use core::f64::consts::PI;
 use models::pmsm::frames::leg_voltage_alpha_beta;
+use models::pmsm::mechanics::Mechanics;
 use models::pmsm::params::{check_finite, check_pos, MotorParams, ParamError};
 use models::pmsm::plant::{MechanicalMode, Plant};
+use models::pmsm::sim_motor::{SimMotor, SimSetError};
 use regmap::bus::{BusError, RegisterBus};
 use regmap::{self, mode};
 
@@ -273,6 +275,14 @@ pub struct SimDrive<P = SimPl> {
     /// Gate outputs the plant sees since its last advance.
     gates: (u8, u8),
     theta_m_rad: f64,
+    /// Encoder count with the d axis on phase a (the rotor at angle 0).
+    enc_offset: u32,
+    /// Encoder direction, +1 or -1.
+    enc_dir: i32,
+    /// Mechanics while not locked (`sim set`).
+    mech: Mechanics,
+    /// Counts of the rotor angle (`floor(theta_m cpr / 2 pi)`), before the
+    /// encoder's offset and direction.
     enc_count: i64,
     transitions: [u64; 3],
     carried: Advance,
@@ -302,6 +312,12 @@ impl<P: PlModel> SimDrive<P> {
             lag: 0,
             gates: (0, 0),
             theta_m_rad: 0.0,
+            enc_offset: 0,
+            enc_dir: 1,
+            mech: match cfg.mechanics {
+                MechanicalMode::Joint(m) => m,
+                _ => Mechanics::rotor(cfg.motor.j_kg_m2, cfg.motor.friction_nm_s_per_rad),
+            },
             enc_count: 0,
             transitions: [0; 3],
             carried: Advance::default(),
@@ -363,6 +379,58 @@ impl<P: PlModel> SimDrive<P> {
     pub fn set_load_torque_nm(&mut self, load_nm: f64) -> Result<(), ParamError> {
         check_finite("load_torque_nm", load_nm)?;
         self.plant.set_load_torque_nm(load_nm)
+    }
+
+    /// The simulated motor's true parameters (`sim list`).
+    pub fn sim_motor(&self) -> SimMotor {
+        SimMotor {
+            motor: *self.plant.motor(),
+            mech: self.mech,
+            enc_offset: self.enc_offset,
+            enc_dir: self.enc_dir,
+            locked: !matches!(self.plant.mechanics(), MechanicalMode::Joint(_)),
+        }
+    }
+
+    /// Sets one parameter of the simulated motor (`sim set`), checked as
+    /// [`SimMotor::set`]; the rotor keeps its angle, speed and currents
+    /// (locking it stops it). On an error nothing changes.
+    pub fn sim_set(&mut self, name: &str, value: f64) -> Result<(), SimSetError> {
+        let mut m = self.sim_motor();
+        m.set(name, value, self.cfg.encoder_cpr)?;
+        self.apply_sim_motor(&m).map_err(SimSetError::Bad)
+    }
+
+    /// Applies a whole set of the simulated motor's parameters (`sim reset`:
+    /// [`SimMotor::default`]). On an error nothing changes.
+    pub fn apply_sim_motor(&mut self, m: &SimMotor) -> Result<(), ParamError> {
+        self.flush();
+        if m.enc_offset >= self.cfg.encoder_cpr || !(m.enc_dir == 1 || m.enc_dir == -1) {
+            return Err(ParamError {
+                field: "enc_offset",
+                reason: "must be below the counts per revolution, direction +1 or -1",
+            });
+        }
+        let mut plant = self.plant.clone();
+        plant.set_motor(&m.motor)?;
+        plant.set_mechanics(m.mechanical_mode())?;
+        if m.locked {
+            let st = *plant.state();
+            plant.set_state(st.i_alpha_a, st.i_beta_a, st.theta_e_rad, 0.0)?;
+        }
+        self.plant = plant;
+        self.cfg.motor = m.motor;
+        self.mech = m.mech;
+        self.enc_offset = m.enc_offset;
+        self.enc_dir = m.enc_dir;
+        self.update_encoder_pins();
+        Ok(())
+    }
+
+    /// The plant, to set a state in a test.
+    #[cfg(test)]
+    pub(crate) fn plant_mut_for_tests(&mut self) -> &mut Plant {
+        &mut self.plant
     }
 
     /// Drives the external fault input (active low at the pin): `true`
@@ -498,19 +566,15 @@ impl<P: PlModel> SimDrive<P> {
                 .lag
                 .min(if diode { DIODE_SEGMENT } else { MAX_SEGMENT });
             let h = seg as f64 * CYCLE_S;
-            let st = *self.plant.state();
             match pot {
                 Some(p) => {
                     let (ua, ub) = leg_voltage_alpha_beta(p, self.cfg.motor.u_dc_v);
                     self.plant.advance_voltage(ua, ub, h);
                 }
-                None => {
-                    // Open circuit: no current, the rotor turns on.
-                    let th = st.theta_e_rad + st.omega_e_rad_s * h;
-                    let _ = self.plant.set_state(0.0, 0.0, th, st.omega_e_rad_s);
-                }
+                // Open circuit: no current, the rotor moves on its own.
+                None => self.plant.advance_open(h),
             }
-            self.theta_m_rad += st.omega_e_rad_s * h / self.cfg.motor.pole_pairs as f64;
+            self.theta_m_rad = self.plant.theta_m_rad();
             self.lag -= seg;
             self.segments += 1;
         }
@@ -521,6 +585,7 @@ impl<P: PlModel> SimDrive<P> {
         let cpr = self.cfg.encoder_cpr as i64;
         let count = libm::floor(self.theta_m_rad / (2.0 * PI) * cpr as f64) as i64;
         self.enc_count = count;
+        let count = i64::from(self.enc_dir) * count + i64::from(self.enc_offset);
         let (a, b) = [(false, false), (true, false), (true, true), (false, true)]
             [count.rem_euclid(4) as usize];
         let z = count.rem_euclid(cpr) == 0;

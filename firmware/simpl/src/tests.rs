@@ -252,6 +252,46 @@ fn encoder_follows_the_rotor() {
     assert_eq!(tr.i_abc_a, [0.0; 3]);
 }
 
+/// The simulated motor's own parameters: a coasting rotor under viscous
+/// friction slows as `exp(-b t / J)`, a negative encoder direction counts
+/// down, locking stops it, and a refused `sim_set` changes nothing.
+#[test]
+fn sim_motor_parameters_move_the_rotor_and_the_encoder() {
+    let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+    wr(&mut sim, &rm::FAULT, &rm::WDG_TIMEOUT, u32::MAX);
+    assert!(sim.sim_motor().locked);
+    sim.sim_set("locked", 0.0).unwrap();
+    sim.sim_set("b", 8.1e-4).unwrap(); // J / b = 0.1 s
+    sim.sim_set("enc_dir", -1.0).unwrap();
+    let before = sim.sim_motor();
+    for (n, v) in [("j", 0.0), ("b", -1.0), ("enc_dir", 0.5), ("nope", 1.0)] {
+        assert!(sim.sim_set(n, v).is_err(), "{n} {v}");
+    }
+    assert_eq!(sim.sim_motor(), before);
+    // Start it at 100 rad/s mechanical (the plant's state, open circuit).
+    let plant_speed = |sim: &mut SimDrive| sim.truth().omega_e_rad_s / 7.0;
+    assert_eq!(plant_speed(&mut sim), 0.0);
+    sim.plant_mut_for_tests()
+        .set_state(0.0, 0.0, 0.0, 700.0)
+        .unwrap();
+    sim.advance(10_000_000); // 0.1 s: one time constant
+    let w = plant_speed(&mut sim);
+    assert!((w / (100.0 * (-1.0f64).exp()) - 1.0).abs() < 2e-3, "{w}");
+    // The rotor turned forward by w0 J/b (1 - 1/e) = 6.32 rad; the encoder
+    // counted down by as much.
+    let turned = sim.truth().theta_m_rad;
+    assert!(
+        (turned - 10.0 * (1.0 - (-1.0f64).exp())).abs() < 0.02,
+        "{turned}"
+    );
+    let pos = Encoder(&mut sim).read().unwrap().pos;
+    let counts = (turned / (2.0 * std::f64::consts::PI) * 4096.0).floor() as i64;
+    assert_eq!(i64::from(pos), (-counts).rem_euclid(4096), "{turned} rad");
+    sim.sim_set("locked", 1.0).unwrap();
+    sim.advance(100_000);
+    assert_eq!(plant_speed(&mut sim), 0.0);
+}
+
 /// The simulated PL's time comes from `advance` alone: with a control loop
 /// that stops feeding HEARTBEAT, the watchdog trips after WDG_TIMEOUT and
 /// the gates go off, and the plant's current decays through the diodes.

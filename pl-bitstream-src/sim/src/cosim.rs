@@ -306,6 +306,25 @@ impl Bridge {
 
     /// Serves one request.
     pub fn serve(&mut self, req: &Request) -> Reply {
+        // The simulated motor's parameters: no guest time, the PL stays.
+        match req.op {
+            Op::SimSet => {
+                let row = models::pmsm::sim_motor::SIM_PARAMS.get(req.addr as usize);
+                let v = f64::from_bits(req.guest);
+                return match row.map(|p| self.drive.sim_set(p.name, v)) {
+                    Some(Ok(())) => self.reply(Status::Ok, 0),
+                    _ => self.reply(Status::SlaveError, 0),
+                };
+            }
+            Op::SimReset => {
+                let d = models::pmsm::sim_motor::SimMotor::default();
+                return match self.drive.apply_sim_motor(&d) {
+                    Ok(()) => self.reply(Status::Ok, 0),
+                    Err(_) => self.reply(Status::SlaveError, 0),
+                };
+            }
+            _ => {}
+        }
         let now = self.drive.pl_cycles();
         let (g0, c0) = *self.origin.get_or_insert((req.guest, now));
         let target = c0 + req.guest.saturating_sub(g0);
@@ -320,6 +339,7 @@ impl Bridge {
                 Ok(()) => self.reply(Status::Ok, 0),
                 Err(_) => self.reply(Status::SlaveError, 0),
             },
+            Op::SimSet | Op::SimReset => self.reply(Status::BadRequest, 0),
             Op::Sync => {
                 // `run_to` above also collected the boundaries crossed
                 // during the accesses since the last sync.

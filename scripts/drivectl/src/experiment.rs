@@ -20,7 +20,7 @@ pub enum Mode {
 }
 
 impl Mode {
-    fn name(self) -> &'static str {
+    pub(crate) fn name(self) -> &'static str {
         match self {
             Mode::Foc => "foc",
             Mode::Mpdtc => "mpdtc",
@@ -98,7 +98,7 @@ pub struct CaptureArgs {
 const BOOT: Duration = Duration::from_secs(20);
 const CMD: Duration = Duration::from_secs(30);
 
-fn open(t: &Target) -> Result<Session> {
+pub(crate) fn open(t: &Target) -> Result<Session> {
     match &t.port {
         Some(p) => Session::open_serial(p, t.baud, BOOT),
         None => Session::spawn_qemu(&t.qemu(), BOOT),
@@ -106,7 +106,7 @@ fn open(t: &Target) -> Result<Session> {
 }
 
 /// Sends `line`; an `ERR` reply is an error with the firmware's message.
-fn ok(s: &mut Session, line: &str, timeout: Duration) -> Result<Reply> {
+pub(crate) fn ok(s: &mut Session, line: &str, timeout: Duration) -> Result<Reply> {
     let r = s.command(line, timeout)?;
     match &r.fin {
         Final::Ok => Ok(r),
@@ -114,14 +114,14 @@ fn ok(s: &mut Session, line: &str, timeout: Duration) -> Result<Reply> {
     }
 }
 
-fn field<'a>(r: &'a Reply, key: &str) -> Option<&'a str> {
+pub(crate) fn field<'a>(r: &'a Reply, key: &str) -> Option<&'a str> {
     r.lines
         .iter()
         .find_map(|l| l.strip_prefix(key)?.strip_prefix(": "))
         .and_then(|v| v.split_whitespace().next())
 }
 
-fn num(r: &Reply, key: &str) -> Result<f64> {
+pub(crate) fn num(r: &Reply, key: &str) -> Result<f64> {
     field(r, key)
         .and_then(|v| v.parse().ok())
         .ok_or_else(|| anyhow!("no number for `{key}` in {:?}", r.lines))

@@ -5,4 +5,5 @@ pub mod config_file;
 pub mod cosim;
 pub mod defmt_log;
 pub mod link;
+pub mod motion;
 pub mod tel;

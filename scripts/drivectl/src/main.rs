@@ -6,6 +6,7 @@ use clap::{Parser, Subcommand};
 
 mod console;
 mod experiment;
+mod experiment_move;
 mod explore;
 mod paper_mpdcc;
 mod paper_mpdtc;
@@ -73,6 +74,10 @@ enum ExperimentCmd {
     Step(experiment::StepArgs),
     /// Frequency response of the torque loop (`sweep` on the firmware).
     Sweep(experiment::SweepArgs),
+    /// Position move (`move` on the firmware) against the host simulation
+    /// of the same loops; CSV and SVG of position, velocity, following
+    /// error and torque.
+    Move(experiment_move::MoveArgs),
 }
 
 #[derive(Subcommand)]
@@ -134,6 +139,7 @@ fn dispatch(cmd: Cmd) -> Result<()> {
         Cmd::Bench(BenchCmd::Mpdcc(a)) => paper_mpdcc::bench(a),
         Cmd::Experiment(ExperimentCmd::Step(a)) => experiment::step(a),
         Cmd::Experiment(ExperimentCmd::Sweep(a)) => experiment::sweep(a),
+        Cmd::Experiment(ExperimentCmd::Move(a)) => experiment_move::run(a),
         Cmd::Capture(a) => experiment::capture(a),
         Cmd::Explore(ExploreCmd::Mpdcc(a)) => explore::mpdcc(a),
         Cmd::Tel(a) => tel_cmd::run(a),

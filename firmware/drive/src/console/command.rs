@@ -29,14 +29,19 @@ mod config;
 mod debug;
 mod fault;
 mod help;
+mod imp;
 mod info;
 mod motion;
+mod r#move;
 mod mpdcc;
 mod selftest;
+mod pos;
+mod sim;
 mod sweep;
 mod tel;
 #[cfg(test)]
 mod tests;
+mod vel;
 
 pub use capture::CaptureCmd;
 pub use config::ConfigCmd;
@@ -44,6 +49,8 @@ pub use debug::{DebugCmd, STALL_MAX_MS};
 pub use fault::FaultCmd;
 pub use info::InfoCmd;
 pub use motion::{ModeSel, MotionCmd, STEP_WINDOW_DEFAULT_S, STEP_WINDOW_MAX_S};
+pub use pos::PosCmd;
+pub use sim::SimCmd;
 pub use sweep::Sweep;
 pub use tel::{TelCmd, TelOps};
 
@@ -67,6 +74,10 @@ pub const COMMANDS: &[&Spec] = &[
     &motion::DISABLE,
     &motion::TORQUE,
     &motion::STEP,
+    &vel::VEL,
+    &pos::POS,
+    &imp::IMP,
+    &r#move::MOVE,
     &fault::FAULT,
     &config::CONFIG,
     &debug::DEBUG,
@@ -75,6 +86,7 @@ pub const COMMANDS: &[&Spec] = &[
     &mpdcc::MPDCC,
     &tel::TEL,
     &selftest::SELFTEST,
+    &sim::SIM,
 ];
 
 /// A parsed command line: the family that owns its first word and what
@@ -103,6 +115,16 @@ pub enum Command<'a> {
     Tel(TelCmd),
     /// `selftest sensors`.
     SelftestSensors,
+    /// `sim ...`.
+    Sim(SimCmd<'a>),
+    /// `vel <rev/s>`.
+    Vel(f64),
+    /// `pos <rev>|zero`.
+    Pos(PosCmd),
+    /// `imp ...`.
+    Imp(models::motion::law::Impedance),
+    /// `move <rev> [<window_ms>]`: distance rev, window s.
+    Move(f64, f64),
 }
 
 /// Why a line is not a valid command.
@@ -179,7 +201,7 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
     let Some(s) = spec(name) else {
         return Err(ParseError::Unknown(name));
     };
-    let args: heapless::Vec<&str, 4> = {
+    let args: heapless::Vec<&str, 5> = {
         let mut v = heapless::Vec::new();
         for w in words {
             if v.push(w).is_err() {
@@ -203,6 +225,11 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
         "mpdcc" => mpdcc::parse(args).map(Command::Mpdcc),
         "tel" => tel::parse(args).map(Command::Tel),
         "selftest" => selftest::parse(args).map(|()| Command::SelftestSensors),
+        "sim" => sim::parse(args).map(Command::Sim),
+        "vel" => vel::parse(args).map(Command::Vel),
+        "pos" => pos::parse(args).map(Command::Pos),
+        "imp" => imp::parse(args).map(Command::Imp),
+        "move" => r#move::parse(args).map(|(d, w)| Command::Move(d, w)),
         _ => Err(ParseError::Unknown(name)),
     }
 }
@@ -226,6 +253,11 @@ pub fn execute<W: Write>(
         Command::Mpdcc(run) => mpdcc::execute(run, drv, out)?,
         Command::Tel(c) => tel::execute(c, drv.telemetry(), out)?,
         Command::SelftestSensors => selftest::execute(drv, out)?,
+        Command::Sim(c) => sim::execute(c, drv, out)?,
+        Command::Vel(v) => vel::execute(v, drv, out)?,
+        Command::Pos(c) => pos::execute(c, drv, out)?,
+        Command::Imp(c) => imp::execute(c, drv, out)?,
+        Command::Move(d, w) => r#move::execute((d, w), drv, out)?,
     };
     match done {
         Outcome::Ok => {

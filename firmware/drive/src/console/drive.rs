@@ -7,8 +7,11 @@ use crate::pl::capture::{CapSample, CapStatus, Trigger};
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
 use crate::servo::faults::FaultRecord;
+use crate::servo::motion::{MotionStatus, MoveResult};
 use crate::servo::{Measured, ServoConfig, ServoError, StepResult, SweepPoint};
 use core::fmt::{self, Write};
+use models::motion::law::Impedance;
+use models::pmsm::sim_motor::{SimMotor, SimSetError};
 
 /// What is behind the drivers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -96,6 +99,8 @@ pub struct DriveStatus {
     pub store: Option<StoreStatus>,
     /// `mode mpdcc`: the paced HIL loop's progress (`None` in other modes).
     pub mpdcc: Option<PacedStatus>,
+    /// Position, velocity and the outer loop.
+    pub motion: MotionStatus,
 }
 
 impl DriveStatus {
@@ -117,6 +122,7 @@ impl DriveStatus {
             sim_time_scale: None,
             store: None,
             mpdcc,
+            motion: Default::default(),
         }
     }
 }
@@ -344,6 +350,38 @@ pub trait DriveOps {
     fn telemetry(&mut self) -> Option<&mut dyn super::TelOps> {
         None
     }
+    /// The simulated motor's parameters (simulated PL only).
+    fn sim_motor(&mut self) -> Result<SimMotor, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Sets one of them: the inner error when the value is refused.
+    fn sim_set(&mut self, _name: &str, _v: f64) -> Result<Result<(), SimSetError>, DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// Their defaults.
+    fn sim_reset(&mut self) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// `vel`.
+    fn set_velocity(&mut self, _v: f64) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// `pos <rev>`.
+    fn set_position(&mut self, _p: f64) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// `pos zero`.
+    fn zero_position(&mut self) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// `imp`.
+    fn set_impedance(&mut self, _c: &Impedance) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// `move`: blocks until the window after the trajectory is over.
+    fn run_move(&mut self, _distance_rev: f64, _window_s: f64) -> Result<MoveResult, DriveError> {
+        Err(DriveError::Unsupported)
+    }
 }
 
 /// Writes the final `ERR` line of a failed drive command.
@@ -406,6 +444,9 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
             ErrorCode::SensorCheck,
             format_args!("{cmd}: {f}; gates off"),
         ),
+        DriveError::Servo(ServoError::Motion(e)) => {
+            write_err(out, ErrorCode::BadArgs, format_args!("{cmd}: {e}"))
+        }
         DriveError::Servo(ServoError::Bus(b)) => write_err(
             out,
             ErrorCode::BusError,

@@ -13,13 +13,15 @@ pub struct Faults(pub u32);
 
 impl Faults {
     /// Bit names, by bit position (the register map's field names first).
-    pub const NAMES: [&'static str; 6] = [
+    pub const NAMES: [&'static str; 8] = [
         "OVERCURRENT",
         "EXTERNAL",
         "WATCHDOG",
         "ENCODER_LOSS",
         "ADC_STUCK",
         "CONTROL_OVERRUN",
+        "POSITION_LIMIT",
+        "OVERSPEED",
     ];
     /// The watchdog bit.
     pub const WATCHDOG: u32 = FaultStatusValue::ZERO.with_watchdog(true).bits();
@@ -32,8 +34,12 @@ impl Faults {
     pub const ADC_STUCK: u32 = 1 << 4;
     /// Two or more control periods in a row without a control step.
     pub const CONTROL_OVERRUN: u32 = 1 << 5;
+    /// The multi-turn position left the soft limits `pos_min`..`pos_max`.
+    pub const POSITION_LIMIT: u32 = 1 << 6;
+    /// The velocity estimate exceeded `vel_limit` by the margin.
+    pub const OVERSPEED: u32 = 1 << 7;
     /// The latched flags, in bit order (as [`Self::NAMES`]).
-    fn flags(self) -> [bool; 6] {
+    fn flags(self) -> [bool; 8] {
         let v = FaultStatusValue::from_bits(self.0 & Self::PL_MASK);
         let b = |m: u32| self.0 & m != 0;
         [
@@ -43,6 +49,8 @@ impl Faults {
             b(Self::ENCODER_LOSS),
             b(Self::ADC_STUCK),
             b(Self::CONTROL_OVERRUN),
+            b(Self::POSITION_LIMIT),
+            b(Self::OVERSPEED),
         ]
     }
     /// Stable code of the fault `bit` (0-based): `bit + 1`.

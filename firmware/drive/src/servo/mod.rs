@@ -35,8 +35,11 @@ use regmap::bus::{BusError, RegisterBus};
 use regmap::{self, seq_state};
 
 pub mod faults;
+pub mod motion;
 mod step;
 use faults::{FaultHistory, FaultRecord, Sample, Snapshot};
+use models::motion::law::Impedance;
+use motion::{LoopKind, Motion, MotionConfig, MotionError, MotionStatus, MoveResult};
 pub use step::{StepRecorder, StepResult, STEP_SAMPLES_MAX};
 mod sweep;
 // Telemetry: the channels of one control period.
@@ -97,6 +100,8 @@ pub struct ServoConfig {
     /// 1 mN m of q-axis torque) and ripple; a step of zero has no settling
     /// time at all.
     pub step_min_nm: f64,
+    /// The outer loops (velocity, position, impedance) and their limits.
+    pub motion: MotionConfig,
 }
 
 impl Default for ServoConfig {
@@ -124,6 +129,7 @@ impl Default for ServoConfig {
             mpdtc_ps_fed: false,
             // Band 5 mN m: about 5 ADC counts of i_q.
             step_min_nm: 0.05,
+            motion: MotionConfig::default(),
         }
     }
 }
@@ -184,6 +190,14 @@ pub enum ServoError {
     BadFrequency(f64),
     /// The sensor check before the first closed loop failed (gates off).
     SensorCheck(SensorFault),
+    /// An outer-loop command refused.
+    Motion(MotionError),
+}
+
+impl From<MotionError> for ServoError {
+    fn from(e: MotionError) -> Self {
+        ServoError::Motion(e)
+    }
 }
 
 impl From<BusError> for ServoError {
@@ -248,6 +262,8 @@ pub struct Servo {
     duties: [f64; 3],
     /// The sensor check passed with this configuration's motor and sensors.
     sensors_ok: bool,
+    /// The outer loops and the multi-turn position.
+    motion: Motion,
 }
 
 impl Servo {
@@ -270,6 +286,7 @@ impl Servo {
             ..cfg.mpdtc
         };
         let mpdtc = MpdtcConfig::new(cfg.motor, mp)?;
+        cfg.motion.validate()?;
         let fe_regs = frontend_params(&FrontendSetup {
             pole_pairs: cfg.motor.pole_pairs,
             enc_cpr: cfg.enc_cpr,
@@ -316,6 +333,7 @@ impl Servo {
             sine: None,
             duties: [0.0; 3],
             sensors_ok: false,
+            motion: Motion::new(cfg.enc_cpr)?,
         })
     }
 
@@ -383,6 +401,9 @@ impl Servo {
         self.mpdtc = next.mpdtc;
         self.mpdtc_regs = next.mpdtc_regs;
         self.fe_regs = next.fe_regs;
+        if next.cfg.enc_cpr != self.motion.estimator().cpr() {
+            self.motion = next.motion;
+        }
         self.write_pl_config(bus)?;
         Ok(())
     }
@@ -529,6 +550,7 @@ impl Servo {
         self.gates = false;
         self.rec.cancel();
         self.sine = None;
+        self.motion.to_torque();
         Pwm(&mut *bus).set_gates(false)?;
         let mut m = Mpdtc(&mut *bus);
         m.set_ctrl_path(false, true, !self.cfg.mpdtc_ps_fed)?;
@@ -554,7 +576,84 @@ impl Servo {
     /// Sets the torque reference, N m.
     pub fn set_torque_ref(&mut self, nm: f64) -> Result<(), ServoError> {
         self.torque_ref_nm = self.check_torque(nm)?;
+        self.motion.to_torque();
         Ok(())
+    }
+
+    /// Refused unless the gates are on.
+    fn need_gates<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), ServoError> {
+        if self.gates && self.gates_on(bus)? {
+            Ok(())
+        } else {
+            Err(ServoError::GatesOff)
+        }
+    }
+
+    /// `vel <rev/s>`: the velocity loop (gates on).
+    pub fn set_velocity<B: RegisterBus>(&mut self, bus: &mut B, v: f64) -> Result<(), ServoError> {
+        self.need_gates(bus)?;
+        Ok(self.motion.set_velocity(&self.cfg.motion, v)?)
+    }
+
+    /// `pos <rev>`: a trajectory to `target` (gates on).
+    pub fn set_position<B: RegisterBus>(
+        &mut self,
+        bus: &mut B,
+        target: f64,
+    ) -> Result<(), ServoError> {
+        self.need_gates(bus)?;
+        Ok(self.motion.set_position(&self.cfg.motion, target)?)
+    }
+
+    /// `imp ...`: the impedance law (gates on).
+    pub fn set_impedance<B: RegisterBus>(
+        &mut self,
+        bus: &mut B,
+        imp: &Impedance,
+    ) -> Result<(), ServoError> {
+        self.need_gates(bus)?;
+        let lim = self.cfg.torque_limit_nm;
+        Ok(self.motion.set_impedance(&self.cfg.motion, imp, lim)?)
+    }
+
+    /// `move <rev>`: a recorded move by `distance` (gates on).
+    pub fn begin_move<B: RegisterBus>(
+        &mut self,
+        bus: &mut B,
+        distance: f64,
+        window_s: f64,
+    ) -> Result<(), ServoError> {
+        self.need_gates(bus)?;
+        self.rec.cancel();
+        self.sine = None;
+        Ok(self
+            .motion
+            .begin_move(&self.cfg.motion, distance, window_s)?)
+    }
+
+    /// `pos zero`.
+    pub fn zero_position(&mut self) -> Result<(), ServoError> {
+        Ok(self.motion.zero()?)
+    }
+
+    /// The `move` figures once done.
+    pub fn move_result(&self) -> Option<MoveResult> {
+        self.motion.move_result()
+    }
+
+    /// Whether a `move` is still waiting or running.
+    pub fn move_pending(&self) -> bool {
+        self.motion.move_pending()
+    }
+
+    /// Position, velocity and the outer loop for `status`.
+    pub fn motion_status(&self) -> MotionStatus {
+        self.motion.status()
+    }
+
+    /// The active loop.
+    pub fn loop_kind(&self) -> LoopKind {
+        self.motion.kind()
     }
 
     /// Latched faults: the PL's and the PS's.
@@ -680,7 +779,11 @@ impl Servo {
         window_s: f64,
     ) -> Result<(), ServoError> {
         let nm = self.check_torque(nm)?;
-        let from_nm = self.torque_ref_nm;
+        let from_nm = if self.motion.kind() == LoopKind::Torque {
+            self.torque_ref_nm
+        } else {
+            0.0
+        };
         // Both finite (checked above and when set).
         if libm::fabs(nm - from_nm) < self.cfg.step_min_nm {
             return Err(ServoError::StepTooSmall {
@@ -693,6 +796,8 @@ impl Servo {
             return Err(ServoError::GatesOff);
         }
         let n = libm::ceil(window_s / self.control_period_s()) as usize;
+        self.motion.to_torque();
+        self.torque_ref_nm = from_nm;
         self.rec.start_from(from_nm);
         self.rec.arm(nm, n.clamp(1, STEP_SAMPLES_MAX));
         Ok(())
@@ -790,7 +895,21 @@ impl Servo {
             measured: self.measured,
             torque_ref_nm,
         });
-        let ps = self.ps_checks(adc_count, enc.pos, enc.cpr);
+        // The torque the last period asked for (0 with the gates off).
+        let t_last = if gates { self.torque_ref_nm } else { 0.0 };
+        let j = self.cfg.motion.load_inertia_kg_m2;
+        self.motion
+            .measure(enc.pos, self.control_period_s(), t_last, j);
+        let mut ps = self.ps_checks(adc_count, enc.pos, enc.cpr);
+        if gates {
+            let (pos, speed) = self.motion.limits_violated(&self.cfg.motion);
+            if pos {
+                ps |= Faults::POSITION_LIMIT;
+            }
+            if speed {
+                ps |= Faults::OVERSPEED;
+            }
+        }
         let pl = Fault(&mut *bus).latched()?.0;
         if ps & !self.ps_faults != 0 {
             self.latch_ps(bus, ps)?;
@@ -802,6 +921,10 @@ impl Servo {
             self.seen &= pl | self.ps_faults;
         }
         if running {
+            let (lim, dt) = (self.cfg.torque_limit_nm, self.control_period_s());
+            if let Some(t) = self.motion.step(&self.cfg.motion, lim, dt) {
+                self.torque_ref_nm = t;
+            }
             if let Some(r) = self
                 .rec
                 .on_period(self.measured.torque_nm, self.transitions)

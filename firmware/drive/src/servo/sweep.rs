@@ -165,6 +165,7 @@ impl Servo {
         if !(self.gates && self.gates_on(bus)?) {
             return Err(ServoError::GatesOff);
         }
+        self.motion.to_torque();
         self.sine = Some(Sine {
             amp_nm: amp,
             rad_per_period: 2.0 * PI * f_hz * self.control_period_s(),

@@ -3,7 +3,9 @@
 //! - [`params`]: motor and drive parameters (paper defaults, validation).
 //! - [`frames`]: Clarke/Park transforms and switch states `SaSbSc`.
 //! - [`plant`]: exact (zero-order hold) surface PMSM + inverter model.
+//! - [`mechanics`]: rotor and joint mechanics (inertia, friction, load, spring).
 //! - [`measure`]: 256 kHz sampling and averaging (the measurement chain).
+//! - [`sim_motor`]: the simulated motor's own parameters as one table.
 //! - [`sim`]: the `Controller` trait and the closed-loop runner.
 //! - [`svpwm`], [`foc`]: the FOC baseline (PI + centre-aligned SVPWM).
 //! - [`metrics`]: settling time, overshoot, switching frequency, ripple.
@@ -18,6 +20,7 @@ pub mod foc;
 pub mod frames;
 pub mod frontend_fixed;
 pub mod measure;
+pub mod mechanics;
 pub mod metrics;
 pub mod mpdtc_ctrl;
 pub mod mpdtc_fixed;
@@ -29,4 +32,5 @@ pub mod observer;
 pub mod params;
 pub mod plant;
 pub mod sim;
+pub mod sim_motor;
 pub mod svpwm;

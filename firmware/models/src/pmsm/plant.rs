@@ -36,8 +36,12 @@
 //! milliseconds) and updated after it with the mean of the torques at the
 //! segment ends (trapezoid). The angle advances by `omega h` with the speed the
 //! electrical solution used, so angle and currents stay consistent.
+//! [`MechanicalMode::Joint`] is the same with the joint's own mechanics
+//! ([`Mechanics`]: inertia, viscous and Coulomb friction, load, spring about
+//! the mechanical angle 0, which the plant tracks unwrapped).
 
 use super::frames::{inv_clarke, legs, park, state_from_legs, switch_state_alpha_beta};
+use super::mechanics::Mechanics;
 use super::params::{check_finite, check_nonneg, MotorParams, ParamError};
 use core::f64::consts::PI;
 
@@ -64,6 +68,8 @@ pub enum MechanicalMode {
         /// Load torque, N m.
         load_torque_nm: f64,
     },
+    /// The rotor on a joint with its own mechanics (not [`MotorParams`]').
+    Joint(Mechanics),
 }
 
 /// Instantaneous state of the plant.
@@ -97,6 +103,8 @@ pub struct Plant {
     pending_s: [Option<f64>; 3],
     /// Gate transitions counted per leg since construction.
     transitions: [u64; 3],
+    /// Mechanical angle since construction (not wrapped), rad.
+    theta_m_rad: f64,
 }
 
 impl Plant {
@@ -119,9 +127,7 @@ impl Plant {
         }
         check_nonneg("dead_time_s", dead_time_s)?;
         check_finite("omega_e_rad_s", omega_e_rad_s)?;
-        if let MechanicalMode::Inertia { load_torque_nm } = mode {
-            check_finite("load_torque_nm", load_torque_nm)?;
-        }
+        check_mode(&mode)?;
         Ok(Self {
             motor: *motor,
             dead_time_s,
@@ -137,7 +143,73 @@ impl Plant {
             pole: [0; 3],
             pending_s: [None; 3],
             transitions: [0; 3],
+            theta_m_rad: 0.0,
         })
+    }
+
+    /// How the rotor moves.
+    pub fn mechanics(&self) -> &MechanicalMode {
+        &self.mode
+    }
+
+    /// Changes the mechanics (state kept; errors leave it unchanged).
+    pub fn set_mechanics(&mut self, mode: MechanicalMode) -> Result<(), ParamError> {
+        check_mode(&mode)?;
+        self.mode = mode;
+        Ok(())
+    }
+
+    /// Changes the motor (currents, speed and mechanical angle kept; the
+    /// electrical angle follows the mechanical one for the new pole pairs).
+    /// Errors (as [`Self::new`]) leave the plant unchanged.
+    pub fn set_motor(&mut self, motor: &MotorParams) -> Result<(), ParamError> {
+        let p = Plant::new(motor, self.dead_time_s, self.mode, self.st.omega_e_rad_s)?;
+        let w_m = self.st.omega_e_rad_s / self.motor.pole_pairs as f64;
+        self.motor = p.motor;
+        let pp = motor.pole_pairs as f64;
+        self.st.omega_e_rad_s = w_m * pp;
+        self.st.theta_e_rad = wrap_2pi(self.theta_m_rad * pp);
+        Ok(())
+    }
+
+    /// Mechanical angle since construction (not wrapped), rad.
+    pub fn theta_m_rad(&self) -> f64 {
+        self.theta_m_rad
+    }
+
+    /// Advances `h_s` seconds with the stator open (no current flows): the
+    /// rotor moves under its mechanics alone.
+    pub fn advance_open(&mut self, h_s: f64) {
+        if h_s.is_nan() || h_s <= 0.0 {
+            return;
+        }
+        let w = self.st.omega_e_rad_s;
+        self.st.i_alpha_a = 0.0;
+        self.st.i_beta_a = 0.0;
+        self.st.theta_e_rad = wrap_2pi(self.st.theta_e_rad + w * h_s);
+        self.st.t_s += h_s;
+        self.move_rotor(0.0, w, h_s);
+    }
+
+    /// Mechanical update of one segment that started at electrical speed
+    /// `w` under the mean torque `t_nm`.
+    fn move_rotor(&mut self, t_nm: f64, w: f64, h_s: f64) {
+        let p = self.motor.pole_pairs as f64;
+        let w_m = w / p;
+        let theta0 = self.theta_m_rad;
+        self.theta_m_rad += w_m * h_s;
+        match self.mode {
+            MechanicalMode::ConstantSpeed => {}
+            MechanicalMode::Inertia { load_torque_nm } => {
+                let dw_m = (t_nm - load_torque_nm - self.motor.friction_nm_s_per_rad * w_m)
+                    / self.motor.j_kg_m2
+                    * h_s;
+                self.st.omega_e_rad_s = w + p * dw_m;
+            }
+            MechanicalMode::Joint(m) => {
+                self.st.omega_e_rad_s = p * m.step(t_nm, w_m, theta0, h_s);
+            }
+        }
     }
 
     /// Motor parameters of the plant.
@@ -173,8 +245,10 @@ impl Plant {
     /// Changes the load torque (Inertia mode only; ignored otherwise).
     pub fn set_load_torque_nm(&mut self, load_torque_nm: f64) -> Result<(), ParamError> {
         check_finite("load_torque_nm", load_torque_nm)?;
-        if let MechanicalMode::Inertia { load_torque_nm: l } = &mut self.mode {
-            *l = load_torque_nm;
+        match &mut self.mode {
+            MechanicalMode::Inertia { load_torque_nm: l } => *l = load_torque_nm,
+            MechanicalMode::Joint(m) => m.load_torque_nm = load_torque_nm,
+            MechanicalMode::ConstantSpeed => {}
         }
         Ok(())
     }
@@ -243,15 +317,8 @@ impl Plant {
         self.st.i_beta_a = ib;
         self.st.theta_e_rad = wrap_2pi(self.st.theta_e_rad + w * h_s);
         self.st.t_s += h_s;
-        if let MechanicalMode::Inertia { load_torque_nm } = self.mode {
-            let t1 = self.torque_nm();
-            let p = self.motor.pole_pairs as f64;
-            let w_m = w / p;
-            let dw_m = (0.5 * (t0 + t1) - load_torque_nm - self.motor.friction_nm_s_per_rad * w_m)
-                / self.motor.j_kg_m2
-                * h_s;
-            self.st.omega_e_rad_s = w + p * dw_m;
-        }
+        let t1 = self.torque_nm();
+        self.move_rotor(0.5 * (t0 + t1), w, h_s);
     }
 
     /// Advances `h_s` with the present leg potentials.
@@ -389,6 +456,17 @@ impl Plant {
             *p -= period_s;
         }
         Ok(())
+    }
+}
+
+/// Checks the mechanics' parameters.
+fn check_mode(mode: &MechanicalMode) -> Result<(), ParamError> {
+    match mode {
+        MechanicalMode::ConstantSpeed => Ok(()),
+        MechanicalMode::Inertia { load_torque_nm } => {
+            check_finite("load_torque_nm", *load_torque_nm)
+        }
+        MechanicalMode::Joint(m) => m.validate(),
     }
 }
 

@@ -153,6 +153,20 @@ pub fn write_status<W: Write>(out: &mut W, s: &DriveStatus) -> fmt::Result {
     write!(out, "i_d: {:.3} A\r\n", m.i_d_a)?;
     write!(out, "i_q: {:.3} A\r\n", m.i_q_a)?;
     write!(out, "speed: {:.1} rad/s\r\n", m.omega_e_rad_s)?;
+    let mo = &s.motion;
+    write!(out, "position: {:.6} rev\r\n", mo.position_rev)?;
+    write!(out, "position_counts: {} counts\r\n", mo.counts)?;
+    write!(out, "velocity: {:.4} rev/s\r\n", mo.velocity_rev_s)?;
+    write!(out, "loop: {}\r\n", mo.kind.name())?;
+    if mo.kind != crate::servo::motion::LoopKind::Torque {
+        write!(out, "position_ref: {:.6} rev\r\n", mo.position_ref_rev)?;
+        write!(out, "velocity_ref: {:.4} rev/s\r\n", mo.velocity_ref_rev_s)?;
+        write!(
+            out,
+            "following_error: {:.1} counts\r\n",
+            mo.following_error_counts
+        )?;
+    }
     write!(out, "control_rate: {:.0} Hz\r\n", s.control_rate_hz)?;
     write!(out, "periods: {}\r\n", s.periods)?;
     write!(out, "overruns: {}\r\n", s.overruns)?;

@@ -206,6 +206,11 @@ fn every_table_entry_parses() {
             .replace("<periods>", "2")
             .replace("<rate_hz>", "1000")
             .replace("<channels>", "torque,i_q")
+            .replace("<rev/s>", "1")
+            .replace("<rev>", "0.5")
+            .replace("<Nm/rev>", "1")
+            .replace("<Nm s/rev>", "0.01")
+            .replace("<name> <value>", "j 1e-4")
             .replace(['[', ']'], "");
         for alt in args.split('|') {
             let line = std::format!("{} {}", s.name, alt);
@@ -315,6 +320,7 @@ impl DriveOps for TestDrive {
             sim_time_scale: Some(4.0),
             store: None,
             mpdcc: self.hil,
+            motion: self.servo.motion_status(),
         }
     }
     fn bench(&mut self) -> Result<Bench, DriveError> {
@@ -341,6 +347,104 @@ impl DriveOps for TestDrive {
     fn reconfigure(&mut self, cfg: &ServoConfig) -> Result<(), DriveError> {
         Ok(self.servo.reconfigure(&mut self.pl, cfg)?)
     }
+    fn set_velocity(&mut self, v: f64) -> Result<(), DriveError> {
+        Ok(self.servo.set_velocity(&mut self.pl, v)?)
+    }
+    fn set_position(&mut self, p: f64) -> Result<(), DriveError> {
+        Ok(self.servo.set_position(&mut self.pl, p)?)
+    }
+    fn zero_position(&mut self) -> Result<(), DriveError> {
+        Ok(self.servo.zero_position()?)
+    }
+    fn set_impedance(&mut self, c: &models::motion::law::Impedance) -> Result<(), DriveError> {
+        Ok(self.servo.set_impedance(&mut self.pl, c)?)
+    }
+}
+
+#[test]
+fn outer_loop_commands_check_their_arguments_and_change_nothing() {
+    let mut d = TestDrive::new();
+    // Gates off: refused.
+    assert!(reply_on(&mut d, "vel 1").starts_with("ERR gates-off vel:"));
+    reply_on(&mut d, "mode foc");
+    reply_on(&mut d, "enable");
+    for (line, want) in [
+        ("vel", "ERR bad-args vel: expected <rev/s>"),
+        (
+            "vel nan",
+            "ERR bad-args vel: expected a finite number [rev/s]",
+        ),
+        (
+            "vel 60",
+            "ERR bad-args vel: 60 rev/s is beyond vel_limit (50 rev/s)",
+        ),
+        (
+            "pos 2000",
+            "ERR bad-args pos: 2000 rev is outside the soft limits [-1000..1000] rev",
+        ),
+        (
+            "pos x",
+            "ERR bad-args pos: expected a finite number [rev] or `zero`",
+        ),
+        ("imp 0 0 1 0", "ERR bad-args imp: expected <pos_rev>"),
+        (
+            "imp 0 0 -1 0 0",
+            "ERR bad-args imp: kp -1 is outside [0..20]",
+        ),
+        ("imp 0 0 1 5 0", "ERR bad-args imp: kd 5 is outside [0..1]"),
+        (
+            "imp 0 0 1 0 inf",
+            "ERR bad-args imp: expected five finite numbers",
+        ),
+        (
+            "imp 0 0 1 0 2",
+            "ERR bad-args imp: |torque_ff| (Nm) 2 is outside [0..1]",
+        ),
+        (
+            "move 1 0",
+            "ERR bad-args move: window must be a number of ms in (0, 500]",
+        ),
+        ("sim list", "ERR unsupported sim: not available here"),
+        ("sim set j 1", "ERR unsupported sim: not available here"),
+        (
+            "sim set j x",
+            "ERR bad-args sim: set: expected a finite number",
+        ),
+    ] {
+        let r = reply_on(&mut d, line);
+        assert!(r.starts_with(want), "{line}: {r}");
+        assert_one_final_line(&r);
+        assert!(
+            reply_on(&mut d, "status").contains("loop: torque\r\n"),
+            "{line}"
+        );
+    }
+    assert_eq!(
+        reply_on(&mut d, "vel 2.5"),
+        "loop: velocity\r\nvelocity_target: 2.5000 rev/s\r\nOK\r\n"
+    );
+    let st = reply_on(&mut d, "status");
+    for l in [
+        "loop: velocity",
+        "position: 0.000000 rev",
+        "velocity: 0.0000 rev/s",
+        "following_error: ",
+    ] {
+        assert!(st.contains(l), "{l}: {st}");
+    }
+    assert!(reply_on(&mut d, "pos 0.5").starts_with("loop: position\r\n"));
+    assert!(reply_on(&mut d, "pos zero")
+        .starts_with("ERR bad-args pos: the position or impedance loop"));
+    assert!(reply_on(&mut d, "torque 0").ends_with("OK\r\n"));
+    assert!(reply_on(&mut d, "status").contains("loop: torque\r\n"));
+    assert_eq!(
+        reply_on(&mut d, "pos zero"),
+        "position: 0.000000 rev\r\nOK\r\n"
+    );
+    // The gates going off return to the torque loop.
+    assert!(reply_on(&mut d, "imp 0 0 1 0.01 0").starts_with("loop: impedance\r\n"));
+    reply_on(&mut d, "disable");
+    assert!(reply_on(&mut d, "status").contains("loop: torque\r\n"));
 }
 
 #[test]

@@ -1,0 +1,284 @@
+//! The outer loops under QEMU, through the console, on the simulated PL
+//! with a free rotor (`sim set locked 0`): `move` in both torque loops
+//! against the host simulation of the same code (`drivectl::motion`),
+//! `imp` stiffness under a load, `vel`, refusals and the soft limit.
+use drive::pl::top::Mode;
+use drivectl::link::Session;
+use std::time::{Duration, Instant};
+use system_tests::{assert_err, assert_ok, boot, field, num};
+
+/// Long enough for a move under QEMU.
+const SLOW: Duration = Duration::from_secs(300);
+
+fn cmd(s: &mut Session, line: &str) -> drivectl::link::Reply {
+    match s.command(line, SLOW) {
+        Ok(r) => r,
+        Err(e) => panic!(
+            "{line:?}: {e:#}\ntranscript:\n{}",
+            String::from_utf8_lossy(&s.transcript)
+        ),
+    }
+}
+
+/// `move 1` in `mode`: the acceptance figures, and the host simulation's
+/// figures within a count.
+fn move_one(mode: &str, m: Mode) {
+    let mut s = boot();
+    assert_ok(&cmd(&mut s, "sim set locked 0"));
+    assert_ok(&cmd(&mut s, &format!("mode {mode}")));
+    assert_ok(&cmd(&mut s, "enable"));
+    let t0 = Instant::now();
+    let r = cmd(&mut s, "move 1");
+    assert_ok(&r);
+    println!(
+        "{mode}: move 1 under QEMU in {:.1} s wall: {:?}",
+        t0.elapsed().as_secs_f64(),
+        r.lines
+    );
+    let final_error = num(&r, "final_error");
+    let settling = num(&r, "settling_time");
+    assert!(final_error.abs() <= 1.0, "{r:?}");
+    assert!(settling <= 5.0, "{r:?}");
+    assert!(num(&r, "overshoot") <= 2.0, "{r:?}");
+    assert!((num(&r, "move_time") - 90.0).abs() < 1e-6, "{r:?}");
+    let (h, _) = drivectl::motion::run_move(m, &[("locked", 0.0)], 1.0, 0.02).unwrap();
+    println!("{mode}: move 1 on the host: {h:?}");
+    assert!(
+        (final_error - h.final_error_counts).abs() <= 1.0,
+        "{r:?} vs {h:?}"
+    );
+    assert!(
+        (num(&r, "max_following_error") - h.max_following_error_counts).abs() <= 1.0,
+        "{r:?} vs {h:?}"
+    );
+    let st = cmd(&mut s, "status");
+    assert_eq!(field(&st, "loop"), Some("position"), "{st:?}");
+    assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+    assert_eq!(num(&st, "overruns"), 0.0, "{st:?}");
+}
+
+#[test]
+fn move_one_revolution_mpdtc() {
+    move_one("mpdtc", Mode::Mpdtc);
+}
+
+#[test]
+fn move_one_revolution_foc() {
+    move_one("foc", Mode::Foc);
+}
+
+/// Control periods run (from `status`).
+fn periods(s: &mut Session) -> u64 {
+    num(&cmd(s, "status"), "periods") as u64
+}
+
+/// Waits until `n` more control periods have run; the `status` then.
+fn run_periods(s: &mut Session, n: u64) -> drivectl::link::Reply {
+    let p0 = periods(s);
+    let end = Instant::now() + SLOW;
+    loop {
+        let st = cmd(s, "status");
+        if num(&st, "periods") as u64 >= p0 + n {
+            return st;
+        }
+        assert!(Instant::now() < end, "{st:?}");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+/// FOC on a free rotor, gates on.
+fn free_rotor_foc(s: &mut Session) {
+    assert_ok(&cmd(s, "sim set locked 0"));
+    assert_ok(&cmd(s, "mode foc"));
+    assert_ok(&cmd(s, "enable"));
+}
+
+#[test]
+fn impedance_stiffness_under_a_load_is_kp() {
+    // kp = 2 N m/rev against 0.2 N m of load: 0.1 rev = 409.6 counts of
+    // deflection; kd = 0.064 N m s/rev damps the 10 Hz spring-inertia
+    // pair critically (2 sqrt(k J) per rad, x 2 pi per rev).
+    let mut s = boot();
+    assert_ok(&cmd(&mut s, "sim set load_torque 0.2"));
+    free_rotor_foc(&mut s);
+    let r = cmd(&mut s, "imp 0 0 2 0.064 0");
+    assert_ok(&r);
+    // 0.2 s: 12 time constants of the critically damped pair.
+    let a = run_periods(&mut s, 3200);
+    let b = run_periods(&mut s, 320);
+    let (pa, pb) = (num(&a, "position"), num(&b, "position"));
+    assert!((pa - pb).abs() <= 1.5 / 4096.0, "not at rest: {a:?} {b:?}");
+    let stiffness = 0.2 / -pb;
+    println!("imp kp 2 Nm/rev under 0.2 Nm: deflection {pb} rev, stiffness {stiffness} Nm/rev");
+    assert!((stiffness / 2.0 - 1.0).abs() <= 0.02, "{b:?}");
+    assert_eq!(field(&b, "loop"), Some("impedance"), "{b:?}");
+    assert_eq!(field(&b, "fault"), Some("none"), "{b:?}");
+}
+
+#[test]
+fn velocity_loop_reaches_10_rev_s() {
+    let mut s = boot();
+    free_rotor_foc(&mut s);
+    assert_ok(&cmd(&mut s, "vel 10"));
+    // The ramp takes 20 ms at 500 rev/s^2; 20 ms more to settle.
+    let a = run_periods(&mut s, 640);
+    let b = run_periods(&mut s, 320);
+    let dp = num(&b, "position") - num(&a, "position");
+    let dt = (num(&b, "periods") - num(&a, "periods")) / num(&b, "control_rate");
+    let v = dp / dt;
+    println!(
+        "vel 10: {v} rev/s from the position, {} rev/s estimated",
+        num(&b, "velocity")
+    );
+    assert!((v / 10.0 - 1.0).abs() <= 0.02, "{v} rev/s: {a:?} {b:?}");
+    assert!((num(&b, "velocity") / 10.0 - 1.0).abs() <= 0.02, "{b:?}");
+    assert_eq!(field(&b, "loop"), Some("velocity"), "{b:?}");
+}
+
+#[test]
+fn bad_arguments_are_refused_and_change_nothing() {
+    let mut s = boot();
+    let list = cmd(&mut s, "sim list");
+    assert_ok(&list);
+    assert!(
+        list.lines
+            .iter()
+            .any(|l| l.starts_with("j = 0.000081 kg m^2  [")),
+        "{list:?}"
+    );
+    for bad in [
+        "sim set j -1",
+        "sim set j nan",
+        "sim set pole_pairs 2.5",
+        "sim set enc_dir 0",
+        "sim set locked 2",
+        "sim set enc_offset 4096",
+        "sim set no_such 1",
+        "sim set load_torque",
+    ] {
+        assert_err(&cmd(&mut s, bad), "bad-args");
+    }
+    assert_eq!(cmd(&mut s, "sim list").lines, list.lines);
+    assert_ok(&cmd(&mut s, "mode foc"));
+    assert_ok(&cmd(&mut s, "enable"));
+    assert_ok(&cmd(&mut s, "torque 0.1"));
+    for bad in [
+        "pos 5000",
+        "pos inf",
+        "pos",
+        "vel 100",
+        "vel -51",
+        "vel x",
+        "imp 0 0 -1 0 0",
+        "imp 0 0 1 2 0",
+        "imp 0 0 21 0 0",
+        "imp 0 0 1 0 1.5",
+        "imp 0 0 1 0",
+        "imp 2000 0 1 0 0",
+        "move 1 0",
+        "move 1 501",
+    ] {
+        assert_err(&cmd(&mut s, bad), "bad-args");
+    }
+    let st = cmd(&mut s, "status");
+    assert_eq!(field(&st, "loop"), Some("torque"), "{st:?}");
+    assert_eq!(num(&st, "torque_ref"), 0.1, "{st:?}");
+    assert_eq!(field(&st, "gates"), Some("on"), "{st:?}");
+}
+
+#[test]
+fn leaving_the_soft_limits_latches_position_limit_with_the_gates_off() {
+    let mut s = boot();
+    assert_ok(&cmd(&mut s, "config set pos_max 0.25"));
+    free_rotor_foc(&mut s);
+    // 0.5 N m on the bare rotor: about 980 rev/s^2, past 0.25 rev in 23 ms.
+    assert_ok(&cmd(&mut s, "imp 0 0 0 0 0.5"));
+    let end = Instant::now() + SLOW;
+    let st = loop {
+        let st = cmd(&mut s, "status");
+        if field(&st, "fault") != Some("none") {
+            break st;
+        }
+        assert!(Instant::now() < end, "{st:?}");
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    assert_eq!(field(&st, "fault"), Some("POSITION_LIMIT"), "{st:?}");
+    assert_eq!(field(&st, "gates"), Some("off"), "{st:?}");
+    assert_eq!(field(&st, "loop"), Some("torque"), "{st:?}");
+    assert!(num(&st, "position") > 0.25, "{st:?}");
+    let h = cmd(&mut s, "fault history");
+    assert!(
+        h.lines
+            .iter()
+            .any(|l| l.contains(" code 7 POSITION_LIMIT: ")),
+        "{h:?}"
+    );
+    assert_err(&cmd(&mut s, "enable"), "fault-latched");
+}
+
+/// `sim set locked 0`, `mode mpdtc`, `enable`, `move 1 5` sent in one
+/// write (the move is armed during the rotor alignment and starts at its
+/// end on both PLs); the move's reply.
+fn move_in_one_write(s: &mut Session) -> drivectl::link::Reply {
+    s.send(b"sim set locked 0\rmode mpdtc\renable\rmove 1 5\r")
+        .unwrap();
+    let mut last = None;
+    for _ in 0..4 {
+        let text = s
+            .read_until(drivectl::link::PROMPT.as_bytes(), SLOW)
+            .unwrap_or_else(|e| panic!("{e:#}: {}", String::from_utf8_lossy(&s.transcript)));
+        let r = drivectl::link::parse_reply(&String::from_utf8_lossy(&text)).unwrap();
+        assert_ok(&r);
+        last = Some(r);
+    }
+    last.unwrap()
+}
+
+/// The same move on the Verilated `pl_top` (co-simulation) as on the
+/// simulated PL: the figures within 5 % (a count where they are counts
+/// near 0). Its PL time is the alignment, the 90 ms move and a 5 ms
+/// window: the longest co-simulation test (about 100 ms of PL time, 10^7
+/// PL cycles: 293 s of wall time at the co-simulation's present speed on
+/// a shared 2-core machine), so it is left out of the default run until
+/// the co-simulation is faster:
+/// `cargo test -p system-tests --test motion -- --include-ignored on_the_rtl`.
+#[test]
+#[ignore = "about 5 min of wall time in co-simulation; run with --include-ignored"]
+fn move_one_revolution_on_the_rtl_matches_the_simulated_pl() {
+    let mut rtl = system_tests::boot_rtl();
+    let t0 = Instant::now();
+    let r_rtl = move_in_one_write(&mut rtl);
+    let wall = t0.elapsed().as_secs_f64();
+    let mut sim = boot();
+    let r_sim = move_in_one_write(&mut sim);
+    println!("move 1 on the RTL in {wall:.1} s wall: {:?}", r_rtl.lines);
+    println!("move 1 on the simulated PL: {:?}", r_sim.lines);
+    assert!(num(&r_rtl, "final_error").abs() <= 1.0, "{r_rtl:?}");
+    assert!(num(&r_rtl, "settling_time") <= 5.0, "{r_rtl:?}");
+    assert_eq!(num(&r_rtl, "move_time"), num(&r_sim, "move_time"));
+    for key in [
+        "max_following_error",
+        "final_error",
+        "overshoot",
+        "settling_time",
+    ] {
+        let (a, b) = (num(&r_rtl, key), num(&r_sim, key));
+        assert!(
+            (a - b).abs() <= 0.05 * b.abs() || (a - b).abs() <= 1.0,
+            "{key}: RTL {a}, simulated PL {b}"
+        );
+    }
+    let fe = num(&r_sim, "max_following_error");
+    assert!(
+        (num(&r_rtl, "max_following_error") / fe - 1.0).abs() <= 0.05,
+        "{r_rtl:?} {r_sim:?}"
+    );
+    let st = cmd(&mut rtl, "status");
+    assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+    assert_eq!(num(&st, "overruns"), 0.0, "{st:?}");
+    let stats = rtl
+        .finish_bridge()
+        .expect("a bridge")
+        .expect("its statistics");
+    assert!(stats.contains("\"mismatches\":0"), "{stats}");
+}
