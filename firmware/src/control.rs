@@ -38,7 +38,7 @@ use drive::servo::faults::FaultRecord;
 use drive::servo::{
     record_response, Servo, ServoConfig, ServoError, StepRecorder, StepResult, SweepPoint,
 };
-use models::mpdcc::fpga::Inputs;
+use models::mpdcc::mpdcc_fixed::Inputs;
 use regmap::bus::{BusError, RegisterBus};
 use simpl::{SimConfig, SimDrive};
 

@@ -1,5 +1,5 @@
 //! The one rounding shift of every fixed-point model (the MPDTC core's
-//! `pmsm::mpdtc_fixed` and the MPDCC FPGA model's `mpdcc::fixed`), and so
+//! `pmsm::mpdtc_fixed` and the MPDCC FPGA model's `mpdcc::formats`), and so
 //! of the RTL they are the oracle of.
 //!
 //! Rule: `rshift_round(x, s)` is `x / 2^s` rounded half up (towards +inf),

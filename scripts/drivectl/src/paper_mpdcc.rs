@@ -5,7 +5,7 @@
 //! Definitions used by every number printed here (docs/mpdcc.md):
 //! - switching frequency: device turn-ons per semiconductor per second
 //!   (24 devices), THD: rms of `i - i_1` over rms of `i_1`, pooled over the
-//!   three phases, over a whole number of periods ([`models::mpdcc::stats`]);
+//!   three phases, over a whole number of periods ([`models::mpdcc::metrics`]);
 //! - decision mismatch: share of all steps where the FPGA model, fed the
 //!   reference's closed-loop state, returns another position than the
 //!   reference (the reference drives the plant);
@@ -14,11 +14,11 @@
 //!   over the sweep (the paper's "below 8 % and 2 %" covers its sweep).
 use anyhow::{anyhow, Context, Result};
 use models::mpdcc::closed_loop::{self, LoopConfig, LoopResult, TraceSample};
-use models::mpdcc::controller::MpdccController;
+use models::mpdcc::controller::Controller;
 use models::mpdcc::cycles;
-use models::mpdcc::fpga::{FpgaConfig, FpgaMpdcc};
+use models::mpdcc::mpdcc_fixed::{FpgaConfig, MpdccFixed};
+use models::mpdcc::mpdcc_ref::MpdccRef;
 use models::mpdcc::params::DriveParams;
-use models::mpdcc::reference::Reference;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -191,10 +191,10 @@ pub fn load_params(path: Option<&Path>) -> Result<DriveParams> {
     Ok(p)
 }
 
-fn fpga_for(p: &DriveParams) -> Result<FpgaMpdcc> {
-    FpgaMpdcc::new(
+fn fpga_for(p: &DriveParams) -> Result<MpdccFixed> {
+    MpdccFixed::new(
         p,
-        FpgaConfig::with_p(models::mpdcc::fpga::p_taylor(&p.machine)),
+        FpgaConfig::with_p(models::mpdcc::mpdcc_fixed::p_taylor(&p.machine)),
     )
     .map_err(|e| anyhow!("FPGA model: {e}"))
 }
@@ -216,8 +216,8 @@ fn rel_diff_percent(a: f64, b_ref: f64) -> f64 {
 fn run_loop(
     p: &DriveParams,
     cfg: &LoopConfig,
-    ctrl: &mut dyn MpdccController,
-    shadow: Option<&mut dyn MpdccController>,
+    ctrl: &mut dyn Controller,
+    shadow: Option<&mut dyn Controller>,
     trace: &mut dyn FnMut(&TraceSample),
 ) -> Result<LoopResult> {
     closed_loop::run(p, cfg, ctrl, shadow, trace)
@@ -244,7 +244,7 @@ fn sweep(
         let mut p = *base;
         p.controller.delta_i_pu = di;
         p.validate().map_err(|e| anyhow!("{e}"))?;
-        let mut reference = Reference::new(&p).map_err(|e| anyhow!("{e}"))?;
+        let mut reference = MpdccRef::new(&p).map_err(|e| anyhow!("{e}"))?;
         let mut shadow = fpga_for(&p)?;
         let mut tr: Vec<TraceSample> = Vec::new();
         let keep = keep_trace && (di - NOMINAL_DELTA_I_PU).abs() < 1e-12;
@@ -348,7 +348,7 @@ fn build_report(a: &Args) -> Result<(Report, Vec<Trace>)> {
         let mut p = base;
         p.controller.delta_i_pu = di;
         let mut spy = anatomy::Spy {
-            reference: Reference::new(&p).map_err(|e| anyhow!("{e}"))?,
+            reference: MpdccRef::new(&p).map_err(|e| anyhow!("{e}"))?,
             fpga: fpga_for(&p)?,
             a: anatomy::Anatomy {
                 delta_i_pu: di,
@@ -363,7 +363,7 @@ fn build_report(a: &Args) -> Result<(Report, Vec<Trace>)> {
     for f in &fig5 {
         let mut p = base;
         p.controller.delta_i_pu = f.delta_i_pu;
-        let mut c = Reference::with_reduced_candidates(&p).map_err(|e| anyhow!("{e}"))?;
+        let mut c = MpdccRef::with_reduced_candidates(&p).map_err(|e| anyhow!("{e}"))?;
         let r = run_loop(&p, &cfg, &mut c, None, &mut |_| {})?;
         reduced.push(ReducedRow {
             delta_i_pu: f.delta_i_pu,
@@ -383,7 +383,7 @@ fn build_report(a: &Args) -> Result<(Report, Vec<Trace>)> {
         mismatch_anatomy,
         reference_reduced_candidates: reduced,
         params: base,
-        p_correction: models::mpdcc::fpga::p_taylor(&base.machine),
+        p_correction: models::mpdcc::mpdcc_fixed::p_taylor(&base.machine),
         measure_periods: a.periods,
         runtime_s: t0.elapsed().as_secs_f64(),
     };
@@ -803,9 +803,9 @@ pub fn bench(a: BenchArgs) -> Result<()> {
         measure_periods: a.periods,
     };
     let mut rows = Vec::new();
-    let mut reference = Reference::new(&p).map_err(|e| anyhow!("{e}"))?;
+    let mut reference = MpdccRef::new(&p).map_err(|e| anyhow!("{e}"))?;
     let mut fpga = fpga_for(&p)?;
-    let ctrls: [&mut dyn MpdccController; 2] = [&mut reference, &mut fpga];
+    let ctrls: [&mut dyn Controller; 2] = [&mut reference, &mut fpga];
     for c in ctrls {
         let name = c.name();
         let t = Instant::now();

@@ -4,7 +4,7 @@
 //! # Integer form used by the FPGA model
 //! The explorer predicts the error of output `j` at `k` (`a_j`) and at
 //! `k + L` (`a_j + delta_j`), both as raw integers of one fixed-point format
-//! (see [`super::fixed`]), with `L = 2^lambda`. Eq. (20)-(21) give the
+//! (see [`super::formats`]), with `L = 2^lambda`. Eq. (20)-(21) give the
 //! interpolated error `a_j + l * delta_j / L`. Instead of dividing `delta_j`
 //! by `L` (which would drop `lambda` bits, eq. (20)), both sides of (23) are
 //! multiplied by `L` (a left shift), so the constraint becomes, exactly,

@@ -9,9 +9,9 @@
 use crate::paper_mpdcc::svg;
 use anyhow::{anyhow, bail, Context, Result};
 use models::mpdcc::closed_loop::{self, LoopConfig};
-use models::mpdcc::fpga::FpgaConfig;
-use models::mpdcc::horizon::{Horizon, HorizonReference, SearchOptions, STATS_EXPLORERS};
-use models::mpdcc::horizon_fixed::{self, HorizonFpga, ADVANCE_CYCLES};
+use models::mpdcc::horizon_fixed::{self, HorizonFixed, ADVANCE_CYCLES};
+use models::mpdcc::horizon_ref::{Horizon, HorizonRef, SearchOptions, STATS_EXPLORERS};
+use models::mpdcc::mpdcc_fixed::FpgaConfig;
 use models::mpdcc::params::DriveParams;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -78,8 +78,8 @@ pub fn run_point(
         measure_periods: periods,
     };
     let fc = FpgaConfig::core(&p.machine);
-    let mk_f = || HorizonFpga::new(&p, fc, h, opt).map_err(|e| anyhow!("{e}"));
-    let mut r = HorizonReference::with_options(&p, h, opt).map_err(|e| anyhow!("{e:?}"))?;
+    let mk_f = || HorizonFixed::new(&p, fc, h, opt).map_err(|e| anyhow!("{e}"));
+    let mut r = HorizonRef::with_options(&p, h, opt).map_err(|e| anyhow!("{e:?}"))?;
     let mut shadow = mk_f()?;
     let rr = closed_loop::run(&p, &cfg, &mut r, Some(&mut shadow), &mut |_| {})
         .map_err(|e| anyhow!("{e:?}"))?;

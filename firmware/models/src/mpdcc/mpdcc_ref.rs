@@ -20,8 +20,8 @@
 
 use super::anpc;
 use super::controller::{
-    candidates, candidates_reduced, rotate, Bounds, CtrlState, Decision, DecisionKind,
-    MpdccController, StateError,
+    candidates, candidates_reduced, rotate, Bounds, Controller, CtrlState, Decision, DecisionKind,
+    StateError,
 };
 use super::machine::{self, clarke, inv_clarke, Discrete};
 use super::params::{DriveParams, ParamError};
@@ -41,7 +41,7 @@ pub struct Extension {
 }
 
 /// The idealized MPDCC controller.
-pub struct Reference {
+pub struct MpdccRef {
     p: DriveParams,
     bounds: Bounds,
     ts_pu: f64,
@@ -53,7 +53,7 @@ pub struct Reference {
     reduced: bool,
 }
 
-impl Reference {
+impl MpdccRef {
     /// Builds the controller; rejects invalid parameters.
     pub fn new(p: &DriveParams) -> Result<Self, ParamError> {
         p.validate()?;
@@ -150,7 +150,7 @@ impl Reference {
         *xm = self.disc.step(xm, clarke(v));
     }
 
-    // --- switching-horizon hook (used by `super::horizon`) ---
+    // --- switching-horizon hook (used by `super::horizon_ref`) ---
 
     /// The controller model's state `l` steps after `st` with `s` held:
     /// machine and inverter states from [`Self::model_step`], the current
@@ -197,7 +197,7 @@ impl Reference {
     }
 }
 
-impl MpdccController for Reference {
+impl Controller for MpdccRef {
     fn name(&self) -> &'static str {
         if self.reduced {
             "reference (64 candidates)"
@@ -206,7 +206,7 @@ impl MpdccController for Reference {
         }
     }
 
-    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
+    fn step(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
         st.check()?;
         self.prepare(st);
         // Lazy evaluation (Algorithm 1, line 1).
@@ -316,7 +316,7 @@ mod tests {
     #[test]
     fn constructed_deadlock_is_resolved_by_eq_15_16() {
         let p = DriveParams::default();
-        let mut c = Reference::new(&p).unwrap();
+        let mut c = MpdccRef::new(&p).unwrap();
         // Reference at angle 90 deg (i*_a = 0): back-EMF's alpha part is small.
         let i_ref = [0.0, 1.0];
         let psi = machine::steady_state_flux(&p.machine, i_ref, 1.0, p.operating_point.omega_r_pu);
@@ -331,7 +331,7 @@ mod tests {
             excess.iter().all(|&e| e > 0.0),
             "not a deadlock: {excess:?}"
         );
-        let d = c.decide(&st).unwrap();
+        let d = c.step(&st).unwrap();
         assert_eq!(d.kind, DecisionKind::Deadlock);
         let best = excess.iter().cloned().fold(f64::INFINITY, f64::min);
         let chosen = cands.iter().position(|&s| s == d.s).unwrap();
@@ -361,12 +361,12 @@ mod tests {
     #[test]
     fn output_outside_at_k_forces_deadlock_resolution_towards_bound() {
         let p = DriveParams::default();
-        let mut c = Reference::new(&p).unwrap();
+        let mut c = MpdccRef::new(&p).unwrap();
         let i_ref = [1.0, 0.0]; // i_a = +1 pu
         let psi = machine::steady_state_flux(&p.machine, i_ref, 1.0, p.operating_point.omega_r_pu);
         let mut st = state(&p, [i_ref[0], i_ref[1], psi[0], psi[1]], [6, 3, 3]);
         st.v_ph_pu[0] += p.controller.v_ph_bound_pu + 0.01;
-        let d = c.decide(&st).unwrap();
+        let d = c.step(&st).unwrap();
         assert_eq!(d.kind, DecisionKind::Deadlock);
         // With i_a > 0 a discharging position has ph_current = -1 (s = 1 or 5).
         assert_eq!(anpc::TABLE[d.s[0] as usize].ph_current, -1, "{:?}", d.s);
@@ -377,13 +377,13 @@ mod tests {
     #[test]
     fn lazy_evaluation_keeps_previous_position() {
         let p = DriveParams::default();
-        let mut c = Reference::new(&p).unwrap();
+        let mut c = MpdccRef::new(&p).unwrap();
         let i_ref = [0.0, 1.0];
         let psi = machine::steady_state_flux(&p.machine, i_ref, 1.0, p.operating_point.omega_r_pu);
         let st = state(&p, [i_ref[0], i_ref[1], psi[0], psi[1]], [4, 4, 4]);
         // One step with all phases at level 0 moves the current by far less
         // than delta_i = 0.12 pu: must be kept.
-        let d = c.decide(&st).unwrap();
+        let d = c.step(&st).unwrap();
         assert_eq!(d.kind, DecisionKind::Kept);
         assert_eq!(d.s, [4, 4, 4]);
         assert_eq!(d.candidates, 0);
@@ -395,7 +395,7 @@ mod tests {
     #[test]
     fn horizon_and_cost_are_consistent_with_brute_force() {
         let p = DriveParams::default();
-        let mut c = Reference::new(&p).unwrap();
+        let mut c = MpdccRef::new(&p).unwrap();
         let i_ref = [0.3, 0.95];
         let psi = machine::steady_state_flux(&p.machine, i_ref, 1.0, p.operating_point.omega_r_pu);
         // Phase a current below its reference by nearly delta_i and falling
@@ -403,7 +403,7 @@ mod tests {
         let err = p.controller.delta_i_pu - 0.002;
         let mut st = state(&p, [i_ref[0] - err, i_ref[1], psi[0], psi[1]], [1, 6, 6]);
         st.i_ref_ab_pu = i_ref;
-        let d = c.decide(&st).unwrap();
+        let d = c.step(&st).unwrap();
         assert_eq!(d.kind, DecisionKind::Optimal);
         let lam = p.controller.lambda_n;
         let mut best = f64::INFINITY;
@@ -455,12 +455,12 @@ mod tests {
     #[test]
     fn bad_input_is_rejected() {
         let p = DriveParams::default();
-        let mut c = Reference::new(&p).unwrap();
+        let mut c = MpdccRef::new(&p).unwrap();
         let mut st = state(&p, [0.0; 4], [3, 3, 3]);
         st.v_n_pu = f64::NAN;
-        assert!(c.decide(&st).is_err());
+        assert!(c.step(&st).is_err());
         let mut bad = p;
         bad.controller.delta_i_pu = 0.0;
-        assert!(Reference::new(&bad).is_err());
+        assert!(MpdccRef::new(&bad).is_err());
     }
 }

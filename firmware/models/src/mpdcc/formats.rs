@@ -1,5 +1,5 @@
 //! 16-bit fixed-point formats and the integer operations of the FPGA MPDCC
-//! model ([`super::fpga`]), written so a Verilog core can repeat them bit by
+//! model ([`super::mpdcc_fixed`]), written so a Verilog core can repeat them bit by
 //! bit.
 //!
 //! # Notation
@@ -27,7 +27,7 @@
 //! # Formats used by the model
 //! (The full table with the wide accumulator, node registers and search
 //! comparators is in docs/mpdcc-fpga.md; the constants below and in
-//! [`super::fpga`] are the source.)
+//! [`super::mpdcc_fixed`] are the source.)
 //!
 //! | quantity | format | range | LSB |
 //! |---|---|---|---|
