@@ -17,6 +17,7 @@
 //! - [`fixedpoint`]: the rounding shift shared by every fixed-point model.
 //! - [`validate`]: the parameter error type and checks every model's
 //!   `validate()` uses.
+//! - [`testrng`]: the one seeded generator of every randomized test.
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 
@@ -26,4 +27,5 @@ extern crate std;
 pub mod fixedpoint;
 pub mod mpdcc;
 pub mod pmsm;
+pub mod testrng;
 pub mod validate;

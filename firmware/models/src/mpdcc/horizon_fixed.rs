@@ -326,35 +326,25 @@ mod tests {
     use crate::mpdcc::horizon_ref::HorizonRef;
     use crate::mpdcc::machine;
     use crate::mpdcc::mpdcc_ref::MpdccRef;
-
-    struct Rng(u64);
-    impl Rng {
-        fn unit(&mut self) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
-        fn range(&mut self, a: f64, b: f64) -> f64 {
-            a + (b - a) * self.unit()
-        }
-    }
+    use crate::testrng::Rng;
 
     fn random_state(p: &DriveParams, rng: &mut Rng) -> CtrlState {
         let op = p.operating_point;
-        let th = rng.range(0.0, 2.0 * core::f64::consts::PI);
+        let th = rng.uniform(0.0, 2.0 * core::f64::consts::PI);
         let i_ref = [libm::cos(th), libm::sin(th)];
         let psi = machine::steady_state_flux(&p.machine, i_ref, op.omega_s_pu, op.omega_r_pu);
         let d = 0.95 * p.controller.delta_i_pu;
         CtrlState {
             x_m: [
-                i_ref[0] + rng.range(-d, d),
-                i_ref[1] + rng.range(-d, d),
+                i_ref[0] + rng.uniform(-d, d),
+                i_ref[1] + rng.uniform(-d, d),
                 psi[0],
                 psi[1],
             ],
-            v_n_pu: rng.range(-0.045, 0.045),
-            v_ph_pu: core::array::from_fn(|_| p.inverter.v_ph_ref_pu() + rng.range(-0.045, 0.045)),
+            v_n_pu: rng.uniform(-0.045, 0.045),
+            v_ph_pu: core::array::from_fn(|_| {
+                p.inverter.v_ph_ref_pu() + rng.uniform(-0.045, 0.045)
+            }),
             omega_r_pu: op.omega_r_pu,
             omega_s_pu: op.omega_s_pu,
             i_ref_ab_pu: i_ref,

@@ -726,23 +726,8 @@ mod tests {
     extern crate std;
     use super::*;
     use crate::mpdcc::machine;
+    use crate::testrng::Rng;
     use std::vec::Vec;
-
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            self.0
-        }
-        fn unit(&mut self) -> f64 {
-            (self.next() >> 11) as f64 / (1u64 << 53) as f64
-        }
-        fn range(&mut self, a: f64, b: f64) -> f64 {
-            a + (b - a) * self.unit()
-        }
-    }
 
     /// A toy model with pseudo-random extension lengths (small `N_bar`,
     /// many zero lengths and ties) for the enumeration and pruning tests.
@@ -864,13 +849,13 @@ mod tests {
             // Three events: a short cap ends most sequences early (small tree).
             let n_bar = if h == Horizon::Sesese { 2 } else { 4 };
             let mut toy = Toy {
-                seed: rng.next(),
+                seed: rng.next_u64(),
                 n_bar,
             };
-            let sp = (rng.next() % 512) as u32;
+            let sp = (rng.next_u64() % 512) as u32;
             let root = (
                 [(sp >> 6) as u8, ((sp >> 3) & 7) as u8, (sp & 7) as u8],
-                rng.next(),
+                rng.next_u64(),
             );
             let mut want = brute_force(&mut toy, &root, h);
             let mut seen: Vec<Seq> = Vec::new();
@@ -924,23 +909,25 @@ mod tests {
 
     fn random_state(p: &DriveParams, rng: &mut Rng) -> CtrlState {
         let op = p.operating_point;
-        let th = rng.range(0.0, 2.0 * core::f64::consts::PI);
+        let th = rng.uniform(0.0, 2.0 * core::f64::consts::PI);
         let i_ref = [libm::cos(th), libm::sin(th)];
         let psi = machine::steady_state_flux(&p.machine, i_ref, op.omega_s_pu, op.omega_r_pu);
         let d = 0.95 * p.controller.delta_i_pu;
         CtrlState {
             x_m: [
-                i_ref[0] + rng.range(-d, d),
-                i_ref[1] + rng.range(-d, d),
+                i_ref[0] + rng.uniform(-d, d),
+                i_ref[1] + rng.uniform(-d, d),
                 psi[0],
                 psi[1],
             ],
-            v_n_pu: rng.range(-0.045, 0.045),
-            v_ph_pu: core::array::from_fn(|_| p.inverter.v_ph_ref_pu() + rng.range(-0.045, 0.045)),
+            v_n_pu: rng.uniform(-0.045, 0.045),
+            v_ph_pu: core::array::from_fn(|_| {
+                p.inverter.v_ph_ref_pu() + rng.uniform(-0.045, 0.045)
+            }),
             omega_r_pu: op.omega_r_pu,
             omega_s_pu: op.omega_s_pu,
             i_ref_ab_pu: i_ref,
-            s_prev: core::array::from_fn(|_| (rng.next() % 8) as u8),
+            s_prev: core::array::from_fn(|_| (rng.next_u64() % 8) as u8),
         }
     }
 
@@ -977,7 +964,7 @@ mod tests {
             let mut c = HorizonRef::new(&p, h).unwrap();
             for _ in 0..60 {
                 let mut st = random_state(&p, &mut rng);
-                st.x_m[0] += rng.range(-0.03, 0.03);
+                st.x_m[0] += rng.uniform(-0.03, 0.03);
                 let cands = candidates(st.s_prev);
                 let ok: Vec<[u8; 3]> = cands
                     .iter()
