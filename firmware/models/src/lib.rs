@@ -14,6 +14,7 @@
 //!   with its frames (Clarke/Park), measurement chain and metrics.
 //! - [`mpdcc`]: paper 001 (induction machine + five-level ANPC, MPDCC) and
 //!   its 16-bit FPGA model.
+//! - [`frames`]: the Clarke and Park transforms both papers use.
 //! - [`fixedpoint`]: the rounding shift shared by every fixed-point model.
 //! - [`validate`]: the parameter error type and checks every model's
 //!   `validate()` uses.
@@ -25,6 +26,7 @@
 extern crate std;
 
 pub mod fixedpoint;
+pub mod frames;
 pub mod mpdcc;
 pub mod pmsm;
 pub mod testrng;

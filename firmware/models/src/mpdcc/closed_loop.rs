@@ -16,10 +16,11 @@
 
 use super::anpc;
 use super::controller::{Controller, CtrlState, Decision, DecisionKind, StateError};
-use super::machine::{self, inv_clarke};
+use super::machine;
 use super::metrics::{fsw_per_device_hz, ThdAccumulator};
 use super::params::{DriveParams, ParamError};
 use super::plant::{Plant, PlantState};
+use crate::frames::inv_clarke;
 
 /// Run length, in fundamental periods.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -248,8 +249,11 @@ impl Stepper {
     pub fn trace_sample(&self, s: [u8; 3]) -> TraceSample {
         TraceSample {
             t_s: self.k as f64 * self.ts_s,
-            i_abc_pu: inv_clarke([self.z.x_m[0], self.z.x_m[1]]),
-            i_ref_abc_pu: inv_clarke(self.i_ref()),
+            i_abc_pu: inv_clarke(self.z.x_m[0], self.z.x_m[1]),
+            i_ref_abc_pu: {
+                let [a, b] = self.i_ref();
+                inv_clarke(a, b)
+            },
             v_n_pu: self.z.v_n_pu,
             v_ph_pu: self.z.v_ph_pu,
             s,
@@ -274,8 +278,9 @@ impl Stepper {
                 .unsigned_abs();
             self.max_level_jump = self.max_level_jump.max(jump);
         }
-        let i_abc = inv_clarke([self.z.x_m[0], self.z.x_m[1]]);
-        let i_ref_abc = inv_clarke(self.i_ref());
+        let i_abc = inv_clarke(self.z.x_m[0], self.z.x_m[1]);
+        let [ra, rb] = self.i_ref();
+        let i_ref_abc = inv_clarke(ra, rb);
         let (z, s_prev, bounds) = (&self.z, self.s_prev, &self.bounds);
         let closed = match &mut self.win {
             Some(w) => {

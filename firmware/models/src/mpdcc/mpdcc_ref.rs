@@ -23,8 +23,9 @@ use super::controller::{
     candidates, candidates_reduced, rotate, Bounds, Controller, CtrlState, Decision, DecisionKind,
     StateError,
 };
-use super::machine::{self, clarke, inv_clarke, Discrete};
+use super::machine::{self, Discrete};
 use super::params::{DriveParams, ParamError};
+use crate::frames::{clarke, inv_clarke};
 
 /// Largest supported `N_bar` (see `ControllerParams::validate`).
 const MAX_H: usize = 1024;
@@ -96,10 +97,10 @@ impl MpdccRef {
         let (c, s) = (libm::cos(th), libm::sin(th));
         let h = self.p.controller.horizon_max_steps as usize;
         let mut i = st.i_ref_ab_pu;
-        self.iref[0] = inv_clarke(i);
+        self.iref[0] = inv_clarke(i[0], i[1]);
         for l in 1..=h {
             i = rotate(i, c, s);
-            self.iref[l] = inv_clarke(i);
+            self.iref[l] = inv_clarke(i[0], i[1]);
         }
     }
 
@@ -108,7 +109,7 @@ impl MpdccRef {
     fn extend(&self, st: &CtrlState, s: [u8; 3], max_l: u32) -> Extension {
         let mut xm = st.x_m;
         let mut xi = [st.v_n_pu, st.v_ph_pu[0], st.v_ph_pu[1], st.v_ph_pu[2]];
-        let i0 = inv_clarke([xm[0], xm[1]]);
+        let i0 = inv_clarke(xm[0], xm[1]);
         let e0 = [
             self.iref[0][0] - i0[0],
             self.iref[0][1] - i0[1],
@@ -122,7 +123,7 @@ impl MpdccRef {
         };
         for l in 1..=max_l as usize {
             self.model_step(&mut xm, &mut xi, s);
-            let i_abc = inv_clarke([xm[0], xm[1]]);
+            let i_abc = inv_clarke(xm[0], xm[1]);
             let r = &self.iref[l];
             let e = [r[0] - i_abc[0], r[1] - i_abc[1], r[2] - i_abc[2]];
             let w = self.bounds.worst_excess(e, xi[0], [xi[1], xi[2], xi[3]]);
@@ -144,10 +145,10 @@ impl MpdccRef {
     /// `[v_n, v_ph,abc]` (currents held over the step).
     fn model_step(&self, xm: &mut [f64; 4], xi: &mut [f64; 4], s: [u8; 3]) {
         let inv = &self.p.inverter;
-        let i_abc = inv_clarke([xm[0], xm[1]]);
+        let i_abc = inv_clarke(xm[0], xm[1]);
         let v = anpc::output_voltages(s, inv.v_dc_pu, xi[0], [xi[1], xi[2], xi[3]]);
         anpc::inverter_euler_step(xi, s, i_abc, self.ts_pu, inv.c_dc_pu, inv.c_ph_pu);
-        *xm = self.disc.step(xm, clarke(v));
+        *xm = self.disc.step(xm, clarke(v).into());
     }
 
     // --- switching-horizon hook (used by `super::horizon_ref`) ---
@@ -221,7 +222,7 @@ impl Controller for MpdccRef {
         }
         let (full, red);
         let cands: &[[u8; 3]] = if self.reduced {
-            let i_abc = inv_clarke([st.x_m[0], st.x_m[1]]);
+            let i_abc = inv_clarke(st.x_m[0], st.x_m[1]);
             red = candidates_reduced(st.s_prev, i_abc, st.v_ph_pu, self.bounds.v_ph_ref);
             &red
         } else {
@@ -299,8 +300,9 @@ mod tests {
         };
         let y = plant.step(&z, s);
         let th = st.omega_s_pu * p.controller.ts_pu(&p.machine);
-        let r = inv_clarke(rotate(st.i_ref_ab_pu, libm::cos(th), libm::sin(th)));
-        let i = inv_clarke([y.x_m[0], y.x_m[1]]);
+        let [ra, rb] = rotate(st.i_ref_ab_pu, libm::cos(th), libm::sin(th));
+        let r = inv_clarke(ra, rb);
+        let i = inv_clarke(y.x_m[0], y.x_m[1]);
         let b = Bounds::new(&p.controller, &p.inverter);
         b.worst_excess([r[0] - i[0], r[1] - i[1], r[2] - i[2]], y.v_n_pu, y.v_ph_pu)
     }
@@ -427,8 +429,8 @@ mod tests {
             while l < p.controller.horizon_max_steps {
                 z = plant.step(&z, s);
                 r = rotate(r, libm::cos(th), libm::sin(th));
-                let ra = inv_clarke(r);
-                let i = inv_clarke([z.x_m[0], z.x_m[1]]);
+                let ra = inv_clarke(r[0], r[1]);
+                let i = inv_clarke(z.x_m[0], z.x_m[1]);
                 let ex = c.bounds().worst_excess(
                     [ra[0] - i[0], ra[1] - i[1], ra[2] - i[2]],
                     z.v_n_pu,

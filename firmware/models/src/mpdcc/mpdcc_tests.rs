@@ -14,12 +14,13 @@ use super::closed_loop::{self, LoopConfig};
 use super::controller::candidates;
 use super::controller::{rotate, Controller, CtrlState, StateError};
 use super::formats::{to_f64, F_I};
-use super::machine::{self, clarke, inv_clarke, Discrete};
+use super::machine::{self, Discrete};
 #[cfg(feature = "mpdcc-research")]
 use super::mpdcc_fixed::Structure;
 use super::mpdcc_fixed::{self, FpgaConfig, Inputs, MpdccFixed, P_PAPER};
 use super::mpdcc_ref::MpdccRef;
 use super::params::DriveParams;
+use crate::frames::{clarke, inv_clarke};
 use crate::testrng::Rng;
 
 /// A steady-state-like controller state with random angle, small errors.
@@ -92,8 +93,8 @@ fn exact_errors(p: &DriveParams, st: &CtrlState, s: [u8; 3], n: usize) -> std::v
     let mut iref = st.i_ref_ab_pu;
     let mut out = std::vec::Vec::new();
     for l in 0..=n {
-        let i = inv_clarke([xm[0], xm[1]]);
-        let r = inv_clarke(iref);
+        let i = inv_clarke(xm[0], xm[1]);
+        let r = inv_clarke(iref[0], iref[1]);
         let vref = inv.v_ph_ref_pu();
         out.push([
             r[0] - i[0],
@@ -109,7 +110,7 @@ fn exact_errors(p: &DriveParams, st: &CtrlState, s: [u8; 3], n: usize) -> std::v
         }
         let v = super::anpc::output_voltages(s, inv.v_dc_pu, xi[0], [xi[1], xi[2], xi[3]]);
         super::anpc::inverter_euler_step(&mut xi, s, i, ts, inv.c_dc_pu, inv.c_ph_pu);
-        xm = disc.step(&xm, clarke(v));
+        xm = disc.step(&xm, clarke(v).into());
         iref = rotate(iref, c, sn);
     }
     out
@@ -212,7 +213,8 @@ fn one_step_and_l_step_predictions_match_exact_model() {
         let iref: std::vec::Vec<[f64; 3]> = (0..=l)
             .map(|m| {
                 let th = st.omega_s_pu * p.controller.ts_pu(&p.machine) * m as f64;
-                inv_clarke(rotate(st.i_ref_ab_pu, libm::cos(th), libm::sin(th)))
+                let [ra, rb] = rotate(st.i_ref_ab_pu, libm::cos(th), libm::sin(th));
+                inv_clarke(ra, rb)
             })
             .collect();
         let di: [f64; 3] = core::array::from_fn(|x| {
