@@ -9,6 +9,7 @@ mod experiment;
 mod explore;
 mod paper_mpdcc;
 mod paper_mpdtc;
+mod plot;
 mod sim;
 mod tel_cmd;
 mod ui;

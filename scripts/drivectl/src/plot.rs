@@ -51,7 +51,14 @@ fn span(v: impl Iterator<Item = f64>, from_zero: bool) -> (f64, f64) {
         return (lo - 0.5, hi + 0.5);
     }
     let pad = 0.05 * (hi - lo);
-    (if from_zero && lo == 0.0 { 0.0 } else { lo - pad }, hi + pad)
+    (
+        if from_zero && lo == 0.0 {
+            0.0
+        } else {
+            lo - pad
+        },
+        hi + pad,
+    )
 }
 
 /// Renders the plot as an SVG document. Ranges cover all finite points (y
@@ -165,7 +172,11 @@ mod tests {
         assert!(svg.starts_with("<svg"));
         assert!(svg.contains("a&lt;b"));
         assert!(!svg.contains("NaN"));
-        assert!(svg.contains("stroke=\"#D62728\"") || svg.contains("#D62728") || svg.contains("rgb(214,39,40)"));
+        assert!(
+            svg.contains("stroke=\"#D62728\"")
+                || svg.contains("#D62728")
+                || svg.contains("rgb(214,39,40)")
+        );
         // Two markers of the first series.
         assert_eq!(svg.matches("<circle").count(), 2);
     }
