@@ -135,7 +135,7 @@ mod tests {
 
     #[test]
     fn spans_cover_the_points() {
-        assert_eq!(span([1.0, 3.0].into_iter(), true), (0.0, 3.1));
+        assert_eq!(span([1.0, 3.0].into_iter(), true), (0.0, 3.15));
         assert_eq!(span([2.0].into_iter(), false), (1.5, 2.5));
         assert_eq!(span(std::iter::empty(), false), (0.0, 1.0));
         let (lo, hi) = span([-1.0, 1.0].into_iter(), true);

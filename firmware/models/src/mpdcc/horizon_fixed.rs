@@ -323,34 +323,11 @@ mod tests {
     use super::*;
     use crate::mpdcc::closed_loop::{self, LoopConfig};
     use crate::mpdcc::formats::{to_f64, F_I};
+    use crate::mpdcc::horizon_ref::tests::random_state;
     use crate::mpdcc::horizon_ref::HorizonRef;
     use crate::mpdcc::machine;
     use crate::mpdcc::mpdcc_ref::MpdccRef;
     use crate::testrng::Rng;
-
-    fn random_state(p: &DriveParams, rng: &mut Rng) -> CtrlState {
-        let op = p.operating_point;
-        let th = rng.uniform(0.0, 2.0 * core::f64::consts::PI);
-        let i_ref = [libm::cos(th), libm::sin(th)];
-        let psi = machine::steady_state_flux(&p.machine, i_ref, op.omega_s_pu, op.omega_r_pu);
-        let d = 0.95 * p.controller.delta_i_pu;
-        CtrlState {
-            x_m: [
-                i_ref[0] + rng.uniform(-d, d),
-                i_ref[1] + rng.uniform(-d, d),
-                psi[0],
-                psi[1],
-            ],
-            v_n_pu: rng.uniform(-0.045, 0.045),
-            v_ph_pu: core::array::from_fn(|_| {
-                p.inverter.v_ph_ref_pu() + rng.uniform(-0.045, 0.045)
-            }),
-            omega_r_pu: op.omega_r_pu,
-            omega_s_pu: op.omega_s_pu,
-            i_ref_ab_pu: i_ref,
-            s_prev: core::array::from_fn(|_| (rng.unit() * 8.0) as u8),
-        }
-    }
 
     fn cfg(p: &DriveParams) -> FpgaConfig {
         FpgaConfig::core(&p.machine)

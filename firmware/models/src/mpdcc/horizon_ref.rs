@@ -722,7 +722,7 @@ impl Controller for HorizonRef {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     extern crate std;
     use super::*;
     use crate::mpdcc::machine;
@@ -907,7 +907,9 @@ mod tests {
         assert!(pruned_sum * 2 < total_sum, "{pruned_sum} vs {total_sum}");
     }
 
-    fn random_state(p: &DriveParams, rng: &mut Rng) -> CtrlState {
+    /// A state near the operating point's steady state (errors within
+    /// 0.95 `delta_i`, capacitors within 0.045 pu), random `s(k-1)`.
+    pub(crate) fn random_state(p: &DriveParams, rng: &mut Rng) -> CtrlState {
         let op = p.operating_point;
         let th = rng.uniform(0.0, 2.0 * core::f64::consts::PI);
         let i_ref = [libm::cos(th), libm::sin(th)];
