@@ -106,8 +106,6 @@ pub struct Report {
     pub runtime_s: f64,
 }
 
-/// Loads and validates the parameter file (defaults when absent). Errors
-
 /// The Fig. 5 sweep for one parameter set: both closed loops per `delta_i`,
 /// the FPGA model shadowing the reference. `keep_trace`: keep the last
 /// period of the nominal-bound reference run.

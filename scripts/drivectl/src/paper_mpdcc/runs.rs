@@ -7,6 +7,7 @@ use models::mpdcc::mpdcc_fixed::{FpgaConfig, MpdccFixed};
 use models::mpdcc::params::DriveParams;
 use std::path::Path;
 
+/// Loads and validates the parameter file (defaults when absent). Errors
 /// name the file and, for invalid values, the field.
 pub fn load_params(path: Option<&Path>) -> Result<DriveParams> {
     let Some(f) = path else {
@@ -22,6 +23,7 @@ pub fn load_params(path: Option<&Path>) -> Result<DriveParams> {
     Ok(p)
 }
 
+/// The bit-exact FPGA model with the Taylor correction factor `p`.
 pub fn fpga_for(p: &DriveParams) -> Result<MpdccFixed> {
     MpdccFixed::new(
         p,
@@ -30,6 +32,7 @@ pub fn fpga_for(p: &DriveParams) -> Result<MpdccFixed> {
     .map_err(|e| anyhow!("FPGA model: {e}"))
 }
 
+/// One closed-loop run; errors name the implementation.
 pub fn run_loop(
     p: &DriveParams,
     cfg: &LoopConfig,
@@ -41,4 +44,5 @@ pub fn run_loop(
         .map_err(|e| anyhow!("{} closed loop: {e}", ctrl.name()))
 }
 
+/// A kept waveform: (`delta_i` in pu, its samples).
 pub type Trace = (f64, Vec<TraceSample>);
