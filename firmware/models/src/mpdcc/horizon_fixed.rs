@@ -325,7 +325,6 @@ mod tests {
     use crate::mpdcc::formats::{to_f64, F_I};
     use crate::mpdcc::horizon_ref::tests::random_state;
     use crate::mpdcc::horizon_ref::HorizonRef;
-    use crate::mpdcc::machine;
     use crate::mpdcc::mpdcc_ref::MpdccRef;
     use crate::testrng::Rng;
 
