@@ -48,7 +48,7 @@ use drive::servo::{
     record_response, Servo, ServoConfig, ServoError, StepRecorder, StepResult, SweepPoint,
 };
 use models::motion::law::Impedance;
-use models::mpdcc::fpga::Inputs;
+use models::mpdcc::mpdcc_fixed::Inputs;
 use models::pmsm::sim_motor::{SimMotor, SimSetError};
 use regmap::bus::{BusError, RegisterBus};
 use simpl::{SimConfig, SimDrive};

@@ -1,10 +1,10 @@
 //! Agreement of the drive under QEMU (firmware on the simulated PL) with
 //! the host simulation of the same motor and controllers
-//! (`models::pmsm::sim`, the paper-000 experiments' plant), within 10 %:
+//! (`models::pmsm::closed_loop`, the paper-000 experiments' plant), within 10 %:
 //! the -3 dB torque bandwidth of a 0.3 N m sine reference (firmware's
 //! `sweep` vs the host run), MPDTC and FOC; the settling time of a
 //! 0 -> 0.4 N m MPDTC step (PL capture vs the host run). The FOC step from
-//! the PL capture does not agree to 10 % with `models::pmsm::sim` (QEMU
+//! the PL capture does not agree to 10 % with `models::pmsm::closed_loop` (QEMU
 //! 0.193 ms, host 0.220 ms: the capture samples once per 62.56 us FOC
 //! period and lags the PS by one period, and `sim` has the default FOC
 //! parameters, not the firmware's measurement chain); the FOC step is
@@ -13,12 +13,12 @@
 use drive::pl::top::Mode;
 use drive::servo::{bandwidth_hz, tone_response, Servo, ServoConfig, SweepPoint};
 use drivectl::link::Final;
+use models::pmsm::closed_loop::{self, Controller};
 use models::pmsm::foc::{Foc, FocParams};
 use models::pmsm::mpdtc_ctrl::MpdtcRef;
 use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use models::pmsm::params::{DriveParams, MotorParams};
+use models::pmsm::params::{MotorParams, SamplingParams};
 use models::pmsm::plant::{MechanicalMode, Plant};
-use models::pmsm::sim::{self, Controller};
 use simpl::{SimConfig, SimDrive};
 use std::f64::consts::PI;
 use std::time::Duration;
@@ -31,7 +31,7 @@ const AMP_NM: f64 = 0.3;
 /// least one period) of transient, over 4 ms.
 fn host_point<C: Controller>(mut ctrl: C, f_hz: f64) -> SweepPoint {
     let motor = MotorParams::default();
-    let drive = DriveParams::default();
+    let drive = SamplingParams::default();
     let mode = MechanicalMode::Inertia {
         load_torque_nm: 0.0,
     };
@@ -41,7 +41,7 @@ fn host_point<C: Controller>(mut ctrl: C, f_hz: f64) -> SweepPoint {
     let n = skip + (4e-3 / ts).ceil() as usize;
     let (mut refs, mut outs) = (Vec::new(), Vec::new());
     let (mut acc, mut k) = (0.0, 0);
-    sim::run(
+    closed_loop::run(
         &mut plant,
         &mut ctrl,
         &drive,
@@ -127,7 +127,7 @@ fn settling_interp_s(y: &[f64], y0: f64, y1: f64, ts_s: f64) -> Option<f64> {
 fn step_agrees<C: Controller>(mode: &str, mut ctrl: C) {
     let ts = ctrl.period_s();
     let motor = MotorParams::default();
-    let drive = DriveParams::default();
+    let drive = SamplingParams::default();
     let mech = MechanicalMode::Inertia {
         load_torque_nm: 0.0,
     };
@@ -135,7 +135,7 @@ fn step_agrees<C: Controller>(mode: &str, mut ctrl: C) {
     let s = (3e-3 / ts).round() as usize;
     let n = s + (3e-3 / ts).round() as usize;
     let (mut means, mut acc, mut k) = (Vec::new(), 0.0, 0);
-    sim::run(
+    closed_loop::run(
         &mut plant,
         &mut ctrl,
         &drive,

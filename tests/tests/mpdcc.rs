@@ -1,7 +1,7 @@
 //! Paper 001's hardware-in-the-loop run under QEMU: `mpdcc run` on the
 //! simulated PL (the plant on the PS, the core's model behind the MPDCC
 //! page) must give the numbers of the host's FPGA-model loop
-//! (`models::mpdcc::closed_loop` with `FpgaMpdcc`): decision counts by kind,
+//! (`models::mpdcc::closed_loop` with `MpdccFixed`): decision counts by kind,
 //! the worst core cycle count, f_sw and THD, without faults or overruns of
 //! the PMSM drive's loop; the same run on the Verilated `pl_top`; `mode
 //! mpdcc`, the loop paced by the control periods. Also the command's
@@ -11,19 +11,19 @@ use std::time::{Duration, Instant};
 use drive::hil;
 use drivectl::link::{Final, Reply};
 use models::mpdcc::closed_loop::{self, LoopConfig};
-use models::mpdcc::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
-use models::mpdcc::fpga::FpgaMpdcc;
+use models::mpdcc::controller::{Controller, CtrlState, Decision, DecisionKind, StateError};
+use models::mpdcc::mpdcc_fixed::MpdccFixed;
 use system_tests::{boot, boot_rtl, cmd, field, num};
 
 /// The model, counting its decisions by kind.
-struct Counting(FpgaMpdcc, [u64; 3]);
+struct Counting(MpdccFixed, [u64; 3]);
 
-impl MpdccController for Counting {
+impl Controller for Counting {
     fn name(&self) -> &'static str {
         "fpga"
     }
-    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
-        let d = self.0.decide(st)?;
+    fn step(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
+        let d = self.0.step(st)?;
         self.1[match d.kind {
             DecisionKind::Kept => 0,
             DecisionKind::Optimal => 1,
@@ -149,7 +149,7 @@ fn model_periods(n: usize) -> Vec<(f64, f64)> {
         if !st.measuring() && st.step() >= warm {
             st.measure(period);
         }
-        let d = f.decide(&st.state()).unwrap();
+        let d = f.step(&st.state()).unwrap();
         if let Some(w) = st.apply(&d, None).unwrap() {
             out.push((w.fsw_hz, w.thd_percent));
         }

@@ -9,12 +9,12 @@
 //! the page answers, through a caller's function; [`Paced`] (`mode mpdcc`)
 //! takes one per control period of the drive and runs until stopped. Both
 //! work on the simulated PL, the co-simulated RTL or a bitstream; their
-//! decisions must be the FPGA model's ([`models::mpdcc::fpga::FpgaMpdcc`]) one for
+//! decisions must be the FPGA model's ([`models::mpdcc::mpdcc_fixed::MpdccFixed`]) one for
 //! one.
 use crate::pl::mpdcc::{Mpdcc, MpdccError, PageDecision};
 use models::mpdcc::closed_loop::{self, LoopConfig, LoopError, Stepper};
-use models::mpdcc::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
-use models::mpdcc::fpga::{FpgaConfig, FpgaError, FpgaMpdcc, Inputs};
+use models::mpdcc::controller::{Controller, CtrlState, Decision, DecisionKind, StateError};
+use models::mpdcc::mpdcc_fixed::{FpgaConfig, FpgaError, Inputs, MpdccFixed};
 use models::mpdcc::params::DriveParams;
 use regmap::bus::RegisterBus;
 
@@ -56,9 +56,9 @@ pub enum HilError {
 }
 
 /// The default drive and its frozen core (the constants the page gets).
-pub fn default_core() -> Result<(DriveParams, FpgaMpdcc), HilError> {
+pub fn default_core() -> Result<(DriveParams, MpdccFixed), HilError> {
     let p = DriveParams::default();
-    let f = FpgaMpdcc::new(&p, FpgaConfig::core(&p.machine)).map_err(HilError::Core)?;
+    let f = MpdccFixed::new(&p, FpgaConfig::core(&p.machine)).map_err(HilError::Core)?;
     Ok((p, f))
 }
 
@@ -70,11 +70,11 @@ struct Page<'a> {
     sum_cycles: u64,
 }
 
-impl MpdccController for Page<'_> {
+impl Controller for Page<'_> {
     fn name(&self) -> &'static str {
         "page"
     }
-    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
+    fn step(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
         let x = Inputs::quantize(st)?;
         match (self.decide)(&x) {
             Ok(d) => {

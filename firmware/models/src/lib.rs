@@ -16,9 +16,11 @@
 //!   its 16-bit FPGA model.
 //! - [`motion`]: the servo's outer loops (position and velocity from the
 //!   encoder, velocity PI, trajectory, position loop, impedance).
+//! - [`frames`]: the Clarke and Park transforms both papers use.
 //! - [`fixedpoint`]: the rounding shift shared by every fixed-point model.
 //! - [`validate`]: the parameter error type and checks every model's
 //!   `validate()` uses.
+//! - [`testrng`]: the one seeded generator of every randomized test.
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 
@@ -27,6 +29,8 @@ extern crate std;
 
 pub mod fixedpoint;
 pub mod motion;
+pub mod frames;
 pub mod mpdcc;
 pub mod pmsm;
+pub mod testrng;
 pub mod validate;

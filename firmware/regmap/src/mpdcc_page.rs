@@ -1,7 +1,7 @@
 //! Block 2, the MPDCC page: the registers of `mpdcc_core` (paper 001's
 //! scheduler and N explorers) as `pl_top` instantiates it.
 //!
-//! Inputs and constants are the words of `models::mpdcc::fpga::Inputs` and
+//! Inputs and constants are the words of `models::mpdcc::mpdcc_fixed::Inputs` and
 //! `Coeffs`, one 16-bit two's complement word per register (formats in
 //! docs/mpdcc-fpga.md). An `MPDCC_START` write while the core is idle takes
 //! a snapshot of every input and constant register at the end of that cycle

@@ -1,6 +1,6 @@
 //! `mpdcc_core` on the MPDCC page as `pl_top` wires it: an `MPDCC_START`
 //! write while idle snapshots the page's input and constant words; the
-//! decision is [`fpga::decide`] on that snapshot (the bit-exact model of the
+//! decision is [`mpdcc_fixed::decide`] on that snapshot (the bit-exact model of the
 //! core, not a copy of its arithmetic), and the core's busy time is
 //! [`cycles::pipelined_core_cycles`] for the candidate set of `s(k-1)`,
 //! plus the cycle of the snapshot. Timing, with the START write in cycle
@@ -11,7 +11,7 @@
 use super::NEVER;
 use models::mpdcc::controller::{candidates, DecisionKind};
 use models::mpdcc::cycles;
-use models::mpdcc::fpga::{self, Coeffs, Inputs};
+use models::mpdcc::mpdcc_fixed::{self, Coeffs, Inputs};
 use regmap::{self as rm, mpdcc_kind};
 
 /// The page's input and constant words at a START (register values).
@@ -141,7 +141,7 @@ impl MpdccBlock {
             saturated: false,
         };
         let n = words.n_use.clamp(1, rm::MPDCC_EXPLORERS);
-        let out = fpga::decide(&k, &x, n);
+        let out = mpdcc_fixed::decide(&k, &x, n);
         let d = out.decision;
         let (kind, cost, j_dl) = match (d.kind, out.results.iter().find(|r| r.s == d.s)) {
             (DecisionKind::Optimal, Some(r)) => (mpdcc_kind::OPTIMAL, r.cost, r.j_dl),
@@ -206,7 +206,7 @@ mod tests {
     use crate::pl::SimPl;
     use drive::pl::mpdcc::Mpdcc;
     use models::mpdcc::controller::CtrlState;
-    use models::mpdcc::fpga::{FpgaConfig, FpgaMpdcc};
+    use models::mpdcc::mpdcc_fixed::{FpgaConfig, MpdccFixed};
     use models::mpdcc::params::DriveParams;
     use regmap::bus::{BusError, RegisterBus};
     use regmap::MPDCC;
@@ -222,9 +222,9 @@ mod tests {
         }
     }
 
-    fn core() -> FpgaMpdcc {
+    fn core() -> MpdccFixed {
         let p = DriveParams::default();
-        FpgaMpdcc::new(&p, FpgaConfig::core(&p.machine)).unwrap()
+        MpdccFixed::new(&p, FpgaConfig::core(&p.machine)).unwrap()
     }
 
     /// A state off the reference (the lazy check fails) from `s(k-1)`.

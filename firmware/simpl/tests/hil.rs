@@ -3,7 +3,7 @@
 use drive::hil::{default_core, run, HilError, Paced, MAX_LATE_IN_A_ROW, MAX_PERIODS};
 use drive::pl::mpdcc::{Mpdcc, MpdccError, PageDecision};
 use models::mpdcc::closed_loop::{self, LoopConfig, LoopResult};
-use models::mpdcc::fpga::Inputs;
+use models::mpdcc::mpdcc_fixed::Inputs;
 use regmap::bus::{BusError, RegisterBus};
 use simpl::pl::{Events, SimPl};
 

@@ -2,8 +2,11 @@
 //! `mpdcc_lane`, `mpdtc_core`), generated from the port lists of their RTL
 //! files: per input a setter masked to the port's width, per output a getter
 //! sign-extended when the port is signed, ports wider than 64 bits as 32-bit
-//! words (least significant first). The shims in `pl-bitstream-src/sim/csrc/`
-//! include them, so no width is written twice.
+//! words (least significant first), and for the ports that pack equal lanes
+//! ([`LANES`]: several words of one format side by side, lane `k` in bits
+//! `[k w +: w]`) per-lane accessors and the lane count. The shims in
+//! `pl-bitstream-src/sim/csrc/` include them, so no width, lane or port list
+//! is written in a shim.
 use std::fmt::Write;
 
 /// Direction of a port.
@@ -52,6 +55,109 @@ pub const CORES: &[(&str, &str, &str)] = &[
         "pl-bitstream-src/sim/csrc/mpdtc_core_ports.h",
     ),
 ];
+
+/// Ports made of equal lanes, lane `k` in bits `[k w +: w]` of the port
+/// (the RTL's `// 7 x Q2.13`-style comments): (module, port, lane width `w`,
+/// lanes signed). The port's width must be a multiple of `w` (checked when
+/// the headers are generated).
+pub const LANES: &[(&str, &str, u32, bool)] = &[
+    ("mpdcc_core", "s_prev_i", 3, false),
+    ("mpdcc_core", "v_ph_i", 16, true),
+    ("mpdcc_core", "bnd_i", 16, true),
+    ("mpdcc_core", "s_o", 3, false),
+    ("mpdcc_explorer", "s_i", 3, false),
+    ("mpdcc_explorer", "s_prev_i", 3, false),
+    ("mpdcc_explorer", "e0_i", 16, true),
+    ("mpdcc_explorer", "bnd_i", 16, true),
+    ("mpdcc_explorer", "dn_i", 16, true),
+    ("mpdcc_explorer", "dn1_i", 16, true),
+    ("mpdcc_explorer", "pn_i", 32, true),
+    ("mpdcc_explorer", "pph_i", 32, true),
+    ("mpdcc_explorer", "v_ph_i", 16, true),
+    ("mpdcc_explorer", "s_o", 3, false),
+    ("mpdcc_explorer", "d0_o", 16, true),
+    ("mpdtc_core", "p_w2_i", 18, true),
+    ("mpdtc_core", "i2_d_o", 25, true),
+    ("mpdtc_core", "i2_q_o", 25, true),
+    ("mpdtc_core", "err_o", 25, true),
+    ("mpdtc_core", "cost2_o", 48, true),
+];
+
+/// Per-lane accessors of port `p` with lanes of `lw` bits: `_LANES`, a
+/// setter of lane `k` (masked to the lane) for inputs, a getter (sign-extended
+/// for signed lanes) for outputs.
+fn lane_accessors(
+    s: &mut String,
+    module: &str,
+    p: &RtlPort,
+    lw: u32,
+    signed: bool,
+) -> Result<(), String> {
+    let (n, v) = (&p.name, format!("V{module}"));
+    if lw == 0 || lw > 64 || p.width % lw != 0 {
+        return Err(format!(
+            "{module}.{n}: {} bits are not lanes of {lw} bits",
+            p.width
+        ));
+    }
+    let lanes = p.width / lw;
+    let mask = if lw == 64 { u64::MAX } else { (1u64 << lw) - 1 };
+    let _ = writeln!(
+        s,
+        "// {n}: {lanes} lanes of {lw} bits{}, lane k in [{lw} k +: {lw}]\n\
+         static const int {module}_{n}_LANES = {lanes};",
+        if signed { " (signed)" } else { "" }
+    );
+    let wide = p.width > 64;
+    match p.dir {
+        Dir::In if wide => {
+            let _ = writeln!(
+                s,
+                "static inline void {module}_set_{n}_lane({v}* t, int k, int64_t x) {{\n    \
+                 for (int i = 0; i < {lw}; i++) {{\n        \
+                 const int b = {lw} * k + i;\n        \
+                 const uint32_t bit = 1u << (b % 32);\n        \
+                 if (((uint64_t)x >> i) & 1u) t->{n}[b / 32] |= bit;\n        \
+                 else t->{n}[b / 32] &= ~bit;\n    \
+                 }}\n}}"
+            );
+        }
+        Dir::In => {
+            let _ = writeln!(
+                s,
+                "static inline void {module}_set_{n}_lane({v}* t, int k, int64_t x) {{\n    \
+                 const uint64_t m = 0x{mask:x}ULL << ({lw} * k);\n    \
+                 t->{n} = ((uint64_t)t->{n} & ~m) | (((uint64_t)x << ({lw} * k)) & m);\n}}"
+            );
+        }
+        Dir::Out => {
+            let raw = if wide {
+                format!(
+                    "uint64_t r = 0;\n    \
+                     for (int i = 0; i < {lw}; i++) {{\n        \
+                     const int b = {lw} * k + i;\n        \
+                     r |= (uint64_t)((t->{n}[b / 32] >> (b % 32)) & 1u) << i;\n    \
+                     }}"
+                )
+            } else {
+                format!("const uint64_t r = ((uint64_t)t->{n} >> ({lw} * k)) & 0x{mask:x}ULL;")
+            };
+            let ret = if signed && lw < 64 {
+                format!(
+                    "const uint64_t m = 1ULL << {};\n    return (int64_t)((r ^ m) - m);",
+                    lw - 1
+                )
+            } else {
+                "return (int64_t)r;".to_string()
+            };
+            let _ = writeln!(
+                s,
+                "static inline int64_t {module}_get_{n}_lane(const {v}* t, int k) {{\n    {raw}\n    {ret}\n}}"
+            );
+        }
+    }
+    Ok(())
+}
 
 /// Text without `//` and `/* */` comments.
 fn strip_comments(src: &str) -> String {
@@ -247,6 +353,9 @@ pub fn header(module: &str, ports: &[RtlPort]) -> String {
                 );
             }
         }
+        if let Some(&(_, _, lw, signed)) = LANES.iter().find(|l| l.0 == module && l.1 == *n) {
+            lane_accessors(&mut s, module, p, lw, signed).unwrap_or_else(|e| panic!("{e}"));
+        }
     }
     s
 }
@@ -292,6 +401,44 @@ mod tests {
             h.contains("static inline void m_get_c_o(const Vm* t, uint32_t* w)"),
             "{h}"
         );
+    }
+
+    /// Every lane entry names a port of its core whose width it divides;
+    /// the generated accessors address lane k at bit `w k`.
+    #[test]
+    fn lanes_divide_their_ports() {
+        for &(m, port, lw, _) in LANES {
+            let (_, src, _) = CORES.iter().find(|c| c.0 == m).expect("core");
+            let p = ports(src, m).unwrap();
+            let p = p
+                .iter()
+                .find(|p| p.name == port)
+                .unwrap_or_else(|| panic!("{m}.{port}"));
+            assert_eq!(p.width % lw, 0, "{m}.{port}");
+        }
+        let p = RtlPort {
+            dir: Dir::Out,
+            signed: false,
+            width: 200,
+            name: "x_o".into(),
+        };
+        let mut s = String::new();
+        lane_accessors(&mut s, "m", &p, 25, true).unwrap();
+        assert!(s.contains("static const int m_x_o_LANES = 8;"), "{s}");
+        assert!(
+            s.contains("const int b = 25 * k + i;") && s.contains("1ULL << 24"),
+            "{s}"
+        );
+        assert!(lane_accessors(&mut s, "m", &p, 24, true).is_err());
+        let p = RtlPort {
+            dir: Dir::In,
+            signed: false,
+            width: 9,
+            name: "s_i".into(),
+        };
+        let mut s = String::new();
+        lane_accessors(&mut s, "m", &p, 3, false).unwrap();
+        assert!(s.contains("const uint64_t m = 0x7ULL << (3 * k);"), "{s}");
     }
 
     #[test]

@@ -30,6 +30,12 @@ static inline void mpdcc_core_set_n_use_i(Vmpdcc_core* t, int64_t x) {
 static inline void mpdcc_core_set_s_prev_i(Vmpdcc_core* t, int64_t x) {
     t->s_prev_i = (uint64_t)x & 0x1ffULL;
 }
+// s_prev_i: 3 lanes of 3 bits, lane k in [3 k +: 3]
+static const int mpdcc_core_s_prev_i_LANES = 3;
+static inline void mpdcc_core_set_s_prev_i_lane(Vmpdcc_core* t, int k, int64_t x) {
+    const uint64_t m = 0x7ULL << (3 * k);
+    t->s_prev_i = ((uint64_t)t->s_prev_i & ~m) | (((uint64_t)x << (3 * k)) & m);
+}
 // input signed [15:0] i_a_i
 static inline void mpdcc_core_set_i_a_i(Vmpdcc_core* t, int64_t x) {
     t->i_a_i = (uint64_t)x & 0xffffULL;
@@ -53,6 +59,12 @@ static inline void mpdcc_core_set_v_n_i(Vmpdcc_core* t, int64_t x) {
 // input [47:0] v_ph_i
 static inline void mpdcc_core_set_v_ph_i(Vmpdcc_core* t, int64_t x) {
     t->v_ph_i = (uint64_t)x & 0xffffffffffffULL;
+}
+// v_ph_i: 3 lanes of 16 bits (signed), lane k in [16 k +: 16]
+static const int mpdcc_core_v_ph_i_LANES = 3;
+static inline void mpdcc_core_set_v_ph_i_lane(Vmpdcc_core* t, int k, int64_t x) {
+    const uint64_t m = 0xffffULL << (16 * k);
+    t->v_ph_i = ((uint64_t)t->v_ph_i & ~m) | (((uint64_t)x << (16 * k)) & m);
 }
 // input signed [15:0] ir_a_i
 static inline void mpdcc_core_set_ir_a_i(Vmpdcc_core* t, int64_t x) {
@@ -151,6 +163,16 @@ static inline void mpdcc_core_set_bnd_i(Vmpdcc_core* t, const uint32_t* w) {
     for (int k = 0; k < 4; k++) t->bnd_i[k] = w[k];
     t->bnd_i[3] &= 0xffffu;
 }
+// bnd_i: 7 lanes of 16 bits (signed), lane k in [16 k +: 16]
+static const int mpdcc_core_bnd_i_LANES = 7;
+static inline void mpdcc_core_set_bnd_i_lane(Vmpdcc_core* t, int k, int64_t x) {
+    for (int i = 0; i < 16; i++) {
+        const int b = 16 * k + i;
+        const uint32_t bit = 1u << (b % 32);
+        if (((uint64_t)x >> i) & 1u) t->bnd_i[b / 32] |= bit;
+        else t->bnd_i[b / 32] &= ~bit;
+    }
+}
 // input [15:0] lambda_n_i
 static inline void mpdcc_core_set_lambda_n_i(Vmpdcc_core* t, int64_t x) {
     t->lambda_n_i = (uint64_t)x & 0xffffULL;
@@ -159,6 +181,12 @@ static inline void mpdcc_core_set_lambda_n_i(Vmpdcc_core* t, int64_t x) {
 static inline uint64_t mpdcc_core_get_done_o(const Vmpdcc_core* t) { return (uint64_t)t->done_o; }
 // output [8:0] s_o
 static inline uint64_t mpdcc_core_get_s_o(const Vmpdcc_core* t) { return (uint64_t)t->s_o; }
+// s_o: 3 lanes of 3 bits, lane k in [3 k +: 3]
+static const int mpdcc_core_s_o_LANES = 3;
+static inline int64_t mpdcc_core_get_s_o_lane(const Vmpdcc_core* t, int k) {
+    const uint64_t r = ((uint64_t)t->s_o >> (3 * k)) & 0x7ULL;
+    return (int64_t)r;
+}
 // output [1:0] kind_o
 static inline uint64_t mpdcc_core_get_kind_o(const Vmpdcc_core* t) { return (uint64_t)t->kind_o; }
 // output [7:0] l_star_o

@@ -13,20 +13,6 @@ static void tick(Vmpdcc_core* t) {
     t->eval();
 }
 
-template <typename W>
-static void put(W& w, int lo, int n, uint64_t v) {
-    for (int i = 0; i < n; i++) {
-        int b = lo + i;
-        uint32_t bit = 1u << (b % 32);
-        if ((v >> i) & 1u) w[b / 32] |= bit;
-        else w[b / 32] &= ~bit;
-    }
-}
-// Ports of 33..64 bits are one 64-bit word in Verilator.
-static void put(uint64_t& w, int lo, int n, uint64_t v) {
-    uint64_t m = (n >= 64 ? ~0ull : ((1ull << n) - 1)) << lo;
-    w = (w & ~m) | ((v << lo) & m);
-}
 
 struct MkSim {
     VerilatedContext ctx;
@@ -72,9 +58,9 @@ void* mk_new() {
 
 void mk_decide(void* p, const MkIn* c, int32_t n_use, MkOut* out) {
     auto* t = static_cast<MkSim*>(p)->top;
-    mpdcc_core_set_s_prev_i(t, (c->s_prev[0] & 7) | ((c->s_prev[1] & 7) << 3) | ((c->s_prev[2] & 7) << 6));
-    for (int j = 0; j < 7; j++) put(t->bnd_i, 16 * j, 16, (uint16_t)c->bnd[j]);
-    for (int ph = 0; ph < 3; ph++) put(t->v_ph_i, 16 * ph, 16, (uint16_t)c->v_ph[ph]);
+    for (int k = 0; k < mpdcc_core_s_prev_i_LANES; k++) mpdcc_core_set_s_prev_i_lane(t, k, c->s_prev[k]);
+    for (int j = 0; j < mpdcc_core_bnd_i_LANES; j++) mpdcc_core_set_bnd_i_lane(t, j, c->bnd[j]);
+    for (int ph = 0; ph < mpdcc_core_v_ph_i_LANES; ph++) mpdcc_core_set_v_ph_i_lane(t, ph, c->v_ph[ph]);
     mpdcc_core_set_i_a_i(t, c->i_ab[0]);
     mpdcc_core_set_i_b_i(t, c->i_ab[1]);
     mpdcc_core_set_psi_a_i(t, c->psi_ab[0]);
@@ -116,9 +102,7 @@ void mk_decide(void* p, const MkIn* c, int32_t n_use, MkOut* out) {
         n++;
     }
     out->measured_cycles = mpdcc_core_get_done_o(t) ? n : -1;
-    out->s[0] = mpdcc_core_get_s_o(t) & 7;
-    out->s[1] = (mpdcc_core_get_s_o(t) >> 3) & 7;
-    out->s[2] = (mpdcc_core_get_s_o(t) >> 6) & 7;
+    for (int k = 0; k < mpdcc_core_s_o_LANES; k++) out->s[k] = (int32_t)mpdcc_core_get_s_o_lane(t, k);
     out->kind = mpdcc_core_get_kind_o(t);
     out->l_star = mpdcc_core_get_l_star_o(t);
     out->cost = mpdcc_core_get_cost_o(t);

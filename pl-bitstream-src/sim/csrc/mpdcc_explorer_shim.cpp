@@ -14,21 +14,6 @@ static void tick(Vmpdcc_explorer* t) {
     t->eval();
 }
 
-template <typename W>
-static void put(W& w, int lo, int n, uint64_t v) {
-    for (int i = 0; i < n; i++) {
-        int b = lo + i;
-        uint32_t bit = 1u << (b % 32);
-        if ((v >> i) & 1u) w[b / 32] |= bit;
-        else w[b / 32] &= ~bit;
-    }
-}
-
-// Ports of 33..64 bits are one 64-bit word in Verilator.
-static void put(uint64_t& w, int lo, int n, uint64_t v) {
-    uint64_t m = (n >= 64 ? ~0ull : ((1ull << n) - 1)) << lo;
-    w = (w & ~m) | ((v << lo) & m);
-}
 
 struct MeSim {
     VerilatedContext ctx;
@@ -78,19 +63,15 @@ void* me_new() {
 // Candidates as s[i][3]; returns the number of results collected.
 int32_t me_run(void* p, const MeCommon* c, int32_t n, const int32_t* s, MeOut* out) {
     auto* t = static_cast<MeSim*>(p)->top;
-    mpdcc_explorer_set_s_prev_i(t, (c->s_prev[0] & 7) | ((c->s_prev[1] & 7) << 3) | ((c->s_prev[2] & 7) << 6));
-    for (int j = 0; j < 7; j++) {
-        put(t->e0_i, 16 * j, 16, (uint16_t)c->e0[j]);
-        put(t->bnd_i, 16 * j, 16, (uint16_t)c->bnd[j]);
-    }
-    for (int m = 0; m < 4; m++)
-        for (int ph = 0; ph < 3; ph++) put(t->dn_i, 16 * (3 * m + ph), 16, (uint16_t)c->dn[m][ph]);
-    for (int ph = 0; ph < 3; ph++) {
-        put(t->dn1_i, 16 * ph, 16, (uint16_t)c->dn1[ph]);
-        put(t->pn_i, 32 * ph, 32, (uint32_t)c->pn[ph]);
-        put(t->pph_i, 32 * ph, 32, (uint32_t)c->pph[ph]);
-        put(t->v_ph_i, 16 * ph, 16, (uint16_t)c->v_ph[ph]);
-    }
+    for (int k = 0; k < mpdcc_explorer_s_prev_i_LANES; k++) mpdcc_explorer_set_s_prev_i_lane(t, k, c->s_prev[k]);
+    for (int j = 0; j < mpdcc_explorer_e0_i_LANES; j++) mpdcc_explorer_set_e0_i_lane(t, j, c->e0[j]);
+    for (int j = 0; j < mpdcc_explorer_bnd_i_LANES; j++) mpdcc_explorer_set_bnd_i_lane(t, j, c->bnd[j]);
+    // dn_i: lane 3 m + ph.
+    for (int k = 0; k < mpdcc_explorer_dn_i_LANES; k++) mpdcc_explorer_set_dn_i_lane(t, k, c->dn[k / 3][k % 3]);
+    for (int ph = 0; ph < mpdcc_explorer_dn1_i_LANES; ph++) mpdcc_explorer_set_dn1_i_lane(t, ph, c->dn1[ph]);
+    for (int ph = 0; ph < mpdcc_explorer_pn_i_LANES; ph++) mpdcc_explorer_set_pn_i_lane(t, ph, c->pn[ph]);
+    for (int ph = 0; ph < mpdcc_explorer_pph_i_LANES; ph++) mpdcc_explorer_set_pph_i_lane(t, ph, c->pph[ph]);
+    for (int ph = 0; ph < mpdcc_explorer_v_ph_i_LANES; ph++) mpdcc_explorer_set_v_ph_i_lane(t, ph, c->v_ph[ph]);
     mpdcc_explorer_set_v_n_i(t, c->v_n);
     mpdcc_explorer_set_vdc_half_i(t, c->vdc_half);
     mpdcc_explorer_set_g3_i(t, c->g3);
@@ -105,7 +86,7 @@ int32_t me_run(void* p, const MeCommon* c, int32_t n, const int32_t* s, MeOut* o
         t->in_valid_i = send;
         if (send) {
             const int32_t* v = s + 3 * sent;
-            mpdcc_explorer_set_s_i(t, (v[0] & 7) | ((v[1] & 7) << 3) | ((v[2] & 7) << 6));
+            for (int k = 0; k < mpdcc_explorer_s_i_LANES; k++) mpdcc_explorer_set_s_i_lane(t, k, v[k]);
             issued[sent] = cycle;
         }
         t->eval();
@@ -115,17 +96,12 @@ int32_t me_run(void* p, const MeCommon* c, int32_t n, const int32_t* s, MeOut* o
         t->eval();
         if (mpdcc_explorer_get_out_valid_o(t) && got < n) {
             MeOut& o = out[got];
-            o.s[0] = mpdcc_explorer_get_s_o(t) & 7;
-            o.s[1] = (mpdcc_explorer_get_s_o(t) >> 3) & 7;
-            o.s[2] = (mpdcc_explorer_get_s_o(t) >> 6) & 7;
+            for (int k = 0; k < mpdcc_explorer_s_o_LANES; k++) o.s[k] = (int32_t)mpdcc_explorer_get_s_o_lane(t, k);
             o.l_star = mpdcc_explorer_get_l_star_o(t);
             o.cost = mpdcc_explorer_get_cost_o(t);
             o.j_dl = (int32_t)mpdcc_explorer_get_j_dl_o(t);
             o.fs = mpdcc_explorer_get_fs_o(t);
-            for (int j = 0; j < 7; j++) {
-                uint32_t w = (t->d0_o[(16 * j) / 32] >> ((16 * j) % 32)) & 0xFFFFu;
-                o.d0[j] = (int16_t)w;
-            }
+            for (int j = 0; j < mpdcc_explorer_d0_o_LANES; j++) o.d0[j] = (int16_t)mpdcc_explorer_get_d0_o_lane(t, j);
             o.latency = (int32_t)(cycle - issued[got]);
             got++;
         }

@@ -123,6 +123,16 @@ static inline void mpdtc_core_set_p_w2_i(Vmpdtc_core* t, const uint32_t* w) {
     for (int k = 0; k < 3; k++) t->p_w2_i[k] = w[k];
     t->p_w2_i[2] &= 0xffu;
 }
+// p_w2_i: 4 lanes of 18 bits (signed), lane k in [18 k +: 18]
+static const int mpdtc_core_p_w2_i_LANES = 4;
+static inline void mpdtc_core_set_p_w2_i_lane(Vmpdtc_core* t, int k, int64_t x) {
+    for (int i = 0; i < 18; i++) {
+        const int b = 18 * k + i;
+        const uint32_t bit = 1u << (b % 32);
+        if (((uint64_t)x >> i) & 1u) t->p_w2_i[b / 32] |= bit;
+        else t->p_w2_i[b / 32] &= ~bit;
+    }
+}
 // input [0:0] st_load_i
 static inline void mpdtc_core_set_st_load_i(Vmpdtc_core* t, int64_t x) {
     t->st_load_i = (uint64_t)x & 0x1ULL;
@@ -204,17 +214,61 @@ static inline int64_t mpdtc_core_get_i1_q_o(const Vmpdtc_core* t) {
 static inline void mpdtc_core_get_i2_d_o(const Vmpdtc_core* t, uint32_t* w) {
     for (int k = 0; k < 7; k++) w[k] = t->i2_d_o[k];
 }
+// i2_d_o: 8 lanes of 25 bits (signed), lane k in [25 k +: 25]
+static const int mpdtc_core_i2_d_o_LANES = 8;
+static inline int64_t mpdtc_core_get_i2_d_o_lane(const Vmpdtc_core* t, int k) {
+    uint64_t r = 0;
+    for (int i = 0; i < 25; i++) {
+        const int b = 25 * k + i;
+        r |= (uint64_t)((t->i2_d_o[b / 32] >> (b % 32)) & 1u) << i;
+    }
+    const uint64_t m = 1ULL << 24;
+    return (int64_t)((r ^ m) - m);
+}
 // output [199:0] i2_q_o
 static inline void mpdtc_core_get_i2_q_o(const Vmpdtc_core* t, uint32_t* w) {
     for (int k = 0; k < 7; k++) w[k] = t->i2_q_o[k];
+}
+// i2_q_o: 8 lanes of 25 bits (signed), lane k in [25 k +: 25]
+static const int mpdtc_core_i2_q_o_LANES = 8;
+static inline int64_t mpdtc_core_get_i2_q_o_lane(const Vmpdtc_core* t, int k) {
+    uint64_t r = 0;
+    for (int i = 0; i < 25; i++) {
+        const int b = 25 * k + i;
+        r |= (uint64_t)((t->i2_q_o[b / 32] >> (b % 32)) & 1u) << i;
+    }
+    const uint64_t m = 1ULL << 24;
+    return (int64_t)((r ^ m) - m);
 }
 // output [199:0] err_o
 static inline void mpdtc_core_get_err_o(const Vmpdtc_core* t, uint32_t* w) {
     for (int k = 0; k < 7; k++) w[k] = t->err_o[k];
 }
+// err_o: 8 lanes of 25 bits (signed), lane k in [25 k +: 25]
+static const int mpdtc_core_err_o_LANES = 8;
+static inline int64_t mpdtc_core_get_err_o_lane(const Vmpdtc_core* t, int k) {
+    uint64_t r = 0;
+    for (int i = 0; i < 25; i++) {
+        const int b = 25 * k + i;
+        r |= (uint64_t)((t->err_o[b / 32] >> (b % 32)) & 1u) << i;
+    }
+    const uint64_t m = 1ULL << 24;
+    return (int64_t)((r ^ m) - m);
+}
 // output [383:0] cost2_o
 static inline void mpdtc_core_get_cost2_o(const Vmpdtc_core* t, uint32_t* w) {
     for (int k = 0; k < 12; k++) w[k] = t->cost2_o[k];
+}
+// cost2_o: 8 lanes of 48 bits (signed), lane k in [48 k +: 48]
+static const int mpdtc_core_cost2_o_LANES = 8;
+static inline int64_t mpdtc_core_get_cost2_o_lane(const Vmpdtc_core* t, int k) {
+    uint64_t r = 0;
+    for (int i = 0; i < 48; i++) {
+        const int b = 48 * k + i;
+        r |= (uint64_t)((t->cost2_o[b / 32] >> (b % 32)) & 1u) << i;
+    }
+    const uint64_t m = 1ULL << 47;
+    return (int64_t)((r ^ m) - m);
 }
 // output [2:0] st_s_applied_o
 static inline uint64_t mpdtc_core_get_st_s_applied_o(const Vmpdtc_core* t) { return (uint64_t)t->st_s_applied_o; }

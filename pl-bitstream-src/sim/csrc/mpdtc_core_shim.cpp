@@ -6,22 +6,6 @@
 #include "mpdtc_core_ports.h"
 #include "verilated.h"
 
-static uint32_t m18(int32_t v) { return (uint32_t)v & 0x3FFFFu; }
-static int32_t sx(uint64_t v, int w) {
-    uint64_t m = 1ull << (w - 1);
-    v &= (1ull << w) - 1;
-    return (int32_t)(int64_t)((v ^ m) - m);
-}
-template <typename W>
-static uint64_t bits(const W& w, int lo, int n) {
-    uint64_t r = 0;
-    for (int i = 0; i < n; i++) {
-        int b = lo + i;
-        r |= (uint64_t)((w[b / 32] >> (b % 32)) & 1u) << i;
-    }
-    return r;
-}
-
 static void tick(Vmpdtc_core* t) {
     t->clk_i = 1;
     t->eval();
@@ -112,16 +96,7 @@ void mc_decide(void* p, const McState* st, const McIn* in, const McParams* pr, M
     mpdtc_core_set_p_kp_o_i(t, pr->kp_o);
     mpdtc_core_set_p_ki_o_i(t, pr->ki_o);
     mpdtc_core_set_p_eta_lim_i(t, pr->eta_lim);
-    // 72-bit port: 4 x 18 bits into 32-bit words.
-    uint32_t w2[3] = {0, 0, 0};
-    for (int i = 0; i < 4; i++) {
-        uint32_t v = m18(pr->w2[i]);
-        for (int b = 0; b < 18; b++) {
-            int bit = 18 * i + b;
-            if ((v >> b) & 1u) w2[bit / 32] |= 1u << (bit % 32);
-        }
-    }
-    mpdtc_core_set_p_w2_i(t, w2);
+    for (int i = 0; i < mpdtc_core_p_w2_i_LANES; i++) mpdtc_core_set_p_w2_i_lane(t, i, pr->w2[i]);
     t->in_valid_i = 1;
     t->eval();
     int lat = 0;
@@ -140,12 +115,11 @@ void mc_decide(void* p, const McState* st, const McIn* in, const McParams* pr, M
     out->eta_q = (int32_t)mpdtc_core_get_eta_q_o(t);
     out->i1_d = (int32_t)mpdtc_core_get_i1_d_o(t);
     out->i1_q = (int32_t)mpdtc_core_get_i1_q_o(t);
-    for (int s = 0; s < 8; s++) {
-        out->i2_d[s] = sx(bits(t->i2_d_o, 25 * s, 25), 25);
-        out->i2_q[s] = sx(bits(t->i2_q_o, 25 * s, 25), 25);
-        out->err[s] = sx(bits(t->err_o, 25 * s, 25), 25);
-        uint64_t c = bits(t->cost2_o, 48 * s, 48);
-        out->cost2[s] = (int64_t)((c ^ (1ull << 47)) - (1ull << 47));
+    for (int s = 0; s < mpdtc_core_i2_d_o_LANES; s++) {
+        out->i2_d[s] = (int32_t)mpdtc_core_get_i2_d_o_lane(t, s);
+        out->i2_q[s] = (int32_t)mpdtc_core_get_i2_q_o_lane(t, s);
+        out->err[s] = (int32_t)mpdtc_core_get_err_o_lane(t, s);
+        out->cost2[s] = mpdtc_core_get_cost2_o_lane(t, s);
     }
     out->next.s_applied = (int32_t)mpdtc_core_get_st_s_applied_o(t);
     out->next.s_prev = (int32_t)mpdtc_core_get_st_s_prev_o(t);

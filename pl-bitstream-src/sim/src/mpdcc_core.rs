@@ -1,12 +1,12 @@
 //! Safe wrapper of the Verilated `mpdcc_core` in its two datapaths (shims:
 //! `csrc/mpdcc_core_shim.cpp`, `csrc/mpdcc_core_shared_shim.cpp`; 6
 //! explorers instantiated, `n_use` of them used): one call = one decision
-//! from the state registers (`models::mpdcc::fpga::Inputs`).
+//! from the state registers (`models::mpdcc::mpdcc_fixed::Inputs`).
 use core::ffi::c_void;
 use core::ptr::NonNull;
 
 use models::mpdcc::controller::DecisionKind;
-use models::mpdcc::fpga::{Coeffs, Inputs};
+use models::mpdcc::mpdcc_fixed::{Coeffs, Inputs};
 
 /// Explorers instantiated in the Verilated model.
 pub const MAX_EXPLORERS: u32 = 6;

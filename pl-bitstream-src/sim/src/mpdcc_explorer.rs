@@ -1,10 +1,10 @@
 //! Safe wrapper of the Verilated `mpdcc_explorer` (shim:
 //! `csrc/mpdcc_explorer_shim.cpp`): one call = the candidates of one
-//! decision streamed one per clock, in the types of `models::mpdcc::fpga`.
+//! decision streamed one per clock, in the types of `models::mpdcc::mpdcc_fixed`.
 use core::ffi::c_void;
 use core::ptr::NonNull;
 
-use models::mpdcc::fpga::{Coeffs, Common};
+use models::mpdcc::mpdcc_fixed::{Coeffs, Common};
 
 #[repr(C)]
 struct MeCommon {

@@ -4,7 +4,7 @@
 use core::ffi::c_void;
 use core::ptr::NonNull;
 
-/// One lane input: the raw words of `models::mpdcc::fpga::lane`.
+/// One lane input: the raw words of `models::mpdcc::mpdcc_fixed::lane`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct LaneInput {
     /// Error at `k`, Q2.13.

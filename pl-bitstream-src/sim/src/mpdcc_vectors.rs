@@ -1,8 +1,8 @@
-//! Test vectors for the MPDCC RTL against `models::mpdcc::fpga` (the frozen
+//! Test vectors for the MPDCC RTL against `models::mpdcc::mpdcc_fixed` (the frozen
 //! core, `FpgaConfig::core`), and the comparison loop used by the tests and
 //! `scripts/rtl-check mpdcc-lane`.
 //!
-//! Lane vectors (`mpdcc_lane` against `fpga::lane`), three classes cycled by
+//! Lane vectors (`mpdcc_lane` against `mpdcc_fixed::lane`), three classes cycled by
 //! index:
 //! - closed loop: the states an FPGA-model-driven loop of the default drive
 //!   passes through (start-up transient, steady state, deadlocks), every
@@ -16,17 +16,17 @@
 //! Inputs are offered back to back, with a random idle gap before one in
 //! eight, so the pipeline is checked at one input per clock and with gaps.
 use models::mpdcc::closed_loop::{self, LoopConfig};
-use models::mpdcc::controller::{candidates, CtrlState, Decision, MpdccController, StateError};
-use models::mpdcc::fpga::{self, Coeffs, FpgaConfig, FpgaMpdcc, Inputs, NODE_MAX};
+use models::mpdcc::controller::{candidates, Controller, CtrlState, Decision, StateError};
+use models::mpdcc::mpdcc_fixed::{self, Coeffs, FpgaConfig, Inputs, MpdccFixed, NODE_MAX};
 use models::mpdcc::params::DriveParams;
 
 use crate::mpdcc_lane::{LaneInput, MpdccLaneSim};
 pub use crate::mpdtc_vectors::Rng;
 
 /// The frozen core with the default drive parameters.
-pub fn core() -> FpgaMpdcc {
+pub fn core() -> MpdccFixed {
     let p = DriveParams::default();
-    FpgaMpdcc::new(&p, FpgaConfig::core(&p.machine)).expect("default MPDCC core")
+    MpdccFixed::new(&p, FpgaConfig::core(&p.machine)).expect("default MPDCC core")
 }
 
 /// The lane's constants (L = 8, N_bar = 128, four nodes) are those of `k`.
@@ -39,17 +39,17 @@ pub fn lane_constants_match(k: &Coeffs) -> bool {
 pub struct LaneCase {
     /// What the RTL is given.
     pub input: LaneInput,
-    /// `fpga::lane` of it.
+    /// `mpdcc_fixed::lane` of it.
     pub want: u32,
 }
 
 fn lane_case(k: &mut Coeffs, e0: i16, nodes: [i32; 4], bnd: i16) -> LaneCase {
     k.bnd[0] = bnd;
-    let mut n: fpga::Nodes = [[0; 7]; fpga::MAX_NODES];
+    let mut n: mpdcc_fixed::Nodes = [[0; 7]; mpdcc_fixed::MAX_NODES];
     for i in 0..4 {
         n[i][0] = nodes[i];
     }
-    let (want, _) = fpga::lane(k, i32::from(e0), &n, 0);
+    let (want, _) = mpdcc_fixed::lane(k, i32::from(e0), &n, 0);
     LaneCase {
         input: LaneInput {
             e0,
@@ -62,11 +62,11 @@ fn lane_case(k: &mut Coeffs, e0: i16, nodes: [i32; 4], bnd: i16) -> LaneCase {
 }
 
 /// Every candidate's seven lanes for the quantized state `x`.
-fn cases_of_state(f: &FpgaMpdcc, x: &Inputs, out: &mut Vec<LaneCase>) {
+fn cases_of_state(f: &MpdccFixed, x: &Inputs, out: &mut Vec<LaneCase>) {
     let k = f.coeffs();
-    let c = fpga::common_terms(k, x);
+    let c = mpdcc_fixed::common_terms(k, x);
     for s in candidates(x.s_prev) {
-        let n: fpga::Nodes = core::array::from_fn(|i| fpga::node_deltas(k, &c, s, i));
+        let n: mpdcc_fixed::Nodes = core::array::from_fn(|i| mpdcc_fixed::node_deltas(k, &c, s, i));
         for j in 0..7 {
             let input = LaneInput {
                 e0: c.e0[j],
@@ -74,7 +74,7 @@ fn cases_of_state(f: &FpgaMpdcc, x: &Inputs, out: &mut Vec<LaneCase>) {
                 bnd: k.bnd[j],
                 idle_before: 0,
             };
-            let (want, _) = fpga::lane(k, i32::from(c.e0[j]), &n, j);
+            let (want, _) = mpdcc_fixed::lane(k, i32::from(c.e0[j]), &n, j);
             out.push(LaneCase { input, want });
         }
     }
@@ -82,17 +82,17 @@ fn cases_of_state(f: &FpgaMpdcc, x: &Inputs, out: &mut Vec<LaneCase>) {
 
 /// Records the quantized states of the steps (all, or those that search).
 struct Recorder {
-    f: FpgaMpdcc,
+    f: MpdccFixed,
     states: Vec<Inputs>,
     all: bool,
 }
 
-impl MpdccController for Recorder {
+impl Controller for Recorder {
     fn name(&self) -> &'static str {
         "fpga-recorder"
     }
-    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
-        let d = self.f.decide(st)?;
+    fn step(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
+        let d = self.f.step(st)?;
         if let (Some(o), Ok(x)) = (self.f.last_outcome(), Inputs::quantize(st)) {
             if self.all || !o.results.is_empty() {
                 self.states.push(x);
@@ -286,7 +286,7 @@ pub struct ExplorerSummary {
 }
 
 /// `n` states (closed-loop and random, alternating; seed `seed`), every
-/// candidate through the RTL explorer and `fpga::explore`, compared on
+/// candidate through the RTL explorer and `mpdcc_fixed::explore`, compared on
 /// `s`, `L*`, `J`, `J_dl`, `f_s` and `Delta_j`.
 pub fn check_explorer(seed: u64, n: u64) -> ExplorerSummary {
     use crate::mpdcc_explorer::MpdccExplorerSim;
@@ -315,12 +315,12 @@ pub fn check_explorer(seed: u64, n: u64) -> ExplorerSummary {
                 Err(_) => continue,
             }
         };
-        let c = fpga::common_terms(k, &x);
+        let c = mpdcc_fixed::common_terms(k, &x);
         let cands: Vec<[u8; 3]> = candidates(x.s_prev).iter().copied().collect();
         let got = sim.run(k, &c, x.s_prev, &cands);
         s.states += 1;
         for (i, &cand) in cands.iter().enumerate() {
-            let want = fpga::explore(k, &c, x.s_prev, cand);
+            let want = mpdcc_fixed::explore(k, &c, x.s_prev, cand);
             s.classes[match want.l_star {
                 0 => 0,
                 128 => 2,
@@ -377,7 +377,7 @@ pub struct CoreSummary {
 /// random states, some of them the constructed worst case
 /// (`s(k-1)` with six admissible positions per phase, 216 candidates),
 /// through `mpdcc_core` of datapath `config` with `explorers` explorers and
-/// `FpgaMpdcc::decide_raw`; the cycle count against
+/// `MpdccFixed::decide_raw`; the cycle count against
 /// `cycles::pipelined_core_cycles_ii` of the datapath's `II`.
 pub fn check_core(
     seed: u64,

@@ -21,27 +21,16 @@ const COEF_MAX: i32 = (1 << 17) - 1;
 const COEF_MIN: i32 = -(1 << 17);
 const ONE: f64 = 65536.0;
 
-/// SplitMix64: small seedable generator (no dependency).
-pub struct Rng(pub u64);
+pub use models::testrng::Rng;
 
-impl Rng {
-    /// Next 64 random bits.
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in `lo..=hi`.
-    pub fn range(&mut self, lo: i32, hi: i32) -> i32 {
-        let span = (hi as i64 - lo as i64 + 1) as u64;
-        (lo as i64 + (self.next_u64() % span) as i64) as i32
-    }
-    /// Uniform in [0, 1).
-    pub fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
+/// Draws over the core's formats.
+trait Draw {
+    fn cur(&mut self) -> i32;
+    fn coef(&mut self) -> i32;
+    fn amps(&mut self, a: f64) -> i32;
+}
+
+impl Draw for Rng {
     fn cur(&mut self) -> i32 {
         self.range(CUR_MIN, CUR_MAX)
     }

@@ -8,12 +8,12 @@
 //! strobe (PWM). A 0.4 N m reference step must reproduce the pure-Rust run
 //! (`MpdtcFixed`, the same fixed-point model) decision for decision, and the
 //! gates must hold S[k] until the boundary and follow S[k+1] after it.
+use models::pmsm::closed_loop::{self, Actuation, Controller, Measurement};
 use models::pmsm::mpdtc_ctrl::{fixed_inputs, inputs_from_measurement, MpdtcFixed};
 use models::pmsm::mpdtc_fixed::FixedParams;
 use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use models::pmsm::params::{DriveParams, MotorParams};
+use models::pmsm::params::{MotorParams, SamplingParams};
 use models::pmsm::plant::{MechanicalMode, Plant};
-use models::pmsm::sim::{self, Actuation, Controller, Measurement};
 use regmap::{self as rm, mode, seq_state, Register};
 use rtl_sim::pl_top::{axi_addr, PlTopSim, OKAY};
 
@@ -187,10 +187,10 @@ fn run_loop(ctrl: &mut dyn Controller, periods: u64) -> Vec<f64> {
     )
     .unwrap();
     let mut torque = Vec::new();
-    sim::run(
+    closed_loop::run(
         &mut plant,
         ctrl,
-        &DriveParams::default(),
+        &SamplingParams::default(),
         periods,
         step_ref,
         |p| {

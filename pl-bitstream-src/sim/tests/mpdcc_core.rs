@@ -1,4 +1,4 @@
-//! `mpdcc_core` against `models::mpdcc::fpga::FpgaMpdcc::decide_raw`: the
+//! `mpdcc_core` against `models::mpdcc::mpdcc_fixed::MpdccFixed::decide_raw`: the
 //! same decision (position, kind, `L*`, candidates, `J` and `J_dl` of the
 //! chosen candidate) and the cycle count of `cycles::pipelined_core_cycles_ii`,
 //! from the raw state registers (common terms, lazy check, search), for both

@@ -1,4 +1,4 @@
-//! `mpdcc_explorer` against `models::mpdcc::fpga::explore`: bit-exact on every
+//! `mpdcc_explorer` against `models::mpdcc::mpdcc_fixed::explore`: bit-exact on every
 //! result field at one candidate per clock, fixed latency.
 use rtl_sim::mpdcc_explorer::MpdccExplorerSim;
 use rtl_sim::mpdcc_vectors::{check_explorer, closed_loop_states, core};
@@ -20,7 +20,7 @@ fn first_state_field_by_field() {
     let f = core();
     let k = f.coeffs();
     let x = closed_loop_states()[0];
-    let c = models::mpdcc::fpga::common_terms(k, &x);
+    let c = models::mpdcc::mpdcc_fixed::common_terms(k, &x);
     let cands: Vec<[u8; 3]> = models::mpdcc::controller::candidates(x.s_prev)
         .iter()
         .copied()
@@ -28,7 +28,7 @@ fn first_state_field_by_field() {
     let got = MpdccExplorerSim::new().run(k, &c, x.s_prev, &cands);
     assert_eq!(got.len(), cands.len());
     for (g, &s) in got.iter().zip(&cands) {
-        let w = models::mpdcc::fpga::explore(k, &c, x.s_prev, s);
+        let w = models::mpdcc::mpdcc_fixed::explore(k, &c, x.s_prev, s);
         assert_eq!(g.s, w.s);
         assert_eq!(g.fs, w.fs, "{s:?} fs");
         assert_eq!(g.deltas, w.deltas, "{s:?} deltas");

@@ -3,7 +3,7 @@
 //! `drive::pl::mpdcc`, closes the loop around the Rust induction machine and
 //! 5L-ANPC plant (`models::mpdcc::closed_loop`), one decision per `T_s`. It
 //! must reproduce the loop of the pure-Rust FPGA model
-//! (`models::mpdcc::fpga::FpgaMpdcc`) decision for decision over two
+//! (`models::mpdcc::mpdcc_fixed::MpdccFixed`) decision for decision over two
 //! fundamental periods: same positions, kinds, `L*`, candidate counts, so
 //! the same trajectory and the same statistics; and each decision's cycle
 //! count must be the core's (`cycles::pipelined_core_cycles_ii` of pl_top's
@@ -12,9 +12,9 @@ use std::time::Instant;
 
 use drive::pl::mpdcc::Mpdcc;
 use models::mpdcc::closed_loop::{self, LoopConfig, LoopResult};
-use models::mpdcc::controller::{candidates, CtrlState, Decision, MpdccController, StateError};
+use models::mpdcc::controller::{candidates, Controller, CtrlState, Decision, StateError};
 use models::mpdcc::cycles;
-use models::mpdcc::fpga::{FpgaMpdcc, Inputs};
+use models::mpdcc::mpdcc_fixed::{Inputs, MpdccFixed};
 use models::mpdcc::params::DriveParams;
 use rtl_sim::mpdcc_vectors::core;
 use rtl_sim::pl_top::PlTopSim;
@@ -31,11 +31,11 @@ struct Hil {
     cycles: Vec<(u32, u32, u64)>,
 }
 
-impl MpdccController for Hil {
+impl Controller for Hil {
     fn name(&self) -> &'static str {
         "pl_top"
     }
-    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
+    fn step(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
         let x = Inputs::quantize(st)?;
         let t0 = self.pl.0.cycles;
         let d = self.pl.decide(&x, MAX_POLLS).expect("MPDCC page");
@@ -51,20 +51,20 @@ impl MpdccController for Hil {
 }
 
 /// The FPGA model, recording its decisions.
-struct Model(FpgaMpdcc, Vec<Decision>);
+struct Model(MpdccFixed, Vec<Decision>);
 
-impl MpdccController for Model {
+impl Controller for Model {
     fn name(&self) -> &'static str {
         "fpga"
     }
-    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
-        let d = self.0.decide(st)?;
+    fn step(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
+        let d = self.0.step(st)?;
         self.1.push(d);
         Ok(d)
     }
 }
 
-fn run(ctrl: &mut dyn MpdccController) -> LoopResult {
+fn run(ctrl: &mut dyn Controller) -> LoopResult {
     let p = DriveParams::default();
     let cfg = LoopConfig {
         warmup_periods: 1,

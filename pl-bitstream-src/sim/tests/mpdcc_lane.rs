@@ -1,4 +1,4 @@
-//! `mpdcc_lane` against `models::mpdcc::fpga::lane`: bit-exact `l_j` at one
+//! `mpdcc_lane` against `models::mpdcc::mpdcc_fixed::lane`: bit-exact `l_j` at one
 //! input per clock (and with idle gaps), fixed latency.
 use models::mpdcc::binsearch;
 use rtl_sim::mpdcc_lane::{LaneInput, MpdccLaneSim};

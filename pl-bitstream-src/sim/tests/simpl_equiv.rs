@@ -13,7 +13,7 @@
 //! cycle, followed here by one idle cycle. The Verilated model leaves reset
 //! at cycle 4; `SimPl` counts from 0 there.
 use drive::pl::mpdcc::Mpdcc;
-use models::mpdcc::fpga::{self, Coeffs, Inputs};
+use models::mpdcc::mpdcc_fixed::{self, Coeffs, Inputs};
 use regmap::bus::{BusError, RegisterBus};
 use regmap::{self as rm, Access, Register, BASE_ADDR, BLOCKS};
 use rtl_sim::mpdtc_vectors::Rng;
@@ -290,7 +290,7 @@ impl RegisterBus for PairBus<'_> {
 /// One MPDCC-page operation (own random stream): arbitrary words to a page
 /// register, the core's constants, or a decision through the driver on a
 /// closed-loop state (its `s(k-1)` sometimes replaced), whose result must
-/// also be the model's (`fpga::decide`).
+/// also be the model's (`mpdcc_fixed::decide`).
 fn mpdcc_op(p: &mut Pair, rng: &mut Rng, states: &[Inputs], k: &Coeffs) {
     match rng.next_u64() % 8 {
         0 => {
@@ -331,7 +331,7 @@ fn mpdcc_op(p: &mut Pair, rng: &mut Rng, states: &[Inputs], k: &Coeffs) {
                 models::mpdcc::controller::DecisionKind::Optimal => 1,
                 models::mpdcc::controller::DecisionKind::Deadlock => 2,
             };
-            let want = fpga::decide(k, &x, 2).decision;
+            let want = mpdcc_fixed::decide(k, &x, 2).decision;
             assert_eq!(got.decision, want, "MPDCC page vs model on {x:?}");
             p.mc_kinds[idx] += 1;
         }

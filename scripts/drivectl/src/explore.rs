@@ -8,9 +8,9 @@
 use anyhow::{anyhow, Result};
 use clap::{Args as ClapArgs, ValueEnum};
 use models::mpdcc::closed_loop::{self, LoopConfig};
-use models::mpdcc::fpga::{self, FpgaConfig, FpgaMpdcc, Structure, P_PAPER};
+use models::mpdcc::mpdcc_fixed::{self, FpgaConfig, MpdccFixed, Structure, P_PAPER};
+use models::mpdcc::mpdcc_ref::MpdccRef;
 use models::mpdcc::params::DriveParams;
-use models::mpdcc::reference::Reference;
 
 pub mod horizons;
 
@@ -59,7 +59,7 @@ pub struct Args {
     pub target_delta_i: f64,
     /// Horizon sweep: nodes expanded beyond the first switching event at
     /// most (the branch-and-bound budget).
-    #[arg(long, default_value_t = models::mpdcc::horizon::DEFAULT_MAX_EXPANSIONS)]
+    #[arg(long, default_value_t = models::mpdcc::horizon_ref::DEFAULT_MAX_EXPANSIONS)]
     pub max_expansions: u32,
 }
 
@@ -73,7 +73,7 @@ pub fn mpdcc(a: Args) -> Result<()> {
         if a.max_expansions > 512 {
             return Err(anyhow!("--max-expansions must be <= 512"));
         }
-        let opt = models::mpdcc::horizon::SearchOptions {
+        let opt = models::mpdcc::horizon_ref::SearchOptions {
             max_expansions: a.max_expansions,
             ..Default::default()
         };
@@ -85,7 +85,7 @@ pub fn mpdcc(a: Args) -> Result<()> {
         measure_periods: a.periods,
     };
     let pcs = if a.p.is_empty() {
-        vec![0.0, P_PAPER, 1.0, fpga::p_taylor(&base.machine)]
+        vec![0.0, P_PAPER, 1.0, mpdcc_fixed::p_taylor(&base.machine)]
     } else {
         a.p.clone()
     };
@@ -96,16 +96,16 @@ pub fn mpdcc(a: Args) -> Result<()> {
     if let Some(n) = a.nodes {
         st.nodes = n;
     }
-    let run = |p: &DriveParams, ctrl: &mut dyn models::mpdcc::controller::MpdccController| {
+    let run = |p: &DriveParams, ctrl: &mut dyn models::mpdcc::controller::Controller| {
         closed_loop::run(p, &cfg, ctrl, None, &mut |_| {}).map_err(|e| anyhow!("{e:?}"))
     };
     for &di in &a.delta_i {
         let mut p = base;
         p.controller.delta_i_pu = di;
-        let rr = run(&p, &mut Reference::new(&p).map_err(|e| anyhow!("{e:?}"))?)?;
+        let rr = run(&p, &mut MpdccRef::new(&p).map_err(|e| anyhow!("{e:?}"))?)?;
         let mut pn = p;
         pn.controller.delta_i_pu = di * (1.0 + 1e-4);
-        let rn = run(&pn, &mut Reference::new(&pn).map_err(|e| anyhow!("{e:?}"))?)?;
+        let rn = run(&pn, &mut MpdccRef::new(&pn).map_err(|e| anyhow!("{e:?}"))?)?;
         println!(
             "delta_i {di}: reference fsw {:.1} Hz THD {:.2} %; noise floor fsw {:+.1} % THD {:+.1} %",
             rr.fsw_hz,
@@ -119,9 +119,9 @@ pub fn mpdcc(a: Args) -> Result<()> {
                 q.controller.extrapolation_steps = l;
                 let fc = FpgaConfig::with_p(pc);
                 let mk =
-                    || FpgaMpdcc::research(&q, fc, st).map_err(|e| anyhow!("L {l} p {pc}: {e}"));
+                    || MpdccFixed::research(&q, fc, st).map_err(|e| anyhow!("L {l} p {pc}: {e}"));
                 let mut f = mk()?;
-                let mut r = Reference::new(&q).map_err(|e| anyhow!("{e:?}"))?;
+                let mut r = MpdccRef::new(&q).map_err(|e| anyhow!("{e:?}"))?;
                 let sh = closed_loop::run(&q, &cfg, &mut r, Some(&mut f), &mut |_| {})
                     .map_err(|e| anyhow!("{e:?}"))?;
                 let rf = run(&q, &mut mk()?)?;

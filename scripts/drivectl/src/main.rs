@@ -10,6 +10,7 @@ mod experiment_move;
 mod explore;
 mod paper_mpdcc;
 mod paper_mpdtc;
+mod plot;
 mod sim;
 mod tel_cmd;
 mod ui;

@@ -227,25 +227,25 @@ fn write_csv(dir: &Path, r: &Results) -> Result<()> {
 /// Throughput: closed-loop control periods per second (MPDTC reference,
 /// MPDTC fixed-point model, FOC), and open-loop replay steps per second.
 pub fn bench(a: BenchArgs) -> Result<()> {
+    use models::pmsm::closed_loop::{self, Controller};
     use models::pmsm::foc::{Foc, FocParams};
     use models::pmsm::mpdtc_ctrl::{MpdtcFixed, MpdtcRef};
     use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-    use models::pmsm::params::{DriveParams, MotorParams};
+    use models::pmsm::params::{MotorParams, SamplingParams};
     use models::pmsm::plant::{MechanicalMode, Plant};
-    use models::pmsm::sim::{self, Controller};
     use std::time::Instant;
     anyhow::ensure!(
         a.sim_s.is_finite() && a.sim_s > 0.0 && a.sim_s <= 100.0,
         "--sim-s must be in (0, 100]"
     );
     let motor = MotorParams::default();
-    let drive = DriveParams::default();
+    let drive = SamplingParams::default();
     let e = |e: models::pmsm::params::ParamError| anyhow::anyhow!("{e}");
     let cfg = MpdtcConfig::new(motor, MpdtcParams::default()).map_err(e)?;
     fn closed<C: Controller>(
         c: &mut C,
         motor: &MotorParams,
-        drive: &DriveParams,
+        drive: &SamplingParams,
         sim_s: f64,
     ) -> Result<f64> {
         let mut plant = Plant::new(
@@ -259,7 +259,7 @@ pub fn bench(a: BenchArgs) -> Result<()> {
         .map_err(|e| anyhow::anyhow!("{e}"))?;
         let n = (sim_s / c.period_s()).round() as u64;
         let t = Instant::now();
-        sim::run(&mut plant, c, drive, n, experiments::toggle_ref, |_| {})
+        closed_loop::run(&mut plant, c, drive, n, experiments::toggle_ref, |_| {})
             .map_err(|e| anyhow::anyhow!("{e}"))?;
         Ok(n as f64 / t.elapsed().as_secs_f64())
     }

@@ -276,19 +276,19 @@ mod tests {
         assert!(format!("{:#}", parse_config(&bad_period).unwrap_err()).contains("line 8"));
     }
 
-    /// `MotorParams`/`DriveParams` load from TOML (feature `std` of `models`):
+    /// `MotorParams`/`SamplingParams` load from TOML (feature `std` of `models`):
     /// missing keys take the paper's defaults, unknown keys are rejected.
     #[test]
     fn library_params_load_from_toml() {
-        use models::pmsm::params::DriveParams;
+        use models::pmsm::params::SamplingParams;
         let m: MotorParams = toml::from_str("r_s_ohm = 0.6\npole_pairs = 4\n").unwrap();
         assert_eq!((m.r_s_ohm, m.pole_pairs), (0.6, 4));
         assert_eq!(m.l_d_h, MotorParams::default().l_d_h);
         assert!(toml::from_str::<MotorParams>("r_ohm = 0.6\n").is_err());
-        let d: DriveParams = toml::from_str("dead_time_s = 1e-7\n").unwrap();
+        let d: SamplingParams = toml::from_str("dead_time_s = 1e-7\n").unwrap();
         assert_eq!(d.adc_average_n, 4);
         d.validate().unwrap();
-        let d: DriveParams = toml::from_str("adc_average_n = 0\n").unwrap();
+        let d: SamplingParams = toml::from_str("adc_average_n = 0\n").unwrap();
         assert_eq!(d.validate().unwrap_err().field, "adc_average_n");
     }
 

@@ -1,5 +1,5 @@
 //! MPDCC block: the constants and per-period state of `mpdcc_core` (the
-//! words of `models::mpdcc::fpga::Coeffs` and `Inputs`), start, status and
+//! words of `models::mpdcc::mpdcc_fixed::Coeffs` and `Inputs`), start, status and
 //! the decision. Formats: docs/mpdcc-fpga.md; the page: docs/register-map.md.
 //!
 //! A decision is `write_inputs`, `start`, then `wait` (polls `MPDCC_STATUS`
@@ -7,7 +7,7 @@
 //! snapshots the page, so the next inputs may be written while a decision
 //! runs.
 use models::mpdcc::controller::{Decision, DecisionKind};
-use models::mpdcc::fpga::{Coeffs, Inputs};
+use models::mpdcc::mpdcc_fixed::{Coeffs, Inputs};
 use regmap::bus::{BusError, RegisterBus};
 use regmap::mpdcc_kind;
 use regmap::regs::mpdcc::*;

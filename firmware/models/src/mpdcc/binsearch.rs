@@ -4,7 +4,7 @@
 //! # Integer form used by the FPGA model
 //! The explorer predicts the error of output `j` at `k` (`a_j`) and at
 //! `k + L` (`a_j + delta_j`), both as raw integers of one fixed-point format
-//! (see [`super::fixed`]), with `L = 2^lambda`. Eq. (20)-(21) give the
+//! (see [`super::formats`]), with `L = 2^lambda`. Eq. (20)-(21) give the
 //! interpolated error `a_j + l * delta_j / L`. Instead of dividing `delta_j`
 //! by `L` (which would drop `lambda` bits, eq. (20)), both sides of (23) are
 //! multiplied by `L` (a left shift), so the constraint becomes, exactly,
@@ -311,14 +311,8 @@ mod tests {
     /// FPGA model (a, delta in i16, bnd in 0..2^15, L = 2^0..2^6, M = 7).
     #[test]
     fn randomized_full_width_eq24() {
-        // xorshift64*: deterministic, no dependency.
-        let mut s: u64 = 0x9E37_79B9_7F4A_7C15;
-        let mut next = || {
-            s ^= s >> 12;
-            s ^= s << 25;
-            s ^= s >> 27;
-            s.wrapping_mul(0x2545_F491_4F6C_DD1D)
-        };
+        let mut rng = crate::testrng::Rng(0x9E37_79B9_7F4A_7C15);
+        let mut next = || rng.next_u64();
         for _ in 0..2_000_000 {
             let v = next();
             let a = (v as u16) as i16 as i32;

@@ -1,5 +1,5 @@
 //! Closed loop: the exact plant ([`super::plant`]) driven by any
-//! [`MpdccController`], with an optional *shadow* controller that is fed
+//! [`Controller`], with an optional *shadow* controller that is fed
 //! the same state at every step and whose decisions are only compared (the
 //! paper's decision-mismatch experiment, Sec. VII-B), never applied.
 //!
@@ -10,16 +10,17 @@
 //! (rotor flux from [`machine::steady_state_flux`]), `v_n = 0`,
 //! `v_ph = V_dc/4`, all phases at position 4 (level 0). A warm-up of whole
 //! fundamental periods precedes the measurement window; the window is a
-//! whole number of periods too (THD definition in [`super::stats`]).
+//! whole number of periods too (THD definition in [`super::metrics`]).
 //! Measurement is ideal: the controller sees the plant state exactly.
 #![allow(clippy::needless_range_loop)] // index loops mirror the matrix equations
 
 use super::anpc;
-use super::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
-use super::machine::{self, inv_clarke};
+use super::controller::{Controller, CtrlState, Decision, DecisionKind, StateError};
+use super::machine;
+use super::metrics::{fsw_per_device_hz, ThdAccumulator};
 use super::params::{DriveParams, ParamError};
 use super::plant::{Plant, PlantState};
-use super::stats::{fsw_per_device_hz, ThdAccumulator};
+use crate::frames::inv_clarke;
 
 /// Run length, in fundamental periods.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -248,8 +249,11 @@ impl Stepper {
     pub fn trace_sample(&self, s: [u8; 3]) -> TraceSample {
         TraceSample {
             t_s: self.k as f64 * self.ts_s,
-            i_abc_pu: inv_clarke([self.z.x_m[0], self.z.x_m[1]]),
-            i_ref_abc_pu: inv_clarke(self.i_ref()),
+            i_abc_pu: inv_clarke(self.z.x_m[0], self.z.x_m[1]),
+            i_ref_abc_pu: {
+                let [a, b] = self.i_ref();
+                inv_clarke(a, b)
+            },
             v_n_pu: self.z.v_n_pu,
             v_ph_pu: self.z.v_ph_pu,
             s,
@@ -274,8 +278,9 @@ impl Stepper {
                 .unsigned_abs();
             self.max_level_jump = self.max_level_jump.max(jump);
         }
-        let i_abc = inv_clarke([self.z.x_m[0], self.z.x_m[1]]);
-        let i_ref_abc = inv_clarke(self.i_ref());
+        let i_abc = inv_clarke(self.z.x_m[0], self.z.x_m[1]);
+        let [ra, rb] = self.i_ref();
+        let i_ref_abc = inv_clarke(ra, rb);
         let (z, s_prev, bounds) = (&self.z, self.s_prev, &self.bounds);
         let closed = match &mut self.win {
             Some(w) => {
@@ -342,8 +347,8 @@ impl Stepper {
 pub fn run(
     p: &DriveParams,
     cfg: &LoopConfig,
-    ctrl: &mut dyn MpdccController,
-    mut shadow: Option<&mut dyn MpdccController>,
+    ctrl: &mut dyn Controller,
+    mut shadow: Option<&mut dyn Controller>,
     trace: &mut dyn FnMut(&TraceSample),
 ) -> Result<LoopResult, LoopError> {
     let mut st = Stepper::new(p)?;
@@ -354,10 +359,10 @@ pub fn run(
             st.measure(meas);
         }
         let x = st.state();
-        let d = ctrl.decide(&x)?;
+        let d = ctrl.step(&x)?;
         trace(&st.trace_sample(d.s));
         let ds = match (st.measuring(), shadow.as_deref_mut()) {
-            (true, Some(sh)) => Some(sh.decide(&x)?),
+            (true, Some(sh)) => Some(sh.step(&x)?),
             _ => None,
         };
         if let Some(r) = st.apply(&d, ds.as_ref())? {
@@ -374,8 +379,8 @@ pub fn run(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mpdcc::fpga::{p_taylor, FpgaConfig, FpgaMpdcc};
-    use crate::mpdcc::reference::Reference;
+    use crate::mpdcc::mpdcc_fixed::{p_taylor, FpgaConfig, MpdccFixed};
+    use crate::mpdcc::mpdcc_ref::MpdccRef;
 
     /// Steady-state invariants of one run:
     /// - no phase moves more than one level per step (also enforced by `run`);
@@ -407,7 +412,7 @@ mod tests {
         for di in [0.04, 0.12] {
             let mut p = DriveParams::default();
             p.controller.delta_i_pu = di;
-            let mut c = Reference::new(&p).unwrap();
+            let mut c = MpdccRef::new(&p).unwrap();
             let cfg = LoopConfig {
                 warmup_periods: 2,
                 measure_periods: 10,
@@ -423,7 +428,7 @@ mod tests {
         for di in [0.04, 0.12] {
             let mut p = DriveParams::default();
             p.controller.delta_i_pu = di;
-            let mut c = FpgaMpdcc::new(&p, FpgaConfig::with_p(p_taylor(&p.machine))).unwrap();
+            let mut c = MpdccFixed::new(&p, FpgaConfig::with_p(p_taylor(&p.machine))).unwrap();
             let cfg = LoopConfig {
                 warmup_periods: 2,
                 measure_periods: 10,
@@ -443,7 +448,7 @@ mod tests {
         for (k, di) in [0.06, 0.12].into_iter().enumerate() {
             let mut p = DriveParams::default();
             p.controller.delta_i_pu = di;
-            let mut c = Reference::new(&p).unwrap();
+            let mut c = MpdccRef::new(&p).unwrap();
             let cfg = LoopConfig {
                 warmup_periods: 2,
                 measure_periods: 10,
@@ -462,7 +467,7 @@ mod tests {
     #[test]
     fn reduced_candidate_reference_invariants() {
         let p = DriveParams::default();
-        let mut c = Reference::with_reduced_candidates(&p).unwrap();
+        let mut c = MpdccRef::with_reduced_candidates(&p).unwrap();
         let cfg = LoopConfig {
             warmup_periods: 2,
             measure_periods: 10,
@@ -476,8 +481,8 @@ mod tests {
     #[test]
     fn identical_shadow_never_mismatches() {
         let p = DriveParams::default();
-        let mut c = Reference::new(&p).unwrap();
-        let mut sh = Reference::new(&p).unwrap();
+        let mut c = MpdccRef::new(&p).unwrap();
+        let mut sh = MpdccRef::new(&p).unwrap();
         let cfg = LoopConfig {
             warmup_periods: 1,
             measure_periods: 2,

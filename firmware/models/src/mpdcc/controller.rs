@@ -1,5 +1,5 @@
 //! The controller interface shared by the idealized `f64` MPDCC reference
-//! ([`super::reference`]) and the 16-bit FPGA model, plus the parts of the
+//! ([`super::mpdcc_ref`]) and the 16-bit FPGA model, plus the parts of the
 //! problem statement both must agree on (bounds, candidate set, `f_s`, the
 //! meaning of `L*`), so that the closed loop and the mismatch experiment can
 //! drive either one.
@@ -125,11 +125,11 @@ pub struct Decision {
 }
 
 /// The interface both MPDCC implementations provide.
-pub trait MpdccController {
+pub trait Controller {
     /// Short name for reports ("reference", "fpga").
     fn name(&self) -> &'static str;
     /// Decides `s(k)`; rejects bad input without changing internal state.
-    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError>;
+    fn step(&mut self, st: &CtrlState) -> Result<Decision, StateError>;
 }
 
 /// The seven output bounds `y_bnd` and references, pu.

@@ -2,7 +2,7 @@
 //! VII-A, Table II).
 //!
 //! Not a formula: each unit's work is listed as operations with their data
-//! dependencies, exactly the arithmetic of [`super::fpga`], and scheduled on
+//! dependencies, exactly the arithmetic of [`super::mpdcc_fixed`], and scheduled on
 //! the hardware the paper describes:
 //! - **Computational block** (Fig. 3): operand muxes, a multiplier, an adder,
 //!   a 3-stage pipeline. One operation enters a block per cycle; its result
@@ -52,7 +52,7 @@ pub enum Kind {
 pub struct Op {
     /// Handle: unique within its program.
     pub id: &'static str,
-    /// What it computes (the names used in [`super::fpga`]).
+    /// What it computes (the names used in [`super::mpdcc_fixed`]).
     pub name: &'static str,
     /// Resource and latency class.
     pub kind: Kind,
@@ -172,7 +172,7 @@ pub const EXPLORER_OPS_PAPER: &[Op] = &[
     op("return result", "return result", Reg, &["J"]), // 25
 ];
 
-/// One explorer evaluation of our default core ([`super::fpga::Structure::CORE`]):
+/// One explorer evaluation of our default core ([`super::mpdcc_fixed::Structure::CORE`]):
 /// four interpolation nodes, capacitor drift, stator damping, exact first step.
 pub const EXPLORER_OPS: &[Op] = &[
     op("load candidate, f_s", "load candidate, f_s", Reg, &[]),
@@ -352,8 +352,8 @@ pub const EXPLORER_OPS: &[Op] = &[
     op("return result", "return result", Reg, &["J"]), // 66
 ];
 
-/// The scheduler before dispatch ([`super::fpga::common_terms`] and
-/// [`super::fpga::lazy_ok`]) of our default core (all accuracy options, four
+/// The scheduler before dispatch ([`super::mpdcc_fixed::common_terms`] and
+/// [`super::mpdcc_fixed::lazy_ok`]) of our default core (all accuracy options, four
 /// nodes), worst case (the lazy check fails). [`SCHEDULER_OPS_PAPER`] is the
 /// paper's structure.
 pub const SCHEDULER_OPS: &[Op] = &[

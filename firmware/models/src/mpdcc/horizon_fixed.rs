@@ -1,10 +1,10 @@
 //! Longer switching horizons on the 16-bit FPGA model: the sequence search
-//! of [`super::horizon`] over the frozen core's datapath (common terms,
-//! explorer, cost of [`super::fpga`]), plus the one new unit a longer
+//! of [`super::horizon_ref`] over the frozen core's datapath (common terms,
+//! explorer, cost of [`super::mpdcc_fixed`]), plus the one new unit a longer
 //! horizon needs: the **state advance** that turns a candidate's predicted
 //! output errors at `k + l` into the core's inputs at `k + l` (the next
 //! switching instant), from which the common terms are computed again.
-//! For SE this is `fpga::decide` exactly (tested bit for bit); the frozen
+//! For SE this is `mpdcc_fixed::decide` exactly (tested bit for bit); the frozen
 //! core is not changed.
 //!
 //! # State advance (fixed point; formats of docs/mpdcc-fpga.md)
@@ -12,7 +12,7 @@
 //! - output errors `e_j(k+l) = e_j(k) + Delta_j(l)`, Q2.13, saturated:
 //!   `Delta_j` from the one-step prediction for `l = 1` (the core's
 //!   `exact_first_step`), else from the search lanes' node polyline
-//!   ([`fpga::lane_change`]), the same interpolation that found `L*`;
+//!   ([`mpdcc_fixed::lane_change`]), the same interpolation that found `L*`;
 //! - rotation angle `theta = l T omega_s`: `T omega_s` is the core's
 //!   one-step register (f17), times `l` exactly, rounded to f14 (an 18-bit
 //!   word, `|theta| < 4` rad);
@@ -37,13 +37,13 @@
 //! a later RTL step, not a measured count.
 #![allow(clippy::needless_range_loop)]
 
-use super::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
+use super::controller::{Controller, CtrlState, Decision, DecisionKind, StateError};
 use super::cycles;
-use super::fixed::{sat16, F_C, F_SMALL};
-use super::fpga::{self, Coeffs, Common, FpgaConfig, FpgaError, FpgaMpdcc, Inputs, Nodes};
-use super::horizon::{
+use super::formats::{sat16, F_C, F_SMALL};
+use super::horizon_ref::{
     self, Ext, Horizon, HorizonStats, Search, SearchOptions, SequenceModel, STATS_EXPLORERS,
 };
+use super::mpdcc_fixed::{self, Coeffs, Common, FpgaConfig, FpgaError, Inputs, MpdccFixed, Nodes};
 use super::params::DriveParams;
 use crate::fixedpoint::rshift_round;
 
@@ -81,7 +81,7 @@ pub fn sin_cos_q14(theta: i64) -> (i64, i64) {
 fn nodes_of(k: &Coeffs, c: &Common, s: [u8; 3]) -> Nodes {
     core::array::from_fn(|i| {
         if i < k.nodes as usize {
-            fpga::node_deltas(k, c, s, i)
+            mpdcc_fixed::node_deltas(k, c, s, i)
         } else {
             [0; 7]
         }
@@ -91,11 +91,11 @@ fn nodes_of(k: &Coeffs, c: &Common, s: [u8; 3]) -> Nodes {
 /// The core's inputs `l >= 1` steps after the node `(x, c)` with `s` held.
 pub fn advance(k: &Coeffs, x: &Inputs, c: &Common, s: [u8; 3], l: u32) -> Inputs {
     let e: [i16; 7] = if l == 1 && k.exact_first_step {
-        let d1 = fpga::deltas(k, c, s, true);
+        let d1 = mpdcc_fixed::deltas(k, c, s, true);
         core::array::from_fn(|j| sat16(c.e0[j] as i64 + d1[j] as i64))
     } else {
         let nodes = nodes_of(k, c, s);
-        core::array::from_fn(|j| sat16(c.e0[j] as i64 + fpga::lane_change(k, &nodes, l, j)))
+        core::array::from_fn(|j| sat16(c.e0[j] as i64 + mpdcc_fixed::lane_change(k, &nodes, l, j)))
     };
     // theta = l T omega_s: f17 register times l, rounded to f14.
     let ks1 = fpga_one_step_theta(k, x);
@@ -131,7 +131,7 @@ pub fn advance(k: &Coeffs, x: &Inputs, c: &Common, s: [u8; 3], l: u32) -> Inputs
 
 /// `T omega_s`, f17 (the one-step rotation register of the common terms).
 fn fpga_one_step_theta(k: &Coeffs, x: &Inputs) -> i16 {
-    super::fixed::mul(k.c_s1, F_SMALL, x.omega_s, super::fixed::F_I, F_SMALL)
+    super::formats::mul(k.c_s1, F_SMALL, x.omega_s, super::formats::F_I, F_SMALL)
 }
 
 /// A node of the fixed-point search: the core's inputs and common terms.
@@ -161,12 +161,12 @@ impl SequenceModel for FixedModel<'_> {
     }
 
     fn extend(&mut self, node: &FixedNode, s: [u8; 3]) -> Ext<i32, i16> {
-        let r = fpga::explore(self.k, &node.c, node.x.s_prev, s);
+        let r = mpdcc_fixed::explore(self.k, &node.c, node.x.s_prev, s);
         let evn = if r.l_star == 0 {
             0
         } else {
             let nodes = nodes_of(self.k, &node.c, s);
-            sat16(node.c.e0[3] as i64 + fpga::lane_change(self.k, &nodes, r.l_star, 3))
+            sat16(node.c.e0[3] as i64 + mpdcc_fixed::lane_change(self.k, &nodes, r.l_star, 3))
         };
         Ext {
             l: r.l_star,
@@ -176,18 +176,18 @@ impl SequenceModel for FixedModel<'_> {
     }
 
     fn cost(&self, evn: i16, fs: u32, len: u32) -> u32 {
-        fpga::sequence_cost(self.k, fs, len, evn)
+        mpdcc_fixed::sequence_cost(self.k, fs, len, evn)
     }
 
     fn lower_bound(&self, fs: u32, len_max: u32) -> u32 {
         // recip is non-increasing in l and the terminal term is >= 0.
-        fpga::sequence_cost(self.k, fs, len_max.max(1), 0)
+        mpdcc_fixed::sequence_cost(self.k, fs, len_max.max(1), 0)
     }
 
     fn advance(&mut self, node: &FixedNode, s: [u8; 3], l: u32) -> FixedNode {
         let x = advance(self.k, &node.x, &node.c, s, l);
         FixedNode {
-            c: fpga::common_terms(self.k, &x),
+            c: mpdcc_fixed::common_terms(self.k, &x),
             x,
         }
     }
@@ -224,12 +224,12 @@ pub fn decide(
     horizon: Horizon,
     opt: SearchOptions,
     n: u32,
-    visit: &mut horizon::Visit<'_, u32>,
+    visit: &mut horizon_ref::Visit<'_, u32>,
 ) -> (Decision, Option<Search>, u32) {
-    let c = fpga::common_terms(k, x);
+    let c = mpdcc_fixed::common_terms(k, x);
     let s_prev = x.s_prev;
     let first = super::controller::candidates(s_prev).len() as u32;
-    if fpga::lazy_ok(k, &c, s_prev) {
+    if mpdcc_fixed::lazy_ok(k, &c, s_prev) {
         let d = Decision {
             s: s_prev,
             kind: DecisionKind::Kept,
@@ -240,21 +240,21 @@ pub fn decide(
     }
     let root = FixedNode { x: *x, c };
     let mut m = FixedModel { k };
-    let s = horizon::search(&mut m, &root, horizon, opt, visit);
+    let s = horizon_ref::search(&mut m, &root, horizon, opt, visit);
     let cyc = horizon_cycles(n, s.passes[0], &s.passes[1..]);
     (s.decision, Some(s), cyc)
 }
 
 /// The FPGA model with a longer switching horizon.
-pub struct HorizonFpga {
-    core: FpgaMpdcc,
+pub struct HorizonFixed {
+    core: MpdccFixed,
     horizon: Horizon,
     opt: SearchOptions,
     stats: HorizonStats,
 }
 
-impl HorizonFpga {
-    /// The frozen core's arithmetic ([`FpgaMpdcc::new`]) with `horizon`.
+impl HorizonFixed {
+    /// The frozen core's arithmetic ([`MpdccFixed::new`]) with `horizon`.
     pub fn new(
         p: &DriveParams,
         cfg: FpgaConfig,
@@ -262,7 +262,7 @@ impl HorizonFpga {
         opt: SearchOptions,
     ) -> Result<Self, FpgaError> {
         Ok(Self {
-            core: FpgaMpdcc::new(p, cfg)?,
+            core: MpdccFixed::new(p, cfg)?,
             horizon,
             opt,
             stats: HorizonStats::default(),
@@ -292,12 +292,12 @@ impl HorizonFpga {
     }
 }
 
-impl MpdccController for HorizonFpga {
+impl Controller for HorizonFixed {
     fn name(&self) -> &'static str {
         self.horizon.name()
     }
 
-    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
+    fn step(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
         let x = Inputs::quantize(st)?;
         let (d, s, _) = self.decide_raw(&x);
         self.stats.decisions += 1;
@@ -322,45 +322,11 @@ mod tests {
     extern crate std;
     use super::*;
     use crate::mpdcc::closed_loop::{self, LoopConfig};
-    use crate::mpdcc::fixed::{to_f64, F_I};
-    use crate::mpdcc::horizon::HorizonReference;
-    use crate::mpdcc::machine;
-    use crate::mpdcc::reference::Reference;
-
-    struct Rng(u64);
-    impl Rng {
-        fn unit(&mut self) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
-        fn range(&mut self, a: f64, b: f64) -> f64 {
-            a + (b - a) * self.unit()
-        }
-    }
-
-    fn random_state(p: &DriveParams, rng: &mut Rng) -> CtrlState {
-        let op = p.operating_point;
-        let th = rng.range(0.0, 2.0 * core::f64::consts::PI);
-        let i_ref = [libm::cos(th), libm::sin(th)];
-        let psi = machine::steady_state_flux(&p.machine, i_ref, op.omega_s_pu, op.omega_r_pu);
-        let d = 0.95 * p.controller.delta_i_pu;
-        CtrlState {
-            x_m: [
-                i_ref[0] + rng.range(-d, d),
-                i_ref[1] + rng.range(-d, d),
-                psi[0],
-                psi[1],
-            ],
-            v_n_pu: rng.range(-0.045, 0.045),
-            v_ph_pu: core::array::from_fn(|_| p.inverter.v_ph_ref_pu() + rng.range(-0.045, 0.045)),
-            omega_r_pu: op.omega_r_pu,
-            omega_s_pu: op.omega_s_pu,
-            i_ref_ab_pu: i_ref,
-            s_prev: core::array::from_fn(|_| (rng.unit() * 8.0) as u8),
-        }
-    }
+    use crate::mpdcc::formats::{to_f64, F_I};
+    use crate::mpdcc::horizon_ref::tests::random_state;
+    use crate::mpdcc::horizon_ref::HorizonRef;
+    use crate::mpdcc::mpdcc_ref::MpdccRef;
+    use crate::testrng::Rng;
 
     fn cfg(p: &DriveParams) -> FpgaConfig {
         FpgaConfig::core(&p.machine)
@@ -368,17 +334,17 @@ mod tests {
 
     /// SE through the sequence search is the frozen core: the same decision
     /// (position, kind, L*, candidate count) and the same cycle count as
-    /// `fpga::decide`, on random states.
+    /// `mpdcc_fixed::decide`, on random states.
     #[test]
     fn se_horizon_is_the_frozen_core_bit_for_bit() {
         let p = DriveParams::default();
-        let f = FpgaMpdcc::new(&p, cfg(&p)).unwrap();
+        let f = MpdccFixed::new(&p, cfg(&p)).unwrap();
         let mut rng = Rng(31);
         let mut searched = 0;
         for _ in 0..400 {
             let st = random_state(&p, &mut rng);
             let x = Inputs::quantize(&st).unwrap();
-            let want = fpga::decide(f.coeffs(), &x, 2);
+            let want = mpdcc_fixed::decide(f.coeffs(), &x, 2);
             let (d, s, _) = decide(
                 f.coeffs(),
                 &x,
@@ -412,9 +378,9 @@ mod tests {
     #[test]
     fn state_advance_matches_reference_prediction() {
         let p = DriveParams::default();
-        let f = FpgaMpdcc::new(&p, cfg(&p)).unwrap();
+        let f = MpdccFixed::new(&p, cfg(&p)).unwrap();
         let k = f.coeffs();
-        let mut r = Reference::new(&p).unwrap();
+        let mut r = MpdccRef::new(&p).unwrap();
         let mut rng = Rng(5);
         let mut worst = [0.0f64; 3];
         for n in 0..400 {
@@ -428,7 +394,7 @@ mod tests {
             }
             let l = [1, 5, 17, 40][n % 4].min(l_star);
             let x = Inputs::quantize(&st).unwrap();
-            let c = fpga::common_terms(k, &x);
+            let c = mpdcc_fixed::common_terms(k, &x);
             let a = advance(k, &x, &c, s, l);
             let b = r.predict(&st, s, l).unwrap();
             let di = (to_f64(a.i_ab[0], F_I) - b.x_m[0])
@@ -467,8 +433,8 @@ mod tests {
             measure_periods: 2,
         };
         for h in Horizon::ALL {
-            let mut r = HorizonReference::new(&p, h).unwrap();
-            let mut f = HorizonFpga::new(&p, cfg(&p), h, SearchOptions::default()).unwrap();
+            let mut r = HorizonRef::new(&p, h).unwrap();
+            let mut f = HorizonFixed::new(&p, cfg(&p), h, SearchOptions::default()).unwrap();
             let res = closed_loop::run(&p, &lc, &mut r, Some(&mut f), &mut |_| {}).unwrap();
             let fs = f.stats();
             std::println!(

@@ -20,23 +20,6 @@
 
 use super::params::MachineParams;
 
-/// Amplitude-invariant Clarke transform `K` of eq. (1): abc -> alpha beta.
-#[inline]
-pub fn clarke(v: [f64; 3]) -> [f64; 2] {
-    const S3_2: f64 = 0.866_025_403_784_438_6;
-    [
-        (2.0 / 3.0) * (v[0] - 0.5 * v[1] - 0.5 * v[2]),
-        (2.0 / 3.0) * S3_2 * (v[1] - v[2]),
-    ]
-}
-
-/// Inverse Clarke `K^-1` of eq. (1): alpha beta -> abc (zero common mode).
-#[inline]
-pub fn inv_clarke(v: [f64; 2]) -> [f64; 3] {
-    const S3_2: f64 = 0.866_025_403_784_438_6;
-    [v[0], -0.5 * v[0] + S3_2 * v[1], -0.5 * v[0] - S3_2 * v[1]]
-}
-
 /// Continuous-time model `dx/dt = F x + G v_s,ab` (normalized time).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Continuous {
@@ -218,16 +201,6 @@ mod tests {
 
     fn params() -> MachineParams {
         MachineParams::default()
-    }
-
-    #[test]
-    fn clarke_round_trip_and_values() {
-        let ab = clarke([1.0, -0.5, -0.5]);
-        assert!((ab[0] - 1.0).abs() < 1e-15 && ab[1].abs() < 1e-15);
-        let abc = inv_clarke([0.3, -0.8]);
-        let back = clarke(abc);
-        assert!((back[0] - 0.3).abs() < 1e-15 && (back[1] + 0.8).abs() < 1e-15);
-        assert!((abc.iter().sum::<f64>()).abs() < 1e-15);
     }
 
     #[test]

@@ -134,7 +134,8 @@ impl Plant {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mpdcc::machine::{clarke, inv_clarke, Discrete};
+    use crate::frames::{clarke, inv_clarke};
+    use crate::mpdcc::machine::Discrete;
 
     /// With huge capacitors the plant's machine part must equal the
     /// machine-only exact discretization fed with the nominal voltages.
@@ -157,7 +158,7 @@ mod tests {
             ts,
         );
         let v = anpc::output_voltages(s, p.inverter.v_dc_pu, 0.0, z.v_ph_pu);
-        let x = d.step(&z.x_m, clarke(v));
+        let x = d.step(&z.x_m, clarke(v).into());
         for i in 0..4 {
             assert!((x[i] - y.x_m[i]).abs() < 1e-12);
         }
@@ -178,8 +179,8 @@ mod tests {
         let s = [2, 5, 6];
         let y = plant.step(&z, s);
         let ts = p.controller.ts_pu(&p.machine);
-        let i0 = inv_clarke([z.x_m[0], z.x_m[1]]);
-        let i1 = inv_clarke([y.x_m[0], y.x_m[1]]);
+        let i0 = inv_clarke(z.x_m[0], z.x_m[1]);
+        let i1 = inv_clarke(y.x_m[0], y.x_m[1]);
         let im: [f64; 3] = core::array::from_fn(|x| 0.5 * (i0[x] + i1[x]));
         let mut xi = [z.v_n_pu, z.v_ph_pu[0], z.v_ph_pu[1], z.v_ph_pu[2]];
         anpc::inverter_euler_step(&mut xi, s, im, ts, p.inverter.c_dc_pu, p.inverter.c_ph_pu);

@@ -61,10 +61,10 @@
 //!   (voltage-limited: 8.2 A needs at least 190 us at 27.7 V).
 //! - Carrier 16 kHz: 32 k gate transitions per leg per second.
 
+use super::closed_loop::{Controller, Measurement};
 use super::frames::{clarke, inv_park_sc, leg_voltage_alpha_beta, park_sc, sc_add};
 use super::params::{check_nonneg, check_pos, MotorParams, ParamError};
 use super::plant::{zoh_alpha_beta_with, Actuation, ZohTrig};
-use super::sim::{Controller, Measurement};
 use super::svpwm;
 
 /// FOC settings.
@@ -370,10 +370,10 @@ impl Controller for Foc {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::pmsm::closed_loop::{run, TracePoint};
     use crate::pmsm::metrics::{overshoot_percent, settling_band, settling_time_s};
-    use crate::pmsm::params::DriveParams;
+    use crate::pmsm::params::SamplingParams;
     use crate::pmsm::plant::{MechanicalMode, Plant};
-    use crate::pmsm::sim::{run, TracePoint};
     use std::vec::Vec;
 
     /// The step's shortcuts (one sincos per horizon, angle addition) give
@@ -422,9 +422,14 @@ mod tests {
         let n = libm::round(t_end / fp.period_s) as u64;
         let mut tr = Vec::new();
         let r = |t: f64| if t >= T_STEP { t1 } else { 0.0 };
-        run(&mut plant, &mut foc, &DriveParams::default(), n, r, |p| {
-            tr.push(*p)
-        })
+        run(
+            &mut plant,
+            &mut foc,
+            &SamplingParams::default(),
+            n,
+            r,
+            |p| tr.push(*p),
+        )
         .unwrap();
         (tr, foc)
     }
@@ -435,7 +440,7 @@ mod tests {
         let mut foc = Foc::new(&MotorParams::default(), &fp).unwrap();
         let n = libm::round(t_end / fp.period_s) as u64;
         let mut tr = Vec::new();
-        run(plant, &mut foc, &DriveParams::default(), n, r, |p| {
+        run(plant, &mut foc, &SamplingParams::default(), n, r, |p| {
             tr.push(*p)
         })
         .unwrap();

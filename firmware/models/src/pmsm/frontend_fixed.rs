@@ -27,8 +27,8 @@
 //! |error| <= 2.0e-5 = 1.32 COEF LSB; measured over 2^20 angles by
 //! `tests::trig_error_is_within_the_written_bound` (and the `rtl-check
 //! frontend` summary).
-use super::mpdtc_fixed::{sat18, sat25, FixedInputs, FRAC};
-use crate::fixedpoint::rshift_round;
+use super::mpdtc_fixed::{rnd, sat18, sat25, FixedInputs, FRAC};
+use crate::fixedpoint::{rshift_round, sign_extend};
 
 /// log2 of the sine table length.
 pub const SIN_BITS: u32 = 10;
@@ -112,12 +112,7 @@ pub struct FrontendOutputs {
 /// The low `bits` bits of `x` as a signed value (a port of that width).
 #[inline]
 fn sx(x: i32, bits: u32) -> i64 {
-    ((x as i64) << (64 - bits)) >> (64 - bits)
-}
-
-#[inline]
-fn rnd(x: i64) -> i32 {
-    sat25(rshift_round(x, FRAC))
+    sign_extend(x as i64, bits)
 }
 
 /// One control period of the front end. Pure, total (any register values).

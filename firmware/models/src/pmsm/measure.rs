@@ -18,7 +18,7 @@
 use super::plant::{wrap_2pi, Plant};
 use core::f64::consts::PI;
 
-/// Maximum averaging length supported (matches `DriveParams::validate`).
+/// Maximum averaging length supported (matches `SamplingParams::validate`).
 pub const MAX_AVERAGE_N: usize = 64;
 
 /// What a controller receives at a control instant.

@@ -2,11 +2,11 @@
 //! measurement front end (Clarke/Park of the averaged phase currents, angle
 //! advance for the measurement age) in front of [`mpdtc_ref::decide`].
 
+use super::closed_loop::{Actuation, Controller, Measurement};
 use super::frames::{clarke, park};
 use super::mpdtc_fixed::{self, FixedInputs, FixedParams, FixedState};
 use super::mpdtc_ref::{self, MpdtcConfig, MpdtcInputs, MpdtcOutputs, MpdtcState};
 use super::params::ParamError;
-use super::sim::{Actuation, Controller, Measurement};
 
 /// Age of the averaged measurement at the control instant, in control periods:
 /// the mean of `n` samples spaced `T / m` (newest at `t_k`) describes the

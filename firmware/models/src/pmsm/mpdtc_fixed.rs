@@ -46,7 +46,7 @@
 
 use super::mpdtc_ref::{CostNorm, MpdtcConfig, SWITCH_WEIGHT};
 use super::params::ParamError;
-use crate::fixedpoint::rshift_round;
+use crate::fixedpoint::{round_scaled, rshift_round, saturate};
 
 /// Width of CUR.
 pub const CUR_BITS: u32 = 25;
@@ -60,20 +60,17 @@ pub const MAG_SHIFT: u32 = 13;
 pub const CSQ_SHIFT: u32 = 8;
 
 const CUR_MAX: i64 = (1 << (CUR_BITS - 1)) - 1;
-const CUR_MIN: i64 = -(1 << (CUR_BITS - 1));
-const S18_MAX: i64 = (1 << 17) - 1;
-const S18_MIN: i64 = -(1 << 17);
 
 /// Saturate to 25 bits.
 #[inline]
 pub fn sat25(x: i64) -> i32 {
-    x.clamp(CUR_MIN, CUR_MAX) as i32
+    saturate(x, CUR_BITS) as i32
 }
 
 /// Saturate to 18 bits.
 #[inline]
 pub fn sat18(x: i64) -> i32 {
-    x.clamp(S18_MIN, S18_MAX) as i32
+    saturate(x, 18) as i32
 }
 
 /// MAC expression: `sat25(rnd16(sum(c_i * x_i) + (y << 16)))`, COEF x CUR.
@@ -115,7 +112,7 @@ pub fn clamp(x: i32, lim: i32) -> i32 {
 /// Quantize an `f64` to `frac` fraction bits (round to nearest), checking
 /// the signed `bits` range. Host side only (parameter registers, inputs).
 pub fn quantize(x: f64, frac: u32, bits: u32, field: &'static str) -> Result<i32, ParamError> {
-    let v = libm::round(x * (1u64 << frac) as f64);
+    let v = round_scaled(x, frac);
     let max = ((1i64 << (bits - 1)) - 1) as f64;
     if !(v.is_finite() && v >= -max - 1.0 && v <= max) {
         return Err(ParamError {
@@ -131,7 +128,7 @@ pub fn quantize_sat(x: f64, frac: u32, bits: u32) -> i32 {
     if x.is_nan() {
         return 0;
     }
-    let v = libm::round(x * (1u64 << frac) as f64);
+    let v = round_scaled(x, frac);
     let max = ((1i64 << (bits - 1)) - 1) as f64;
     v.clamp(-max - 1.0, max) as i32
 }
@@ -285,7 +282,7 @@ pub struct FixedOutputs {
 
 /// Rounds an exact 32-fraction-bit sum to CUR: `sat25((x + 2^15) >> 16)`.
 #[inline]
-fn rnd(x: i64) -> i32 {
+pub fn rnd(x: i64) -> i32 {
     sat25(rshift_round(x, FRAC))
 }
 

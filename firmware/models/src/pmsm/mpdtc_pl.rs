@@ -10,11 +10,11 @@
 //! [`ADC_A_PER_COUNT`] A per count with zero offset, each rounded to the
 //! nearest count (ideal otherwise: the plant and its averaging are exact).
 
+use super::closed_loop::{Actuation, Controller, Measurement};
 use super::frontend_fixed::{frontend, FrontendInputs, FrontendParams};
 use super::mpdtc_fixed::{self, FixedParams, FixedState};
 use super::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use super::params::{DriveParams, MotorParams, ParamError};
-use super::sim::{Actuation, Controller, Measurement};
+use super::params::{MotorParams, ParamError, SamplingParams};
 use core::f64::consts::TAU;
 
 /// Encoder counts per mechanical revolution (`ENC_CPR`).
@@ -67,12 +67,12 @@ impl PlRate {
     }
 
     /// The measurement chain of this rate.
-    pub fn drive(&self) -> DriveParams {
-        DriveParams {
+    pub fn drive(&self) -> SamplingParams {
+        SamplingParams {
             adc_sample_rate_hz: ADC_AVERAGE_N as f64 / self.control_period_s,
             adc_average_n: ADC_AVERAGE_N,
             control_period_s: self.control_period_s,
-            ..DriveParams::default()
+            ..SamplingParams::default()
         }
     }
 }
@@ -233,10 +233,10 @@ pub fn slew_bandwidth_bound_hz(model: &MotorParams, amp_nm: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::pmsm::closed_loop;
     use crate::pmsm::metrics;
     use crate::pmsm::mpdtc_ctrl::MpdtcFixed;
     use crate::pmsm::plant::{MechanicalMode, Plant};
-    use crate::pmsm::sim;
     use std::vec::Vec;
 
     fn cfg(rate: PlRate) -> MpdtcConfig {
@@ -266,7 +266,7 @@ mod tests {
         let n = libm::round(30e-3 / rate.control_period_s) as u64;
         let mut w: Vec<(f64, f64)> = Vec::new();
         let (mut acc, mut k) = (0.0, 0);
-        sim::run(&mut plant, c, &rate.drive(), n, r, |p| {
+        closed_loop::run(&mut plant, c, &rate.drive(), n, r, |p| {
             acc += p.torque_nm;
             k += 1;
             if k == ADC_AVERAGE_N {

@@ -1,12 +1,12 @@
 //! Closed-loop and cross-implementation tests of the MPDTC (reference and
-//! fixed-point core) on the PMSM plant and runner (`super::sim`).
+//! fixed-point core) on the PMSM plant and runner (`super::closed_loop`).
 
+use super::closed_loop::{self, Controller};
 use super::mpdtc_ctrl::{fixed_inputs, MpdtcFixed, MpdtcRef, MpdtcShadow};
 use super::mpdtc_fixed::{self as fx, FixedParams, FixedState};
 use super::mpdtc_ref::{self, MpdtcConfig, MpdtcInputs, MpdtcParams, MpdtcState};
-use super::params::{DriveParams, MotorParams};
+use super::params::{MotorParams, SamplingParams};
 use super::plant::{MechanicalMode, Plant};
-use super::sim::{self, Controller};
 
 fn cfg(p: MpdtcParams) -> MpdtcConfig {
     MpdtcConfig::new(MotorParams::default(), p).unwrap()
@@ -195,10 +195,10 @@ fn fixed_agrees_with_reference_over_fig10_run() {
     )
     .unwrap();
     let mut sh = MpdtcShadow::new(cfg(MpdtcParams::default())).unwrap();
-    sim::run(
+    closed_loop::run(
         &mut plant,
         &mut sh,
-        &DriveParams::default(),
+        &SamplingParams::default(),
         2560,
         toggle_ref,
         |_| {},
@@ -215,10 +215,10 @@ fn mean_torque<C: Controller>(ctrl: &mut C, w_e: f64, t_a: f64, t_b: f64) -> f64
     let mut plant = Plant::new(&m, 0.0, MechanicalMode::ConstantSpeed, w_e).unwrap();
     let n = (t_b / ctrl.period_s()).round() as u64;
     let (mut s, mut k) = (0.0, 0u32);
-    sim::run(
+    closed_loop::run(
         &mut plant,
         ctrl,
-        &DriveParams::default(),
+        &SamplingParams::default(),
         n,
         |_| 0.4,
         |p| {
@@ -332,10 +332,10 @@ fn block_means<C: Controller>(ctrl: &mut C) -> Vec<f64> {
     )
     .unwrap();
     let mut blocks = vec![0.0; 40];
-    sim::run(
+    closed_loop::run(
         &mut plant,
         ctrl,
-        &DriveParams::default(),
+        &SamplingParams::default(),
         2560,
         toggle_ref,
         |p| {
@@ -377,12 +377,12 @@ fn dead_time_is_compensated() {
         let m = MotorParams::default();
         let mut plant = Plant::new(&m, dt, MechanicalMode::ConstantSpeed, 1000.0).unwrap();
         let mut c = MpdtcRef::new(cfg(MpdtcParams::default()));
-        let d = DriveParams {
+        let d = SamplingParams {
             dead_time_s: dt,
             ..Default::default()
         };
         let (mut s, mut n) = (0.0, 0);
-        sim::run(
+        closed_loop::run(
             &mut plant,
             &mut c,
             &d,
@@ -405,7 +405,7 @@ fn dead_time_is_compensated() {
 /// last 4 of 4 samples per period: the mean instant is 1.5 ADC periods old).
 #[test]
 fn default_measurement_age_matches_the_drive() {
-    let d = DriveParams::default();
+    let d = SamplingParams::default();
     let m = super::params::samples_per_period(d.control_period_s, d.adc_sample_rate_hz).unwrap();
     let age = super::mpdtc_ctrl::measurement_age_periods(d.adc_average_n, m as u32);
     assert_eq!(age, 0.375);

@@ -100,7 +100,7 @@ impl MotorParams {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "std", serde(default, deny_unknown_fields))]
-pub struct DriveParams {
+pub struct SamplingParams {
     /// ADC sample rate, Hz (paper: 256 kHz).
     pub adc_sample_rate_hz: f64,
     /// Number of consecutive ADC samples averaged into one measurement
@@ -117,7 +117,7 @@ pub struct DriveParams {
     pub dead_time_s: f64,
 }
 
-impl Default for DriveParams {
+impl Default for SamplingParams {
     fn default() -> Self {
         Self {
             adc_sample_rate_hz: 256_000.0,
@@ -129,7 +129,7 @@ impl Default for DriveParams {
     }
 }
 
-impl DriveParams {
+impl SamplingParams {
     /// Checks ranges: rates and periods finite and > 0, averaging 1..=64,
     /// delay 0..=2, dead time below a quarter control period, and the control
     /// period an integer number (>= averaging) of ADC sample periods.
@@ -187,7 +187,7 @@ mod tests {
     fn defaults_are_valid_and_match_table_2() {
         let m = MotorParams::default();
         m.validate().unwrap();
-        DriveParams::default().validate().unwrap();
+        SamplingParams::default().validate().unwrap();
         // Terminal values of Table 2 halved (star equivalent).
         assert_eq!(m.r_s_ohm * 2.0, 1.11);
         assert!((m.l_d_h * 2.0 - 1.28e-3).abs() < 1e-15);
@@ -197,7 +197,7 @@ mod tests {
         assert!((psi - m.psi_pm_wb).abs() < 1e-7, "{psi}");
         assert!((PSI_PM_FROM_KT_WB - 0.010_762).abs() < 1e-6);
         assert_eq!(
-            samples_per_period(DriveParams::default().control_period_s, 256e3),
+            samples_per_period(SamplingParams::default().control_period_s, 256e3),
             Some(4)
         );
         assert_eq!(samples_per_period(1.0 / 16e3, 256e3), Some(16));
@@ -243,27 +243,27 @@ mod tests {
             assert!(m.validate().is_err(), "case {i}");
         }
         let bad = [
-            DriveParams {
+            SamplingParams {
                 adc_sample_rate_hz: f64::NAN,
                 ..Default::default()
             },
-            DriveParams {
+            SamplingParams {
                 adc_average_n: 0,
                 ..Default::default()
             },
-            DriveParams {
+            SamplingParams {
                 control_period_s: 1.0 / 60e3,
                 ..Default::default()
             },
-            DriveParams {
+            SamplingParams {
                 control_period_s: 1.0 / 256e3,
                 ..Default::default()
             },
-            DriveParams {
+            SamplingParams {
                 dead_time_s: 5e-6,
                 ..Default::default()
             },
-            DriveParams {
+            SamplingParams {
                 computation_delay_periods: 3,
                 ..Default::default()
             },

@@ -5,14 +5,14 @@
 //! cos/sin error against libm, in COEF LSB). Exit status 1 on any mismatch,
 //! 2 on bad arguments.
 //! `rtl-check mpdcc-lane --seed S --vectors N`: the same for the MPDCC
-//! explorer's search lane (`mpdcc_lane` against `models::mpdcc::fpga::lane`).
+//! explorer's search lane (`mpdcc_lane` against `models::mpdcc::mpdcc_fixed::lane`).
 //! `rtl-check mpdcc --seed S --vectors N [--explorers N] [--ii I]`: N
-//! decisions through `mpdcc_core` against `FpgaMpdcc::decide_raw` (decision,
+//! decisions through `mpdcc_core` against `MpdccFixed::decide_raw` (decision,
 //! kind, `L*`, candidates, `J`, `J_dl`, cycle count). Default: `pl_top`'s
 //! configuration (`regmap::MPDCC_EXPLORERS` explorers, `II =
 //! regmap::MPDCC_II`, shared search lanes); `--ii 1` the full-rate datapath.
 //! `rtl-check mpdcc-explorer --seed S --vectors N`: N decision states, every
-//! candidate through `mpdcc_explorer` against `models::mpdcc::fpga::explore`.
+//! candidate through `mpdcc_explorer` against `models::mpdcc::mpdcc_fixed::explore`.
 use std::process::ExitCode;
 use std::time::Instant;
 

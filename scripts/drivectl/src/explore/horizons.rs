@@ -6,12 +6,12 @@
 //! (mean, worst) and the core cycles per decision from the cycle model for
 //! N = 1, 2, 4 explorers. Writes `horizons.csv`, `horizons_equal_thd.csv`,
 //! `horizons_cycles.csv` and `horizons_fsw_thd.svg` to `--out`.
-use crate::paper_mpdcc::svg;
+use crate::plot;
 use anyhow::{anyhow, bail, Context, Result};
 use models::mpdcc::closed_loop::{self, LoopConfig};
-use models::mpdcc::fpga::FpgaConfig;
-use models::mpdcc::horizon::{Horizon, HorizonReference, SearchOptions, STATS_EXPLORERS};
-use models::mpdcc::horizon_fixed::{self, HorizonFpga, ADVANCE_CYCLES};
+use models::mpdcc::horizon_fixed::{self, HorizonFixed, ADVANCE_CYCLES};
+use models::mpdcc::horizon_ref::{Horizon, HorizonRef, SearchOptions, STATS_EXPLORERS};
+use models::mpdcc::mpdcc_fixed::FpgaConfig;
 use models::mpdcc::params::DriveParams;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -78,8 +78,8 @@ pub fn run_point(
         measure_periods: periods,
     };
     let fc = FpgaConfig::core(&p.machine);
-    let mk_f = || HorizonFpga::new(&p, fc, h, opt).map_err(|e| anyhow!("{e}"));
-    let mut r = HorizonReference::with_options(&p, h, opt).map_err(|e| anyhow!("{e:?}"))?;
+    let mk_f = || HorizonFixed::new(&p, fc, h, opt).map_err(|e| anyhow!("{e}"));
+    let mut r = HorizonRef::with_options(&p, h, opt).map_err(|e| anyhow!("{e:?}"))?;
     let mut shadow = mk_f()?;
     let rr = closed_loop::run(&p, &cfg, &mut r, Some(&mut shadow), &mut |_| {})
         .map_err(|e| anyhow!("{e:?}"))?;
@@ -293,7 +293,7 @@ pub fn run(
         for fpga in [false, true] {
             let mut c = curve(h, fpga);
             c.sort_by(|a, b| a.0.total_cmp(&b.0));
-            series.push(svg::Series {
+            series.push(plot::Series {
                 name: format!(
                     "{} {}",
                     h.name(),
@@ -313,13 +313,13 @@ pub fn run(
     write(
         out,
         "horizons_fsw_thd.svg",
-        svg::line_plot(
+        plot::line_plot(
             "MPDCC switching horizons: f_sw per semiconductor vs current THD",
             "current THD (%)",
             "f_sw (Hz)",
             &series,
             true,
-        ),
+        )?,
     )?;
     println!("\nwrote {}/horizons.csv, horizons_equal_thd.csv, horizons_cycles.csv, horizons_fsw_thd.svg", out.display());
     Ok(())

@@ -6,15 +6,15 @@
 //! `L*` the reference's exact extension gives that candidate, and when both
 //! switch to different positions the two choices are priced with the
 //! reference's cost (eqs. 10-12).
-use models::mpdcc::controller::{CtrlState, Decision, DecisionKind, MpdccController, StateError};
-use models::mpdcc::fpga::FpgaMpdcc;
-use models::mpdcc::reference::Reference;
+use models::mpdcc::controller::{Controller, CtrlState, Decision, DecisionKind, StateError};
+use models::mpdcc::mpdcc_fixed::MpdccFixed;
+use models::mpdcc::mpdcc_ref::MpdccRef;
 use serde::Serialize;
 
 /// Drives with the reference, watches the FPGA model.
 pub struct Spy {
-    pub reference: Reference,
-    pub fpga: FpgaMpdcc,
+    pub reference: MpdccRef,
+    pub fpga: MpdccFixed,
     pub a: Anatomy,
 }
 
@@ -93,14 +93,14 @@ impl Anatomy {
     }
 }
 
-impl MpdccController for Spy {
+impl Controller for Spy {
     fn name(&self) -> &'static str {
         "reference (watching the FPGA model)"
     }
 
-    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
-        let d = self.reference.decide(st)?;
-        let f = self.fpga.decide(st)?;
+    fn step(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
+        let d = self.reference.step(st)?;
+        let f = self.fpga.step(st)?;
         self.a.steps += 1;
         if f.kind == DecisionKind::Optimal {
             let t = self.reference.evaluate(st, f.s)?;

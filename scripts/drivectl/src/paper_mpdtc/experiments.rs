@@ -8,11 +8,11 @@
 use super::metrics;
 use super::runs::{self, Mech, Trace, Window};
 use anyhow::{anyhow, Result};
+use models::pmsm::closed_loop::Controller;
 use models::pmsm::foc::{Foc, FocParams};
 use models::pmsm::mpdtc_ctrl::{MpdtcFixed, MpdtcShadow};
 use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use models::pmsm::params::{DriveParams, MotorParams};
-use models::pmsm::sim::Controller;
+use models::pmsm::params::{MotorParams, SamplingParams};
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -201,7 +201,7 @@ fn iq_settling(tr: &Trace) -> Option<f64> {
 pub type Table3 = (Vec<Table3Row>, Vec<(f64, Trace)>);
 
 /// Table 3: T_tol sweep (p = 0.1), 0.4 N m step at 0.1 ms, 2.1 ms run.
-pub fn table3(drive: &DriveParams) -> Result<Table3> {
+pub fn table3(drive: &SamplingParams) -> Result<Table3> {
     let paper = [
         (0.02, 7.89, 0.12),
         (0.04, 4.28, 0.12),
@@ -241,7 +241,7 @@ pub fn table3(drive: &DriveParams) -> Result<Table3> {
 pub type Table4 = (Vec<Table4Row>, Vec<(f64, Trace)>);
 
 /// Table 4: p sweep (T_tol = 0.08 N m); f_sw over a 10 ms run with the step.
-pub fn table4_traces(drive: &DriveParams) -> Result<Table4> {
+pub fn table4_traces(drive: &SamplingParams) -> Result<Table4> {
     let paper = [
         (0.02, 1.07, 16.7),
         (0.1, 1.06, 14.0),
@@ -336,7 +336,7 @@ pub fn toggle_metrics(tr: &Trace) -> StepMetrics {
 
 /// Fig. 10 with MPDTC (reference in the loop, fixed core in its shadow) and
 /// FOC, plus the fixed core in the loop for the trajectory comparison.
-pub fn toggle(drive: &DriveParams) -> Result<(Trace, Trace, Agreement)> {
+pub fn toggle(drive: &SamplingParams) -> Result<(Trace, Trace, Agreement)> {
     let motor = MotorParams::default();
     let cfg = mpdtc_cfg(MpdtcParams::default())?;
     let mut sh = MpdtcShadow::new(cfg).map_err(|e| anyhow!("{e}"))?;
@@ -394,7 +394,7 @@ pub const BODE_AMP_NM: f64 = 0.3;
 /// before the window end). The gain therefore includes the measurement's
 /// averaging (-0.08 dB at 5 kHz, -0.21 dB at 8 kHz), not its delay.
 pub fn bode<C: Controller>(
-    drive: &DriveParams,
+    drive: &SamplingParams,
     mut make: impl FnMut() -> Result<C>,
 ) -> Result<Bode> {
     let motor = MotorParams::default();
@@ -471,7 +471,7 @@ pub fn bandwidth(p: &[BodePoint]) -> Option<f64> {
 
 /// Runs everything.
 pub fn all() -> Result<Results> {
-    let drive = DriveParams::default();
+    let drive = SamplingParams::default();
     let (table3, table3_traces) = table3(&drive)?;
     let (table4, table4_traces) = table4_traces(&drive)?;
     let (toggle_mpdtc, toggle_foc, agreement) = toggle(&drive)?;

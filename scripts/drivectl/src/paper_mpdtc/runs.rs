@@ -1,10 +1,10 @@
-//! Closed-loop runs on the PMSM plant and runner (`models::pmsm::sim`),
+//! Closed-loop runs on the PMSM plant and runner (`models::pmsm::closed_loop`),
 //! reduced to 15.625 us windows.
 
 use anyhow::{anyhow, Result};
-use models::pmsm::params::{DriveParams, MotorParams};
+use models::pmsm::closed_loop::{self, Controller, RunSummary};
+use models::pmsm::params::{MotorParams, SamplingParams};
 use models::pmsm::plant::{MechanicalMode, Plant};
-use models::pmsm::sim::{self, Controller, RunSummary};
 
 /// ADC samples per averaging window (paper: 4 at 256 kHz = one MPDTC period).
 pub const WINDOW_SAMPLES: usize = 4;
@@ -44,7 +44,7 @@ pub enum Mech {
 pub fn run<C: Controller + ?Sized>(
     ctrl: &mut C,
     motor: &MotorParams,
-    drive: &DriveParams,
+    drive: &SamplingParams,
     mech: Mech,
     duration_s: f64,
     r: impl FnMut(f64) -> f64,
@@ -62,7 +62,7 @@ pub fn run<C: Controller + ?Sized>(
     let mut windows = Vec::with_capacity((duration_s * 64e3) as usize + 8);
     let mut acc = Window::default();
     let mut k = 0usize;
-    let summary = sim::run(&mut plant, ctrl, drive, n, r, |p| {
+    let summary = closed_loop::run(&mut plant, ctrl, drive, n, r, |p| {
         acc.i_d_a += p.i_d_a;
         acc.i_q_a += p.i_q_a;
         acc.torque_nm += p.torque_nm;

@@ -20,11 +20,12 @@
 
 use super::anpc;
 use super::controller::{
-    candidates, candidates_reduced, rotate, Bounds, CtrlState, Decision, DecisionKind,
-    MpdccController, StateError,
+    candidates, candidates_reduced, rotate, Bounds, Controller, CtrlState, Decision, DecisionKind,
+    StateError,
 };
-use super::machine::{self, clarke, inv_clarke, Discrete};
+use super::machine::{self, Discrete};
 use super::params::{DriveParams, ParamError};
+use crate::frames::{clarke, inv_clarke};
 
 /// Largest supported `N_bar` (see `ControllerParams::validate`).
 const MAX_H: usize = 1024;
@@ -41,7 +42,7 @@ pub struct Extension {
 }
 
 /// The idealized MPDCC controller.
-pub struct Reference {
+pub struct MpdccRef {
     p: DriveParams,
     bounds: Bounds,
     ts_pu: f64,
@@ -53,7 +54,7 @@ pub struct Reference {
     reduced: bool,
 }
 
-impl Reference {
+impl MpdccRef {
     /// Builds the controller; rejects invalid parameters.
     pub fn new(p: &DriveParams) -> Result<Self, ParamError> {
         p.validate()?;
@@ -96,10 +97,10 @@ impl Reference {
         let (c, s) = (libm::cos(th), libm::sin(th));
         let h = self.p.controller.horizon_max_steps as usize;
         let mut i = st.i_ref_ab_pu;
-        self.iref[0] = inv_clarke(i);
+        self.iref[0] = inv_clarke(i[0], i[1]);
         for l in 1..=h {
             i = rotate(i, c, s);
-            self.iref[l] = inv_clarke(i);
+            self.iref[l] = inv_clarke(i[0], i[1]);
         }
     }
 
@@ -108,7 +109,7 @@ impl Reference {
     fn extend(&self, st: &CtrlState, s: [u8; 3], max_l: u32) -> Extension {
         let mut xm = st.x_m;
         let mut xi = [st.v_n_pu, st.v_ph_pu[0], st.v_ph_pu[1], st.v_ph_pu[2]];
-        let i0 = inv_clarke([xm[0], xm[1]]);
+        let i0 = inv_clarke(xm[0], xm[1]);
         let e0 = [
             self.iref[0][0] - i0[0],
             self.iref[0][1] - i0[1],
@@ -122,7 +123,7 @@ impl Reference {
         };
         for l in 1..=max_l as usize {
             self.model_step(&mut xm, &mut xi, s);
-            let i_abc = inv_clarke([xm[0], xm[1]]);
+            let i_abc = inv_clarke(xm[0], xm[1]);
             let r = &self.iref[l];
             let e = [r[0] - i_abc[0], r[1] - i_abc[1], r[2] - i_abc[2]];
             let w = self.bounds.worst_excess(e, xi[0], [xi[1], xi[2], xi[3]]);
@@ -144,13 +145,13 @@ impl Reference {
     /// `[v_n, v_ph,abc]` (currents held over the step).
     fn model_step(&self, xm: &mut [f64; 4], xi: &mut [f64; 4], s: [u8; 3]) {
         let inv = &self.p.inverter;
-        let i_abc = inv_clarke([xm[0], xm[1]]);
+        let i_abc = inv_clarke(xm[0], xm[1]);
         let v = anpc::output_voltages(s, inv.v_dc_pu, xi[0], [xi[1], xi[2], xi[3]]);
         anpc::inverter_euler_step(xi, s, i_abc, self.ts_pu, inv.c_dc_pu, inv.c_ph_pu);
-        *xm = self.disc.step(xm, clarke(v));
+        *xm = self.disc.step(xm, clarke(v).into());
     }
 
-    // --- switching-horizon hook (used by `super::horizon`) ---
+    // --- switching-horizon hook (used by `super::horizon_ref`) ---
 
     /// The controller model's state `l` steps after `st` with `s` held:
     /// machine and inverter states from [`Self::model_step`], the current
@@ -197,7 +198,7 @@ impl Reference {
     }
 }
 
-impl MpdccController for Reference {
+impl Controller for MpdccRef {
     fn name(&self) -> &'static str {
         if self.reduced {
             "reference (64 candidates)"
@@ -206,7 +207,7 @@ impl MpdccController for Reference {
         }
     }
 
-    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
+    fn step(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
         st.check()?;
         self.prepare(st);
         // Lazy evaluation (Algorithm 1, line 1).
@@ -221,7 +222,7 @@ impl MpdccController for Reference {
         }
         let (full, red);
         let cands: &[[u8; 3]] = if self.reduced {
-            let i_abc = inv_clarke([st.x_m[0], st.x_m[1]]);
+            let i_abc = inv_clarke(st.x_m[0], st.x_m[1]);
             red = candidates_reduced(st.s_prev, i_abc, st.v_ph_pu, self.bounds.v_ph_ref);
             &red
         } else {
@@ -299,8 +300,9 @@ mod tests {
         };
         let y = plant.step(&z, s);
         let th = st.omega_s_pu * p.controller.ts_pu(&p.machine);
-        let r = inv_clarke(rotate(st.i_ref_ab_pu, libm::cos(th), libm::sin(th)));
-        let i = inv_clarke([y.x_m[0], y.x_m[1]]);
+        let [ra, rb] = rotate(st.i_ref_ab_pu, libm::cos(th), libm::sin(th));
+        let r = inv_clarke(ra, rb);
+        let i = inv_clarke(y.x_m[0], y.x_m[1]);
         let b = Bounds::new(&p.controller, &p.inverter);
         b.worst_excess([r[0] - i[0], r[1] - i[1], r[2] - i[2]], y.v_n_pu, y.v_ph_pu)
     }
@@ -316,7 +318,7 @@ mod tests {
     #[test]
     fn constructed_deadlock_is_resolved_by_eq_15_16() {
         let p = DriveParams::default();
-        let mut c = Reference::new(&p).unwrap();
+        let mut c = MpdccRef::new(&p).unwrap();
         // Reference at angle 90 deg (i*_a = 0): back-EMF's alpha part is small.
         let i_ref = [0.0, 1.0];
         let psi = machine::steady_state_flux(&p.machine, i_ref, 1.0, p.operating_point.omega_r_pu);
@@ -331,7 +333,7 @@ mod tests {
             excess.iter().all(|&e| e > 0.0),
             "not a deadlock: {excess:?}"
         );
-        let d = c.decide(&st).unwrap();
+        let d = c.step(&st).unwrap();
         assert_eq!(d.kind, DecisionKind::Deadlock);
         let best = excess.iter().cloned().fold(f64::INFINITY, f64::min);
         let chosen = cands.iter().position(|&s| s == d.s).unwrap();
@@ -361,12 +363,12 @@ mod tests {
     #[test]
     fn output_outside_at_k_forces_deadlock_resolution_towards_bound() {
         let p = DriveParams::default();
-        let mut c = Reference::new(&p).unwrap();
+        let mut c = MpdccRef::new(&p).unwrap();
         let i_ref = [1.0, 0.0]; // i_a = +1 pu
         let psi = machine::steady_state_flux(&p.machine, i_ref, 1.0, p.operating_point.omega_r_pu);
         let mut st = state(&p, [i_ref[0], i_ref[1], psi[0], psi[1]], [6, 3, 3]);
         st.v_ph_pu[0] += p.controller.v_ph_bound_pu + 0.01;
-        let d = c.decide(&st).unwrap();
+        let d = c.step(&st).unwrap();
         assert_eq!(d.kind, DecisionKind::Deadlock);
         // With i_a > 0 a discharging position has ph_current = -1 (s = 1 or 5).
         assert_eq!(anpc::TABLE[d.s[0] as usize].ph_current, -1, "{:?}", d.s);
@@ -377,13 +379,13 @@ mod tests {
     #[test]
     fn lazy_evaluation_keeps_previous_position() {
         let p = DriveParams::default();
-        let mut c = Reference::new(&p).unwrap();
+        let mut c = MpdccRef::new(&p).unwrap();
         let i_ref = [0.0, 1.0];
         let psi = machine::steady_state_flux(&p.machine, i_ref, 1.0, p.operating_point.omega_r_pu);
         let st = state(&p, [i_ref[0], i_ref[1], psi[0], psi[1]], [4, 4, 4]);
         // One step with all phases at level 0 moves the current by far less
         // than delta_i = 0.12 pu: must be kept.
-        let d = c.decide(&st).unwrap();
+        let d = c.step(&st).unwrap();
         assert_eq!(d.kind, DecisionKind::Kept);
         assert_eq!(d.s, [4, 4, 4]);
         assert_eq!(d.candidates, 0);
@@ -395,7 +397,7 @@ mod tests {
     #[test]
     fn horizon_and_cost_are_consistent_with_brute_force() {
         let p = DriveParams::default();
-        let mut c = Reference::new(&p).unwrap();
+        let mut c = MpdccRef::new(&p).unwrap();
         let i_ref = [0.3, 0.95];
         let psi = machine::steady_state_flux(&p.machine, i_ref, 1.0, p.operating_point.omega_r_pu);
         // Phase a current below its reference by nearly delta_i and falling
@@ -403,7 +405,7 @@ mod tests {
         let err = p.controller.delta_i_pu - 0.002;
         let mut st = state(&p, [i_ref[0] - err, i_ref[1], psi[0], psi[1]], [1, 6, 6]);
         st.i_ref_ab_pu = i_ref;
-        let d = c.decide(&st).unwrap();
+        let d = c.step(&st).unwrap();
         assert_eq!(d.kind, DecisionKind::Optimal);
         let lam = p.controller.lambda_n;
         let mut best = f64::INFINITY;
@@ -427,8 +429,8 @@ mod tests {
             while l < p.controller.horizon_max_steps {
                 z = plant.step(&z, s);
                 r = rotate(r, libm::cos(th), libm::sin(th));
-                let ra = inv_clarke(r);
-                let i = inv_clarke([z.x_m[0], z.x_m[1]]);
+                let ra = inv_clarke(r[0], r[1]);
+                let i = inv_clarke(z.x_m[0], z.x_m[1]);
                 let ex = c.bounds().worst_excess(
                     [ra[0] - i[0], ra[1] - i[1], ra[2] - i[2]],
                     z.v_n_pu,
@@ -455,12 +457,12 @@ mod tests {
     #[test]
     fn bad_input_is_rejected() {
         let p = DriveParams::default();
-        let mut c = Reference::new(&p).unwrap();
+        let mut c = MpdccRef::new(&p).unwrap();
         let mut st = state(&p, [0.0; 4], [3, 3, 3]);
         st.v_n_pu = f64::NAN;
-        assert!(c.decide(&st).is_err());
+        assert!(c.step(&st).is_err());
         let mut bad = p;
         bad.controller.delta_i_pu = 0.0;
-        assert!(Reference::new(&bad).is_err());
+        assert!(MpdccRef::new(&bad).is_err());
     }
 }

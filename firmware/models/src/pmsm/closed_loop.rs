@@ -19,7 +19,7 @@
 
 use super::measure::Averager;
 pub use super::measure::Measurement;
-use super::params::{samples_per_period, DriveParams, ParamError};
+use super::params::{samples_per_period, ParamError, SamplingParams};
 pub use super::plant::Actuation;
 use super::plant::Plant;
 
@@ -92,13 +92,13 @@ const MAX_DELAY: usize = 2;
 pub fn run<C: Controller + ?Sized>(
     plant: &mut Plant,
     ctrl: &mut C,
-    drive: &DriveParams,
+    drive: &SamplingParams,
     n_periods: u64,
     mut torque_ref: impl FnMut(f64) -> f64,
     mut record: impl FnMut(&TracePoint),
 ) -> Result<RunSummary, ParamError> {
     let period_s = ctrl.period_s();
-    let d = DriveParams {
+    let d = SamplingParams {
         control_period_s: period_s,
         ..*drive
     };
@@ -187,7 +187,7 @@ mod tests {
             k: 0,
             seen: Vec::new(),
         };
-        let d = DriveParams {
+        let d = SamplingParams {
             computation_delay_periods: delay,
             ..Default::default()
         };
@@ -261,7 +261,7 @@ mod tests {
         let r = run(
             &mut plant,
             &mut Odd,
-            &DriveParams::default(),
+            &SamplingParams::default(),
             3,
             |_| 0.0,
             |_| {},

@@ -1,5 +1,5 @@
 //! Longer switching horizons for MPDCC: the sequence search shared by the
-//! `f64` reference ([`HorizonReference`], here) and the 16-bit FPGA model
+//! `f64` reference ([`HorizonRef`], here) and the 16-bit FPGA model
 //! (`super::horizon_fixed`).
 //!
 //! Paper 001 implements the switching horizon "SE" (switch, then extend)
@@ -13,8 +13,8 @@
 //! its bound, found by extrapolation/interpolation exactly as for "SE").
 //!
 //! # Horizons ([`Horizon`])
-//! - **SE**: the paper's. Identical decisions to [`super::reference`] and
-//!   to `fpga::decide` (tested).
+//! - **SE**: the paper's. Identical decisions to [`super::mpdcc_ref`] and
+//!   to `mpdcc_fixed::decide` (tested).
 //! - **SSE**: switch at `k` to `s1` (held one step, must keep every output
 //!   inside at `k+1`), switch at `k+1` to `s2` (admissible from `s1`, `s2 =
 //!   s1` allowed), then extend. Length `1 + L*(s2)`.
@@ -86,11 +86,9 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::anpc;
-use super::controller::{
-    candidates, CtrlState, Decision, DecisionKind, MpdccController, StateError,
-};
+use super::controller::{candidates, Controller, CtrlState, Decision, DecisionKind, StateError};
+use super::mpdcc_ref::MpdccRef;
 use super::params::{DriveParams, ParamError};
-use super::reference::Reference;
 
 /// Longest sequence (switching events) supported.
 pub const MAX_EVENTS: usize = 3;
@@ -591,7 +589,7 @@ impl HorizonStats {
 
 /// The reference as a [`SequenceModel`]: nodes are predicted [`CtrlState`]s.
 struct RefModel<'a> {
-    r: &'a mut Reference,
+    r: &'a mut MpdccRef,
     lambda_n: f64,
     n_bar: u32,
 }
@@ -628,7 +626,7 @@ impl SequenceModel for RefModel<'_> {
     }
 
     fn cost(&self, v_n: f64, fs: u32, len: u32) -> f64 {
-        // Same expression as `Reference::cost` (bit-identical for SE).
+        // Same expression as `MpdccRef::cost` (bit-identical for SE).
         fs as f64 / len as f64 + self.lambda_n * v_n * v_n
     }
 
@@ -644,15 +642,15 @@ impl SequenceModel for RefModel<'_> {
 }
 
 /// The idealized reference with a longer switching horizon.
-pub struct HorizonReference {
-    r: Reference,
+pub struct HorizonRef {
+    r: MpdccRef,
     p: DriveParams,
     horizon: Horizon,
     opt: SearchOptions,
     stats: HorizonStats,
 }
 
-impl HorizonReference {
+impl HorizonRef {
     /// The reference for `horizon` with the default search options.
     pub fn new(p: &DriveParams, horizon: Horizon) -> Result<Self, ParamError> {
         Self::with_options(p, horizon, SearchOptions::default())
@@ -665,7 +663,7 @@ impl HorizonReference {
         opt: SearchOptions,
     ) -> Result<Self, ParamError> {
         Ok(Self {
-            r: Reference::new(p)?,
+            r: MpdccRef::new(p)?,
             p: *p,
             horizon,
             opt,
@@ -695,17 +693,17 @@ impl HorizonReference {
     }
 
     /// The underlying SE reference (its model for tests).
-    pub fn reference(&mut self) -> &mut Reference {
+    pub fn reference(&mut self) -> &mut MpdccRef {
         &mut self.r
     }
 }
 
-impl MpdccController for HorizonReference {
+impl Controller for HorizonRef {
     fn name(&self) -> &'static str {
         self.horizon.name()
     }
 
-    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
+    fn step(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
         st.check()?;
         self.stats.decisions += 1;
         // Lazy evaluation (Algorithm 1, line 1), as for SE.
@@ -724,27 +722,12 @@ impl MpdccController for HorizonReference {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     extern crate std;
     use super::*;
     use crate::mpdcc::machine;
+    use crate::testrng::Rng;
     use std::vec::Vec;
-
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            self.0
-        }
-        fn unit(&mut self) -> f64 {
-            (self.next() >> 11) as f64 / (1u64 << 53) as f64
-        }
-        fn range(&mut self, a: f64, b: f64) -> f64 {
-            a + (b - a) * self.unit()
-        }
-    }
 
     /// A toy model with pseudo-random extension lengths (small `N_bar`,
     /// many zero lengths and ties) for the enumeration and pruning tests.
@@ -866,13 +849,13 @@ mod tests {
             // Three events: a short cap ends most sequences early (small tree).
             let n_bar = if h == Horizon::Sesese { 2 } else { 4 };
             let mut toy = Toy {
-                seed: rng.next(),
+                seed: rng.next_u64(),
                 n_bar,
             };
-            let sp = (rng.next() % 512) as u32;
+            let sp = (rng.next_u64() % 512) as u32;
             let root = (
                 [(sp >> 6) as u8, ((sp >> 3) & 7) as u8, (sp & 7) as u8],
-                rng.next(),
+                rng.next_u64(),
             );
             let mut want = brute_force(&mut toy, &root, h);
             let mut seen: Vec<Seq> = Vec::new();
@@ -924,25 +907,29 @@ mod tests {
         assert!(pruned_sum * 2 < total_sum, "{pruned_sum} vs {total_sum}");
     }
 
-    fn random_state(p: &DriveParams, rng: &mut Rng) -> CtrlState {
+    /// A state near the operating point's steady state (errors within
+    /// 0.95 `delta_i`, capacitors within 0.045 pu), random `s(k-1)`.
+    pub(crate) fn random_state(p: &DriveParams, rng: &mut Rng) -> CtrlState {
         let op = p.operating_point;
-        let th = rng.range(0.0, 2.0 * core::f64::consts::PI);
+        let th = rng.uniform(0.0, 2.0 * core::f64::consts::PI);
         let i_ref = [libm::cos(th), libm::sin(th)];
         let psi = machine::steady_state_flux(&p.machine, i_ref, op.omega_s_pu, op.omega_r_pu);
         let d = 0.95 * p.controller.delta_i_pu;
         CtrlState {
             x_m: [
-                i_ref[0] + rng.range(-d, d),
-                i_ref[1] + rng.range(-d, d),
+                i_ref[0] + rng.uniform(-d, d),
+                i_ref[1] + rng.uniform(-d, d),
                 psi[0],
                 psi[1],
             ],
-            v_n_pu: rng.range(-0.045, 0.045),
-            v_ph_pu: core::array::from_fn(|_| p.inverter.v_ph_ref_pu() + rng.range(-0.045, 0.045)),
+            v_n_pu: rng.uniform(-0.045, 0.045),
+            v_ph_pu: core::array::from_fn(|_| {
+                p.inverter.v_ph_ref_pu() + rng.uniform(-0.045, 0.045)
+            }),
             omega_r_pu: op.omega_r_pu,
             omega_s_pu: op.omega_s_pu,
             i_ref_ab_pu: i_ref,
-            s_prev: core::array::from_fn(|_| (rng.next() % 8) as u8),
+            s_prev: core::array::from_fn(|_| (rng.next_u64() % 8) as u8),
         }
     }
 
@@ -951,13 +938,13 @@ mod tests {
     #[test]
     fn se_horizon_is_the_reference() {
         let p = DriveParams::default();
-        let mut r = Reference::new(&p).unwrap();
-        let mut h = HorizonReference::new(&p, Horizon::Se).unwrap();
+        let mut r = MpdccRef::new(&p).unwrap();
+        let mut h = HorizonRef::new(&p, Horizon::Se).unwrap();
         let mut rng = Rng(77);
         for _ in 0..150 {
             let st = random_state(&p, &mut rng);
-            let a = r.decide(&st).unwrap();
-            let mut b = h.decide(&st).unwrap();
+            let a = r.step(&st).unwrap();
+            let mut b = h.step(&st).unwrap();
             b.candidates = a.candidates;
             assert_eq!(a, b, "{st:?}");
         }
@@ -976,17 +963,17 @@ mod tests {
         let mut rng = Rng(4242);
         let (mut searched, mut deadlocks, mut fallbacks) = (0, 0, 0);
         for h in [Horizon::Sse, Horizon::Sese, Horizon::Sesese] {
-            let mut c = HorizonReference::new(&p, h).unwrap();
+            let mut c = HorizonRef::new(&p, h).unwrap();
             for _ in 0..60 {
                 let mut st = random_state(&p, &mut rng);
-                st.x_m[0] += rng.range(-0.03, 0.03);
+                st.x_m[0] += rng.uniform(-0.03, 0.03);
                 let cands = candidates(st.s_prev);
                 let ok: Vec<[u8; 3]> = cands
                     .iter()
                     .copied()
                     .filter(|&s| c.reference().evaluate(&st, s).unwrap().l_star > 0)
                     .collect();
-                let d = c.decide(&st).unwrap();
+                let d = c.step(&st).unwrap();
                 if d.kind == DecisionKind::Kept {
                     continue;
                 }
@@ -1023,8 +1010,8 @@ mod tests {
                 beam: 216,
                 prune: true,
             };
-            let mut a = HorizonReference::with_options(&p, h, exact).unwrap();
-            let mut b = HorizonReference::with_options(&p, h, bb).unwrap();
+            let mut a = HorizonRef::with_options(&p, h, exact).unwrap();
+            let mut b = HorizonRef::with_options(&p, h, bb).unwrap();
             let mut n = 0;
             while n < 3 {
                 let st = random_state(&p, &mut rng);

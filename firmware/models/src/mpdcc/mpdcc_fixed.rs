@@ -2,7 +2,7 @@
 //! datapath of the central scheduler (quantization, lazy check, common terms
 //! of eq. (14)) and of the explorer units (extrapolation at `k + L`, linear
 //! interpolation, Algorithm 2, cost), in explicit integer arithmetic with the
-//! formats of [`super::fixed`]. The control flow of Algorithm 1 is in
+//! formats of [`super::formats`]. The control flow of Algorithm 1 is in
 //! [`super::scheduler`], the clock-cycle count in [`super::cycles`]. The
 //! design notes, measurements and the formats table are in
 //! docs/mpdcc-fpga.md.
@@ -72,8 +72,8 @@
 
 use super::anpc;
 use super::binsearch::{self, Lj, SearchRange};
-use super::controller::{CtrlState, Decision, MpdccController, StateError};
-use super::fixed::{self, konst, mul, sat16, sub, F_C, F_I, F_SMALL};
+use super::controller::{Controller, CtrlState, Decision, StateError};
+use super::formats::{self, konst, mul, sat16, sub, F_C, F_I, F_SMALL};
 use super::params::DriveParams;
 use super::scheduler::{self, Explorer, ExplorerResult};
 use crate::fixedpoint::rshift_round;
@@ -132,7 +132,7 @@ impl FpgaConfig {
 /// interpolation nodes. [`Structure::CORE`] is the specification of the
 /// Verilog core; other structures (the paper's, design sweeps) are research
 /// options, built only with the `mpdcc-research` feature
-/// ([`FpgaMpdcc::research`]).
+/// ([`MpdccFixed::research`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Structure {
     /// Add the second-order term `-(omega_s L T)^2/2 i*` to the reference
@@ -487,7 +487,7 @@ impl Inputs {
         let mut sat = false;
         let mut q = |v: f64, f: u32| -> i16 {
             // check() guarantees finiteness.
-            let (r, s) = fixed::quantize(v, f).unwrap_or((0, true));
+            let (r, s) = formats::quantize(v, f).unwrap_or((0, true));
             sat |= s;
             r
         };
@@ -986,7 +986,7 @@ pub fn lane_change(k: &Coeffs, nodes: &Nodes, l: u32, j: usize) -> i64 {
 
 /// The FPGA MPDCC core: coefficients, the scheduler and `n` explorers.
 #[derive(Debug, Clone)]
-pub struct FpgaMpdcc {
+pub struct MpdccFixed {
     coeffs: Coeffs,
     cfg: FpgaConfig,
     last: Option<scheduler::Outcome>,
@@ -1005,7 +1005,7 @@ impl Explorer for Units<'_> {
     }
 }
 
-impl FpgaMpdcc {
+impl MpdccFixed {
     /// Builds the core; rejects invalid parameters and coefficients that do
     /// not fit their formats.
     pub fn new(p: &DriveParams, cfg: FpgaConfig) -> Result<Self, FpgaError> {
@@ -1053,7 +1053,7 @@ impl FpgaMpdcc {
 }
 
 /// One decision of a core with constants `k` and `n` explorers from
-/// already-quantized inputs: [`FpgaMpdcc::decide_raw`] for constants that
+/// already-quantized inputs: [`MpdccFixed::decide_raw`] for constants that
 /// come from elsewhere (the register page of the simulated PL).
 pub fn decide(k: &Coeffs, x: &Inputs, n: u32) -> scheduler::Outcome {
     let c = common_terms(k, x);
@@ -1072,12 +1072,12 @@ pub fn decide(k: &Coeffs, x: &Inputs, n: u32) -> scheduler::Outcome {
     scheduler::run(x.s_prev, lazy, n, &model, &mut units)
 }
 
-impl MpdccController for FpgaMpdcc {
+impl Controller for MpdccFixed {
     fn name(&self) -> &'static str {
         "fpga"
     }
 
-    fn decide(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
+    fn step(&mut self, st: &CtrlState) -> Result<Decision, StateError> {
         let x = Inputs::quantize(st)?;
         let out = self.decide_raw(&x);
         let d = out.decision;
@@ -1096,7 +1096,7 @@ mod tests {
     #[test]
     fn piecewise_lane_matches_scan() {
         let p = DriveParams::default();
-        let f = FpgaMpdcc::new(&p, FpgaConfig::core(&p.machine)).unwrap();
+        let f = MpdccFixed::new(&p, FpgaConfig::core(&p.machine)).unwrap();
         let k = f.coeffs();
         let kn = k.nodes as usize;
         assert!(kn >= 3);
@@ -1155,7 +1155,7 @@ mod tests {
         let mk = |n| {
             let mut c = FpgaConfig::core(&p.machine);
             c.explorers = n;
-            FpgaMpdcc::new(&p, c).unwrap()
+            MpdccFixed::new(&p, c).unwrap()
         };
         let (f1, f2, f6) = (mk(1), mk(2), mk(6));
         let mut searched = 0;

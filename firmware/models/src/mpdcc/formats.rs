@@ -1,5 +1,5 @@
 //! 16-bit fixed-point formats and the integer operations of the FPGA MPDCC
-//! model ([`super::fpga`]), written so a Verilog core can repeat them bit by
+//! model ([`super::mpdcc_fixed`]), written so a Verilog core can repeat them bit by
 //! bit.
 //!
 //! # Notation
@@ -27,7 +27,7 @@
 //! # Formats used by the model
 //! (The full table with the wide accumulator, node registers and search
 //! comparators is in docs/mpdcc-fpga.md; the constants below and in
-//! [`super::fpga`] are the source.)
+//! [`super::mpdcc_fixed`] are the source.)
 //!
 //! | quantity | format | range | LSB |
 //! |---|---|---|---|
@@ -59,7 +59,7 @@ pub enum FixedError {
 /// Saturate a wide integer to i16.
 #[inline]
 pub fn sat16(v: i64) -> i16 {
-    v.clamp(i16::MIN as i64, i16::MAX as i64) as i16
+    crate::fixedpoint::saturate(v, 16) as i16
 }
 
 /// `f64 -> raw` with `frac` fractional bits: round half away from zero,
@@ -68,7 +68,7 @@ pub fn quantize(v: f64, frac: u32) -> Result<(i16, bool), FixedError> {
     if !v.is_finite() {
         return Err(FixedError::NotFinite);
     }
-    let scaled = libm::round(libm::ldexp(v, frac as i32));
+    let scaled = crate::fixedpoint::round_scaled(v, frac);
     let clamped = scaled.clamp(i16::MIN as f64, i16::MAX as f64);
     Ok((clamped as i16, clamped != scaled))
 }
