@@ -130,7 +130,7 @@ const HOW_TO: &str = r#"
 | `firmware/regmap/src/regs.rs` | typed accessors `regmap::regs` over `regmap::bus::RegisterBus` |
 | `docs/register-map.md` | this page |
 | `pl-bitstream-src/sim/csrc/pl_top_shim.cpp`, `pl-bitstream-src/sim/src/pl_top_ports.rs` | the `pl_top` Verilator harness (C++ shim, `PtIn`/`PtOut`), from the port list `regmap_gen::ports::PL_TOP_PORTS` (a test checks `pl_top.v`'s ports against it) |
-| `pl-bitstream-src/sim/csrc/<core>_ports.h` for `mpdcc_core`, `mpdcc_explorer`, `mpdcc_lane`, `mpdtc_core` | from the port list of the core's own RTL file (not the table): a setter per input masked to its width, a getter per output sign-extended when signed; the cores' shims use them |
+| `pl-bitstream-src/sim/csrc/<core>_ports.h` for `mpdcc_core`, `mpdcc_explorer`, `mpdcc_lane`, `mpdtc_core` | from the port list of the core's own RTL file (not the table): a setter per input masked to its width, a getter per output sign-extended when signed, and for the ports that pack equal lanes (`core_ports::LANES`, e.g. `bnd_i` = 7 x 16 bits) per-lane setters/getters and the lane count; the cores' shims use them and pack no bits by hand |
 
 `cargo test -p regmap-gen` fails when a committed file differs from what the
 generator writes. The hand-written RTL holds only the cores and their wiring
