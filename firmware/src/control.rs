@@ -42,8 +42,8 @@ use drive::pl::mpdcc::{Mpdcc, MpdccError};
 use drive::pl::presence::{self, Selection};
 use drive::pl::top::Mode;
 use drive::servo::faults::FaultRecord;
-use drive::servo::sensors::{PlTime, SensorReport};
 use drive::servo::motion::MoveResult;
+use drive::servo::sensors::{PlTime, SensorReport};
 use drive::servo::{
     record_response, Servo, ServoConfig, ServoError, StepRecorder, StepResult, SweepPoint,
 };

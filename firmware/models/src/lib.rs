@@ -28,8 +28,8 @@
 extern crate std;
 
 pub mod fixedpoint;
-pub mod motion;
 pub mod frames;
+pub mod motion;
 pub mod mpdcc;
 pub mod pmsm;
 pub mod testrng;

@@ -279,9 +279,21 @@ mod tests {
             let mut pl = FakePl::new();
             pl.set(regmap::TOP.addr(&regmap::ID), id);
             let p = if sts & PCFG_DONE == 0 {
-                detect(&Guard { int_sts: sts, ..READY }, &mut Untouchable)
+                detect(
+                    &Guard {
+                        int_sts: sts,
+                        ..READY
+                    },
+                    &mut Untouchable,
+                )
             } else {
-                detect(&Guard { int_sts: sts, ..READY }, &mut pl)
+                detect(
+                    &Guard {
+                        int_sts: sts,
+                        ..READY
+                    },
+                    &mut pl,
+                )
             };
             select(p, platform(idcode))
         };
