@@ -20,7 +20,7 @@ fn cmd(s: &mut Session, line: &str) -> drivectl::link::Reply {
     }
 }
 
-/// `move 1` in `mode`: the acceptance figures, and the host simulation's
+/// `move 1` in `mode`: the move figures, and the host simulation's
 /// figures within a count.
 fn move_one(mode: &str, m: Mode) {
     let mut s = boot();
