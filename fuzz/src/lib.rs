@@ -108,10 +108,13 @@ impl DriveOps for FuzzDrive {
             control_rate_hz: self.servo.control_rate_hz(),
             periods: self.servo.periods(),
             overruns: self.servo.overruns(),
+            control_irq: 0,
+            control_latency: Default::default(),
             pl: PlKind::Simulated,
             sim_time_scale: None,
             store: None,
             mpdcc: None,
+            motion: self.servo.motion_status(),
         }
     }
     fn bench(&mut self) -> Result<Bench, DriveError> {
@@ -423,13 +426,8 @@ mod tests {
             .ok()
             .and_then(|v| v.parse().ok())
             .unwrap_or(2000);
-        let mut x: u64 = 0x243F_6A88_85A3_08D3;
-        let mut rnd = |n: usize| {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x % n.max(1) as u64) as usize
-        };
+        let mut rng = models::testrng::Rng(0x243F_6A88_85A3_08D3);
+        let mut rnd = |n: usize| (rng.next_u64() % n.max(1) as u64) as usize;
         for _ in 0..runs {
             let mut d = seeds[rnd(seeds.len())].clone();
             for _ in 0..1 + rnd(4) {

@@ -191,7 +191,7 @@ fn saves_cut_by_a_power_cut_leave_the_old_or_the_new_configuration() {
     std::thread::sleep(IMAGE_WRITE);
     drop(s);
     let mut old = 0.001;
-    let mut seed: u64 = 0x2545_F491_4F6C_DD1D;
+    let mut rng = models::testrng::Rng(0x2545_F491_4F6C_DD1D);
     let (mut kept_old, mut got_new) = (0, 0);
     let mut kinds = std::collections::BTreeMap::new();
     for k in 1..=CUTS {
@@ -210,11 +210,8 @@ fn saves_cut_by_a_power_cut_leave_the_old_or_the_new_configuration() {
         let mut s = boot_with_flash(&img);
         assert_ok(&cmd(&mut s, &format!("debug flash-pace {PACE_MS}")));
         assert_ok(&cmd(&mut s, &format!("config set mpdtc_t_tol {new}")));
-        // xorshift64: a repeatable random instant in this cut's stratum.
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        let u = (seed % 1000) as f64 / 1000.0;
+        // A repeatable random instant in this cut's stratum.
+        let u = (rng.next_u64() % 1000) as f64 / 1000.0;
         let cut = save.mul_f64(1.1 * (f64::from(k - 1) + u) / f64::from(CUTS));
         s.send(b"config save\r").unwrap();
         std::thread::sleep(cut);

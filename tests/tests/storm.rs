@@ -8,6 +8,7 @@
 //! configuration, faults), and `periods` advance with the drive time the
 //! telemetry frames carry.
 use drivectl::link::{parse_reply, Final, PROMPT};
+use models::testrng::Rng;
 use std::time::{Duration, Instant};
 use system_tests::{assert_ok, boot, cmd, field, num};
 
@@ -16,11 +17,8 @@ const LINES: usize = 10_000;
 const AHEAD: usize = 16 * 1024;
 
 /// A line of the storm and whether the firmware must accept it.
-fn storm_line(rng: &mut u64) -> (String, bool) {
-    *rng ^= *rng << 13;
-    *rng ^= *rng >> 7;
-    *rng ^= *rng << 17;
-    let r = *rng;
+fn storm_line(rng: &mut Rng) -> (String, bool) {
+    let r = rng.next_u64();
     let valid = [
         "status",
         "version",
@@ -65,12 +63,8 @@ fn storm_line(rng: &mut u64) -> (String, bool) {
             // the line length.
             let len = 1 + (r >> 8) as usize % 150;
             let mut s = String::from("zz");
-            let mut x = r;
             for _ in 0..len {
-                x = x
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                s.push(char::from(b'!' + (x >> 58) as u8 % 94));
+                s.push(char::from(b'!' + (rng.next_u64() >> 58) as u8 % 94));
             }
             (s, false)
         }
@@ -96,7 +90,7 @@ fn ten_thousand_lines_back_to_back_while_the_foc_runs_and_telemetry_streams() {
     );
     let frames0 = s.frames.drain();
 
-    let mut rng: u64 = 0x9E37_79B9_7F4A_7C15;
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
     let storm: Vec<(String, bool)> = (0..LINES).map(|_| storm_line(&mut rng)).collect();
     let refused = storm.iter().filter(|(_, ok)| !ok).count();
     // The console's `errors` count the lines refused before execution:
