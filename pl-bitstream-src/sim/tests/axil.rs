@@ -8,7 +8,7 @@ use rtl_sim::pl_top::{axi_addr, PlTopSim, OKAY, SLVERR};
 
 /// Registers whose value moves on its own (not comparable to a constant).
 fn is_live(r: &Register) -> bool {
-    r.name == "PWM_COUNT"
+    matches!(r.name, "PWM_COUNT" | "BOUNDARY_AGE")
 }
 
 fn err_addr() -> u16 {

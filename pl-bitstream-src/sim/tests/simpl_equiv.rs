@@ -313,7 +313,7 @@ fn mpdcc_op(p: &mut Pair, rng: &mut Rng, states: &[Inputs], k: &Coeffs) {
             // The constants again (arbitrary words may have changed them),
             // and no decision of an earlier arbitrary START in flight.
             m.load_coeffs(k).expect("load constants");
-            for _ in 0..400 {
+            for _ in 0..2000 {
                 if !m.status().expect("status").busy {
                     break;
                 }
@@ -323,7 +323,7 @@ fn mpdcc_op(p: &mut Pair, rng: &mut Rng, states: &[Inputs], k: &Coeffs) {
             // Either poll at once or after a random pause.
             let pause = rng.next_u64() % 200;
             m.0 .0.idle(pause);
-            let (got, _) = m.wait(400).expect("MPDCC decision");
+            let (got, _) = m.wait(2000).expect("MPDCC decision");
             let _ = m.deadlocks();
             let _ = m.config();
             let idx = match got.decision.kind {
