@@ -6,7 +6,7 @@
 //! or `ERR` as the grammar says), the control loop never overruns, the
 //! refused lines change nothing (mode, gates, torque reference,
 //! configuration, faults), and `periods` advance with the drive time the
-//! telemetry frames carry.
+//! telemetry sampler counts.
 use drivectl::link::{parse_reply, Final, PROMPT};
 use models::testrng::Rng;
 use std::time::{Duration, Instant};
@@ -88,7 +88,7 @@ fn ten_thousand_lines_back_to_back_while_the_foc_runs_and_telemetry_streams() {
         console_counts(&st0).0,
         console_counts(&st0).1,
     );
-    let frames0 = s.frames.drain();
+    let taken0 = samples_taken(&mut s);
 
     let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
     let storm: Vec<(String, bool)> = (0..LINES).map(|_| storm_line(&mut rng)).collect();
@@ -148,6 +148,7 @@ fn ten_thousand_lines_back_to_back_while_the_foc_runs_and_telemetry_streams() {
     let wall = t0.elapsed();
 
     let st1 = cmd(&mut s, "status");
+    let taken1 = samples_taken(&mut s);
     let frames = s.frames.drain();
     let (lines1, errors1, rx_overruns) = console_counts(&st1);
     assert_eq!(field(&st1, "mode"), Some("foc"), "{st1:?}");
@@ -156,9 +157,9 @@ fn ten_thousand_lines_back_to_back_while_the_foc_runs_and_telemetry_streams() {
     assert_eq!(num(&st1, "torque_ref"), 0.2, "{st1:?}");
     assert_eq!(num(&st1, "overruns"), 0.0, "{st1:?}");
     assert_eq!(rx_overruns, 0, "{st1:?}");
-    // Every storm line counted (`status` itself is the +1), each one
-    // refused before execution as an error.
-    assert_eq!(lines1 - lines0, LINES as u64 + 1, "{st1:?}");
+    // Every storm line counted (`tel status` before the storm and `status`
+    // itself are the +2), each one refused before execution as an error.
+    assert_eq!(lines1 - lines0, LINES as u64 + 2, "{st1:?}");
     assert_eq!(errors1 - errors0, unparsed as u64, "{st1:?}");
     let config_after = cmd(&mut s, "config list");
     assert_eq!(config_after, config_before, "configuration changed");
@@ -167,15 +168,14 @@ fn ten_thousand_lines_back_to_back_while_the_foc_runs_and_telemetry_streams() {
         history_before,
         "fault history changed"
     );
-    // Periods against the drive time of the telemetry frames: one control
-    // period each, the FOC's rate, give or take a frame interval (5 ms) at
-    // each end (frames and replies interleave on the link).
+    // Periods against the drive time the telemetry sampler counted: one
+    // sample per 5 ms of drive time (200 Hz), one control period per period
+    // at the FOC's rate, give or take a sample interval at each end (the
+    // `status` and `tel status` replies are a line apart).
     let rate = num(&st1, "control_rate");
     let periods1 = num(&st1, "periods");
-    let (Some(first), Some(last)) = (frames0.last().or(frames.first()), frames.last()) else {
-        panic!("no telemetry frames during the storm");
-    };
-    let drive_s = f64::from(last.time_us.wrapping_sub(first.time_us)) * 1e-6;
+    let drive_s = (taken1 - taken0) / 200.0;
+    assert!(taken1 > taken0, "no telemetry samples during the storm");
     let expect = drive_s * rate;
     let got = periods1 - periods0;
     let slack = 2.0 * rate / 200.0 + 10.0;
@@ -189,6 +189,13 @@ fn ten_thousand_lines_back_to_back_while_the_foc_runs_and_telemetry_streams() {
          {} telemetry frames",
         frames.len()
     );
+}
+
+/// `samples: <taken> taken, ...` of `tel status`.
+fn samples_taken(s: &mut drivectl::link::Session) -> f64 {
+    let r = cmd(s, "tel status");
+    assert_ok(&r);
+    num(&r, "samples")
 }
 
 /// `console: <lines> lines, <errors> errors, <rx> rx overruns`.
