@@ -1,5 +1,5 @@
 // mpdcc_piece: one interpolation piece of an MPDCC search lane
-// (models::mpdcc::binsearch::lj_search on one piece of models::mpdcc::fpga's
+// (models::mpdcc::binsearch::lj_search on one piece of models::mpdcc::mpdcc_fixed's
 // lane), pipelined: one piece per clock, fixed latency LATENCY = QMAX + 3.
 //
 // The error along the piece is a + l d / 2^LS for l = 0..CAP (a, d raw
