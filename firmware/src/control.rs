@@ -915,8 +915,8 @@ impl DriveOps for FwDrive {
 }
 
 /// Status polls per MPDCC decision: one PL cycle each on the simulated PL,
-/// more on the others; a decision takes at most 175 cycles at N = 2.
-const MPDCC_POLLS: u32 = 1000;
+/// more on the others; a decision takes at most 929 cycles in pl_top's build.
+const MPDCC_POLLS: u32 = 2000;
 
 /// The console's error for a failed MPDCC page access.
 fn page_error(e: MpdccError) -> DriveError {

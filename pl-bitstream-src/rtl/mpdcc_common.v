@@ -1,5 +1,5 @@
 // mpdcc_common: the MPDCC scheduler's common terms (paper 001, Sec. V-A,
-// eq. 14), models::mpdcc::mpdcc_fixed::common_terms of the frozen core bit for bit:
+// eq. 14), models::mpdcc::fpga::common_terms of the frozen core bit for bit:
 // output errors at k, the switch-independent error changes at the nodes
 // k + 8, 16, 32, 64 and over one step, and the capacitor-current products.
 // The inputs are held stable by the caller from the start_i cycle on. The

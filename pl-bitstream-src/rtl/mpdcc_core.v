@@ -1,8 +1,8 @@
 // mpdcc_core: the MPDCC core of paper 001 (Algorithm 1) with a central
 // scheduler and N pipelined explorers, bit-exact with the decision of
-// models::mpdcc::mpdcc_fixed (MpdccFixed::decide_raw, frozen core Structure::CORE).
+// models::mpdcc::fpga (FpgaMpdcc::decide_raw, frozen core Structure::CORE).
 //
-// Inputs are the state registers (models::mpdcc::mpdcc_fixed::Inputs, already
+// Inputs are the state registers (models::mpdcc::fpga::Inputs, already
 // quantized) and the design constants (Coeffs), held stable from start_i to
 // done_o. On start_i the scheduler starts the common terms (mpdcc_common,
 // eq. 14, on MULS shared multipliers) and, once the terms the explorers read
@@ -10,10 +10,14 @@
 // the rest is final before it is read), enumerates S(s(k-1)): per phase the
 // positions within one level of s(k-1), a contiguous code range [lo, hi]
 // because the level is monotonic in the code; candidates in ascending code
-// order (a outer, c inner), n_use_i (1..N) of them per clock, candidate i
-// of a clock to explorer i. Each explorer (mpdcc_explorer) takes one
-// candidate per clock and returns it LAT = 41 cycles later, so the results
-// of one clock arrive together and in enumeration order. A registered
+// order (a outer, c inner), n_use_i (1..N) of them per issue clock,
+// candidate i of an issue clock to explorer i; an issue clock every II
+// clocks. Each explorer (mpdcc_explorer with the same II) takes one
+// candidate every II clocks and returns it XLAT = 41 + max(II - 3, 0)
+// cycles later, so the results of one issue clock arrive together and in
+// enumeration order. II = 1 is the full-rate datapath (seven search lanes
+// per explorer); II > 1 shares ceil(7 / II) lanes per explorer (less area,
+// II times the issue time). A registered
 // arg-min tree (ARGMIN_LEVELS = 3 levels, one comparison each) reduces them
 // and the scheduler folds the tree's result into the decision's minimum
 // (strict "<" with the earlier candidate on the left: the first of equal
@@ -24,13 +28,15 @@
 // Decision: kept (lazy check passes: s(k-1), no candidates), optimal (best),
 // or deadlock (best_dl). done_o is high for one cycle with the decision;
 // cycles_o counts the clock edges from the start_i cycle to the done_o cycle:
-//   20 + ceil(|S| / n_use) + 41 + 3 + 1   (models::mpdcc::cycles::pipelined_core_cycles)
+//   20 + II (G - 1) + 1 + XLAT + 3 + 1,  G = ceil(|S| / n_use)
+//   (models::mpdcc::cycles::pipelined_core_cycles_ii; II = 1: 20 + G + 41 + 3 + 1)
 // The search always runs (a kept decision takes as long): the lazy check
 // costs no separate pass.
 `default_nettype none
 
 module mpdcc_core #(
-    parameter integer N = 2  // explorer units (1..6)
+    parameter integer N = 2,  // explorer units (1..6)
+    parameter integer II = 1  // clocks per issue (1..7): 1 full rate, > 1 shared lanes
 ) (
     input  wire               clk_i,
     input  wire               rst_i,
@@ -38,7 +44,7 @@ module mpdcc_core #(
     output wire               busy_o,
     input  wire        [2:0]  n_use_i,    // explorers used, 1..N (clamped)
     input  wire        [8:0]  s_prev_i,   // {c, b, a}
-    // state registers (raw, models::mpdcc::mpdcc_fixed::Inputs)
+    // state registers (raw, models::mpdcc::fpga::Inputs)
     input  wire signed [15:0] i_a_i,
     input  wire signed [15:0] i_b_i,
     input  wire signed [15:0] psi_a_i,
@@ -49,7 +55,7 @@ module mpdcc_core #(
     input  wire signed [15:0] ir_b_i,
     input  wire signed [15:0] omega_r_i,
     input  wire signed [15:0] omega_s_i,
-    // design constants (models::mpdcc::mpdcc_fixed::Coeffs)
+    // design constants (models::mpdcc::fpga::Coeffs)
     input  wire signed [15:0] c_tau_i,
     input  wire signed [15:0] c_r_i,
     input  wire signed [15:0] c_w_i,
@@ -115,6 +121,9 @@ module mpdcc_core #(
     reg  [2:0] nuse_q;
     reg  [15:0] cyc_q;
     reg  [7:0] issued_q, received_q;
+    reg  [2:0] ph_q;         // clocks since the last issue clock (II > 1)
+    // an issue clock: every clock at II = 1, every II-th clock otherwise
+    wire slot = (II == 1) ? 1'b1 : (ph_q == 3'd0);
     assign busy_o = busy_q;
 
     // next candidate in ascending code order within the ranges
@@ -144,7 +153,7 @@ module mpdcc_core #(
     integer j;
     always @(*) begin
         cand[0] = cur_q;
-        cv[0] = gen_q;
+        cv[0] = gen_q && slot;
         for (j = 1; j < N; j = j + 1) begin
             cand[j] = inc(cand[j-1], lo_q, hi_q[8:3]);
             cv[j] = cv[j-1] && (cand[j-1] != hi_q) && (j < {29'd0, nuse_q});
@@ -198,7 +207,7 @@ module mpdcc_core #(
     generate
         for (gi = 0; gi < N; gi = gi + 1) begin : g_exp
             /* verilator lint_off PINCONNECTEMPTY */
-            mpdcc_explorer u_exp (
+            mpdcc_explorer #(.II(II)) u_exp (
                 .clk_i(clk_i), .rst_i(rst_i),
                 .in_valid_i(cv[gi]), .s_i(cand[gi]),
                 .s_prev_i(s_prev_i), .e0_i(e0_w), .dn_i(dn_w), .dn1_i(dn1_w),
@@ -291,7 +300,7 @@ module mpdcc_core #(
         if (rst_i) begin
             lo_q <= 6'd0; hi_q <= 9'd0; cur_q <= 9'd0;
             gen_q <= 1'b0; busy_q <= 1'b0; nuse_q <= 3'd1; pre_q <= 6'd0;
-            cyc_q <= 16'd0; issued_q <= 8'd0; received_q <= 8'd0;
+            cyc_q <= 16'd0; issued_q <= 8'd0; received_q <= 8'd0; ph_q <= 3'd0;
             hb_q <= 1'b0; hd_q <= 1'b0; lazy_q <= 1'b0;
             bs_q <= 9'd0; ds_q <= 9'd0; bl_q <= 8'd0; bc_q <= 32'd0; dc_q <= 32'd0;
             bj_q <= 32'sd0; dj_q <= 32'sd0;
@@ -310,6 +319,7 @@ module mpdcc_core #(
                 cyc_q <= 16'd1;
                 issued_q <= 8'd0;
                 received_q <= 8'd0;
+                ph_q <= 3'd0;
                 hb_q <= 1'b0; hd_q <= 1'b0; lazy_q <= 1'b0;
             end else if (busy_q) begin
                 cyc_q <= cyc_q + 16'd1;
@@ -318,6 +328,7 @@ module mpdcc_core #(
                     if (pre_q == 6'd1) gen_q <= 1'b1;
                 end
                 if (gen_q) begin
+                    ph_q <= (ph_q == II[2:0] - 3'd1) ? 3'd0 : ph_q + 3'd1;
                     cur_q <= nxt;
                     issued_q <= issued_q + nissue;
                     if (last_now) gen_q <= 1'b0;
@@ -353,7 +364,9 @@ module mpdcc_core #(
     // explorer by its own FORMAL block: out_valid_o is in_valid_i exactly
     // F_LAT clocks later, cleared by a reset. Power-up is the all-zero state
     // (no reset assumed); a reset may come at any clock.
-    localparam integer F_LAT = 41;  // mpdcc_explorer's LAT (asserted there)
+    // The monitor below is written for II = 1 (an issue every clock), the
+    // configuration the proof runs (the default parameters).
+    localparam integer F_LAT = 41;  // mpdcc_explorer's LAT at II = 1 (asserted there)
     localparam integer F_CL = COMMON_LATENCY;
     localparam integer F_AM = ARGMIN_LEVELS;  // a result leaves the tree this much later
     localparam [2:0] F_NU = N[2:0];

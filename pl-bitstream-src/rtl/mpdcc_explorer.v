@@ -1,6 +1,15 @@
-// mpdcc_explorer: one MPDCC explorer unit (models::mpdcc::mpdcc_fixed::explore of
-// the frozen core, Structure::CORE), pipelined: one candidate per clock,
-// fixed latency LATENCY = 41 cycles.
+// mpdcc_explorer: one MPDCC explorer unit (models::mpdcc::fpga::explore of
+// the frozen core, Structure::CORE), pipelined: one candidate every II
+// clocks, fixed latency LAT = 41 + max(II - 3, 0) cycles.
+//
+// II = 1: seven search lanes, one per output, one candidate per clock.
+// II = 2..7: ceil(7 / II) lanes shared by the seven outputs: the node
+// changes of a candidate are held at stage 15 and lane i searches outputs
+// i, i + L, i + 2 L, ... on successive clocks (L lanes); a running minimum
+// collects their l_j. The caller gives an explorer at most one candidate
+// every II clocks (mpdcc_core's scheduler does). Stage numbers below are
+// those of II = 1; with II > 3 everything from stage 30 on is II - 3
+// stages later.
 //
 // Per candidate s (three 3-bit positions) it predicts the seven output
 // errors at the nodes k + 8, 16, 32, 64 (node changes, eq. 18b with the
@@ -50,7 +59,9 @@
 //  37  square   38  x lambda_n   39  rnd(., 17)   40  + J_sw   41  J
 `default_nettype none
 
-module mpdcc_explorer (
+module mpdcc_explorer #(
+    parameter integer II = 1  // clocks per candidate (1..7)
+) (
     input  wire               clk_i,
     input  wire               rst_i,
     // one candidate per clock
@@ -83,7 +94,14 @@ module mpdcc_explorer (
 );
     localparam integer W = 48;
     localparam signed [W-1:0] NODE_MAX = 48'sd131071;
-    localparam integer LAT = 41;
+    // stages the shared lanes add (II > 3: the running minimum ends later
+    // than the II = 1 min tree)
+    localparam integer EXTRA = (II > 3) ? II - 3 : 0;
+    localparam integer LAT = 41 + EXTRA;
+    // search lanes
+    localparam integer NL = (7 + II - 1) / II;
+    // J_dl words (Q2.13 differences, |e1| - bnd: |value| < 2^17)
+    localparam integer JW = 20;
 
     // ---------------------------------------------------------------- valid
     wire [LAT:0] v;
@@ -115,6 +133,9 @@ module mpdcc_explorer (
     endfunction
     function automatic signed [W-1:0] sx32(input [31:0] x);
         sx32 = {{(W - 32) {x[31]}}, x};
+    endfunction
+    function automatic [7:0] umin(input [7:0] a, input [7:0] b);
+        umin = (b < a) ? b : a;
     endfunction
 
     // ---------------------------------------------------- stage 1: positions
@@ -394,84 +415,146 @@ module mpdcc_explorer (
     endgenerate
 
     // ------------------------------------------------ stages 15-26: lanes
-    wire [7:0] lj_26 [0:6];
-    wire [6:0] lv;
+    wire [7:0] lmin_29;
     generate
-        for (gi = 0; gi < 7; gi = gi + 1) begin : g_lane
-            mpdcc_lane u_lane (
-                .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(v[14]),
-                .e0_i(e0_i[16*gi +: 16]),
-                .n0_i(nodes_14[0][gi]), .n1_i(nodes_14[1][gi]),
-                .n2_i(nodes_14[2][gi]), .n3_i(nodes_14[3][gi]),
-                .bnd_i(bnd_i[16*gi +: 15]),
-                .out_valid_o(lv[gi]), .lj_o(lj_26[gi]));
+        if (II == 1) begin : g_lanes
+            wire [7:0] lj_26 [0:6];
+            wire [6:0] lv;
+            for (gi = 0; gi < 7; gi = gi + 1) begin : g_lane
+                mpdcc_lane u_lane (
+                    .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(v[14]),
+                    .e0_i(e0_i[16*gi +: 16]),
+                    .n0_i(nodes_14[0][gi]), .n1_i(nodes_14[1][gi]),
+                    .n2_i(nodes_14[2][gi]), .n3_i(nodes_14[3][gi]),
+                    .bnd_i(bnd_i[16*gi +: 15]),
+                    .out_valid_o(lv[gi]), .lj_o(lj_26[gi]));
+            end
+            // stages 27-29: min l_j
+            wire [7:0] n27 [0:3];
+            wire [7:0] n28 [0:1];
+            mpdcc_pipe #(.W(8), .N(1)) u_n0 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(lj_26[0], lj_26[1])), .q_o(n27[0]));
+            mpdcc_pipe #(.W(8), .N(1)) u_n1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(lj_26[2], lj_26[3])), .q_o(n27[1]));
+            mpdcc_pipe #(.W(8), .N(1)) u_n2 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(lj_26[4], lj_26[5])), .q_o(n27[2]));
+            mpdcc_pipe #(.W(8), .N(1)) u_n3 (.clk_i(clk_i), .rst_i(rst_i), .d_i(lj_26[6]), .q_o(n27[3]));
+            mpdcc_pipe #(.W(8), .N(1)) u_n4 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(n27[0], n27[1])), .q_o(n28[0]));
+            mpdcc_pipe #(.W(8), .N(1)) u_n5 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(n27[2], n27[3])), .q_o(n28[1]));
+            mpdcc_pipe #(.W(8), .N(1)) u_n6 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(n28[0], n28[1])), .q_o(lmin_29));
+        end else begin : g_shared
+            // The node changes and e0, bnd of output j: {bnd, e0, n3..n0}.
+            localparam integer CW = 15 + 16 + 4 * 18;
+            wire [7*CW-1:0] col;
+            for (gi = 0; gi < 7; gi = gi + 1) begin : g_col
+                assign col[CW*gi +: CW] = {bnd_i[16*gi +: 15], e0_i[16*gi +: 16],
+                    nodes_14[3][gi], nodes_14[2][gi], nodes_14[1][gi], nodes_14[0][gi]};
+            end
+            // held from stage 15 on for the clocks t = 1 .. II - 1
+            reg [7*CW-1:0] hold_q;
+            always @(posedge clk_i) begin
+                if (rst_i) hold_q <= {(7 * CW) {1'b0}};
+                else if (v[14]) hold_q <= col;
+            end
+            // lane i at the clock t after stage 14 (v[14 + t]): output i + NL t
+            wire [7:0] lj [0:NL-1];
+            wire [NL-1:0] lv;
+            wire lane_in = |v[14 +: II];
+            for (gi = 0; gi < NL; gi = gi + 1) begin : g_lane
+                reg [CW-1:0] c;
+                integer t;
+                always @(*) begin
+                    c = col[CW*gi +: CW];
+                    for (t = 1; t < II; t = t + 1)
+                        // (the index is kept in range where the output does not exist)
+                        if (v[14+t] && gi + NL * t < 7) c = hold_q[CW*((gi+NL*t) % 7) +: CW];
+                end
+                mpdcc_lane u_lane (
+                    .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(lane_in),
+                    .e0_i(c[72 +: 16]),
+                    .n0_i(c[0 +: 18]), .n1_i(c[18 +: 18]),
+                    .n2_i(c[36 +: 18]), .n3_i(c[54 +: 18]),
+                    .bnd_i(c[88 +: 15]),
+                    .out_valid_o(lv[gi]), .lj_o(lj[gi]));
+            end
+            // Running minimum over the II clocks: the lanes' results of
+            // clock t (v[26 + t]) for the outputs that exist (i + NL t < 7).
+            reg [7:0] m;
+            integer t, q;
+            always @(*) begin
+                m = 8'hFF;
+                for (q = 0; q < NL; q = q + 1)
+                    for (t = 0; t < II; t = t + 1)
+                        if (v[26+t] && q + NL * t < 7) m = umin(m, lj[q]);
+            end
+            reg [7:0] acc_q;
+            always @(posedge clk_i) begin
+                if (rst_i) acc_q <= 8'd0;
+                else acc_q <= v[26] ? m : umin(acc_q, m);
+            end
+            // the minimum is complete at stage 26 + II; L* reads it at 29 + EXTRA
+            if (3 + EXTRA - II > 0) begin : g_pad
+                mpdcc_pipe #(.W(8), .N(3 + EXTRA - II)) u_pad (.clk_i(clk_i), .rst_i(rst_i),
+                    .d_i(acc_q), .q_o(lmin_29));
+            end else begin : g_nopad
+                assign lmin_29 = acc_q;
+            end
         end
     endgenerate
 
-    // J_dl and inside-at-k beside the lanes (stages 16-21, 15-17)
-    wire signed [W-1:0] x_18 [0:6];
+    // J_dl and inside-at-k beside the lanes (stages 16-21, 15-17), JW-bit
+    // words: |e1| < 2^16 + 2^15, bnd in 16 bits, so |e1| - bnd and |e0|
+    // are exact in JW = 20 bits.
+    function automatic signed [JW-1:0] jx16(input [15:0] x);
+        jx16 = {{(JW - 16) {x[15]}}, x};
+    endfunction
+    wire signed [JW-1:0] x_18 [0:6];
     wire [6:0] ok_16;
     generate
         for (gi = 0; gi < 7; gi = gi + 1) begin : g_jdl
-            wire signed [W-1:0] e0w = sx16(e0_i[16*gi +: 16]);
-            wire signed [W-1:0] bw = sx16(bnd_i[16*gi +: 16]);
-            wire signed [W-1:0] e1_16, a_17, ae0_15;
-            mpdcc_pipe #(.W(W), .N(1)) u_e1 (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(e0w + sx16(d1_15[gi])), .q_o(e1_16));
-            mpdcc_pipe #(.W(W), .N(1)) u_a (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(e1_16[W-1] ? 0 - e1_16 : e1_16), .q_o(a_17));
-            mpdcc_pipe #(.W(W), .N(1)) u_x (.clk_i(clk_i), .rst_i(rst_i), .d_i(a_17 - bw), .q_o(x_18[gi]));
-            mpdcc_pipe #(.W(W), .N(1)) u_ae0 (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(e0w[W-1] ? 0 - e0w : e0w), .q_o(ae0_15));
+            wire signed [JW-1:0] e0w = jx16(e0_i[16*gi +: 16]);
+            wire signed [JW-1:0] bw = jx16(bnd_i[16*gi +: 16]);
+            wire signed [JW-1:0] e1_16, a_17, ae0_15;
+            mpdcc_pipe #(.W(JW), .N(1)) u_e1 (.clk_i(clk_i), .rst_i(rst_i),
+                .d_i(e0w + jx16(d1_15[gi])), .q_o(e1_16));
+            mpdcc_pipe #(.W(JW), .N(1)) u_a (.clk_i(clk_i), .rst_i(rst_i),
+                .d_i(e1_16[JW-1] ? {JW{1'b0}} - e1_16 : e1_16), .q_o(a_17));
+            mpdcc_pipe #(.W(JW), .N(1)) u_x (.clk_i(clk_i), .rst_i(rst_i), .d_i(a_17 - bw), .q_o(x_18[gi]));
+            mpdcc_pipe #(.W(JW), .N(1)) u_ae0 (.clk_i(clk_i), .rst_i(rst_i),
+                .d_i(e0w[JW-1] ? {JW{1'b0}} - e0w : e0w), .q_o(ae0_15));
             mpdcc_pipe #(.W(1), .N(1)) u_ok (.clk_i(clk_i), .rst_i(rst_i), .d_i(ae0_15 <= bw), .q_o(ok_16[gi]));
         end
     endgenerate
-    function automatic signed [W-1:0] smax(input signed [W-1:0] a, input signed [W-1:0] b);
+    function automatic signed [JW-1:0] smax(input signed [JW-1:0] a, input signed [JW-1:0] b);
         smax = (b > a) ? b : a;
     endfunction
-    wire signed [W-1:0] m19 [0:3];
-    wire signed [W-1:0] m20 [0:1];
-    wire signed [W-1:0] jdl_21;
-    mpdcc_pipe #(.W(W), .N(1)) u_m0 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(x_18[0], x_18[1])), .q_o(m19[0]));
-    mpdcc_pipe #(.W(W), .N(1)) u_m1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(x_18[2], x_18[3])), .q_o(m19[1]));
-    mpdcc_pipe #(.W(W), .N(1)) u_m2 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(x_18[4], x_18[5])), .q_o(m19[2]));
-    mpdcc_pipe #(.W(W), .N(1)) u_m3 (.clk_i(clk_i), .rst_i(rst_i), .d_i(x_18[6]), .q_o(m19[3]));
-    mpdcc_pipe #(.W(W), .N(1)) u_m4 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(m19[0], m19[1])), .q_o(m20[0]));
-    mpdcc_pipe #(.W(W), .N(1)) u_m5 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(m19[2], m19[3])), .q_o(m20[1]));
-    mpdcc_pipe #(.W(W), .N(1)) u_m6 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(m20[0], m20[1])), .q_o(jdl_21));
+    wire signed [JW-1:0] m19 [0:3];
+    wire signed [JW-1:0] m20 [0:1];
+    wire signed [JW-1:0] jdl_21;
+    mpdcc_pipe #(.W(JW), .N(1)) u_m0 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(x_18[0], x_18[1])), .q_o(m19[0]));
+    mpdcc_pipe #(.W(JW), .N(1)) u_m1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(x_18[2], x_18[3])), .q_o(m19[1]));
+    mpdcc_pipe #(.W(JW), .N(1)) u_m2 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(x_18[4], x_18[5])), .q_o(m19[2]));
+    mpdcc_pipe #(.W(JW), .N(1)) u_m3 (.clk_i(clk_i), .rst_i(rst_i), .d_i(x_18[6]), .q_o(m19[3]));
+    mpdcc_pipe #(.W(JW), .N(1)) u_m4 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(m19[0], m19[1])), .q_o(m20[0]));
+    mpdcc_pipe #(.W(JW), .N(1)) u_m5 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(m19[2], m19[3])), .q_o(m20[1]));
+    mpdcc_pipe #(.W(JW), .N(1)) u_m6 (.clk_i(clk_i), .rst_i(rst_i), .d_i(smax(m20[0], m20[1])), .q_o(jdl_21));
     wire inside_17;
     mpdcc_pipe #(.W(1), .N(1)) u_in (.clk_i(clk_i), .rst_i(rst_i), .d_i(&ok_16), .q_o(inside_17));
-    wire signed [W-1:0] jdl_29;
+    wire signed [JW-1:0] jdl_29;
     wire inside_29;
-    mpdcc_pipe #(.W(W), .N(8)) u_jdld (.clk_i(clk_i), .rst_i(rst_i), .d_i(jdl_21), .q_o(jdl_29));
-    mpdcc_pipe #(.W(1), .N(12)) u_ind (.clk_i(clk_i), .rst_i(rst_i), .d_i(inside_17), .q_o(inside_29));
+    mpdcc_pipe #(.W(JW), .N(8 + EXTRA)) u_jdld (.clk_i(clk_i), .rst_i(rst_i), .d_i(jdl_21), .q_o(jdl_29));
+    mpdcc_pipe #(.W(1), .N(12 + EXTRA)) u_ind (.clk_i(clk_i), .rst_i(rst_i), .d_i(inside_17), .q_o(inside_29));
 
-    // ------------------------------------------- stages 27-30: min l_j, L*
-    function automatic [7:0] umin(input [7:0] a, input [7:0] b);
-        umin = (b < a) ? b : a;
-    endfunction
-    wire [7:0] n27 [0:3];
-    wire [7:0] n28 [0:1];
-    wire [7:0] lmin_29;
-    mpdcc_pipe #(.W(8), .N(1)) u_n0 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(lj_26[0], lj_26[1])), .q_o(n27[0]));
-    mpdcc_pipe #(.W(8), .N(1)) u_n1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(lj_26[2], lj_26[3])), .q_o(n27[1]));
-    mpdcc_pipe #(.W(8), .N(1)) u_n2 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(lj_26[4], lj_26[5])), .q_o(n27[2]));
-    mpdcc_pipe #(.W(8), .N(1)) u_n3 (.clk_i(clk_i), .rst_i(rst_i), .d_i(lj_26[6]), .q_o(n27[3]));
-    mpdcc_pipe #(.W(8), .N(1)) u_n4 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(n27[0], n27[1])), .q_o(n28[0]));
-    mpdcc_pipe #(.W(8), .N(1)) u_n5 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(n27[2], n27[3])), .q_o(n28[1]));
-    mpdcc_pipe #(.W(8), .N(1)) u_n6 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(n28[0], n28[1])), .q_o(lmin_29));
+    // ------------------------------------------------------- stage 30: L*
     wire [7:0] ls_30;
     wire [7:0] ls_d = (jdl_29 > 0 || !inside_29) ? 8'd0 : (lmin_29 == 8'd0) ? 8'd1 : lmin_29;
     mpdcc_pipe #(.W(8), .N(1)) u_ls (.clk_i(clk_i), .rst_i(rst_i), .d_i(ls_d), .q_o(ls_30));
-    wire signed [W-1:0] jdl_30;
-    mpdcc_pipe #(.W(W), .N(1)) u_jdl30 (.clk_i(clk_i), .rst_i(rst_i), .d_i(jdl_29), .q_o(jdl_30));
+    wire signed [JW-1:0] jdl_30;
+    mpdcc_pipe #(.W(JW), .N(1)) u_jdl30 (.clk_i(clk_i), .rst_i(rst_i), .d_i(jdl_29), .q_o(jdl_30));
 
     // ----------------------------------------------- stages 31-41: cost
     // v_n node changes, delayed from stage 14 to 30
     wire signed [17:0] vn_30 [0:3];
     generate
         for (gi = 0; gi < 4; gi = gi + 1) begin : g_vn
-            mpdcc_pipe #(.W(18), .N(16)) u_d (.clk_i(clk_i), .rst_i(rst_i), .d_i(nodes_14[gi][3]), .q_o(vn_30[gi]));
+            mpdcc_pipe #(.W(18), .N(16 + EXTRA)) u_d (.clk_i(clk_i), .rst_i(rst_i), .d_i(nodes_14[gi][3]), .q_o(vn_30[gi]));
         end
     endgenerate
     // reciprocal ROM: round(2^17 / l), l = 1..128 (entry 0 unused)
@@ -511,7 +594,7 @@ module mpdcc_explorer (
     mpdcc_pipe #(.W(2), .N(1)) u_pc (.clk_i(clk_i), .rst_i(rst_i), .d_i(pc), .q_o(pc_31));
     mpdcc_pipe #(.W(8), .N(1)) u_ls31 (.clk_i(clk_i), .rst_i(rst_i), .d_i(ls_30), .q_o(ls_31));
     wire [3:0] fs_31;
-    mpdcc_pipe #(.W(4), .N(30)) u_fs31 (.clk_i(clk_i), .rst_i(rst_i), .d_i(fs1_q), .q_o(fs_31));
+    mpdcc_pipe #(.W(4), .N(30 + EXTRA)) u_fs31 (.clk_i(clk_i), .rst_i(rst_i), .d_i(fs1_q), .q_o(fs_31));
     // 32: products
     wire signed [8:0]  dl_s = {1'b0, dl_31};
     wire signed [18:0] slope_s = slope_31[18:0];
@@ -561,15 +644,15 @@ module mpdcc_explorer (
                          (tot_40 > 48'h0000_FFFF_FFFE) ? 32'hFFFF_FFFE : tot_40[31:0];
     mpdcc_pipe #(.W(32), .N(1)) u_cost (.clk_i(clk_i), .rst_i(rst_i), .d_i(cost_d), .q_o(cost_o));
     mpdcc_pipe #(.W(8), .N(1)) u_lso (.clk_i(clk_i), .rst_i(rst_i), .d_i(ls_40), .q_o(l_star_o));
-    wire signed [W-1:0] jdl_41;
-    mpdcc_pipe #(.W(W), .N(11)) u_jdlo (.clk_i(clk_i), .rst_i(rst_i), .d_i(jdl_30), .q_o(jdl_41));
-    assign j_dl_o = jdl_41[31:0];
+    wire signed [JW-1:0] jdl_41;
+    mpdcc_pipe #(.W(JW), .N(11)) u_jdlo (.clk_i(clk_i), .rst_i(rst_i), .d_i(jdl_30), .q_o(jdl_41));
+    assign j_dl_o = {{(32 - JW) {jdl_41[JW-1]}}, jdl_41};
     assign s_o = s_out;
     assign fs_o = fs_out;
     // deltas: node k + 8 saturated to 16 bits, delayed from 14 to 41
     generate
         for (gi = 0; gi < 7; gi = gi + 1) begin : g_d0
-            mpdcc_pipe #(.W(16), .N(27)) u_d (.clk_i(clk_i), .rst_i(rst_i),
+            mpdcc_pipe #(.W(16), .N(27 + EXTRA)) u_d (.clk_i(clk_i), .rst_i(rst_i),
                 .d_i(sat16({{(W - 18) {nodes_14[0][gi][17]}}, nodes_14[0][gi]})), .q_o(d0_o[16*gi +: 16]));
         end
     endgenerate
@@ -592,7 +675,7 @@ module mpdcc_explorer (
     end
     always @(*) begin
         // mpdcc_core's proof assumes this latency: change both together.
-        assert (LAT == 41);
+        assert (LAT == 41 + ((II > 3) ? II - 3 : 0));
         assert (out_valid_o == f_v[LAT]);
     end
     // Stage by stage, so that the proof is inductive in one step.

@@ -1,5 +1,5 @@
 // mpdcc_lane: the search lane of one output of an MPDCC explorer
-// (models::mpdcc::mpdcc_fixed::lane for the frozen core, Structure::CORE), pipelined:
+// (models::mpdcc::fpga::lane for the frozen core, Structure::CORE), pipelined:
 // one output per clock, fixed latency LATENCY = 12 cycles.
 //
 // Core constants: L = 8 (LAMBDA = 3), N_bar = 128, four interpolation nodes

@@ -719,7 +719,7 @@ module pl_regs (
             mpdtc_fe_gain_b_q <= 18'h0;
             mpdtc_fe_gain_c_q <= 18'h0;
             mpdcc_start_q <= 1'h0;
-            mpdcc_n_use_q <= 3'h2;
+            mpdcc_n_use_q <= 3'h1;
             mpdcc_s_prev_q <= 9'h0;
             mpdcc_i_a_q <= 16'h0;
             mpdcc_i_b_q <= 16'h0;

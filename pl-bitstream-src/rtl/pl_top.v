@@ -43,7 +43,10 @@
 `default_nettype none
 
 module pl_top #(
-    parameter integer MPDCC_N = 2  // explorer units of mpdcc_core (1..6)
+    parameter integer MPDCC_N = 1,  // explorer units of mpdcc_core (1..6)
+    // clocks per candidate of each explorer (1: full rate; 4: two shared
+    // search lanes, 927 cycles for 216 candidates at N = 1, docs/rtl.md)
+    parameter integer MPDCC_II = 4
 ) (
     input  wire        clk_i,
     input  wire        s_axi_aresetn_i,
@@ -743,7 +746,8 @@ module pl_top #(
     end
 
     mpdcc_core #(
-        .N(MPDCC_N)
+        .N(MPDCC_N),
+        .II(MPDCC_II)
     ) u_mpdcc (
         .clk_i       (clk_i),
         .rst_i       (rst),

@@ -86,7 +86,27 @@ const TOPS: &[(&str, &[&str], &str)] = &[
         ],
         "mpdcc_core_shim.cpp",
     ),
+    // The same core in pl_top's configuration: explorers with shared
+    // search lanes, one candidate every MPDCC_CORE_SHARED_II clocks.
+    (
+        MPDCC_CORE_SHARED,
+        &[
+            "mpdcc_core.v",
+            "mpdcc_explorer.v",
+            "mpdcc_lane.v",
+            "mpdcc_piece.v",
+            "mpdcc_pipe.v",
+        ],
+        "mpdcc_core_shared_shim.cpp",
+    ),
 ];
+
+/// The Verilated `mpdcc_core` with `II = MPDCC_CORE_SHARED_II` (the model
+/// name; its Verilog top is `mpdcc_core`).
+const MPDCC_CORE_SHARED: &str = "mpdcc_core_shared";
+/// `II` of pl_top's `mpdcc_core` (regmap::MPDCC_II; the bit-exact runs
+/// check the cycle count of this II, so a difference fails them).
+const MPDCC_CORE_SHARED_II: u32 = 4;
 
 fn run(cmd: &mut Command) {
     let status = cmd
@@ -149,7 +169,14 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         .arg("--build")
         .args(["-j", "2"])
         .arg("--no-timing")
-        .args(["--top-module", top])
+        .args([
+            "--top-module",
+            if top == MPDCC_CORE_SHARED {
+                "mpdcc_core"
+            } else {
+                top
+            },
+        ])
         .args(["--prefix", &format!("V{top}")])
         .arg("--Mdir")
         .arg(&mdir)
@@ -160,9 +187,12 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         ])
         .arg("-Wno-fatal")
         .arg(format!("-I{}", rtl.display()));
-    if top == "mpdcc_core" {
+    if top == "mpdcc_core" || top == MPDCC_CORE_SHARED {
         // The most explorers of the table; a run uses n_use_i of them.
         cmd.arg(format!("-GN={MPDCC_CORE_EXPLORERS}"));
+    }
+    if top == MPDCC_CORE_SHARED {
+        cmd.arg(format!("-GII={MPDCC_CORE_SHARED_II}"));
     }
     if let Some(n) = netlist {
         // The cell models of the yosys that wrote the netlist: `CELLS_ENV`,
@@ -332,6 +362,7 @@ fn main() {
         println!("cargo:rustc-link-lib=static=vtop_{top}");
     }
     println!("cargo:rustc-link-lib=static=verilated");
+    println!("cargo:rustc-env=RTL_SIM_MPDCC_CORE_SHARED_II={MPDCC_CORE_SHARED_II}");
     println!("cargo:rustc-link-lib=dylib=stdc++");
     println!("cargo:rustc-link-lib=dylib=pthread");
 }

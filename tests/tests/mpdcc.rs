@@ -58,7 +58,7 @@ fn assert_model_run(r: &Reply) {
             kept + opt + dl
         )
     );
-    assert!(line("core_cycles:").ends_with("worst 173 (PL clock cycles)"));
+    assert!(line("core_cycles:").ends_with("worst 927 (PL clock cycles)"));
     assert!(
         (num(r, "f_sw") - want.fsw_hz).abs() < 0.05,
         "{r:?} {want:?}"
@@ -197,7 +197,7 @@ fn mode_mpdcc_runs_the_hil_loop_paced_by_the_control_periods() {
     assert!(
         rest(&st, "mpdcc_cycles")
             .unwrap()
-            .ends_with("worst 173 PL cycles"),
+            .ends_with("worst 927 PL cycles"),
         "{st:?}"
     );
     assert_eq!(rest(&st, "mpdcc_stopped"), None, "{st:?}");

@@ -13,7 +13,13 @@
 use super::{field, Access, Field, Hw, Invalid, Register};
 
 /// Explorer units `pl_top` instantiates by default (its `MPDCC_N` parameter).
-pub const MPDCC_EXPLORERS: u32 = 2;
+pub const MPDCC_EXPLORERS: u32 = 1;
+/// Clocks per candidate of each explorer in `pl_top`'s default build (its
+/// `MPDCC_II` parameter; 1 = full rate): the explorers share two search
+/// lanes, so a decision on 216 candidates takes 927 cycles
+/// (`models::mpdcc::cycles::pipelined_core_cycles_ii`). Only the cycle
+/// count depends on it; `MPDCC_CYCLES` reports the core's own count.
+pub const MPDCC_II: u32 = 4;
 /// `lambda = log2 L` the core is built for (`L` = 8 steps).
 pub const MPDCC_LAMBDA: u32 = 3;
 /// `M = log2 N_bar` of the core's search (`N_bar` = 128 steps).

@@ -4978,7 +4978,7 @@ pub mod mpdcc {
         }
     }
 
-    /// `MPDCC.MPDCC_N_USE` at `0x43C02008` (RW, 3 bits, reset `0x2`): Explorers the next decision uses (n_use); the core takes at most MPDCC_CONFIG.EXPLORERS of them. Only the cycle count depends on it.
+    /// `MPDCC.MPDCC_N_USE` at `0x43C02008` (RW, 3 bits, reset `0x1`): Explorers the next decision uses (n_use); the core takes at most MPDCC_CONFIG.EXPLORERS of them. Only the cycle count depends on it.
     ///
     /// Format: unsigned, explorer units. Writes: the hardware clamps the written word to 1..=6 (so a value wider than the field is clamped, not wrapped).
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -5019,7 +5019,7 @@ pub mod mpdcc {
 
     impl MpdccNUseValue {
         /// The value after reset.
-        pub const RESET: Self = Self(0x2);
+        pub const RESET: Self = Self(0x1);
         /// All zeros.
         pub const ZERO: Self = Self(0);
 
@@ -5050,7 +5050,7 @@ pub mod mpdcc {
         }
     }
 
-    /// `MPDCC.MPDCC_CONFIG` at `0x43C0200C` (RO, 16 bits, reset `0x4732`): The constants the core is built with (reset: the default build); Coeffs must agree (lambda, m_bits, nodes).
+    /// `MPDCC.MPDCC_CONFIG` at `0x43C0200C` (RO, 16 bits, reset `0x4731`): The constants the core is built with (reset: the default build); Coeffs must agree (lambda, m_bits, nodes).
     ///
     /// Format: four unsigned fields. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -5074,7 +5074,7 @@ pub mod mpdcc {
 
     impl MpdccConfigValue {
         /// The value after reset.
-        pub const RESET: Self = Self(0x4732);
+        pub const RESET: Self = Self(0x4731);
         /// All zeros.
         pub const ZERO: Self = Self(0);
 

@@ -148,7 +148,8 @@ impl MpdccBlock {
             (DecisionKind::Deadlock, Some(r)) => (mpdcc_kind::DEADLOCK, r.cost, r.j_dl),
             _ => (mpdcc_kind::KEPT, 0, 0),
         };
-        let core_cycles = cycles::pipelined_core_cycles(n, candidates(s_prev).len() as u32);
+        let core_cycles =
+            cycles::pipelined_core_cycles_ii(n, rm::MPDCC_II, candidates(s_prev).len() as u32);
         Outputs {
             decision: u32::from(d.s[0])
                 | (u32::from(d.s[1]) << 3)
@@ -275,11 +276,13 @@ mod tests {
                 | kind << 12
                 | want.horizon_steps << 16
         );
-        // The search time of the core: common terms, ceil(|S| / 2) issue
-        // cycles at N = 2, the explorer latency, the arg-min tree, the last
-        // fold.
+        // The search time of the core in pl_top's build (N = 1, II = 4):
+        // common terms, the last of |S| candidates issued 4 (|S| - 1)
+        // clocks after the first, the explorer latency 42, the arg-min
+        // tree, the last fold.
+        assert_eq!((rm::MPDCC_EXPLORERS, rm::MPDCC_II), (1, 4));
         let n = candidates(x.s_prev).len() as u32;
-        assert_eq!(out.cycles & 0xFFFF, 20 + n.div_ceil(2) + 41 + 3 + 1);
+        assert_eq!(out.cycles & 0xFFFF, 20 + 4 * (n - 1) + 1 + 42 + 3 + 1);
         assert_eq!(out.cycles >> 16, want.candidates);
     }
 
@@ -293,8 +296,9 @@ mod tests {
         let mut m = Mpdcc(Bus(SimPl::new(10)));
         m.load_coeffs(f.coeffs()).unwrap();
         m.write_inputs(&x).unwrap();
-        let c = u64::from(cycles::pipelined_core_cycles(
-            2,
+        let c = u64::from(cycles::pipelined_core_cycles_ii(
+            rm::MPDCC_EXPLORERS,
+            rm::MPDCC_II,
             candidates(x.s_prev).len() as u32,
         ));
         let a_status = MPDCC.addr(&rm::MPDCC_STATUS);
@@ -305,7 +309,7 @@ mod tests {
         let mut busy_from = None;
         let mut result_at = None;
         let mut done_at = None;
-        for _ in 0..400 {
+        for _ in 0..1200 {
             let now = m.0 .0.cycles();
             let st = m.0 .0.peek(a_status).unwrap();
             if st & 1 == 1 && busy_from.is_none() {

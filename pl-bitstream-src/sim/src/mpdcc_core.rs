@@ -1,7 +1,7 @@
-//! Safe wrapper of the Verilated `mpdcc_core` (shim:
-//! `csrc/mpdcc_core_shim.cpp`, 6 explorers instantiated, `n_use` of them
-//! used): one call = one decision from the state registers
-//! (`models::mpdcc::mpdcc_fixed::Inputs`).
+//! Safe wrapper of the Verilated `mpdcc_core` in its two datapaths (shims:
+//! `csrc/mpdcc_core_shim.cpp`, `csrc/mpdcc_core_shared_shim.cpp`; 6
+//! explorers instantiated, `n_use` of them used): one call = one decision
+//! from the state registers (`models::mpdcc::mpdcc_fixed::Inputs`).
 use core::ffi::c_void;
 use core::ptr::NonNull;
 
@@ -61,6 +61,31 @@ extern "C" {
     fn mk_new() -> *mut c_void;
     fn mk_decide(p: *mut c_void, c: *const MkIn, n_use: i32, out: *mut MkOut);
     fn mk_free(p: *mut c_void);
+    fn mks_new() -> *mut c_void;
+    fn mks_decide(p: *mut c_void, c: *const MkIn, n_use: i32, out: *mut MkOut);
+    fn mks_free(p: *mut c_void);
+}
+
+/// The datapath of a Verilated `mpdcc_core` (its `II` parameter).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CoreConfig {
+    /// `II = 1`: one candidate per clock per explorer, seven search lanes.
+    FullRate,
+    /// `pl_top`'s configuration: one candidate every [`CoreConfig::ii`]
+    /// clocks per explorer on shared search lanes.
+    PlTop,
+}
+
+impl CoreConfig {
+    /// Clocks per candidate of each explorer (`mpdcc_core` parameter `II`).
+    pub fn ii(self) -> u32 {
+        match self {
+            Self::FullRate => 1,
+            Self::PlTop => env!("RTL_SIM_MPDCC_CORE_SHARED_II")
+                .parse()
+                .expect("II set by build.rs"),
+        }
+    }
 }
 
 /// One decision of the RTL core.
@@ -88,14 +113,31 @@ pub struct RtlDecision {
 /// One Verilated `mpdcc_core`.
 pub struct MpdccCoreSim {
     ptr: NonNull<c_void>,
+    config: CoreConfig,
 }
 
 impl MpdccCoreSim {
-    /// A new core after reset.
+    /// A new full-rate core (`II = 1`) after reset.
     pub fn new() -> Self {
-        // SAFETY: mk_new returns a fresh heap object owned by this value.
-        let ptr = NonNull::new(unsafe { mk_new() }).expect("mk_new returned null");
-        Self { ptr }
+        Self::with_config(CoreConfig::FullRate)
+    }
+
+    /// A new core of the given datapath after reset.
+    pub fn with_config(config: CoreConfig) -> Self {
+        // SAFETY: mk_new / mks_new return a fresh heap object owned by this value.
+        let raw = unsafe {
+            match config {
+                CoreConfig::FullRate => mk_new(),
+                CoreConfig::PlTop => mks_new(),
+            }
+        };
+        let ptr = NonNull::new(raw).expect("mk_new returned null");
+        Self { ptr, config }
+    }
+
+    /// The datapath of this core.
+    pub fn config(&self) -> CoreConfig {
+        self.config
     }
 
     /// One decision on the state registers `x` with the constants `k` and
@@ -135,7 +177,16 @@ impl MpdccCoreSim {
         };
         let mut o = MkOut::default();
         // SAFETY: live object; repr(C) structs that match the shim.
-        unsafe { mk_decide(self.ptr.as_ptr(), &cm, n_use.min(7) as i32, &mut o) };
+        unsafe {
+            match self.config {
+                CoreConfig::FullRate => {
+                    mk_decide(self.ptr.as_ptr(), &cm, n_use.min(7) as i32, &mut o)
+                }
+                CoreConfig::PlTop => {
+                    mks_decide(self.ptr.as_ptr(), &cm, n_use.min(7) as i32, &mut o)
+                }
+            }
+        };
         RtlDecision {
             s: o.s.map(|v| v as u8),
             kind: match o.kind {
@@ -162,7 +213,13 @@ impl Default for MpdccCoreSim {
 
 impl Drop for MpdccCoreSim {
     fn drop(&mut self) {
-        // SAFETY: the pointer came from mk_new and is freed exactly once.
-        unsafe { mk_free(self.ptr.as_ptr()) }
+        // SAFETY: the pointer came from mk_new / mks_new (by config) and is
+        // freed exactly once, by the matching function.
+        unsafe {
+            match self.config {
+                CoreConfig::FullRate => mk_free(self.ptr.as_ptr()),
+                CoreConfig::PlTop => mks_free(self.ptr.as_ptr()),
+            }
+        }
     }
 }

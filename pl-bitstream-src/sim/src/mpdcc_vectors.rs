@@ -376,8 +376,15 @@ pub struct CoreSummary {
 /// FPGA-model-driven loop (kept steps included), its steps that search, and
 /// random states, some of them the constructed worst case
 /// (`s(k-1)` with six admissible positions per phase, 216 candidates),
-/// through `mpdcc_core` with `explorers` explorers and `MpdccFixed::decide_raw`.
-pub fn check_core(seed: u64, n: u64, explorers: u32) -> CoreSummary {
+/// through `mpdcc_core` of datapath `config` with `explorers` explorers and
+/// `MpdccFixed::decide_raw`; the cycle count against
+/// `cycles::pipelined_core_cycles_ii` of the datapath's `II`.
+pub fn check_core(
+    seed: u64,
+    n: u64,
+    explorers: u32,
+    config: crate::mpdcc_core::CoreConfig,
+) -> CoreSummary {
     use crate::mpdcc_core::MpdccCoreSim;
     use models::mpdcc::controller::DecisionKind;
     use models::mpdcc::cycles;
@@ -388,7 +395,7 @@ pub fn check_core(seed: u64, n: u64, explorers: u32) -> CoreSummary {
     let cl = closed_loop_all_states();
     let searched = closed_loop_states();
     let first = (seed as usize * 7919) % cl.len().max(1);
-    let mut sim = MpdccCoreSim::new();
+    let mut sim = MpdccCoreSim::with_config(config);
     let mut s = CoreSummary {
         vectors: 0,
         explorers,
@@ -424,7 +431,8 @@ pub fn check_core(seed: u64, n: u64, explorers: u32) -> CoreSummary {
             (_, Some(r)) => (r.cost, r.j_dl),
         };
         let cands = models::mpdcc::controller::candidates(x.s_prev).len() as u32;
-        let model_cycles = cycles::pipelined_core_cycles(explorers.clamp(1, 6), cands);
+        let model_cycles =
+            cycles::pipelined_core_cycles_ii(explorers.clamp(1, 6), config.ii(), cands);
         let ok = got.s == d.s
             && got.kind == Some(d.kind)
             && got.horizon_steps == d.horizon_steps

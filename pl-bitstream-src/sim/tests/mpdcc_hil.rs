@@ -6,7 +6,8 @@
 //! (`models::mpdcc::mpdcc_fixed::MpdccFixed`) decision for decision over two
 //! fundamental periods: same positions, kinds, `L*`, candidate counts, so
 //! the same trajectory and the same statistics; and each decision's cycle
-//! count must be the core's (`cycles::pipelined_core_cycles`).
+//! count must be the core's (`cycles::pipelined_core_cycles_ii` of pl_top's
+//! `MPDCC_N` explorers and `MPDCC_II`).
 use std::time::Instant;
 
 use drive::pl::mpdcc::Mpdcc;
@@ -19,8 +20,8 @@ use rtl_sim::mpdcc_vectors::core;
 use rtl_sim::pl_top::PlTopSim;
 
 /// Status polls allowed per decision (2 PL cycles each; a decision takes at
-/// most 20 + 108 + 41 + 3 + 1 + 2 cycles at N = 2).
-const MAX_POLLS: u32 = 200;
+/// most 927 + 2 cycles in pl_top's configuration, N = 1, II = 4).
+const MAX_POLLS: u32 = 600;
 
 /// The core on the register page of the Verilated `pl_top`.
 struct Hil {
@@ -38,8 +39,9 @@ impl Controller for Hil {
         let x = Inputs::quantize(st)?;
         let t0 = self.pl.0.cycles;
         let d = self.pl.decide(&x, MAX_POLLS).expect("MPDCC page");
-        let model = cycles::pipelined_core_cycles(
+        let model = cycles::pipelined_core_cycles_ii(
             regmap::MPDCC_EXPLORERS,
+            regmap::MPDCC_II,
             candidates(x.s_prev).len() as u32,
         );
         self.cycles.push((d.cycles, model, self.pl.0.cycles - t0));

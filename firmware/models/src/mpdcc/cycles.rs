@@ -1164,11 +1164,37 @@ pub const PIPELINED_ARGMIN_LEVELS: u32 = 3;
 /// `s(k-1)` itself). Checked against the RTL's own count on every vector
 /// of `scripts/rtl-check mpdcc`.
 pub fn pipelined_core_cycles(n: u32, candidates: u32) -> u32 {
-    PIPELINED_COMMON_LATENCY
-        + candidates.div_ceil(n.max(1))
-        + PIPELINED_EXPLORER_LATENCY
-        + PIPELINED_ARGMIN_LEVELS
-        + 1
+    pipelined_core_cycles_ii(n, 1, candidates)
+}
+
+/// Latency of `mpdcc_explorer` that takes one candidate every `ii` clocks
+/// (`II` = 1..7, clamped): [`PIPELINED_EXPLORER_LATENCY`] at `ii <= 3`
+/// (the running minimum of `ceil(7 / ii)` shared search lanes ends no later
+/// than the full-rate min tree), `ii - 3` cycles more above.
+pub const fn pipelined_explorer_latency(ii: u32) -> u32 {
+    let ii = if ii < 1 {
+        1
+    } else if ii > 7 {
+        7
+    } else {
+        ii
+    };
+    PIPELINED_EXPLORER_LATENCY + ii.saturating_sub(3)
+}
+
+/// [`pipelined_core_cycles`] of a core whose explorers take one candidate
+/// every `ii` clocks (`mpdcc_core` parameter `II`, 1..7): the `G =
+/// ceil(|S| / n)` issue clocks are `ii` clocks apart, so the last group
+/// issues `ii (G - 1)` clocks after the first, then the explorers' latency
+/// ([`pipelined_explorer_latency`]), the arg-min tree and the fold. `ii =
+/// 1` is [`pipelined_core_cycles`].
+pub fn pipelined_core_cycles_ii(n: u32, ii: u32, candidates: u32) -> u32 {
+    let groups = candidates.div_ceil(n.max(1));
+    let issue = match groups {
+        0 => 0,
+        g => ii.clamp(1, 7) * (g - 1) + 1,
+    };
+    PIPELINED_COMMON_LATENCY + issue + pipelined_explorer_latency(ii) + PIPELINED_ARGMIN_LEVELS + 1
 }
 
 /// The paper's Table II, worst-case cycles for `n = 1..6` explorers.
@@ -1313,6 +1339,22 @@ mod tests {
         assert_eq!(pipelined_core_cycles(4, 216), 20 + 54 + 41 + 3 + 1);
         assert_eq!(pipelined_core_cycles(5, 216), 20 + 44 + 41 + 3 + 1);
         assert_eq!(pipelined_core_cycles(6, 5), 20 + 1 + 41 + 3 + 1);
+        // shared lanes: issue clocks II apart, latency 41 + max(II - 3, 0)
+        assert_eq!(
+            pipelined_core_cycles_ii(1, 4, 216),
+            20 + 4 * 215 + 1 + 42 + 3 + 1
+        );
+        assert_eq!(pipelined_core_cycles_ii(1, 4, 216), 927);
+        assert_eq!(
+            pipelined_core_cycles_ii(2, 3, 216),
+            20 + 3 * 107 + 1 + 41 + 3 + 1
+        );
+        for n in 1..=6 {
+            assert_eq!(
+                pipelined_core_cycles_ii(n, 1, 216),
+                pipelined_core_cycles(n, 216)
+            );
+        }
         // Against the structural model of the iterative explorers: more
         // than 20 times fewer cycles at every N for the full set (24x at
         // N = 6, 42x at N = 2).

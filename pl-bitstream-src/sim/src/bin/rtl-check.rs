@@ -6,17 +6,24 @@
 //! 2 on bad arguments.
 //! `rtl-check mpdcc-lane --seed S --vectors N`: the same for the MPDCC
 //! explorer's search lane (`mpdcc_lane` against `models::mpdcc::mpdcc_fixed::lane`).
-//! `rtl-check mpdcc --seed S --vectors N [--explorers N]`: N decisions through
-//! `mpdcc_core` against `MpdccFixed::decide_raw` (decision, kind, `L*`,
-//! candidates, `J`, `J_dl`, cycle count).
+//! `rtl-check mpdcc --seed S --vectors N [--explorers N] [--ii I]`: N
+//! decisions through `mpdcc_core` against `MpdccFixed::decide_raw` (decision,
+//! kind, `L*`, candidates, `J`, `J_dl`, cycle count). Default: `pl_top`'s
+//! configuration (`regmap::MPDCC_EXPLORERS` explorers, `II =
+//! regmap::MPDCC_II`, shared search lanes); `--ii 1` the full-rate datapath.
 //! `rtl-check mpdcc-explorer --seed S --vectors N`: N decision states, every
 //! candidate through `mpdcc_explorer` against `models::mpdcc::mpdcc_fixed::explore`.
 use std::process::ExitCode;
 use std::time::Instant;
 
+use rtl_sim::mpdcc_core::CoreConfig;
+
 fn usage() -> ExitCode {
     eprintln!(
-        "usage: rtl-check mpdtc|frontend|mpdcc|mpdcc-lane|mpdcc-explorer [--seed S] [--vectors N] [--explorers N (mpdcc, 1..6, default 2)]   (defaults: seed 1, 100000 vectors)"
+        "usage: rtl-check mpdtc|frontend|mpdcc|mpdcc-lane|mpdcc-explorer [--seed S] [--vectors N] [--explorers N (mpdcc, 1..6, default {})] [--ii I (mpdcc: 1 full rate or {} shared lanes, default {})]   (defaults: seed 1, 100000 vectors)",
+        regmap::MPDCC_EXPLORERS,
+        CoreConfig::PlTop.ii(),
+        CoreConfig::PlTop.ii()
     );
     ExitCode::from(2)
 }
@@ -29,7 +36,9 @@ fn main() -> ExitCode {
         }
         _ => return usage(),
     };
-    let (mut seed, mut vectors, mut explorers) = (1u64, 100_000u64, 2u64);
+    let (mut seed, mut vectors) = (1u64, 100_000u64);
+    let mut explorers = u64::from(regmap::MPDCC_EXPLORERS);
+    let mut config = CoreConfig::PlTop;
     let mut it = args[1..].iter();
     while let Some(a) = it.next() {
         let val = it.next().and_then(|v| v.parse::<u64>().ok());
@@ -37,12 +46,16 @@ fn main() -> ExitCode {
             ("--seed", Some(v)) => seed = v,
             ("--vectors", Some(v)) if v > 0 => vectors = v,
             ("--explorers", Some(v)) if core == "mpdcc" && (1..=6).contains(&v) => explorers = v,
+            ("--ii", Some(1)) if core == "mpdcc" => config = CoreConfig::FullRate,
+            ("--ii", Some(v)) if core == "mpdcc" && v == u64::from(CoreConfig::PlTop.ii()) => {
+                config = CoreConfig::PlTop
+            }
             _ => return usage(),
         }
     }
     let t0 = Instant::now();
     if core == "mpdcc" {
-        return mpdcc(seed, vectors, explorers as u32, t0);
+        return mpdcc(seed, vectors, explorers as u32, config, t0);
     }
     if core == "mpdcc-lane" {
         return mpdcc_lane(seed, vectors, t0);
@@ -116,15 +129,16 @@ fn mpdcc_explorer(seed: u64, vectors: u64, t0: Instant) -> ExitCode {
     verdict(s.mismatches == 0 && s.latency_cycles.is_some())
 }
 
-fn mpdcc(seed: u64, vectors: u64, explorers: u32, t0: Instant) -> ExitCode {
-    let s = rtl_sim::mpdcc_vectors::check_core(seed, vectors, explorers);
+fn mpdcc(seed: u64, vectors: u64, explorers: u32, config: CoreConfig, t0: Instant) -> ExitCode {
+    let s = rtl_sim::mpdcc_vectors::check_core(seed, vectors, explorers, config);
     println!(
-        "{{\"core\":\"mpdcc\",\"seed\":{seed},\"vectors\":{},\"mismatches\":{},\"explorers\":{},\
+        "{{\"core\":\"mpdcc\",\"seed\":{seed},\"vectors\":{},\"mismatches\":{},\"explorers\":{},\"ii\":{},\
          \"worst_case_cycles\":{},\"mean_cycles\":{:.1},\"first_mismatch\":{},\"kept\":{},\"optimal\":{},\
          \"deadlock\":{},\"seconds\":{:.2}}}",
         s.vectors,
         s.mismatches,
         s.explorers,
+        config.ii(),
         s.worst_case_cycles,
         s.mean_cycles,
         json_opt(s.first_mismatch),
