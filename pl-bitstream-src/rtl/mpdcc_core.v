@@ -1,6 +1,6 @@
 // mpdcc_core: the MPDCC core of paper 001 (Algorithm 1) with a central
 // scheduler and N pipelined explorers, bit-exact with the decision of
-// models::mpdcc::fpga (FpgaMpdcc::decide_raw, frozen core Structure::CORE).
+// models::mpdcc::mpdcc_fixed (MpdccFixed::decide_raw, frozen core Structure::CORE).
 //
 // Inputs are the state registers (models::mpdcc::fpga::Inputs, already
 // quantized) and the design constants (Coeffs), held stable from start_i to
