@@ -28,6 +28,7 @@
 extern crate std;
 
 pub mod fixedpoint;
+pub mod calibration;
 pub mod frames;
 pub mod motion;
 pub mod mpdcc;

@@ -46,6 +46,8 @@ mod sweep;
 mod tel;
 pub use sweep::{bandwidth_hz, record_response, tone_response, Sine, SweepPoint};
 pub mod sensors;
+pub mod calibrate;
+use calibrate::{CalReport, CalRun};
 use sensors::{PlTime, SensorFault, SensorReport};
 
 /// Control periods without a new ADC result that latch `ADC_STUCK`: two.
@@ -520,6 +522,67 @@ impl Servo {
         mode?;
         self.sensors_ok = r.result.is_ok();
         Ok(r)
+    }
+
+    /// Runs a calibration ([`calibrate`]): refused with the gates on and
+    /// while a fault is latched. The gates are off and the mode restored
+    /// afterwards whatever happened; the configuration is not touched (the
+    /// caller applies the results).
+    pub fn calibrate<B: PlTime>(
+        &mut self,
+        bus: &mut B,
+        setup: &models::calibration::Setup,
+        on_phase: &mut dyn FnMut(Option<models::calibration::Phase>) -> bool,
+    ) -> Result<CalReport, ServoError> {
+        if self.gates || self.gates_on(bus)? {
+            return Err(ServoError::GatesOn);
+        }
+        let f = self.faults(bus)?;
+        if !f.none() {
+            return Err(ServoError::FaultLatched(f));
+        }
+        setup.validate().map_err(ServoError::BadConfig)?;
+        let half = self.cfg.foc_half_period_cycles;
+        let mut run = CalRun {
+            bus: &mut *bus,
+            beat: &mut self.beat,
+            half,
+            u_dc_v: self.cfg.motor.u_dc_v,
+            amps_per_count: self.cfg.adc.amps_per_count,
+            cycles: 0,
+        };
+        let r = run.run(setup, on_phase);
+        let off = Pwm(&mut *bus).set_gates(false);
+        let duties = Pwm(&mut *bus).set_duties([0.5; 3], half);
+        let mode = Top(&mut *bus).set_mode(self.mode);
+        self.note_skipped();
+        let r = r?;
+        off?;
+        duties?;
+        mode?;
+        Ok(r)
+    }
+
+    /// The calibration's starting point from this configuration: its
+    /// motor, encoder and PWM period, with the given limits and phases.
+    pub fn calibration_setup(
+        &self,
+        current_a: f64,
+        voltage_v: f64,
+        phases: models::calibration::Phases,
+    ) -> models::calibration::Setup {
+        models::calibration::Setup {
+            current_a,
+            voltage_v,
+            period_s: period_s(2 * self.cfg.foc_half_period_cycles),
+            cpr: self.cfg.enc_cpr,
+            motor: MotorParams {
+                j_kg_m2: self.cfg.motion.load_inertia_kg_m2.max(self.cfg.motor.j_kg_m2),
+                ..self.cfg.motor
+            },
+            enc_zero: self.cfg.enc_zero,
+            phases,
+        }
     }
 
     /// [`Servo::enable`], after the sensor check when one is due; a failed
