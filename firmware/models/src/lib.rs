@@ -27,8 +27,8 @@
 #[cfg(feature = "std")]
 extern crate std;
 
-pub mod fixedpoint;
 pub mod calibration;
+pub mod fixedpoint;
 pub mod frames;
 pub mod motion;
 pub mod mpdcc;

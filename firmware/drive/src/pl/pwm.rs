@@ -79,7 +79,11 @@ impl<B: RegisterBus> Pwm<B> {
     pub fn phase(&mut self, half_period: u32) -> Result<u32, BusError> {
         let c = PwmCount::read(&mut self.0)?;
         let count = c.count().min(half_period);
-        Ok(if c.down() { 2 * half_period - count } else { count })
+        Ok(if c.down() {
+            2 * half_period - count
+        } else {
+            count
+        })
     }
     /// `GATE_STATUS`: (upper gates, lower gates, requested state), bit 2 = leg a.
     pub fn gate_status(&mut self) -> Result<(u8, u8, u8), BusError> {

@@ -92,6 +92,10 @@ impl<B: PlTime> CalRun<'_, B> {
         Pwm(&mut *self.bus).set_duties([0.5; 3], self.half)?;
         Pwm(&mut *self.bus).set_gates(true)?;
         let quarter = self.half / 2;
+        // The ADC's samples at fixed phases of the PWM period (as the FOC
+        // restarts it): the four results read below are its 16 samples.
+        self.wait_phase(2)?;
+        Adc(&mut *self.bus).restart()?;
         self.wait_phase(STEP_PHASE)?;
         let mut phase = None;
         loop {
@@ -132,10 +136,7 @@ impl<B: PlTime> CalRun<'_, B> {
         }
         Pwm(&mut *self.bus).set_gates(false)?;
         report.results = *cal.results();
-        #[cfg(not(target_os = "none"))]
-        extern crate std;
-        #[cfg(not(target_os = "none"))]
-        std::eprintln!("{:?}", cal.debug());
+
         report.cycles = self.cycles;
         Ok(report)
     }

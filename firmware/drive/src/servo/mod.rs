@@ -45,8 +45,8 @@ mod sweep;
 // Telemetry: the channels of one control period.
 mod tel;
 pub use sweep::{bandwidth_hz, record_response, tone_response, Sine, SweepPoint};
-pub mod sensors;
 pub mod calibrate;
+pub mod sensors;
 use calibrate::{CalReport, CalRun};
 use sensors::{PlTime, SensorFault, SensorReport};
 
@@ -577,7 +577,11 @@ impl Servo {
             period_s: period_s(2 * self.cfg.foc_half_period_cycles),
             cpr: self.cfg.enc_cpr,
             motor: MotorParams {
-                j_kg_m2: self.cfg.motion.load_inertia_kg_m2.max(self.cfg.motor.j_kg_m2),
+                j_kg_m2: self
+                    .cfg
+                    .motion
+                    .load_inertia_kg_m2
+                    .max(self.cfg.motor.j_kg_m2),
                 ..self.cfg.motor
             },
             enc_zero: self.cfg.enc_zero,

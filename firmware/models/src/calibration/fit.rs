@@ -195,7 +195,11 @@ mod tests {
         // Uniform noise of half-width 0.01: RMS 0.01 / sqrt(3).
         assert!((s.rms - 0.01 / 3f64.sqrt()).abs() < 5e-4, "{}", s.rms);
         // Slope error of a line: s / sqrt(sum (x - mean)^2) = 5.77e-3 / 91.2.
-        assert!((s.se(0) - 0.01 / 3f64.sqrt() / 91.2).abs() < 1e-5, "{}", s.se(0));
+        assert!(
+            (s.se(0) - 0.01 / 3f64.sqrt() / 91.2).abs() < 1e-5,
+            "{}",
+            s.se(0)
+        );
     }
 
     #[test]

@@ -4,7 +4,7 @@
 //! phase ends.
 use super::fit::{Lsq, Mean};
 use super::{
-    bounds, Command, EncoderEst, Estimate, MechEst, Measurement, Outcome, Phase, Results, Setup,
+    bounds, Command, EncoderEst, Estimate, Measurement, MechEst, Outcome, Phase, Results, Setup,
 };
 use crate::frames::{clarke, inv_park, park};
 use core::f64::consts::{PI, TAU};
@@ -176,6 +176,8 @@ pub struct Calibrator {
     lines: [Line; 2],
     dir_idx: usize,
     locked: bool,
+    /// Electrical radians per encoder count, from the first turn (signed).
+    s_r: f64,
     // Resistance.
     r_v: [Mean; 4],
     r_i: [Mean; 4],
@@ -238,6 +240,7 @@ impl Calibrator {
             lines: [Line::default(); 2],
             dir_idx: 0,
             locked: false,
+            s_r: 0.0,
             r_v: [Mean::default(); 4],
             r_i: [Mean::default(); 4],
             r_fit: None,
@@ -373,6 +376,20 @@ impl Calibrator {
         i.clamp(-0.5 * self.s.current_a, 0.5 * self.s.current_a)
     }
 
+    /// The encoder phase's damping: a q-axis current (field frame) against
+    /// the rotor's electrical speed relative to the field's `w_field`
+    /// (rad/s), once the first turn gave the counts per electrical radian.
+    fn field_damping_a(&self, w_field: f64) -> f64 {
+        if self.s_r == 0.0 {
+            return 0.0;
+        }
+        let p = libm::fabs(self.s_r) * self.cpr() / TAU;
+        let d = self.pos_u - self.hist[0];
+        let w = self.s_r * d as f64 / (SPEED_WINDOW as f64 * self.s.period_s);
+        let k = self.s.motor.j_kg_m2 * TAU * 30.0 / (1.5 * p * p * self.s.motor.psi_pm_wb);
+        (-k * (w - w_field)).clamp(-0.5 * self.s.current_a, 0.5 * self.s.current_a)
+    }
+
     /// One control period: the measurement of period `k` in, the voltage
     /// for period `k + 2` out.
     pub fn step(&mut self, m: &Measurement) -> Command {
@@ -421,8 +438,9 @@ impl Calibrator {
             d -= cpr;
         }
         // The index pulse re-zeroes the counter once: a jump no motor makes
-        // in a period is that, not motion.
-        if d.abs() > cpr / 8 {
+        // in a period (a 64th of a turn in 62.5 us: 250 rev/s) is that,
+        // not motion.
+        if d.abs() > (cpr / 64).max(2) {
             d = 0;
         }
         self.raw_prev = self.raw;
@@ -482,7 +500,12 @@ impl Calibrator {
     }
 
     /// The stage machine; `None` when finished.
-    fn run(&mut self, i_ab: (f64, f64), v_app: (f64, f64), th_app: f64) -> Option<((f64, f64), f64)> {
+    fn run(
+        &mut self,
+        i_ab: (f64, f64),
+        v_app: (f64, f64),
+        th_app: f64,
+    ) -> Option<((f64, f64), f64)> {
         if self.stage == Stage::Next {
             self.next_phase();
         }
@@ -522,6 +545,7 @@ impl Calibrator {
                 let sgn = if fwd { 1.0 } else { -1.0 };
                 self.travel += self.pos_u - self.pos_u_prev;
                 self.theta_ref += sgn * w_turn * frac;
+                self.i_ref.1 = self.field_damping_a(sgn * w_turn * frac / self.s.period_s);
                 let v = self.current_loop(i_ab, th_app, self.theta_ref);
                 if n + 1 >= RAMP_STEPS {
                     let next = match self.stage {
@@ -534,6 +558,7 @@ impl Calibrator {
                                 self.theta_ref = 0.0;
                                 Stage::Next
                             } else {
+                                self.s_r = TAU / self.travel as f64;
                                 Stage::EncFwd
                             }
                         }
@@ -568,7 +593,9 @@ impl Calibrator {
                     let x = (f64::from(raw0) + mid) / self.cpr();
                     self.lines[self.dir_idx].add(x, y / TAU);
                 }
-                self.theta_ref += if fwd { w_turn } else { -w_turn };
+                let w = if fwd { w_turn } else { -w_turn };
+                self.theta_ref += w;
+                self.i_ref.1 = self.field_damping_a(w / self.s.period_s);
                 let v = self.current_loop(i_ab, th_app, self.theta_ref);
                 if (n + 1) % TURN_STEPS == 0 {
                     self.turns += 1;
@@ -588,7 +615,11 @@ impl Calibrator {
                         if self.turns >= t0 + FIT_TURNS {
                             self.fit_turn0 = None;
                             self.x0 = None;
-                            self.set_stage(if fwd { Stage::EncFwdStop } else { Stage::EncBwdStop });
+                            self.set_stage(if fwd {
+                                Stage::EncFwdStop
+                            } else {
+                                Stage::EncBwdStop
+                            });
                         }
                     }
                 }
@@ -614,9 +645,14 @@ impl Calibrator {
                 let from = if j == 0 { self.i_ref.0 } else { level };
                 self.i_ref = (self.ramp_to(from, level, n, CURRENT_RAMP), self.damping_a());
                 if j == 0 && n < CURRENT_RAMP {
-                    self.i_ref.0 = from + (level - from) * f64::from(n + 1) / f64::from(CURRENT_RAMP);
+                    self.i_ref.0 =
+                        from + (level - from) * f64::from(n + 1) / f64::from(CURRENT_RAMP);
                 }
-                let settle = if j == 0 { CURRENT_RAMP + 2 * R_SETTLE } else { R_SETTLE };
+                let settle = if j == 0 {
+                    CURRENT_RAMP + 2 * R_SETTLE
+                } else {
+                    R_SETTLE
+                };
                 if n >= settle {
                     self.r_v[j].add(v_app.0);
                     self.r_i[j].add(i_ab.0);
@@ -635,16 +671,17 @@ impl Calibrator {
             Stage::LStep(j) => {
                 // Open loop: the mean voltages of the 0.5 and 1.0 levels.
                 if j == 0 && n == 0 {
-                    self.l_v = [
-                        (self.r_v[0].mean(), 0.0),
-                        (self.r_v[3].mean(), 0.0),
-                    ];
+                    self.l_v = [(self.r_v[0].mean(), 0.0), (self.r_v[3].mean(), 0.0)];
                     self.i_prev = i_ab.0;
                 }
                 let hi = j % 2 == 1;
                 if n >= 4 {
                     self.l_fit.add(
-                        [self.i_prev, f64::from(u8::from(hi)), f64::from(u8::from(!hi))],
+                        [
+                            self.i_prev,
+                            f64::from(u8::from(hi)),
+                            f64::from(u8::from(!hi)),
+                        ],
                         i_ab.0,
                     );
                 }
@@ -828,9 +865,15 @@ impl Calibrator {
             pole_pairs_exact: p_exact,
         };
         if libm::fabs(p_exact - p) > bounds::POLE_PAIRS_FRAC {
-            Outcome::Poor(est, "pole pairs: electrical per mechanical turns not a whole number")
+            Outcome::Poor(
+                est,
+                "pole pairs: electrical per mechanical turns not a whole number",
+            )
         } else if sigma_deg > bounds::ZERO_DEG {
-            Outcome::Poor(est, "encoder offset: the rotor did not follow the field smoothly")
+            Outcome::Poor(
+                est,
+                "encoder offset: the rotor did not follow the field smoothly",
+            )
         } else {
             Outcome::Done(est)
         }
@@ -965,13 +1008,25 @@ impl Calibrator {
             dth_w += dw * dth;
         }
         let j = num / den;
-        let res2: f64 = rows.iter().map(|(dw, rhs)| (rhs - j * dw) * (rhs - j * dw)).sum();
+        let res2: f64 = rows
+            .iter()
+            .map(|(dw, rhs)| (rhs - j * dw) * (rhs - j * dw))
+            .sum();
         let se_fit = libm::sqrt(res2 / 2.0 / den);
         let sigma_j = libm::hypot(se_fit, sb * dth_w / den).max(1e-3 * j);
         let est = MechEst {
-            j: Estimate { value: j, sigma: sigma_j },
-            b: Estimate { value: b, sigma: sb },
-            coulomb: Estimate { value: tc, sigma: stc },
+            j: Estimate {
+                value: j,
+                sigma: sigma_j,
+            },
+            b: Estimate {
+                value: b,
+                sigma: sb,
+            },
+            coulomb: Estimate {
+                value: tc,
+                sigma: stc,
+            },
         };
         let _ = w_e;
         self.res.mechanics = if !(j > 0.0) {

@@ -70,11 +70,15 @@ impl Phase {
     /// What it does (the progress line).
     pub fn what(self) -> &'static str {
         match self {
-            Phase::Encoder => "current vector turned forwards then backwards, encoder fitted to its angle",
+            Phase::Encoder => {
+                "current vector turned forwards then backwards, encoder fitted to its angle"
+            }
             Phase::Resistance => "d-axis current at four levels, voltage over current slope",
             Phase::Inductance => "voltage steps at standstill, current time constant",
             Phase::Flux => "q-axis voltage balance at three speeds under velocity control",
-            Phase::Mechanics => "torque to three speeds: friction from the levels, inertia from the steps",
+            Phase::Mechanics => {
+                "torque to three speeds: friction from the levels, inertia from the steps"
+            }
         }
     }
 
@@ -283,7 +287,7 @@ pub mod bounds {
     /// J.
     pub const J_REL: f64 = 0.05;
     /// Encoder offset, electrical degrees.
-    pub const ZERO_DEG: f64 = 0.5;
+    pub const ZERO_DEG: f64 = 2.0;
     /// Pole pairs: distance of the fitted ratio from a whole number.
     pub const POLE_PAIRS_FRAC: f64 = 0.1;
 }
