@@ -136,7 +136,6 @@ impl<B: PlTime> CalRun<'_, B> {
         }
         Pwm(&mut *self.bus).set_gates(false)?;
         report.results = *cal.results();
-
         report.cycles = self.cycles;
         Ok(report)
     }

@@ -15,7 +15,7 @@ const TURN_STEPS: u32 = 200;
 /// A raised-cosine speed ramp of this many periods covers exactly one turn.
 const RAMP_STEPS: u32 = 2 * TURN_STEPS;
 /// Electrical turns fitted in each direction.
-const FIT_TURNS: u32 = 3;
+const FIT_TURNS: u32 = 6;
 /// Most electrical turns forwards before the index must have passed (64
 /// pole pairs and a margin).
 const MAX_TURNS: u32 = 80;
@@ -38,6 +38,8 @@ const SPIN_LEVELS: [f64; 3] = [0.35, 0.65, 0.95];
 const SPEED_WINDOW: usize = 16;
 /// Current ramp periods (up or down).
 const CURRENT_RAMP: u32 = 160;
+/// d-axis current while spinning, fraction of the calibration current.
+const SPIN_ID: f64 = 0.5;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Stage {
@@ -176,8 +178,11 @@ pub struct Calibrator {
     lines: [Line; 2],
     dir_idx: usize,
     locked: bool,
-    /// Electrical radians per encoder count, from the first turn (signed).
+    /// +1 or -1: the encoder's counting direction with the field, from
+    /// the first turn (0 before).
     s_r: f64,
+    /// Mean mechanical speed of the encoder phase's damping, rad/s.
+    w_avg: f64,
     // Resistance.
     r_v: [Mean; 4],
     r_i: [Mean; 4],
@@ -192,6 +197,8 @@ pub struct Calibrator {
     iq_int: f64,
     spin_v: [[Mean; 4]; 3],
     spin_pos: [(i64, u64); 3],
+    /// Acceleration over each speed window (second half against first), rad/s^2.
+    spin_acc: [f64; 3],
     snaps: [Snap; 4],
     spin_top: f64,
     spin_start: i64,
@@ -241,6 +248,7 @@ impl Calibrator {
             dir_idx: 0,
             locked: false,
             s_r: 0.0,
+            w_avg: 0.0,
             r_v: [Mean::default(); 4],
             r_i: [Mean::default(); 4],
             r_fit: None,
@@ -252,20 +260,13 @@ impl Calibrator {
             iq_int: 0.0,
             spin_v: [[Mean::default(); 4]; 3],
             spin_pos: [(0, 0); 3],
+            spin_acc: [0.0; 3],
             snaps: [Snap::default(); 4],
             spin_top: 0.0,
             spin_start: 0,
             spin_done: false,
             last_i: (0.0, 0.0),
         }
-    }
-
-    #[doc(hidden)]
-    pub fn debug(&self) -> ([(f64, f64, f64); 4], [f64; 2]) {
-        (
-            core::array::from_fn(|j| (self.r_i[j].mean(), self.r_v[j].mean(), self.r_v[j].std())),
-            [self.lines[0].slope(), self.lines[1].slope()],
-        )
     }
 
     /// The phase running now (`None` before the first step and at the end).
@@ -377,17 +378,20 @@ impl Calibrator {
     }
 
     /// The encoder phase's damping: a q-axis current (field frame) against
-    /// the rotor's electrical speed relative to the field's `w_field`
-    /// (rad/s), once the first turn gave the counts per electrical radian.
-    fn field_damping_a(&self, w_field: f64) -> f64 {
+    /// the rotor's swing, the mechanical speed less its mean over about a
+    /// turn (a high-pass: no pull on a steady rotation), once the first
+    /// turn showed which way the encoder counts. Gain: a 30 Hz damping rate
+    /// with the configured inertia, flux and pole pairs.
+    fn field_damping_a(&mut self) -> f64 {
         if self.s_r == 0.0 {
             return 0.0;
         }
-        let p = libm::fabs(self.s_r) * self.cpr() / TAU;
         let d = self.pos_u - self.hist[0];
-        let w = self.s_r * d as f64 / (SPEED_WINDOW as f64 * self.s.period_s);
-        let k = self.s.motor.j_kg_m2 * TAU * 30.0 / (1.5 * p * p * self.s.motor.psi_pm_wb);
-        (-k * (w - w_field)).clamp(-0.5 * self.s.current_a, 0.5 * self.s.current_a)
+        let w = self.s_r * d as f64 * TAU / self.cpr() / (SPEED_WINDOW as f64 * self.s.period_s);
+        self.w_avg += (w - self.w_avg) * self.s.period_s / 0.025;
+        let m = &self.s.motor;
+        let k = m.j_kg_m2 * TAU * 30.0 / (1.5 * f64::from(m.pole_pairs) * m.psi_pm_wb);
+        (-k * (w - self.w_avg)).clamp(-0.5 * self.s.current_a, 0.5 * self.s.current_a)
     }
 
     /// One control period: the measurement of period `k` in, the voltage
@@ -545,7 +549,7 @@ impl Calibrator {
                 let sgn = if fwd { 1.0 } else { -1.0 };
                 self.travel += self.pos_u - self.pos_u_prev;
                 self.theta_ref += sgn * w_turn * frac;
-                self.i_ref.1 = self.field_damping_a(sgn * w_turn * frac / self.s.period_s);
+                self.i_ref.1 = self.field_damping_a();
                 let v = self.current_loop(i_ab, th_app, self.theta_ref);
                 if n + 1 >= RAMP_STEPS {
                     let next = match self.stage {
@@ -558,7 +562,12 @@ impl Calibrator {
                                 self.theta_ref = 0.0;
                                 Stage::Next
                             } else {
-                                self.s_r = TAU / self.travel as f64;
+                                // Which way the encoder counts with the field.
+                                self.s_r = if self.travel > 0 { 1.0 } else { -1.0 };
+                                let d = self.pos_u - self.hist[0];
+                                self.w_avg = self.s_r * d as f64 * TAU
+                                    / self.cpr()
+                                    / (SPEED_WINDOW as f64 * self.s.period_s);
                                 Stage::EncFwd
                             }
                         }
@@ -595,7 +604,7 @@ impl Calibrator {
                 }
                 let w = if fwd { w_turn } else { -w_turn };
                 self.theta_ref += w;
-                self.i_ref.1 = self.field_damping_a(w / self.s.period_s);
+                self.i_ref.1 = self.field_damping_a();
                 let v = self.current_loop(i_ab, th_app, self.theta_ref);
                 if (n + 1) % TURN_STEPS == 0 {
                     self.turns += 1;
@@ -737,7 +746,7 @@ impl Calibrator {
                 // Top speed: half the voltage limit as back-EMF.
                 self.spin_top = 0.5 * self.s.voltage_v / self.psi_best() / p;
             }
-            self.i_ref = (self.ramp_to(self.i_ref.0, 0.5 * i_cal, 0, 20), 0.0);
+            self.i_ref = (self.ramp_to(self.i_ref.0, SPIN_ID * i_cal, 0, 20), 0.0);
             if n + 1 >= CURRENT_RAMP {
                 self.spin_start = self.pos_u;
                 self.snaps[0] = Snap {
@@ -761,7 +770,7 @@ impl Calibrator {
             let ww = TAU * 8.0;
             let kp = j_g * ww / kt;
             let e = self.w_ref - w_m;
-            self.w_int = (self.w_int + kp * ww / 5.0 * t * e).clamp(-i_cal, i_cal);
+            self.w_int = (self.w_int + kp * ww / 2.0 * t * e).clamp(-i_cal, i_cal);
             let iq_max = libm::sqrt((i_cal * i_cal - self.i_ref.0 * self.i_ref.0).max(0.0));
             self.i_ref.1 = (kp * e + self.w_int).clamp(-iq_max, iq_max);
             match stage {
@@ -805,6 +814,11 @@ impl Calibrator {
                             / self.cpr()
                             / ((self.k + 1 - k0) as f64 * t);
                         self.snaps[j + 1].w_m = w;
+                        let half = f64::from(SPIN_AVG / 2) * t;
+                        let mid = self.snaps[j + 1].pos;
+                        let w1 = dir * (mid - p0) as f64 * TAU / self.cpr() / half;
+                        let w2 = dir * (self.pos_u - mid) as f64 * TAU / self.cpr() / half;
+                        self.spin_acc[j] = (w2 - w1) / half;
                         if j + 1 < SPIN_LEVELS.len() {
                             self.set_stage(Stage::SpinAccel(j + 1));
                         } else {
@@ -825,7 +839,6 @@ impl Calibrator {
         }
         let (_, iq) = park(i_ab.0, i_ab.1, mid);
         self.iq_int += iq * t;
-        let _ = w_e;
         (self.current_loop(i_ab, mid, th_cmd), th_cmd)
     }
 
@@ -944,18 +957,13 @@ impl Calibrator {
         // turning field is 3/pi of the loss along phase a at standstill.
         let v_dt = 3.0 / PI * self.res.dead_time_v;
         let mut f = Lsq::<2>::default();
-        let mut tq = Lsq::<2>::default();
         let psi_g = self.psi_best();
-        let mut w_e = [0.0; 3];
         for (j, m) in self.spin_v.iter().enumerate() {
-            let [vd, vq, id, iq] = m.map(|x| x.mean());
-            let _ = vd;
+            let [_, vq, id, iq] = m.map(|x| x.mean());
             let w = self.snaps[j + 1].w_m * p;
-            w_e[j] = w;
             let mag = libm::hypot(id, iq).max(1e-9);
             let y = vq - v_dt * iq / mag - r * iq - w * l * id;
             f.add([w / 1000.0, 1.0], y);
-            tq.add([self.snaps[j + 1].w_m, 1.0], iq);
         }
         let flux = match f.solve() {
             Some(sol) => {
@@ -983,37 +991,46 @@ impl Calibrator {
             _ => psi_g,
         };
         let kt = 1.5 * p * psi;
-        let Some(ts) = tq.solve() else {
-            self.res.mechanics = Outcome::Refused("singular fit");
-            return;
-        };
-        let b = kt * ts.b[0];
-        let tc = kt * ts.b[1];
-        let sb = kt * ts.se(0);
-        let stc = kt * ts.se(1);
-        // Inertia: J dw = integral of (T - b w - Tc) between the snapshots.
+        // Friction from the levels (less the inertia's share of any
+        // acceleration left in the windows), inertia from the steps
+        // between them: solved in turn, three times.
         let t = self.s.period_s;
-        let (mut num, mut den, mut dth_w) = (0.0, 0.0, 0.0);
-        let mut rows = [(0.0, 0.0); 3];
         let (dir, _, _) = self.rotor_model();
-        for (jj, row) in rows.iter_mut().enumerate() {
-            let (a, z) = (self.snaps[jj], self.snaps[jj + 1]);
-            let dw = z.w_m - a.w_m;
-            let dth = dir * (z.pos - a.pos) as f64 * TAU / self.cpr();
-            let dt = (z.k - a.k) as f64 * t;
-            let rhs = kt * (z.iq_int - a.iq_int) - b * dth - tc * dt;
-            *row = (dw, rhs);
-            num += dw * rhs;
-            den += dw * dw;
-            dth_w += dw * dth;
+        let mut j = self.s.motor.j_kg_m2;
+        let (mut b, mut tc, mut sb, mut stc, mut sigma_j) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        for _ in 0..3 {
+            let mut tq = Lsq::<2>::default();
+            for (jj, m) in self.spin_v.iter().enumerate() {
+                let torque = kt * m[3].mean() - j * self.spin_acc[jj];
+                tq.add([self.snaps[jj + 1].w_m, 1.0], torque);
+            }
+            let Some(ts) = tq.solve() else {
+                self.res.mechanics = Outcome::Refused("singular fit");
+                return;
+            };
+            (b, tc, sb, stc) = (ts.b[0], ts.b[1], ts.se(0), ts.se(1));
+            // Inertia: J dw = integral of (T - b w - Tc) between the snapshots.
+            let (mut num, mut den, mut dth_w) = (0.0, 0.0, 0.0);
+            let mut rows = [(0.0, 0.0); 3];
+            for (jj, row) in rows.iter_mut().enumerate() {
+                let (a, z) = (self.snaps[jj], self.snaps[jj + 1]);
+                let dw = z.w_m - a.w_m;
+                let dth = dir * (z.pos - a.pos) as f64 * TAU / self.cpr();
+                let dt = (z.k - a.k) as f64 * t;
+                let rhs = kt * (z.iq_int - a.iq_int) - b * dth - tc * dt;
+                *row = (dw, rhs);
+                num += dw * rhs;
+                den += dw * dw;
+                dth_w += dw * dth;
+            }
+            j = num / den;
+            let res2: f64 = rows
+                .iter()
+                .map(|(dw, rhs)| (rhs - j * dw) * (rhs - j * dw))
+                .sum();
+            let se_fit = libm::sqrt(res2 / 2.0 / den);
+            sigma_j = libm::hypot(se_fit, sb * dth_w / den).max(1e-3 * libm::fabs(j));
         }
-        let j = num / den;
-        let res2: f64 = rows
-            .iter()
-            .map(|(dw, rhs)| (rhs - j * dw) * (rhs - j * dw))
-            .sum();
-        let se_fit = libm::sqrt(res2 / 2.0 / den);
-        let sigma_j = libm::hypot(se_fit, sb * dth_w / den).max(1e-3 * j);
         let est = MechEst {
             j: Estimate {
                 value: j,
@@ -1028,7 +1045,6 @@ impl Calibrator {
                 sigma: stc,
             },
         };
-        let _ = w_e;
         self.res.mechanics = if !(j > 0.0) {
             Outcome::Poor(est, "inertia not positive")
         } else if est.j.rel() > bounds::J_REL {
