@@ -64,7 +64,9 @@ fn calibrate(m: &SimMotor) -> (Results, u64) {
     s.init(&mut bus).unwrap();
     s.set_mode(&mut bus, Mode::Foc).unwrap();
     let setup = s.calibration_setup(8.0, 16.0, Phases::ALL);
-    let rep = s.calibrate(&mut bus, &setup, &mut |_| true).unwrap();
+    let rep = s
+        .calibrate(&mut bus, &setup, &mut |_| {}, &mut || false)
+        .unwrap();
     assert_eq!(rep.stopped, None);
     assert!(!s.gates_on(&mut bus).unwrap());
     (rep.results, rep.cycles)

@@ -75,12 +75,13 @@ impl<B: PlTime> CalRun<'_, B> {
     }
 
     /// The whole calibration; the caller turns the gates off and restores
-    /// the mode. `on_phase` sees each new phase and answers whether to go
-    /// on (false: stop, as Ctrl-C).
+    /// the mode. `on_phase` sees each new phase; `stop` is asked every
+    /// period whether to stop now (Ctrl-C).
     pub fn run(
         &mut self,
         setup: &Setup,
-        on_phase: &mut dyn FnMut(Option<Phase>) -> bool,
+        on_phase: &mut dyn FnMut(Option<Phase>),
+        stop: &mut dyn FnMut() -> bool,
     ) -> Result<CalReport, BusError> {
         let mut cal = Calibrator::new(setup);
         let mut report = CalReport {
@@ -123,11 +124,12 @@ impl<B: PlTime> CalRun<'_, B> {
             });
             if cal.phase() != phase {
                 phase = cal.phase();
-                if !on_phase(phase) {
-                    Pwm(&mut *self.bus).set_gates(false)?;
-                    report.stopped = Some(CalStop::Interrupted);
-                    break;
-                }
+                on_phase(phase);
+            }
+            if stop() {
+                Pwm(&mut *self.bus).set_gates(false)?;
+                report.stopped = Some(CalStop::Interrupted);
+                break;
             }
             match cmd {
                 Command::Voltage { alpha_v, beta_v } => self.duties(alpha_v, beta_v)?,

@@ -104,6 +104,10 @@ pub struct ServoConfig {
     pub step_min_nm: f64,
     /// The outer loops (velocity, position, impedance) and their limits.
     pub motion: MotionConfig,
+    /// Largest current magnitude of `calibrate`, A.
+    pub calibration_current_a: f64,
+    /// Largest voltage vector magnitude of `calibrate`, V.
+    pub calibration_voltage_v: f64,
 }
 
 impl Default for ServoConfig {
@@ -132,6 +136,8 @@ impl Default for ServoConfig {
             // Band 5 mN m: about 5 ADC counts of i_q.
             step_min_nm: 0.05,
             motion: MotionConfig::default(),
+            calibration_current_a: 8.0,
+            calibration_voltage_v: 16.0,
         }
     }
 }
@@ -532,7 +538,8 @@ impl Servo {
         &mut self,
         bus: &mut B,
         setup: &models::calibration::Setup,
-        on_phase: &mut dyn FnMut(Option<models::calibration::Phase>) -> bool,
+        on_phase: &mut dyn FnMut(Option<models::calibration::Phase>),
+        stop: &mut dyn FnMut() -> bool,
     ) -> Result<CalReport, ServoError> {
         if self.gates || self.gates_on(bus)? {
             return Err(ServoError::GatesOn);
@@ -551,7 +558,7 @@ impl Servo {
             amps_per_count: self.cfg.adc.amps_per_count,
             cycles: 0,
         };
-        let r = run.run(setup, on_phase);
+        let r = run.run(setup, on_phase, stop);
         let off = Pwm(&mut *bus).set_gates(false);
         let duties = Pwm(&mut *bus).set_duties([0.5; 3], half);
         let mode = Top(&mut *bus).set_mode(self.mode);

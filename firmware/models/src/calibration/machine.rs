@@ -72,6 +72,11 @@ struct Pi {
     vmax: f64,
 }
 
+/// Finite and above zero (NaN is not).
+fn positive(x: f64) -> bool {
+    x > 0.0 && x.is_finite()
+}
+
 fn clamp_circle((x, y): (f64, f64), r: f64) -> (f64, f64) {
     let m = libm::hypot(x, y);
     if m > r && m > 0.0 {
@@ -403,7 +408,7 @@ impl Calibrator {
         self.track(m);
         let i_ab = clarke(m.i_abc_a);
         let big = libm::hypot(i_ab.0, i_ab.1);
-        if !(big <= 2.0 * self.s.current_a) {
+        if big.is_nan() || big > 2.0 * self.s.current_a {
             self.abort("current beyond twice calibration_current");
             return Command::Done;
         }
@@ -731,7 +736,7 @@ impl Calibrator {
     fn spin(&mut self, i_ab: (f64, f64), v_app: (f64, f64), n: u32) -> ((f64, f64), f64) {
         let t = self.s.period_s;
         let i_cal = self.s.current_a;
-        let (mid, th_cmd, w_e) = self.rotor_frame_angles();
+        let (mid, th_cmd, _) = self.rotor_frame_angles();
         let (_, p, _) = self.rotor_model();
         let kt = 1.5 * p * self.psi_best();
         let j_g = self.s.motor.j_kg_m2;
@@ -910,7 +915,7 @@ impl Calibrator {
             return;
         }
         let est = Estimate { value: r, sigma };
-        self.res.resistance = if !(r > 0.0) {
+        self.res.resistance = if !positive(r) {
             Outcome::Poor(est, "resistance not positive")
         } else if est.rel() > bounds::R_REL {
             Outcome::Poor(est, "resistance: the levels do not lie on a line")
@@ -970,7 +975,7 @@ impl Calibrator {
                 let psi = sol.b[0] / 1000.0;
                 let sigma = libm::hypot(sol.se(0) / 1000.0, 1e-3 * psi);
                 let est = Estimate { value: psi, sigma };
-                if !(psi > 0.0) {
+                if !positive(psi) {
                     Outcome::Poor(est, "flux linkage not positive")
                 } else if est.rel() > bounds::PSI_REL {
                     Outcome::Poor(est, "flux linkage: the speeds do not lie on a line")
@@ -1045,7 +1050,7 @@ impl Calibrator {
                 sigma: stc,
             },
         };
-        self.res.mechanics = if !(j > 0.0) {
+        self.res.mechanics = if !positive(j) {
             Outcome::Poor(est, "inertia not positive")
         } else if est.j.rel() > bounds::J_REL {
             Outcome::Poor(est, "inertia: the speed steps disagree")
