@@ -829,6 +829,10 @@ impl Calibrator {
                         } else {
                             self.spin_fit();
                             self.spin_done = true;
+                            if self.s.phases.has(Phase::Mechanics) {
+                                // The same run gave the mechanics.
+                                self.phase = Some(Phase::Mechanics);
+                            }
                             self.set_stage(Stage::SpinStop);
                         }
                     }
