@@ -103,7 +103,7 @@ fn a_fault_during_calibration_leaves_the_gates_off_and_the_configuration_unchang
 
 /// Three seeded motors: R and L within 3 %, psi within 2 %, the encoder's
 /// zero within 1 electrical degree, direction and pole pairs exact, J
-/// within 12 % (docs/calibration.md).
+/// within 10 % (docs/calibration.md).
 #[test]
 fn calibrate_all_measures_three_random_motors() {
     let mut rng = Rng(2311);
@@ -148,7 +148,7 @@ fn calibrate_all_measures_three_random_motors() {
             rel(result(&r, "motor_psi_pm").unwrap(), psi) < 0.02,
             "{r:?}"
         );
-        assert!(rel(result(&r, "load_inertia").unwrap(), j) < 0.12, "{r:?}");
+        assert!(rel(result(&r, "load_inertia").unwrap(), j) < 0.10, "{r:?}");
         if dir > 0 {
             // Everything applied.
             assert_ok(&r);

@@ -137,9 +137,7 @@ fn calibrate_all_on_ten_random_motors() {
     assert!(worst[0] < 0.03 && worst[1] < 0.03, "{worst:?}");
     assert!(worst[2] < 0.02, "{worst:?}");
     assert!(worst[3] < 0.01, "{worst:?}");
-    // Inertia: 12 %, not the 10 % aimed at (docs/calibration.md: the
-    // estimate is biased low by about 7 %).
-    assert!(worst[4] < 0.12 && worst[5] < 0.25, "{worst:?}");
+    assert!(worst[4] < 0.10 && worst[5] < 0.25, "{worst:?}");
 }
 
 /// One drawn motor (seed 1: 7 pole pairs, encoder offset 1397 counts):

@@ -763,7 +763,7 @@ impl Calibrator {
                 self.set_stage(Stage::SpinAccel(0));
             }
         } else {
-            // Speed loop (8 Hz) on the i_q reference, within the limit.
+            // Speed loop (20 Hz) on the i_q reference, within the limit.
             let target = match stage {
                 Stage::SpinAccel(j) | Stage::SpinSettle(j) | Stage::SpinAvg(j) => {
                     SPIN_LEVELS[j] * self.spin_top
@@ -772,7 +772,7 @@ impl Calibrator {
             };
             let acc = 0.5 * kt * i_cal / j_g * t;
             self.w_ref += (target - self.w_ref).clamp(-acc, acc);
-            let ww = TAU * 8.0;
+            let ww = TAU * 20.0;
             let kp = j_g * ww / kt;
             let e = self.w_ref - w_m;
             self.w_int = (self.w_int + kp * ww / 2.0 * t * e).clamp(-i_cal, i_cal);
