@@ -101,64 +101,82 @@ fn a_fault_during_calibration_leaves_the_gates_off_and_the_configuration_unchang
     assert!(st.lines.iter().any(|l| l.contains("gates: off")), "{st:?}");
 }
 
-/// Three seeded motors: R and L within 3 %, psi within 2 %, the encoder's
-/// zero within 1 electrical degree, direction and pole pairs exact, J
-/// within 10 % (docs/calibration.md).
+/// Three seeded motors, each in its own QEMU (in parallel): R and L within
+/// 3 %, psi within 2 %, the encoder's zero within 1 electrical degree,
+/// direction and pole pairs exact, J within 10 % (docs/calibration.md).
 #[test]
 fn calibrate_all_measures_three_random_motors() {
     let mut rng = Rng(2311);
-    for draw in 0..3 {
-        let mut s = boot();
-        let mut f = |x: f64| x * rng.uniform(0.6, 1.4);
-        let (r_s, l, psi) = (f(0.555), f(0.64e-3), f(0.009_287_9));
-        let p = (f(7.0)).round();
-        let (j, b, c) = (f(8.1e-5), f(2e-4), f(5e-3));
-        let off = rng.range(0, 4095);
-        let dir = if rng.range(0, 1) == 0 { 1 } else { -1 };
-        for (n, v) in [
-            ("r_s", r_s),
-            ("l", l),
-            ("psi_pm", psi),
-            ("pole_pairs", p),
-            ("j", j),
-            ("b", b),
-            ("coulomb", c),
-            ("enc_offset", f64::from(off)),
-            ("enc_dir", f64::from(dir)),
-            ("locked", 0.0),
-        ] {
-            assert_ok(&cmd(&mut s, &format!("sim set {n} {v}")));
+    let draws: Vec<_> = (0..3)
+        .map(|_| {
+            let mut f = |x: f64| x * rng.uniform(0.6, 1.4);
+            let m = [
+                f(0.555),
+                f(0.64e-3),
+                f(0.009_287_9),
+                f(7.0).round(),
+                f(8.1e-5),
+                f(2e-4),
+                f(5e-3),
+            ];
+            let off = rng.range(0, 4095);
+            let dir = if rng.range(0, 1) == 0 { 1 } else { -1 };
+            (m, off, dir)
+        })
+        .collect();
+    std::thread::scope(|sc| {
+        for (draw, d) in draws.iter().enumerate() {
+            sc.spawn(move || one_draw(draw, d));
         }
-        let r = calibrate(&mut s, "calibrate all");
-        eprintln!("draw {draw}: {:?}", r.lines);
-        let rel = |est: f64, t: f64| (est / t - 1.0).abs();
-        assert_eq!(
-            result(&r, "encoder_direction"),
-            Some(f64::from(dir)),
-            "{r:?}"
-        );
-        assert_eq!(result(&r, "motor_pole_pairs"), Some(p), "{r:?}");
-        let zero = result(&r, "enc_zero").unwrap();
-        let d = (zero - f64::from(off)) * p * 360.0 / 4096.0;
-        let d = d - 360.0 * (d / 360.0).round();
-        assert!(d.abs() < 1.0, "offset {d} el deg: {r:?}");
-        assert!(rel(result(&r, "motor_r_s").unwrap(), r_s) < 0.03, "{r:?}");
-        assert!(rel(result(&r, "motor_l").unwrap(), l) < 0.03, "{r:?}");
-        assert!(
-            rel(result(&r, "motor_psi_pm").unwrap(), psi) < 0.02,
-            "{r:?}"
-        );
-        assert!(rel(result(&r, "load_inertia").unwrap(), j) < 0.10, "{r:?}");
-        if dir > 0 {
-            // Everything applied.
-            assert_ok(&r);
-            assert_eq!(config(&mut s, "enc_zero"), zero);
-            assert_eq!(config(&mut s, "motor_pole_pairs"), p);
-        } else {
-            // An encoder counting backwards is reported, not applied.
-            assert_err(&r, "calibration");
-            assert_eq!(config(&mut s, "enc_zero"), 0.0);
-        }
-        assert!(rel(config(&mut s, "motor_r_s"), r_s) < 0.03);
+    });
+}
+
+fn one_draw(draw: usize, &(m, off, dir): &([f64; 7], i32, i32)) {
+    let [r_s, l, psi, p, j, b, c] = m;
+    let mut s = boot();
+    for (n, v) in [
+        ("r_s", r_s),
+        ("l", l),
+        ("psi_pm", psi),
+        ("pole_pairs", p),
+        ("j", j),
+        ("b", b),
+        ("coulomb", c),
+        ("enc_offset", f64::from(off)),
+        ("enc_dir", f64::from(dir)),
+        ("locked", 0.0),
+    ] {
+        assert_ok(&cmd(&mut s, &format!("sim set {n} {v}")));
     }
+    let r = calibrate(&mut s, "calibrate all");
+    eprintln!("draw {draw}: {:?}", r.lines);
+    let rel = |est: f64, t: f64| (est / t - 1.0).abs();
+    assert_eq!(
+        result(&r, "encoder_direction"),
+        Some(f64::from(dir)),
+        "{r:?}"
+    );
+    assert_eq!(result(&r, "motor_pole_pairs"), Some(p), "{r:?}");
+    let zero = result(&r, "enc_zero").unwrap();
+    let d = (zero - f64::from(off)) * p * 360.0 / 4096.0;
+    let d = d - 360.0 * (d / 360.0).round();
+    assert!(d.abs() < 1.0, "offset {d} el deg: {r:?}");
+    assert!(rel(result(&r, "motor_r_s").unwrap(), r_s) < 0.03, "{r:?}");
+    assert!(rel(result(&r, "motor_l").unwrap(), l) < 0.03, "{r:?}");
+    assert!(
+        rel(result(&r, "motor_psi_pm").unwrap(), psi) < 0.02,
+        "{r:?}"
+    );
+    assert!(rel(result(&r, "load_inertia").unwrap(), j) < 0.10, "{r:?}");
+    if dir > 0 {
+        // Everything applied.
+        assert_ok(&r);
+        assert_eq!(config(&mut s, "enc_zero"), zero);
+        assert_eq!(config(&mut s, "motor_pole_pairs"), p);
+    } else {
+        // An encoder counting backwards is reported, not applied.
+        assert_err(&r, "calibration");
+        assert_eq!(config(&mut s, "enc_zero"), 0.0);
+    }
+    assert!(rel(config(&mut s, "motor_r_s"), r_s) < 0.03);
 }

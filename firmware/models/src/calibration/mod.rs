@@ -285,7 +285,7 @@ pub mod bounds {
     /// psi.
     pub const PSI_REL: f64 = 0.01;
     /// J.
-    pub const J_REL: f64 = 0.05;
+    pub const J_REL: f64 = 0.10;
     /// Encoder offset, electrical degrees.
     pub const ZERO_DEG: f64 = 2.0;
     /// Pole pairs: distance of the fitted ratio from a whole number.
