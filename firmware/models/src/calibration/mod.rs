@@ -291,3 +291,121 @@ pub mod bounds {
     /// Pole pairs: distance of the fitted ratio from a whole number.
     pub const POLE_PAIRS_FRAC: f64 = 0.1;
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn setup() -> Setup {
+        Setup {
+            current_a: 8.0,
+            voltage_v: 16.0,
+            period_s: 62.56e-6,
+            cpr: 4096,
+            motor: MotorParams::default(),
+            enc_zero: 0,
+            phases: Phases::ALL,
+        }
+    }
+
+    #[test]
+    fn phases_parse_and_sets() {
+        for p in Phase::ALL {
+            assert_eq!(Phase::parse(p.name()), Some(p));
+            assert!(Phases::ALL.has(p));
+            assert!(Phases::only(p).has(p));
+        }
+        assert_eq!(Phase::parse("all"), None);
+        assert!(!Phases::only(Phase::Flux).has(Phase::Encoder));
+        assert!(Phase::Flux.needs_motion() && !Phase::Inductance.needs_motion());
+    }
+
+    #[test]
+    fn bad_setups_are_refused() {
+        assert!(setup().validate().is_ok());
+        for bad in [
+            Setup {
+                current_a: f64::NAN,
+                ..setup()
+            },
+            Setup {
+                current_a: 0.0,
+                ..setup()
+            },
+            Setup {
+                voltage_v: -1.0,
+                ..setup()
+            },
+            Setup {
+                period_s: f64::INFINITY,
+                ..setup()
+            },
+            Setup { cpr: 2, ..setup() },
+            Setup {
+                phases: Phases(0),
+                ..setup()
+            },
+            Setup {
+                phases: Phases(0x20),
+                ..setup()
+            },
+        ] {
+            assert!(bad.validate().is_err(), "{bad:?}");
+        }
+    }
+
+    /// A current beyond twice the limit stops everything at once, and a
+    /// NaN measurement too: every phase refused, `Done`.
+    #[test]
+    fn an_over_current_or_nan_measurement_stops_it() {
+        for i in [[17.0, -8.5, -8.5], [f64::NAN, 0.0, 0.0]] {
+            let mut c = Calibrator::new(&setup());
+            let m = Measurement {
+                i_abc_a: [0.0; 3],
+                enc_pos: 0,
+            };
+            assert!(matches!(c.step(&m), Command::Voltage { .. }));
+            let m = Measurement {
+                i_abc_a: i,
+                enc_pos: 0,
+            };
+            assert_eq!(c.step(&m), Command::Done);
+            assert_eq!(c.step(&m), Command::Done);
+            let r = c.results();
+            assert!(matches!(r.encoder, Outcome::Refused(_)), "{r:?}");
+            assert!(matches!(r.resistance, Outcome::Refused(_)), "{r:?}");
+            assert!(matches!(r.mechanics, Outcome::Refused(_)), "{r:?}");
+        }
+    }
+
+    /// A rotor that never moves: the encoder phase is refused after its
+    /// first turn and the voltage stays within the limit throughout.
+    #[test]
+    fn a_still_encoder_is_a_locked_rotor() {
+        let s = Setup {
+            phases: Phases::only(Phase::Encoder),
+            ..setup()
+        };
+        let mut c = Calibrator::new(&s);
+        let m = Measurement {
+            i_abc_a: [0.0; 3],
+            enc_pos: 100,
+        };
+        let mut n = 0;
+        loop {
+            match c.step(&m) {
+                Command::Voltage { alpha_v, beta_v } => {
+                    assert!(alpha_v.hypot(beta_v) <= s.voltage_v + 1e-9);
+                }
+                Command::Done => break,
+            }
+            n += 1;
+            assert!(n < 10_000, "does not end");
+        }
+        assert!(
+            matches!(c.results().encoder, Outcome::Refused(w) if w.starts_with("rotor locked")),
+            "{:?}",
+            c.results()
+        );
+    }
+}

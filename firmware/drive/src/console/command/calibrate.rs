@@ -254,3 +254,30 @@ fn apply<W: Write>(
         None => Ok(Outcome::Ok),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::{parse as parse_line, Command};
+    use super::*;
+
+    #[test]
+    fn phases_are_parsed_and_bad_words_refused() {
+        assert_eq!(parse_line("calibrate"), Ok(Command::Calibrate(Phases::ALL)));
+        assert_eq!(
+            parse_line("calibrate all"),
+            Ok(Command::Calibrate(Phases::ALL))
+        );
+        for p in Phase::ALL {
+            assert_eq!(
+                parse_line(&std::format!("calibrate {}", p.name())),
+                Ok(Command::Calibrate(Phases::only(p)))
+            );
+        }
+        for bad in ["calibrate nothing", "calibrate all flux", "calibrate ALL"] {
+            assert!(
+                matches!(parse_line(bad), Err(ParseError::BadArgs("calibrate", _))),
+                "{bad}"
+            );
+        }
+    }
+}
