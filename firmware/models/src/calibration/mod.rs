@@ -392,13 +392,8 @@ mod tests {
             enc_pos: 100,
         };
         let mut n = 0;
-        loop {
-            match c.step(&m) {
-                Command::Voltage { alpha_v, beta_v } => {
-                    assert!(alpha_v.hypot(beta_v) <= s.voltage_v + 1e-9);
-                }
-                Command::Done => break,
-            }
+        while let Command::Voltage { alpha_v, beta_v } = c.step(&m) {
+            assert!(alpha_v.hypot(beta_v) <= s.voltage_v + 1e-9);
             n += 1;
             assert!(n < 10_000, "does not end");
         }
