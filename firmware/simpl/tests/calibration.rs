@@ -4,7 +4,7 @@
 //! simulated inverter's dead time and the ADC's quantization and delay.
 use drive::pl::top::Mode;
 use drive::servo::sensors::PlTime;
-use drive::servo::{Servo, ServoConfig};
+use drive::servo::{Servo, ServoConfig, StepResult};
 use models::calibration::{Phases, Results};
 use models::pmsm::sim_motor::SimMotor;
 use models::testrng::Rng;
@@ -160,4 +160,134 @@ fn calibrate_all_on_one_random_motor() {
         rel(mech.b.value, m.mech.b_nm_s_per_rad).abs() < 0.25,
         "{mech:?}"
     );
+}
+
+/// A 0.4 N m step from rest on the simulated motor with the drive
+/// configured `cfg`: the drive's
+/// metrics and the plant's true torque at the end, or the error that
+/// refused it.
+fn step_04(sim: &mut SimDrive, cfg: &ServoConfig, mode: Mode) -> Result<(StepResult, f64), String> {
+    let mut s = Servo::new(cfg).map_err(|e| format!("{e:?}"))?;
+    s.init(sim).unwrap();
+    s.set_mode(sim, mode).unwrap();
+    s.enable(sim).map_err(|e| format!("{e:?}"))?;
+    let run = |s: &mut Servo, sim: &mut SimDrive, n: u32, until_done: bool| {
+        for _ in 0..n {
+            sim.advance_to_boundary(20_000);
+            s.control_step(sim).unwrap();
+            if until_done && !s.step_pending() {
+                break;
+            }
+        }
+    };
+    // 2 ms first (the MPDTC aligns the rotor for 2 ms).
+    let n = (2e-3 * s.control_rate_hz()) as u32;
+    run(&mut s, sim, n, false);
+    s.begin_step(sim, 0.4, 2e-3).map_err(|e| format!("{e:?}"))?;
+    run(&mut s, sim, 10_000, true);
+    let r = s
+        .step_result()
+        .ok_or("no step result (gates off: a fault)")?;
+    let truth = sim.truth().torque_nm;
+    s.disable(sim).unwrap();
+    Ok((r, truth))
+}
+
+/// The motor 30 % off the configuration in R, L and psi, its encoder a
+/// quarter electrical turn from the configured zero: the FOC and the
+/// MPDTC `step 0.4` with the exact parameters, with the configured ones
+/// (before), and after `calibrate all` (results through `Config::set`):
+/// after, both settle within 5 % of their exact-parameter figures.
+#[test]
+fn calibration_restores_the_steps_of_the_exact_parameters() {
+    use drive::config::Config;
+    let base = ServoConfig::for_plant(
+        models::pmsm::params::MotorParams::default(),
+        SimConfig::default().adc_amps_per_count,
+    );
+    let mut m = SimMotor::default();
+    m.motor.r_s_ohm *= 1.3;
+    m.motor.l_d_h *= 1.3;
+    m.motor.l_q_h *= 1.3;
+    m.motor.psi_pm_wb *= 1.3;
+    // A quarter electrical turn: 4096 / 7 / 4 counts.
+    m.enc_offset = 146;
+    m.mech.b_nm_s_per_rad = B_NOMINAL;
+    m.mech.coulomb_nm = COULOMB_NOMINAL;
+    let held = SimMotor { locked: true, ..m };
+    let sim_with = |mm: &SimMotor| {
+        let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+        sim.apply_sim_motor(mm).unwrap();
+        sim
+    };
+    let exact = ServoConfig {
+        motor: m.motor,
+        enc_zero: m.enc_offset,
+        ..base
+    };
+    // Calibrate the free rotor, apply what it found.
+    let mut bus = Bus(sim_with(&SimMotor { locked: false, ..m }));
+    let mut s = Servo::new(&base).unwrap();
+    s.init(&mut bus).unwrap();
+    let setup = s.calibration_setup(8.0, 16.0, Phases::ALL);
+    let rep = s
+        .calibrate(&mut bus, &setup, &mut |_| {}, &mut || false)
+        .unwrap();
+    let r = rep.results;
+    let mut c = Config::from_servo(&base);
+    let e = r.encoder.good().expect("encoder");
+    for (n, v) in [
+        ("motor_pole_pairs", f64::from(e.pole_pairs)),
+        ("enc_zero", f64::from(e.zero_counts)),
+        ("motor_r_s", r.resistance.good().unwrap().value),
+        ("motor_l", r.inductance.good().unwrap().value),
+        ("motor_psi_pm", r.flux.good().unwrap().value),
+        ("load_inertia", r.mechanics.good().unwrap().j.value),
+    ] {
+        c.set(&base, n, v).unwrap();
+    }
+    let after = c.apply(&base);
+    // The steps on the rotor where the calibration left it (the encoder's
+    // index passed: positions are absolute), held.
+    let mut done = bus.0.clone();
+    done.apply_sim_motor(&held).unwrap();
+    std::println!("| | exact parameters | configured (before) | after `calibrate all` |");
+    std::println!("|---|---|---|---|");
+    for mode in [Mode::Foc, Mode::Mpdtc] {
+        let row: Vec<_> = [&exact, &base, &after]
+            .iter()
+            .map(|cfg| step_04(&mut done.clone(), cfg, mode))
+            .collect();
+        let show = |x: &Result<(StepResult, f64), String>| match x {
+            Ok((r, t)) => format!(
+                "settling {} ms, overshoot {:.1} %, final {:.3} N m (plant {:.3} N m)",
+                r.settling_s
+                    .map_or("none".into(), |s| format!("{:.3}", s * 1e3)),
+                r.overshoot_percent,
+                r.final_nm,
+                t
+            ),
+            Err(e) => format!("refused: {e}"),
+        };
+        std::println!(
+            "| {mode:?} step 0.4 | {} | {} | {} |",
+            show(&row[0]),
+            show(&row[1]),
+            show(&row[2])
+        );
+        let (ex, ex_t) = row[0].clone().unwrap();
+        let (af, af_t) = row[2].clone().unwrap();
+        let (ts_ex, ts_af) = (
+            ex.settling_s.unwrap(),
+            af.settling_s.expect("settled after"),
+        );
+        assert!(
+            (ts_af - ts_ex).abs() <= 0.05 * ts_ex,
+            "{mode:?}: {ts_af} vs {ts_ex}"
+        );
+        assert!(
+            (af_t - ex_t).abs() <= 0.05 * ex_t.abs(),
+            "{mode:?}: {af_t} vs {ex_t}"
+        );
+    }
 }
