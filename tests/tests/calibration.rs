@@ -124,10 +124,13 @@ fn calibrate_all_measures_three_random_motors() {
             (m, off, dir)
         })
         .collect();
+    // The README's walk-through motor, beside the random ones.
+    let walk = ([0.7, 0.9e-3, 0.012, 5.0, 1e-4, 2e-4, 5e-3], 1000, 1);
     std::thread::scope(|sc| {
         for (draw, d) in draws.iter().enumerate() {
             sc.spawn(move || one_draw(draw, d));
         }
+        sc.spawn(move || one_draw(3, &walk));
     });
 }
 
@@ -149,7 +152,21 @@ fn one_draw(draw: usize, &(m, off, dir): &([f64; 7], i32, i32)) {
         assert_ok(&cmd(&mut s, &format!("sim set {n} {v}")));
     }
     let r = calibrate(&mut s, "calibrate all");
-    eprintln!("draw {draw}: {:?}", r.lines);
+    // The transcript (draw 3: the README's walk-through).
+    let mut t = format!("draw {draw}:\n");
+    for (n, v) in [("r_s", r_s), ("l", l), ("psi_pm", psi), ("pole_pairs", p)] {
+        t += &format!("drive> sim set {n} {v}\n");
+    }
+    t += &format!(
+        "drive> sim set j {j}\ndrive> sim set b {b}\ndrive> sim set coulomb {c}\n\
+         drive> sim set enc_offset {off}\ndrive> sim set enc_dir {dir}\n\
+         drive> sim set locked 0\ndrive> calibrate all\n"
+    );
+    for l in &r.lines {
+        t += &format!("{l}\n");
+    }
+    t += &format!("{:?}\n", r.fin);
+    eprintln!("{t}");
     let rel = |est: f64, t: f64| (est / t - 1.0).abs();
     assert_eq!(
         result(&r, "encoder_direction"),
