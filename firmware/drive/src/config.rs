@@ -428,7 +428,7 @@ pub const PARAMS: [Param; N_PARAMS] = [
         0.1,
         50.0,
         8.0,
-        "largest current magnitude `calibrate` drives (below current_limit)",
+        "largest current magnitude `calibrate` drives (`calibrate` needs it below current_limit)",
     ),
     real(
         "calibration_voltage",
@@ -436,7 +436,7 @@ pub const PARAMS: [Param; N_PARAMS] = [
         0.1,
         100.0,
         16.0,
-        "largest voltage vector magnitude `calibrate` applies (at most u_dc / 2)",
+        "largest voltage vector magnitude `calibrate` applies (`calibrate` needs it at most u_dc / 2)",
     ),
 ];
 
@@ -551,18 +551,6 @@ impl Config {
             return Err(ConfigError::Invalid(ParamError {
                 field: "adc_period",
                 reason: "4 ADC periods must fit in the FOC period (2 foc_half_period)",
-            }));
-        }
-        if sc.calibration_current_a >= sc.current_limit_a {
-            return Err(ConfigError::Invalid(ParamError {
-                field: "calibration_current",
-                reason: "must be below current_limit",
-            }));
-        }
-        if sc.calibration_voltage_v > 0.5 * sc.motor.u_dc_v {
-            return Err(ConfigError::Invalid(ParamError {
-                field: "calibration_voltage",
-                reason: "must be at most u_dc / 2 (the PWM's linear range)",
             }));
         }
         if sc.oc_limit_counts().is_none() {

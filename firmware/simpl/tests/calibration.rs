@@ -291,3 +291,37 @@ fn calibration_restores_the_steps_of_the_exact_parameters() {
         );
     }
 }
+
+/// Refusals change nothing: limits beyond the drive's (current at or above
+/// `current_limit`, voltage above `u_dc` / 2), the gates on.
+#[test]
+fn refusals_leave_the_gates_off_and_the_configuration_alone() {
+    use drive::servo::ServoError;
+    let sim = SimDrive::new(&SimConfig::default()).unwrap();
+    let cfg = ServoConfig::for_plant(sim.config().motor, sim.config().adc_amps_per_count);
+    let mut bus = Bus(sim);
+    let mut s = Servo::new(&cfg).unwrap();
+    s.init(&mut bus).unwrap();
+    s.set_mode(&mut bus, Mode::Foc).unwrap();
+    for (i, v) in [(14.0, 16.0), (8.0, 24.5), (f64::NAN, 16.0)] {
+        let setup = s.calibration_setup(i, v, Phases::ALL);
+        let r = s.calibrate(&mut bus, &setup, &mut |_| {}, &mut || false);
+        assert!(matches!(r, Err(ServoError::BadConfig(_))), "{i} {v}: {r:?}");
+        assert!(!s.gates_on(&mut bus).unwrap());
+    }
+    s.enable(&mut bus).unwrap();
+    let setup = s.calibration_setup(8.0, 16.0, Phases::ALL);
+    let r = s.calibrate(&mut bus, &setup, &mut |_| {}, &mut || false);
+    assert!(matches!(r, Err(ServoError::GatesOn)), "{r:?}");
+    assert_eq!(*s.config(), cfg);
+    // Stopped at once (Ctrl-C): gates off, nothing measured.
+    s.disable(&mut bus).unwrap();
+    let rep = s
+        .calibrate(&mut bus, &setup, &mut |_| {}, &mut || true)
+        .unwrap();
+    assert_eq!(
+        rep.stopped,
+        Some(drive::servo::calibrate::CalStop::Interrupted)
+    );
+    assert!(!s.gates_on(&mut bus).unwrap());
+}

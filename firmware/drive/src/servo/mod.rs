@@ -549,6 +549,16 @@ impl Servo {
             return Err(ServoError::FaultLatched(f));
         }
         setup.validate().map_err(ServoError::BadConfig)?;
+        let bad = |field, reason| Err(ServoError::BadConfig(ParamError { field, reason }));
+        if setup.current_a >= self.cfg.current_limit_a {
+            return bad("calibration_current", "must be below current_limit");
+        }
+        if setup.voltage_v > 0.5 * self.cfg.motor.u_dc_v {
+            return bad(
+                "calibration_voltage",
+                "must be at most u_dc / 2 (the PWM's linear range)",
+            );
+        }
         let half = self.cfg.foc_half_period_cycles;
         let mut run = CalRun {
             bus: &mut *bus,
