@@ -903,8 +903,9 @@ impl Calibrator {
 
     fn resistance_fit(&mut self) {
         let mut f = Lsq::<2>::default();
-        for (v, i) in self.r_v.iter().zip(self.r_i.iter()) {
+        for (j, (v, i)) in self.r_v.iter().zip(self.r_i.iter()).enumerate() {
             f.add([i.mean(), 1.0], v.mean());
+            self.res.r_points[j] = (i.mean(), v.mean());
         }
         let Some(sol) = f.solve() else {
             self.res.resistance = Outcome::Refused("singular fit");
@@ -973,6 +974,7 @@ impl Calibrator {
             let mag = libm::hypot(id, iq).max(1e-9);
             let y = vq - v_dt * iq / mag - r * iq - w * l * id;
             f.add([w / 1000.0, 1.0], y);
+            self.res.flux_points[j] = (w, y);
         }
         let flux = match f.solve() {
             Some(sol) => {
@@ -1012,6 +1014,7 @@ impl Calibrator {
             for (jj, m) in self.spin_v.iter().enumerate() {
                 let torque = kt * m[3].mean() - j * self.spin_acc[jj];
                 tq.add([self.snaps[jj + 1].w_m, 1.0], torque);
+                self.res.friction_points[jj] = (self.snaps[jj + 1].w_m, torque);
             }
             let Some(ts) = tq.solve() else {
                 self.res.mechanics = Outcome::Refused("singular fit");

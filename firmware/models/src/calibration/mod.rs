@@ -258,6 +258,14 @@ pub struct Results {
     pub mechanics: Outcome<MechEst>,
     /// Dead-time voltage along the current (the R fit's intercept), V.
     pub dead_time_v: f64,
+    /// The resistance fit's points: (current A, voltage V) per level.
+    pub r_points: [(f64, f64); 4],
+    /// The flux fit's points: (electrical speed rad/s, q-axis voltage less
+    /// the R, L and dead-time terms V) per speed.
+    pub flux_points: [(f64, f64); 3],
+    /// The friction fit's points: (mechanical speed rad/s, torque N m) per
+    /// speed.
+    pub friction_points: [(f64, f64); 3],
     /// Control periods the calibration took.
     pub periods: u64,
 }
@@ -271,6 +279,9 @@ impl Default for Results {
             flux: Outcome::NotRun,
             mechanics: Outcome::NotRun,
             dead_time_v: 0.0,
+            r_points: [(0.0, 0.0); 4],
+            flux_points: [(0.0, 0.0); 3],
+            friction_points: [(0.0, 0.0); 3],
             periods: 0,
         }
     }

@@ -106,6 +106,28 @@ fn line<W: Write>(out: &mut W, name: &str, v: f64, old: f64, sigma: f64) -> fmt:
     )
 }
 
+/// The points of the line fits (`drivectl calibrate` plots them):
+/// `fit <name>: <x> <unit>, <y> <unit>`.
+fn write_points<W: Write>(out: &mut W, rep: &CalReport) -> fmt::Result {
+    let r = &rep.results;
+    if !matches!(r.resistance, Fit::NotRun) {
+        for (i, v) in r.r_points {
+            write!(out, "fit resistance: {i:.4} A, {v:.4} V\r\n")?;
+        }
+    }
+    if matches!(r.flux, Fit::Done(_) | Fit::Poor(..)) {
+        for (w, v) in r.flux_points {
+            write!(out, "fit flux: {w:.2} rad/s, {v:.4} V\r\n")?;
+        }
+    }
+    if matches!(r.mechanics, Fit::Done(_) | Fit::Poor(..)) {
+        for (w, t) in r.friction_points {
+            write!(out, "fit friction: {w:.3} rad/s, {t:.6} Nm\r\n")?;
+        }
+    }
+    Ok(())
+}
+
 /// Prints the results, sets the good ones through `Config::set` and
 /// reconfigures the drive once.
 fn apply<W: Write>(
@@ -234,6 +256,7 @@ fn apply<W: Write>(
         }
         Fit::NotRun => {}
     }
+    write_points(out, rep)?;
     write!(
         out,
         "duration: {:.1} ms (PL time)\r\n",
