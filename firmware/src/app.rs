@@ -24,6 +24,22 @@ extern "C" {
     static _vector_table: u32;
 }
 
+/// Whether Ctrl-C (0x03) arrived on the console: a long command (`calibrate`)
+/// runs with IRQs masked, so it reads the UART's FIFO itself; other bytes
+/// go to the ring as the interrupt would put them.
+pub fn ctrl_c_pending() -> bool {
+    let mut seen = false;
+    while !RX.is_full() {
+        let Some(b) = CONSOLE.read_byte() else { break };
+        if b == 0x03 {
+            seen = true;
+        } else {
+            RX.push(b);
+        }
+    }
+    seen
+}
+
 fn set_vbar() {
     // SAFETY: the vector table is cortex-a-rt's, 32-byte aligned at the
     // start of .text; VBAR only matters once an exception is taken.

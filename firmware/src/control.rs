@@ -575,6 +575,26 @@ impl DriveOps for FwDrive {
             r
         })
     }
+    fn calibrate(
+        &mut self,
+        phases: models::calibration::Phases,
+        on_phase: &mut dyn FnMut(Option<models::calibration::Phase>),
+    ) -> Result<drive::servo::calibrate::CalReport, DriveError> {
+        run(|s| {
+            let c = *s.servo.config();
+            let setup =
+                s.servo
+                    .calibration_setup(c.calibration_current_a, c.calibration_voltage_v, phases);
+            let r = s.servo.calibrate(
+                &mut s.bus,
+                &setup,
+                on_phase,
+                &mut crate::app::ctrl_c_pending,
+            );
+            s.after_sensor_check();
+            r
+        })
+    }
     fn sensor_check(&mut self) -> Result<SensorReport, DriveError> {
         run(|s| {
             let r = s.servo.check_sensors(&mut s.bus);

@@ -126,7 +126,9 @@ mod ix {
     pub const POS_MAX: usize = 32;
     pub const IMP_KP_MAX: usize = 33;
     pub const IMP_KD_MAX: usize = 34;
-    pub const N: usize = 35;
+    pub const CAL_CURRENT: usize = 35;
+    pub const CAL_VOLTAGE: usize = 36;
+    pub const N: usize = 37;
 }
 
 /// Number of parameters.
@@ -420,6 +422,22 @@ pub const PARAMS: [Param; N_PARAMS] = [
         1.0,
         "largest imp damping kd",
     ),
+    real(
+        "calibration_current",
+        "A",
+        0.1,
+        50.0,
+        8.0,
+        "largest current magnitude `calibrate` drives (`calibrate` needs it below current_limit)",
+    ),
+    real(
+        "calibration_voltage",
+        "V",
+        0.1,
+        100.0,
+        16.0,
+        "largest voltage vector magnitude `calibrate` applies (`calibrate` needs it at most u_dc / 2)",
+    ),
 ];
 
 /// The row of `name`, with its index.
@@ -584,6 +602,8 @@ impl Config {
         v[ix::POS_MAX] = m.pos_max;
         v[ix::IMP_KP_MAX] = m.imp_kp_max;
         v[ix::IMP_KD_MAX] = m.imp_kd_max;
+        v[ix::CAL_CURRENT] = sc.calibration_current_a;
+        v[ix::CAL_VOLTAGE] = sc.calibration_voltage_v;
         Self { values: v }
     }
 
@@ -630,6 +650,8 @@ impl Config {
         m.pos_max = v[ix::POS_MAX];
         m.imp_kp_max = v[ix::IMP_KP_MAX];
         m.imp_kd_max = v[ix::IMP_KD_MAX];
+        sc.calibration_current_a = v[ix::CAL_CURRENT];
+        sc.calibration_voltage_v = v[ix::CAL_VOLTAGE];
         sc
     }
 

@@ -27,6 +27,7 @@
 #[cfg(feature = "std")]
 extern crate std;
 
+pub mod calibration;
 pub mod fixedpoint;
 pub mod frames;
 pub mod motion;

@@ -77,7 +77,7 @@ pub struct ConfigFileArgs {
     pub file: PathBuf,
 }
 
-fn session(target: &Target, t: Duration) -> Result<Session> {
+pub fn session(target: &Target, t: Duration) -> Result<Session> {
     match &target.port {
         Some(p) => Session::open_serial(p, target.baud, t),
         None => Session::spawn_qemu(&target.qemu(), t),

@@ -4,6 +4,7 @@
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 
+mod calibrate_cmd;
 mod console;
 mod experiment;
 mod experiment_move;
@@ -32,6 +33,10 @@ enum Cmd {
     Console(console::ConsoleArgs),
     /// Send one console command, print the reply, exit non-zero on `ERR`.
     Send(console::SendArgs),
+    /// Measure the motor (`calibrate` on the drive) with a progress bar;
+    /// write the resulting configuration (TOML) and the reply to --out;
+    /// --save keeps it in the drive's flash.
+    Calibrate(calibrate_cmd::CalibrateArgs),
     /// Decode a raw defmt log stream (UART0 capture) into text.
     Log(console::LogArgs),
     /// The drive's configuration as a TOML file.
@@ -130,6 +135,7 @@ fn dispatch(cmd: Cmd) -> Result<()> {
     match cmd {
         Cmd::Console(a) => console::console(a),
         Cmd::Send(a) => console::send(a),
+        Cmd::Calibrate(a) => calibrate_cmd::calibrate(a),
         Cmd::Log(a) => console::log(a),
         Cmd::Config(ConfigCmd::Pull(a)) => console::config_pull(a),
         Cmd::Config(ConfigCmd::Push(a)) => console::config_push(a),

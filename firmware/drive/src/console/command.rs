@@ -24,6 +24,7 @@ macro_rules! try_drive {
     };
 }
 
+mod calibrate;
 mod capture;
 mod config;
 mod debug;
@@ -86,6 +87,7 @@ pub const COMMANDS: &[&Spec] = &[
     &mpdcc::MPDCC,
     &tel::TEL,
     &selftest::SELFTEST,
+    &calibrate::CALIBRATE,
     &sim::SIM,
 ];
 
@@ -117,6 +119,8 @@ pub enum Command<'a> {
     SelftestSensors,
     /// `sim ...`.
     Sim(SimCmd<'a>),
+    /// `calibrate [phase]`.
+    Calibrate(models::calibration::Phases),
     /// `vel <rev/s>`.
     Vel(f64),
     /// `pos <rev>|zero`.
@@ -226,6 +230,7 @@ pub fn parse(line: &str) -> Result<Command<'_>, ParseError<'_>> {
         "tel" => tel::parse(args).map(Command::Tel),
         "selftest" => selftest::parse(args).map(|()| Command::SelftestSensors),
         "sim" => sim::parse(args).map(Command::Sim),
+        "calibrate" => calibrate::parse(args).map(Command::Calibrate),
         "vel" => vel::parse(args).map(Command::Vel),
         "pos" => pos::parse(args).map(Command::Pos),
         "imp" => imp::parse(args).map(Command::Imp),
@@ -254,6 +259,7 @@ pub fn execute<W: Write>(
         Command::Tel(c) => tel::execute(c, drv.telemetry(), out)?,
         Command::SelftestSensors => selftest::execute(drv, out)?,
         Command::Sim(c) => sim::execute(c, drv, out)?,
+        Command::Calibrate(p) => calibrate::execute(p, drv, out)?,
         Command::Vel(v) => vel::execute(v, drv, out)?,
         Command::Pos(c) => pos::execute(c, drv, out)?,
         Command::Imp(c) => imp::execute(c, drv, out)?,

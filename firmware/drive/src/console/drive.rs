@@ -328,6 +328,16 @@ pub trait DriveOps {
     fn sensor_check(&mut self) -> Result<crate::servo::sensors::SensorReport, DriveError> {
         Err(DriveError::Unsupported)
     }
+    /// Runs a calibration of `phases` with the configuration's limits
+    /// (gates off, no fault); `on_phase` prints the progress. Ctrl-C stops
+    /// it (the firmware watches the console for it).
+    fn calibrate(
+        &mut self,
+        _phases: models::calibration::Phases,
+        _on_phase: &mut dyn FnMut(Option<models::calibration::Phase>),
+    ) -> Result<crate::servo::calibrate::CalReport, DriveError> {
+        Err(DriveError::Unsupported)
+    }
     /// Whether the next `enable` runs the sensor check (`status`); `None`
     /// where there is no drive.
     fn sensor_check_due(&mut self) -> Option<bool> {

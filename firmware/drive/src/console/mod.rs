@@ -62,6 +62,10 @@ pub enum ErrorCode {
     MpdccMode,
     /// The sensor check found a wrong current channel or encoder.
     SensorCheck,
+    /// `calibrate`: a fit beyond its bound or a phase refused.
+    Calibration,
+    /// A long command stopped by Ctrl-C.
+    Interrupted,
 }
 
 impl ErrorCode {
@@ -84,6 +88,8 @@ impl ErrorCode {
             ErrorCode::GatesOn => "gates-on",
             ErrorCode::FlashError => "flash-error",
             ErrorCode::SensorCheck => "sensor-check",
+            ErrorCode::Calibration => "calibration",
+            ErrorCode::Interrupted => "interrupted",
         }
     }
 }

@@ -6,7 +6,7 @@
 use regmap::bus::{BusError, RegisterBus};
 use regmap::regs::pwm::{
     DeadTime, DeadTimeValue, DutyA, DutyAValue, DutyB, DutyBValue, DutyC, DutyCValue, GateCtrl,
-    GateCtrlValue, GateStatus, PwmPeriod, PwmPeriodValue,
+    GateCtrlValue, GateStatus, PwmCount, PwmPeriod, PwmPeriodValue,
 };
 
 /// Writes `cycles` to the duty register of leg `i` (0 = a, 1 = b, 2 = c;
@@ -73,6 +73,17 @@ impl<B: RegisterBus> Pwm<B> {
             leg.set_duty_cycle(c).map_err(|e| e.0)?;
         }
         Ok(())
+    }
+    /// Cycles since the PWM counter's bottom (the period start), from
+    /// `PWM_COUNT`, for a half period of `half_period` cycles.
+    pub fn phase(&mut self, half_period: u32) -> Result<u32, BusError> {
+        let c = PwmCount::read(&mut self.0)?;
+        let count = c.count().min(half_period);
+        Ok(if c.down() {
+            2 * half_period - count
+        } else {
+            count
+        })
     }
     /// `GATE_STATUS`: (upper gates, lower gates, requested state), bit 2 = leg a.
     pub fn gate_status(&mut self) -> Result<(u8, u8, u8), BusError> {

@@ -45,7 +45,9 @@ mod sweep;
 // Telemetry: the channels of one control period.
 mod tel;
 pub use sweep::{bandwidth_hz, record_response, tone_response, Sine, SweepPoint};
+pub mod calibrate;
 pub mod sensors;
+use calibrate::{CalReport, CalRun};
 use sensors::{PlTime, SensorFault, SensorReport};
 
 /// Control periods without a new ADC result that latch `ADC_STUCK`: two.
@@ -102,6 +104,10 @@ pub struct ServoConfig {
     pub step_min_nm: f64,
     /// The outer loops (velocity, position, impedance) and their limits.
     pub motion: MotionConfig,
+    /// Largest current magnitude of `calibrate`, A.
+    pub calibration_current_a: f64,
+    /// Largest voltage vector magnitude of `calibrate`, V.
+    pub calibration_voltage_v: f64,
 }
 
 impl Default for ServoConfig {
@@ -130,6 +136,8 @@ impl Default for ServoConfig {
             // Band 5 mN m: about 5 ADC counts of i_q.
             step_min_nm: 0.05,
             motion: MotionConfig::default(),
+            calibration_current_a: 8.0,
+            calibration_voltage_v: 16.0,
         }
     }
 }
@@ -520,6 +528,82 @@ impl Servo {
         mode?;
         self.sensors_ok = r.result.is_ok();
         Ok(r)
+    }
+
+    /// Runs a calibration ([`calibrate`]): refused with the gates on and
+    /// while a fault is latched. The gates are off and the mode restored
+    /// afterwards whatever happened; the configuration is not touched (the
+    /// caller applies the results).
+    pub fn calibrate<B: PlTime>(
+        &mut self,
+        bus: &mut B,
+        setup: &models::calibration::Setup,
+        on_phase: &mut dyn FnMut(Option<models::calibration::Phase>),
+        stop: &mut dyn FnMut() -> bool,
+    ) -> Result<CalReport, ServoError> {
+        if self.gates || self.gates_on(bus)? {
+            return Err(ServoError::GatesOn);
+        }
+        let f = self.faults(bus)?;
+        if !f.none() {
+            return Err(ServoError::FaultLatched(f));
+        }
+        setup.validate().map_err(ServoError::BadConfig)?;
+        let bad = |field, reason| Err(ServoError::BadConfig(ParamError { field, reason }));
+        if setup.current_a >= self.cfg.current_limit_a {
+            return bad("calibration_current", "must be below current_limit");
+        }
+        if setup.voltage_v > 0.5 * self.cfg.motor.u_dc_v {
+            return bad(
+                "calibration_voltage",
+                "must be at most u_dc / 2 (the PWM's linear range)",
+            );
+        }
+        let half = self.cfg.foc_half_period_cycles;
+        let mut run = CalRun {
+            bus: &mut *bus,
+            beat: &mut self.beat,
+            half,
+            u_dc_v: self.cfg.motor.u_dc_v,
+            amps_per_count: self.cfg.adc.amps_per_count,
+            cycles: 0,
+        };
+        let r = run.run(setup, on_phase, stop);
+        let off = Pwm(&mut *bus).set_gates(false);
+        let duties = Pwm(&mut *bus).set_duties([0.5; 3], half);
+        let mode = Top(&mut *bus).set_mode(self.mode);
+        self.note_skipped();
+        let r = r?;
+        off?;
+        duties?;
+        mode?;
+        Ok(r)
+    }
+
+    /// The calibration's starting point from this configuration: its
+    /// motor, encoder and PWM period, with the given limits and phases.
+    pub fn calibration_setup(
+        &self,
+        current_a: f64,
+        voltage_v: f64,
+        phases: models::calibration::Phases,
+    ) -> models::calibration::Setup {
+        models::calibration::Setup {
+            current_a,
+            voltage_v,
+            period_s: period_s(2 * self.cfg.foc_half_period_cycles),
+            cpr: self.cfg.enc_cpr,
+            motor: MotorParams {
+                j_kg_m2: self
+                    .cfg
+                    .motion
+                    .load_inertia_kg_m2
+                    .max(self.cfg.motor.j_kg_m2),
+                ..self.cfg.motor
+            },
+            enc_zero: self.cfg.enc_zero,
+            phases,
+        }
     }
 
     /// [`Servo::enable`], after the sensor check when one is due; a failed
