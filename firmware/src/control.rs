@@ -124,6 +124,17 @@ struct State {
     /// Control-period boundaries the next PL tick crosses without a
     /// control step (`debug fault overrun`, simulated PL).
     skip_boundaries: u32,
+    /// PL cycle of the last injected fault's cause (`debug fault-time`).
+    inject_cycle: u64,
+    /// PL time at the start of the last control step.
+    last_step_cycle: u64,
+    /// Co-simulation: the next control step's boundary is the cause of a
+    /// `debug fault overrun` (the second period without a step ends).
+    overrun_cause_due: bool,
+    /// A `debug fault` to make happen right after the next control step.
+    pending_injection: Option<Injection>,
+    /// Its outcome, for the console.
+    injection_result: Option<Result<(), ServoError>>,
     /// The last `mpdcc run`.
     mpdcc_last: Option<HilReport>,
     /// Control interrupts taken.
@@ -263,6 +274,11 @@ pub fn init() -> Boot {
                     sim_start_us: timer::uptime_us(),
                     next_tick: 0,
                     skip_boundaries: 0,
+                    inject_cycle: 0,
+                    last_step_cycle: 0,
+                    overrun_cause_due: false,
+                    pending_injection: None,
+                    injection_result: None,
                     mpdcc_last: None,
                     control_irq: 0,
                     latency: Latency::default(),
@@ -313,8 +329,13 @@ pub fn on_pl_tick() {
                     sim.advance_to_boundary(2 * period).control_periods
                 };
                 // `debug fault overrun`: more boundaries before the step.
-                for _ in 0..core::mem::take(&mut s.skip_boundaries) {
+                let skip = core::mem::take(&mut s.skip_boundaries);
+                for _ in 0..skip {
                     n += sim.advance_to_boundary(2 * period).control_periods;
+                }
+                if skip > 0 {
+                    // The second period without a step ends here.
+                    s.inject_cycle = sim.pl_cycles();
                 }
                 if n == 0 {
                     // No result from the ADC that paces the period.
@@ -375,12 +396,26 @@ pub fn on_control() {
             Err(_) => true,
         };
         let stalled = s.stalled();
+        // Co-simulation `debug fault overrun`: steps left out.
+        let skip = boundary && matches!(s.bus, Backend::Cosim(_)) && s.skip_boundaries > 0;
+        if let (true, Backend::Cosim(c)) = (boundary && s.overrun_cause_due, &s.bus) {
+            s.inject_cycle = c.last.pl_cycles - u64::from(c.last.since_boundary);
+            s.overrun_cause_due = false;
+        }
         if stalled {
             s.servo.note_skipped();
+        } else if skip {
+            s.skip_boundaries -= 1;
+            s.servo.note_overruns(1);
+            s.overrun_cause_due = s.skip_boundaries == 0;
         } else if boundary {
+            s.last_step_cycle = s.pl_now();
             // A bus error leaves the gates to the PL's own fault logic.
             let start = timer::global_count();
             let _ = s.servo.control_step(&mut s.bus);
+            if let Some(f) = s.pending_injection.take() {
+                s.injection_result = Some(inject_now(s, f));
+            }
             crate::telemetry::on_step(&s.servo, timer::global_count() - start);
         }
         let end = timer::global_count();
@@ -537,6 +572,102 @@ fn run<T>(f: impl FnOnce(&mut State) -> Result<T, ServoError>) -> Result<T, Driv
 /// `debug flash-pace`: extra time around each flash erase and program, ms.
 static FLASH_PACE_MS: core::sync::atomic::AtomicU32 = core::sync::atomic::AtomicU32::new(0);
 
+/// Makes fault `f` happen now and notes its cause's PL cycle.
+fn inject_now(s: &mut State, f: Injection) -> Result<(), ServoError> {
+    let unsupported = || ServoError::Bus(BusError::SlaveError);
+    // `sim set` on the simulated motor of either PL; the cause is the PL's
+    // present cycle (the change acts from the next one).
+    let sim_set = |s: &mut State, name: &str, v: f64| -> Result<(), ServoError> {
+        let ok = match &mut s.bus {
+            Backend::Sim(sim) => sim.sim_set(name, v).is_ok(),
+            Backend::Cosim(c) => matches!(c.sim_set(name, v), Ok(Ok(()))),
+            Backend::Gp0(_) => false,
+        };
+        s.inject_cycle = s.pl_now();
+        if ok {
+            Ok(())
+        } else {
+            Err(unsupported())
+        }
+    };
+    let jump = |s: &mut State, counts: u32| -> Result<(), ServoError> {
+        let off = match &s.bus {
+            Backend::Sim(sim) => sim.sim_motor().enc_offset,
+            Backend::Cosim(c) => c.motor.enc_offset,
+            Backend::Gp0(_) => return Err(unsupported()),
+        };
+        let cpr = s.servo.config().enc_cpr.max(1);
+        sim_set(s, "enc_offset", f64::from((off + counts) % cpr))
+    };
+    match f {
+        Injection::AdcStuck => {
+            drive::pl::adc::Adc(&mut s.bus).set_enabled(false)?;
+            s.inject_cycle = s.pl_now();
+            Ok(())
+        }
+        Injection::Overcurrent => {
+            drive::pl::fault::Fault(&mut s.bus).set_oc_limit(0)?;
+            s.inject_cycle = s.pl_now();
+            Ok(())
+        }
+        Injection::External => match &mut s.bus {
+            Backend::Sim(sim) => {
+                // 10 us at the pin; a boundary crossed here is the next
+                // tick's.
+                sim.set_external_fault(true);
+                s.inject_cycle = sim.pl_cycles();
+                let _ = sim.advance(1000);
+                sim.set_external_fault(false);
+                Ok(())
+            }
+            Backend::Cosim(_) => {
+                sim_set(s, "fault_ext", 1.0)?;
+                let until = timer::global_count() + guest_counts(1000);
+                while timer::global_count() < until {}
+                // Runs the PL over the 10 us.
+                drive::pl::fault::Fault(&mut s.bus).latched()?;
+                let cause = s.inject_cycle;
+                sim_set(s, "fault_ext", 0.0)?;
+                s.inject_cycle = cause;
+                Ok(())
+            }
+            Backend::Gp0(_) => Err(unsupported()),
+        },
+        Injection::AdcSwap | Injection::AdcInvert => match &mut s.bus {
+            Backend::Sim(sim) => {
+                let mut w = simpl::AdcWiring::default();
+                if f == Injection::AdcSwap {
+                    w.source = [1, 0, 2];
+                } else {
+                    w.inverted[0] = true;
+                }
+                sim.set_adc_wiring(w);
+                Ok(())
+            }
+            Backend::Gp0(_) | Backend::Cosim(_) => Err(unsupported()),
+        },
+        Injection::Overrun => match &s.bus {
+            Backend::Sim(_) | Backend::Cosim(_) => {
+                s.skip_boundaries = 2;
+                Ok(())
+            }
+            Backend::Gp0(_) => Err(unsupported()),
+        },
+        Injection::EncoderLoss => {
+            let q = s.servo.config().enc_cpr / 4;
+            jump(s, q)
+        }
+        Injection::EncoderJump => {
+            let q = s.servo.config().enc_cpr / 16;
+            jump(s, q)
+        }
+        Injection::EncoderDead => sim_set(s, "enc_dead", 1.0),
+        Injection::PhaseOpen => sim_set(s, "phase_open", 2.0),
+        // Paced by the console (`FwDrive::inject`).
+        Injection::Watchdog => Err(unsupported()),
+    }
+}
+
 /// Sleeps until an interrupt.
 fn wait() {
     // SAFETY: WFI has no memory effects.
@@ -675,43 +806,69 @@ impl DriveOps for FwDrive {
         })
     }
     fn inject(&mut self, f: Injection) -> Result<(), DriveError> {
-        match f {
-            Injection::AdcStuck => run(|s| Ok(drive::pl::adc::Adc(&mut s.bus).set_enabled(false)?)),
-            Injection::External => console(|s| match &mut s.bus {
-                Backend::Sim(sim) => {
-                    // 10 us at the pin; a boundary crossed here is the
-                    // next tick's.
-                    sim.set_external_fault(true);
-                    let _ = sim.advance(1000);
-                    sim.set_external_fault(false);
+        let r = match f {
+            Injection::Watchdog => {
+                run(|s| {
+                    // The last heartbeat is the last step's (written at its
+                    // start): the timeout runs out that long after it.
+                    let wdg = u64::from(s.servo.config().watchdog_cycles);
+                    s.inject_cycle = s.last_step_cycle + wdg;
+                    s.stall_until = s.pl_after_ms(3);
                     Ok(())
+                })?;
+                while console(|s| s.stalled()).unwrap_or(false) {
+                    wait();
                 }
-                Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
-            })
-            .unwrap_or(Err(DriveError::Absent)),
-            Injection::AdcSwap | Injection::AdcInvert => console(|s| match &mut s.bus {
-                Backend::Sim(sim) => {
-                    let mut w = simpl::AdcWiring::default();
-                    if f == Injection::AdcSwap {
-                        w.source = [1, 0, 2];
-                    } else {
-                        w.inverted[0] = true;
+                Ok(())
+            }
+            Injection::Overrun | Injection::AdcSwap | Injection::AdcInvert => {
+                run(|s| inject_now(s, f))
+            }
+            _ => {
+                // At a fixed point of the control period: right after the
+                // next control step (the PL's cycle count from the
+                // boundary is the step's own, the same every time on the
+                // simulated PL); at once with the gates off (no step).
+                let gates = run(|s| Ok(s.servo.gates_on(&mut s.bus)?))?;
+                if !gates {
+                    run(|s| inject_now(s, f))
+                } else {
+                    run(|s| {
+                        s.pending_injection = Some(f);
+                        s.injection_result = None;
+                        Ok(())
+                    })?;
+                    let deadline = timer::uptime_us() + 10_000_000;
+                    loop {
+                        if let Some(r) = console(|s| s.injection_result.take()).flatten() {
+                            break r.map_err(DriveError::Servo);
+                        }
+                        if timer::uptime_us() > deadline {
+                            let _ = console(|s| s.pending_injection = None);
+                            break Err(DriveError::Timeout);
+                        }
+                        wait();
                     }
-                    sim.set_adc_wiring(w);
-                    Ok(())
                 }
-                Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
-            })
-            .unwrap_or(Err(DriveError::Absent)),
-            Injection::Overrun => console(|s| match &s.bus {
-                Backend::Sim(_) => {
-                    s.skip_boundaries = 2;
-                    Ok(())
-                }
-                Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
-            })
-            .unwrap_or(Err(DriveError::Absent)),
-        }
+            }
+        };
+        r.map_err(|e| match e {
+            DriveError::Servo(ServoError::Bus(BusError::SlaveError)) => DriveError::Unsupported,
+            e => e,
+        })
+    }
+    fn fault_time(&mut self) -> Result<(u64, Option<u64>), DriveError> {
+        console(|s| {
+            let off = match &mut s.bus {
+                Backend::Sim(sim) => sim.gates_off_since(),
+                Backend::Cosim(c) => c
+                    .gates_off_since()
+                    .map_err(|e| DriveError::Servo(ServoError::Bus(e)))?,
+                Backend::Gp0(_) => return Err(DriveError::Unsupported),
+            };
+            Ok((s.inject_cycle, off))
+        })
+        .unwrap_or(Err(DriveError::Absent))
     }
     fn config(&mut self) -> Result<ServoConfig, DriveError> {
         run(|s| Ok(*s.servo.config()))

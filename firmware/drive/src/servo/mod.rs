@@ -47,6 +47,8 @@ mod tel;
 pub use sweep::{bandwidth_hz, record_response, tone_response, Sine, SweepPoint};
 pub mod sensors;
 use sensors::{PlTime, SensorFault, SensorReport};
+pub mod evidence;
+use evidence::{EncoderDead, PhaseOpen};
 
 /// Control periods without a new ADC result that latch `ADC_STUCK`: two.
 /// A control period holds at least one averaged result (`Config::check`
@@ -58,6 +60,10 @@ pub const ADC_STALE_STEPS: u32 = 2;
 /// Control periods missed in a row (between two control steps) that latch
 /// `CONTROL_OVERRUN`: one late step is tolerated, the PL holds its outputs.
 pub const OVERRUN_PERIODS: u64 = 2;
+
+/// Control steps after a start before the checks over a window begin: the
+/// FOC's measurement pairs with the duties of two steps before.
+const EVIDENCE_SKIP: u32 = 2;
 
 /// Configuration of the drive (defaults: the paper's setup).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -260,6 +266,16 @@ pub struct Servo {
     sine: Option<Sine>,
     /// FOC: the duties of the last step (telemetry).
     duties: [f64; 3],
+    /// FOC: the duties of the step before (applied in the period the
+    /// present step measured).
+    duties_old: [f64; 3],
+    /// The dead-encoder check.
+    enc_dead: EncoderDead,
+    /// The open-phase check.
+    phase_open: PhaseOpen,
+    /// Steps before the checks over a window start again (the voltage of
+    /// the first steps after a start is not yet this run's).
+    evidence_skip: u32,
     /// The sensor check passed with this configuration's motor and sensors.
     sensors_ok: bool,
     /// The outer loops and the multi-turn position.
@@ -332,6 +348,10 @@ impl Servo {
             missed: 0,
             sine: None,
             duties: [0.0; 3],
+            duties_old: [0.0; 3],
+            enc_dead: EncoderDead::default(),
+            phase_open: PhaseOpen::default(),
+            evidence_skip: EVIDENCE_SKIP,
             sensors_ok: false,
             motion: Motion::new(cfg.enc_cpr)?,
         })
@@ -670,6 +690,9 @@ impl Servo {
         self.beat = self.beat.wrapping_add(1);
         Top(&mut *bus).heartbeat(self.beat)?;
         Adc(&mut *bus).set_enabled(true)?;
+        // The configured trip level (`debug fault overcurrent` lowers it).
+        let oc = self.cfg.oc_limit_counts().unwrap_or(2047);
+        Fault(&mut *bus).set_oc_limit(oc)?;
         let left = Fault(&mut *bus).clear()?;
         self.ps_faults = 0;
         self.seen = left.0;
@@ -693,6 +716,9 @@ impl Servo {
         self.last_adc_count = None;
         self.adc_stale = 0;
         self.last_pos = None;
+        self.enc_dead.reset();
+        self.phase_open.reset();
+        self.evidence_skip = EVIDENCE_SKIP;
     }
 
     /// The PL gave no control-period boundary for `periods` control periods
@@ -901,6 +927,13 @@ impl Servo {
         self.motion
             .measure(enc.pos, self.control_period_s(), t_last, j);
         let mut ps = self.ps_checks(adc_count, enc.pos, enc.cpr);
+        if gates && running {
+            ps |= self.evidence_checks(enc.pos, i_abc, m.theta_e_rad, torque_ref_nm);
+        } else {
+            self.enc_dead.reset();
+            self.phase_open.reset();
+            self.evidence_skip = EVIDENCE_SKIP;
+        }
         if gates {
             let (pos, speed) = self.motion.limits_violated(&self.cfg.motion);
             if pos {
@@ -948,8 +981,43 @@ impl Servo {
         Ok(())
     }
 
+    /// The checks over a window ([`evidence`]) of one period with the
+    /// controller running: the voltage applied while `i_abc` was measured
+    /// (FOC: the duties of two steps ago, loaded at the period start before
+    /// last; MPDTC: the switching state of the last step's boundary).
+    fn evidence_checks(&mut self, pos: u32, i_abc: [f64; 3], theta_e: f64, t_ref: f64) -> u32 {
+        if self.evidence_skip > 0 {
+            self.evidence_skip -= 1;
+            return 0;
+        }
+        let mo = self.cfg.motor;
+        let ts = self.control_period_s();
+        let win = evidence::window_periods(ts);
+        let u = match self.mode {
+            Mode::Foc => models::pmsm::frames::leg_voltage_alpha_beta(self.duties_old, mo.u_dc_v),
+            _ => models::pmsm::frames::switch_state_alpha_beta(self.last_state, mo.u_dc_v),
+        };
+        let mut f = 0;
+        if self
+            .enc_dead
+            .step(pos, u, clarke(i_abc), mo.r_s_ohm, mo.l_d_h, ts, win)
+        {
+            f |= Faults::ENCODER_DEAD;
+        }
+        // The reference current: i_d = 0, i_q from the torque (L_d = L_q
+        // or not, the reluctance term is 0 at i_d = 0).
+        let kt = 1.5 * f64::from(mo.pole_pairs) * mo.psi_pm_wb;
+        let (ra, rb) = models::pmsm::frames::inv_park(0.0, t_ref / kt, theta_e);
+        let i_ref = models::pmsm::frames::inv_clarke(ra, rb);
+        if self.phase_open.step(i_ref, i_abc, win).is_some() {
+            f |= Faults::PHASE_OPEN;
+        }
+        f
+    }
+
     fn foc_step<B: RegisterBus>(&mut self, bus: &mut B, m: &Measurement) -> Result<(), BusError> {
         let half = self.cfg.foc_half_period_cycles;
+        self.duties_old = self.duties;
         if let Actuation::DutyAbc(d) = self.foc.step(m, self.torque_ref_nm) {
             self.duties = d;
             Pwm(&mut *bus).set_duties(d, half)?;
