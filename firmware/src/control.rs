@@ -590,15 +590,6 @@ fn inject_now(s: &mut State, f: Injection) -> Result<(), ServoError> {
             Err(unsupported())
         }
     };
-    let jump = |s: &mut State, counts: u32| -> Result<(), ServoError> {
-        let off = match &s.bus {
-            Backend::Sim(sim) => sim.sim_motor().enc_offset,
-            Backend::Cosim(c) => c.motor.enc_offset,
-            Backend::Gp0(_) => return Err(unsupported()),
-        };
-        let cpr = s.servo.config().enc_cpr.max(1);
-        sim_set(s, "enc_offset", f64::from((off + counts) % cpr))
-    };
     match f {
         Injection::AdcStuck => {
             drive::pl::adc::Adc(&mut s.bus).set_enabled(false)?;
@@ -653,14 +644,6 @@ fn inject_now(s: &mut State, f: Injection) -> Result<(), ServoError> {
             }
             Backend::Gp0(_) => Err(unsupported()),
         },
-        Injection::EncoderLoss => {
-            let q = s.servo.config().enc_cpr / 4;
-            jump(s, q)
-        }
-        Injection::EncoderJump => {
-            let q = s.servo.config().enc_cpr / 16;
-            jump(s, q)
-        }
         Injection::EncoderDead => sim_set(s, "enc_dead", 1.0),
         Injection::PhaseOpen => sim_set(s, "phase_open", 2.0),
         // Paced by the console (`FwDrive::inject`).

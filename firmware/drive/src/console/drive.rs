@@ -189,11 +189,6 @@ pub enum Injection {
     Overcurrent,
     /// The heartbeat stops for 3 ms (`WDG_TIMEOUT` is 2 ms).
     Watchdog,
-    /// The encoder jumps a quarter turn (`sim set enc_offset`).
-    EncoderLoss,
-    /// The encoder jumps 1/16 turn (`sim set enc_offset`): a speed far
-    /// beyond `vel_limit` for one period, within the `ENCODER_LOSS` bound.
-    EncoderJump,
     /// The encoder's lines freeze (`sim set enc_dead 1`).
     EncoderDead,
     /// Phase b disconnected (`sim set phase_open 2`).
@@ -211,8 +206,6 @@ impl Injection {
             "adc-invert" => Some(Injection::AdcInvert),
             "overcurrent" => Some(Injection::Overcurrent),
             "watchdog" => Some(Injection::Watchdog),
-            "encoder-loss" => Some(Injection::EncoderLoss),
-            "encoder-jump" => Some(Injection::EncoderJump),
             "encoder-dead" => Some(Injection::EncoderDead),
             "phase-open" => Some(Injection::PhaseOpen),
             _ => None,

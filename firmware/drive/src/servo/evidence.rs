@@ -123,6 +123,13 @@ impl PhaseOpen {
         *self = Self::default();
     }
 
+    /// A phase looks open this period (its count runs): the voltage
+    /// equation of the dead-encoder check does not hold then (the open
+    /// terminal floats away from its duty).
+    pub fn suspect(&self) -> bool {
+        self.n.iter().any(|&n| n > 0)
+    }
+
     /// One control period: reference and measured phase currents, A, and
     /// the window `m` in periods. The open phase (0 = a), if any.
     pub fn step(&mut self, i_ref: [f64; 3], i: [f64; 3], m: u32) -> Option<usize> {

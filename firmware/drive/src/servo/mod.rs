@@ -997,22 +997,21 @@ impl Servo {
             Mode::Foc => models::pmsm::frames::leg_voltage_alpha_beta(self.duties_old, mo.u_dc_v),
             _ => models::pmsm::frames::switch_state_alpha_beta(self.last_state, mo.u_dc_v),
         };
-        let mut f = 0;
-        if self
+        let dead = self
             .enc_dead
-            .step(pos, u, clarke(i_abc), mo.r_s_ohm, mo.l_d_h, ts, win)
-        {
-            f |= Faults::ENCODER_DEAD;
-        }
+            .step(pos, u, clarke(i_abc), mo.r_s_ohm, mo.l_d_h, ts, win);
         // The reference current: i_d = 0, i_q from the torque (L_d = L_q
         // or not, the reluctance term is 0 at i_d = 0).
         let kt = 1.5 * f64::from(mo.pole_pairs) * mo.psi_pm_wb;
         let (ra, rb) = models::pmsm::frames::inv_park(0.0, t_ref / kt, theta_e);
         let i_ref = models::pmsm::frames::inv_clarke(ra, rb);
         if self.phase_open.step(i_ref, i_abc, win).is_some() {
-            f |= Faults::PHASE_OPEN;
+            Faults::PHASE_OPEN
+        } else if dead && !self.phase_open.suspect() {
+            Faults::ENCODER_DEAD
+        } else {
+            0
         }
-        f
     }
 
     fn foc_step<B: RegisterBus>(&mut self, bus: &mut B, m: &Measurement) -> Result<(), BusError> {
