@@ -26,7 +26,8 @@
 //! Open phase: the reference current vector (`i_d = 0`, `i_q` from the
 //! torque reference) projected on phase `x`'s axis is at least
 //! [`REF_MIN_A`] while the measured `|i_x|` stays at most [`ZERO_MAX_A`]
-//! (10 ADC counts) in every period of the window. A healthy current loop
+//! (10 ADC counts) in every period of the window, with current in another
+//! phase (all three at zero is no one phase's fault). A healthy current loop
 //! follows a step well within the window; a locked rotor carries its
 //! current in every phase whose reference needs it.
 
@@ -134,6 +135,12 @@ impl PhaseOpen {
     /// the window `m` in periods. The open phase (0 = a), if any.
     pub fn step(&mut self, i_ref: [f64; 3], i: [f64; 3], m: u32) -> Option<usize> {
         let mut open = None;
+        // One open phase leaves the current to the other two; no current
+        // in any phase is no phase's evidence (nothing is driven at all).
+        if !i.iter().any(|&x| libm::fabs(x) > ZERO_MAX_A) {
+            self.n = [0; 3];
+            return None;
+        }
         for x in 0..3 {
             if libm::fabs(i_ref[x]) >= REF_MIN_A && libm::fabs(i[x]) <= ZERO_MAX_A {
                 self.n[x] += 1;

@@ -997,9 +997,15 @@ impl Servo {
             Mode::Foc => models::pmsm::frames::leg_voltage_alpha_beta(self.duties_old, mo.u_dc_v),
             _ => models::pmsm::frames::switch_state_alpha_beta(self.last_state, mo.u_dc_v),
         };
-        let dead = self
-            .enc_dead
-            .step(pos, u, clarke(i_abc), mo.r_s_ohm, mo.l_d_h, ts, win);
+        // Voltage without any current is an open circuit, not back-EMF.
+        let flowing = i_abc.iter().any(|&x| libm::fabs(x) > evidence::ZERO_MAX_A);
+        if !flowing {
+            self.enc_dead.reset();
+        }
+        let dead = flowing
+            && self
+                .enc_dead
+                .step(pos, u, clarke(i_abc), mo.r_s_ohm, mo.l_d_h, ts, win);
         // The reference current: i_d = 0, i_q from the torque (L_d = L_q
         // or not, the reluctance term is 0 at i_d = 0).
         let kt = 1.5 * f64::from(mo.pole_pairs) * mo.psi_pm_wb;
