@@ -413,8 +413,12 @@ pub fn on_control() {
             // A bus error leaves the gates to the PL's own fault logic.
             let start = timer::global_count();
             let _ = s.servo.control_step(&mut s.bus);
-            if let Some(f) = s.pending_injection.take() {
-                s.injection_result = Some(inject_now(s, f));
+            // After a step of the running controller (not during the
+            // MPDTC's alignment, when the checks over a window wait).
+            if s.servo.controlling() {
+                if let Some(f) = s.pending_injection.take() {
+                    s.injection_result = Some(inject_now(s, f));
+                }
             }
             crate::telemetry::on_step(&s.servo, timer::global_count() - start);
         }
@@ -809,7 +813,8 @@ impl DriveOps for FwDrive {
             }
             _ => {
                 // At a fixed point of the control period: right after the
-                // next control step (the PL's cycle count from the
+                // next control step of the running controller (after the
+                // MPDTC's alignment; the PL's cycle count from the
                 // boundary is the step's own, the same every time on the
                 // simulated PL); at once with the gates off (no step).
                 let gates = run(|s| Ok(s.servo.gates_on(&mut s.bus)?))?;

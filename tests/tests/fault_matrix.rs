@@ -26,6 +26,8 @@ struct Case {
     torque: f64,
     /// Control periods to run before the injection.
     warm: u64,
+    /// Electrical speed to reach before the injection, rad/s.
+    min_speed: f64,
     /// Checked over a window of evidence: bound = window + one period.
     windowed: bool,
     how: &'static str,
@@ -39,6 +41,7 @@ const CASES: [Case; 7] = [
         setup: &[],
         torque: 0.2,
         warm: 10,
+        min_speed: 0.0,
         windowed: false,
         how: "`OC_LIMIT` set to 0 counts: the next raw sample is over it (PL)",
     },
@@ -49,6 +52,7 @@ const CASES: [Case; 7] = [
         setup: &[],
         torque: 0.2,
         warm: 10,
+        min_speed: 0.0,
         windowed: false,
         how: "external fault input asserted for 10 us (PL)",
     },
@@ -59,6 +63,7 @@ const CASES: [Case; 7] = [
         setup: &[],
         torque: 0.2,
         warm: 10,
+        min_speed: 0.0,
         windowed: false,
         how: "control loop and heartbeat stopped; cause = last heartbeat + `WDG_TIMEOUT` (PL)",
     },
@@ -69,6 +74,7 @@ const CASES: [Case; 7] = [
         setup: &[],
         torque: 0.2,
         warm: 10,
+        min_speed: 0.0,
         windowed: false,
         how: "`ADC_CTRL.ENABLE` = 0 (PS: no new result; MPDTC: no period boundary)",
     },
@@ -79,6 +85,7 @@ const CASES: [Case; 7] = [
         setup: &[],
         torque: 0.2,
         warm: 10,
+        min_speed: 0.0,
         windowed: false,
         how: "two boundaries without a step; cause = the end of the second such period (PS)",
     },
@@ -89,6 +96,7 @@ const CASES: [Case; 7] = [
         setup: &[],
         torque: 0.2,
         warm: 10,
+        min_speed: 0.0,
         windowed: true,
         how: "phase b disconnected, locked rotor (PS, phase current over a window)",
     },
@@ -99,6 +107,9 @@ const CASES: [Case; 7] = [
         setup: &["sim set locked 0"],
         torque: 1.0,
         warm: 64,
+        // 3x the dead-encoder check's threshold (1.5 V of back-EMF, 161
+        // rad/s): detected in the first window.
+        min_speed: 500.0,
         windowed: true,
         how: "free rotor at 1 N m, the encoder's lines freeze (PS, back-EMF over a window)",
     },
@@ -134,6 +145,11 @@ fn cell(s: &mut Session, mode: &str, c: &Case) -> i64 {
     assert_ok(&cmd(s, "enable"));
     assert_ok(&cmd(s, &format!("torque {}", c.torque)));
     wait_periods(s, c.warm);
+    let end = Instant::now() + Duration::from_secs(30);
+    while num(&cmd(s, "status"), "speed").abs() < c.min_speed {
+        assert!(Instant::now() < end, "{} {mode}: too slow", c.fault);
+        std::thread::sleep(Duration::from_millis(5));
+    }
     let st = cmd(s, "status");
     assert_eq!(
         field(&st, "fault"),

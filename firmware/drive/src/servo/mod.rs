@@ -584,6 +584,12 @@ impl Servo {
         Pwm(bus).gates_enabled()
     }
 
+    /// The controller runs: the gates are on and, in MPDTC, the rotor
+    /// alignment is over (the checks over a window run only then).
+    pub fn controlling(&self) -> bool {
+        self.gates && (self.mode != Mode::Mpdtc || self.align_zero.is_some())
+    }
+
     /// Checks a torque reference: finite and within the limit.
     pub fn check_torque(&self, nm: f64) -> Result<f64, ServoError> {
         if nm.is_finite() && libm::fabs(nm) <= self.cfg.torque_limit_nm {
