@@ -1008,18 +1008,30 @@ impl Servo {
         if !flowing {
             self.enc_dead.reset();
         }
-        let dead = flowing
-            && self
-                .enc_dead
-                .step(pos, u, clarke(i_abc), mo.r_s_ohm, mo.l_d_h, ts, win);
         // The reference current: i_d = 0, i_q from the torque (L_d = L_q
         // or not, the reluctance term is 0 at i_d = 0).
         let kt = 1.5 * f64::from(mo.pole_pairs) * mo.psi_pm_wb;
         let (ra, rb) = models::pmsm::frames::inv_park(0.0, t_ref / kt, theta_e);
         let i_ref = models::pmsm::frames::inv_clarke(ra, rb);
-        if self.phase_open.step(i_ref, i_abc, win).is_some() {
+        let open = self.phase_open.step(i_ref, i_abc, win).is_some();
+        // A period where a phase looks open is no evidence of the
+        // back-EMF (a dead encoder's wrong angle makes a healthy phase's
+        // zero crossing look like one: left out, not the whole window).
+        let suspect = self.phase_open.suspect();
+        let dead = flowing
+            && self.enc_dead.step(
+                pos,
+                u,
+                clarke(i_abc),
+                suspect,
+                mo.r_s_ohm,
+                mo.l_d_h,
+                ts,
+                win,
+            );
+        if open {
             Faults::PHASE_OPEN
-        } else if dead && !self.phase_open.suspect() {
+        } else if dead {
             Faults::ENCODER_DEAD
         } else {
             0
