@@ -128,6 +128,9 @@ struct State {
     inject_cycle: u64,
     /// PL time at the start of the last control step.
     last_step_cycle: u64,
+    /// Simulated PL: the PL cycle just after the last control-period
+    /// boundary a tick advanced to (`None`: not known to the cycle).
+    last_boundary: Option<u64>,
     /// Co-simulation: the next control step's boundary is the cause of a
     /// `debug fault overrun` (the second period without a step ends).
     overrun_cause_due: bool,
@@ -276,6 +279,7 @@ pub fn init() -> Boot {
                     skip_boundaries: 0,
                     inject_cycle: 0,
                     last_step_cycle: 0,
+                    last_boundary: None,
                     overrun_cause_due: false,
                     pending_injection: None,
                     injection_result: None,
@@ -320,24 +324,47 @@ pub fn on_pl_tick() {
             // Up to the next control-period boundary (at most two periods).
             Backend::Sim(sim) => {
                 let period = period_cycles(&s.servo);
+                // MPDTC with the controller running: the averaged ADC
+                // result that makes the boundary is due one period after
+                // the last (the ADC timer's period); a few cycles later it
+                // is overdue (the ADC is stuck, `ADC_STUCK` within the
+                // period).
+                let due = match s.last_boundary {
+                    Some(b) if s.servo.mode() == Mode::Mpdtc && s.servo.controlling() => {
+                        Some(b + period + ADC_DUE_MARGIN)
+                    }
+                    _ => None,
+                };
                 // A boundary that the console's register accesses crossed is
                 // served now (on a board the control interrupt is taken as
                 // soon as the access ends), not one period later.
+                let mut overdue = false;
                 let mut n = if sim.boundaries_crossed() > 0 {
+                    s.last_boundary = None;
                     sim.advance(0).control_periods
+                } else if let Some(due) = due {
+                    let a = sim.advance_to_boundary(due.saturating_sub(sim.pl_cycles()).max(1));
+                    overdue = a.control_periods == 0;
+                    s.last_boundary = (!overdue).then(|| sim.pl_cycles());
+                    a.control_periods
                 } else {
-                    sim.advance_to_boundary(2 * period).control_periods
+                    let a = sim.advance_to_boundary(2 * period);
+                    s.last_boundary = (a.control_periods > 0).then(|| sim.pl_cycles());
+                    a.control_periods
                 };
                 // `debug fault overrun`: more boundaries before the step.
                 let skip = core::mem::take(&mut s.skip_boundaries);
                 for _ in 0..skip {
                     n += sim.advance_to_boundary(2 * period).control_periods;
+                    s.last_boundary = None;
                 }
                 if skip > 0 {
                     // The second period without a step ends here.
                     s.inject_cycle = sim.pl_cycles();
                 }
-                if n == 0 {
+                if overdue {
+                    let _ = s.servo.note_result_overdue(sim);
+                } else if n == 0 {
                     // No result from the ADC that paces the period.
                     let _ = s.servo.note_no_boundary(sim, 2);
                 }
@@ -369,6 +396,11 @@ pub fn on_pl_tick() {
     }
 }
 
+/// PL cycles after its due time that an averaged ADC result is overdue:
+/// the boundary is reported one cycle after the strobe, and the tick's
+/// advance stops just after it.
+const ADC_DUE_MARGIN: u64 = 4;
+
 /// Global-timer counts between a control-period boundary and the PL tick
 /// that serves it in co-simulation (the boundary is reported one cycle
 /// after the strobe; a little margin keeps the tick after it).
@@ -383,6 +415,7 @@ pub fn on_control() {
         let boundary = match ctrl_irq::take(&mut s.bus) {
             Ok(t) if t.status.boundary() => {
                 s.latency.add(t.age);
+                s.servo.note_step_age(t.age);
                 if t.status.missed() {
                     if let Backend::Gp0(_) = s.bus {
                         // The PL saw a boundary the step did not.

@@ -8,13 +8,12 @@
 //! Dead encoder, and why a locked rotor does not trip it: with the count
 //! standing still, the rotor's motion shows in the back-EMF. Over the
 //! window, the stator's voltage equation `u = R i + L di/dt + e` summed
-//! period by period gives `mean(e) = mean(u) - R mean(i) - L sum(di) /
-//! T_window` (alpha-beta vectors; `u` the voltage applied in each period,
-//! from the duties or the switching state; `sum(di)` telescopes to `i_end
-//! - i_start` when no period is left out). A period where a phase looks
-//! open (and the one before it, whose terminal may already float) is left
-//! out: the window needs its periods with a still count, and at least half
-//! of them summed. A held rotor has
+//! period by period telescopes: `mean(e) = mean(u) - R mean(i) - L (i_end -
+//! i_start) / T_window` (alpha-beta vectors; `u` the voltage applied in
+//! each period, from the duties or the switching state). The window is
+//! contiguous: leaving a period out would leave its share of the applied
+//! voltage, which the measurement's timing spreads over its neighbours, in
+//! the sums (volts of error with the MPDTC's switching). A held rotor has
 //! `e = 0`: only the applied voltage's errors (dead time, about 0.5 V here)
 //! remain, below [`EMF_MIN_V`]. A rotor that turns at `w_e` has `|e| = w_e
 //! psi`; a healthy encoder counts at least once per window from
@@ -54,28 +53,15 @@ pub fn window_periods(period_s: f64) -> u32 {
     }
 }
 
-/// One period's terms of the voltage equation: `u`, `i` and `i - i_prev`
-/// (alpha-beta, V and A).
-type Terms = ((f64, f64), (f64, f64), (f64, f64));
-
 /// The dead-encoder check's state.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct EncoderDead {
     last_pos: Option<u32>,
-    /// Periods since the last count (or the last window).
-    elapsed: u32,
-    /// Periods summed.
+    /// Periods summed since the last count (or the last window).
     n: u32,
     sum_u: (f64, f64),
     sum_i: (f64, f64),
-    sum_di: (f64, f64),
-    /// The last period's current.
-    i_prev: (f64, f64),
-    /// The last period's terms: summed once the next period shows that no
-    /// phase looked open after it (a phase that opens floats its terminal
-    /// away from the applied voltage in the period before its current
-    /// reads zero).
-    pending: Option<Terms>,
+    i_start: (f64, f64),
 }
 
 impl EncoderDead {
@@ -86,12 +72,16 @@ impl EncoderDead {
 
     /// One control period: encoder count `pos`, the voltage `u` applied
     /// during the period the current `i` (both alpha-beta, V and A) was
-    /// measured over, whether a phase looked open in it (`suspect`: the
-    /// voltage equation does not hold, the period and the one before are
-    /// left out), the motor's `r_ohm` and `l_h`, the period `ts_s` and the
-    /// window `m` in periods. True: a dead encoder (the count stood still
-    /// for `m` periods and the back-EMF over the periods summed, at least
-    /// half of them, proves motion).
+    /// measured over, whether a phase looks open in it (`suspect`), the
+    /// motor's `r_ohm` and `l_h`, the period `ts_s` and the window `m` in
+    /// periods. True: a dead encoder.
+    ///
+    /// A phase that looks open voids the voltage equation (its terminal
+    /// floats away from the applied voltage), so a window does not close
+    /// in such a period: it waits one period more (a dead encoder's wrong
+    /// angle makes a healthy phase's zero crossing look open for a period)
+    /// and is given up when that one looks open too (an open phase, which
+    /// its own check reports).
     #[allow(clippy::too_many_arguments)]
     pub fn step(
         &mut self,
@@ -105,49 +95,36 @@ impl EncoderDead {
         m: u32,
     ) -> bool {
         if self.last_pos != Some(pos) {
-            *self = Self {
-                last_pos: Some(pos),
-                i_prev: i,
-                ..Self::default()
-            };
+            self.last_pos = Some(pos);
+            self.restart(i);
             return false;
         }
-        self.elapsed += 1;
-        let di = (i.0 - self.i_prev.0, i.1 - self.i_prev.1);
-        self.i_prev = i;
-        if suspect {
-            self.pending = None;
-        } else {
-            if let Some(t) = self.pending.replace((u, i, di)) {
-                self.add(t);
-            }
-        }
-        if self.elapsed < m {
-            return false;
-        }
-        let n = f64::from(self.n);
-        let e = |su: f64, si: f64, sd: f64| su / n - r_ohm * si / n - l_h * sd / (n * ts_s);
-        let ea = e(self.sum_u.0, self.sum_i.0, self.sum_di.0);
-        let eb = e(self.sum_u.1, self.sum_i.1, self.sum_di.1);
-        let enough = 2 * self.n >= m;
-        // The next window starts with this period's terms still pending.
-        *self = Self {
-            last_pos: self.last_pos,
-            i_prev: i,
-            pending: self.pending,
-            ..Self::default()
-        };
-        enough && libm::sqrt(ea * ea + eb * eb) > EMF_MIN_V
-    }
-
-    fn add(&mut self, (u, i, di): Terms) {
         self.n += 1;
         self.sum_u.0 += u.0;
         self.sum_u.1 += u.1;
         self.sum_i.0 += i.0;
         self.sum_i.1 += i.1;
-        self.sum_di.0 += di.0;
-        self.sum_di.1 += di.1;
+        if self.n < m || (suspect && self.n == m) {
+            return false;
+        }
+        if suspect {
+            self.restart(i);
+            return false;
+        }
+        let n = f64::from(self.n);
+        let t = n * ts_s;
+        let e = |su: f64, si: f64, i1: f64, i0: f64| su / n - r_ohm * si / n - l_h * (i1 - i0) / t;
+        let ea = e(self.sum_u.0, self.sum_i.0, i.0, self.i_start.0);
+        let eb = e(self.sum_u.1, self.sum_i.1, i.1, self.i_start.1);
+        self.restart(i);
+        libm::sqrt(ea * ea + eb * eb) > EMF_MIN_V
+    }
+
+    fn restart(&mut self, i: (f64, f64)) {
+        self.n = 0;
+        self.sum_u = (0.0, 0.0);
+        self.sum_i = (0.0, 0.0);
+        self.i_start = i;
     }
 }
 
@@ -244,13 +221,12 @@ mod tests {
         }
     }
 
-    /// A period where a phase looks open, and the one before it, are left
-    /// out of the sums, not the whole window (a dead encoder's wrong angle
-    /// makes a healthy phase's zero crossing look open): a dead encoder
-    /// still trips at the window's end; an opening phase's floating terminal (a wrong
-    /// voltage in the period before its current reads zero) is not summed.
+    /// A window does not close in a period where a phase looks open: one
+    /// such period (a healthy phase's zero crossing under a dead encoder's
+    /// wrong angle) delays the verdict by one period; two (an opening
+    /// phase, its terminal floating) give the window up.
     #[test]
-    fn periods_with_a_phase_looking_open_are_left_out() {
+    fn a_phase_looking_open_at_the_close_delays_the_window_by_one_period() {
         let (r, l, m) = (0.555, 0.64e-3, 8);
         let i = (0.0, 5.0);
         let mut dead = EncoderDead::default();
@@ -258,19 +234,19 @@ mod tests {
         for k in 1..m {
             assert!(!dead.step(7, (2.0, r * 5.0), i, k == 4, r, l, TS, m));
         }
-        // Even when the period that closes the window looks open.
-        assert!(dead.step(7, (2.0, r * 5.0), i, true, r, l, TS, m));
+        assert!(!dead.step(7, (2.0, r * 5.0), i, true, r, l, TS, m));
+        assert!(dead.step(7, (2.0, r * 5.0), i, false, r, l, TS, m));
         // A held rotor whose phase opens: 40 V off in the period before
-        // the suspect ones, at the end of the window.
+        // the suspect ones, at the end of a window.
         let mut held = EncoderDead::default();
         held.step(7, (0.0, 0.0), i, false, r, l, TS, m);
         for k in 1..3 * m {
-            let u = if k == m + 5 {
+            let u = if k == 2 * m - 2 {
                 (40.0, r * 5.0)
             } else {
                 (0.0, r * 5.0)
             };
-            assert!(!held.step(7, u, i, k > m + 5, r, l, TS, m), "{k}");
+            assert!(!held.step(7, u, i, k > 2 * m - 2, r, l, TS, m), "{k}");
         }
     }
 

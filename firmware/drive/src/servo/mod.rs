@@ -55,7 +55,10 @@ use evidence::{EncoderDead, PhaseOpen};
 /// keeps it so), but a step served late (its interrupt held off by the
 /// console, or a step that ran past the boundary) can read the result the
 /// next step would have read: one stale step is tolerated, as one missed
-/// period is for `CONTROL_OVERRUN`.
+/// period is for `CONTROL_OVERRUN`. Not so where a period holds two results
+/// or more (the FOC's PWM period: four with the paper's timing) and the
+/// step before was not that late: the first step without one latches
+/// ([`Servo::adc_stale_limit`]).
 pub const ADC_STALE_STEPS: u32 = 2;
 /// Control periods missed in a row (between two control steps) that latch
 /// `CONTROL_OVERRUN`: one late step is tolerated, the PL holds its outputs.
@@ -269,6 +272,10 @@ pub struct Servo {
     /// FOC: the duties of the step before (applied in the period the
     /// present step measured).
     duties_old: [f64; 3],
+    /// `BOUNDARY_AGE` of the present step and of the one before, PL cycles
+    /// (`None`: not known).
+    step_age: Option<u32>,
+    prev_step_age: Option<u32>,
     /// The dead-encoder check.
     enc_dead: EncoderDead,
     /// The open-phase check.
@@ -349,6 +356,8 @@ impl Servo {
             sine: None,
             duties: [0.0; 3],
             duties_old: [0.0; 3],
+            step_age: None,
+            prev_step_age: None,
             enc_dead: EncoderDead::default(),
             phase_open: PhaseOpen::default(),
             evidence_skip: EVIDENCE_SKIP,
@@ -769,6 +778,40 @@ impl Servo {
         })
     }
 
+    /// Steps without a new ADC result that latch `ADC_STUCK`: one where a
+    /// control period holds two averaged results or more (FOC) and the step
+    /// before was served at most a period less one result period after its
+    /// boundary (its count read then leaves at least one result to this
+    /// one), else [`ADC_STALE_STEPS`].
+    pub fn adc_stale_limit(&self) -> u32 {
+        let p = 2 * self.cfg.foc_half_period_cycles;
+        let r = (4 * self.cfg.adc_period_cycles).max(1);
+        let on_time = self.prev_step_age.is_some_and(|a| a.saturating_add(r) <= p);
+        if self.mode == Mode::Foc && p >= 2 * r && on_time {
+            1
+        } else {
+            ADC_STALE_STEPS
+        }
+    }
+
+    /// The PL cycles from its boundary to the present step's interrupt
+    /// (`BOUNDARY_AGE`), before [`Self::control_step`].
+    pub fn note_step_age(&mut self, cycles: u32) {
+        self.step_age = Some(cycles);
+    }
+
+    /// The averaged ADC result that paces the period (MPDTC, mode off) did
+    /// not come by its due time, the last one's + one period (+ a margin for
+    /// the boundary's report): the PL's ADC timer runs at a fixed period, so
+    /// this is no late step (unlike a count that stood still) and
+    /// `ADC_STUCK` latches at once.
+    pub fn note_result_overdue<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
+        if self.mode == Mode::Foc {
+            return Ok(());
+        }
+        self.latch_ps(bus, Faults::ADC_STUCK)
+    }
+
     /// The PS's checks of one control period: no new ADC result, an
     /// impossible encoder jump, control periods missed. Returns the faults
     /// they found.
@@ -780,9 +823,10 @@ impl Servo {
             self.adc_stale = 0;
         }
         self.last_adc_count = Some(adc_count);
-        if self.adc_stale >= ADC_STALE_STEPS {
+        if self.adc_stale >= self.adc_stale_limit() {
             f |= Faults::ADC_STUCK;
         }
+        self.prev_step_age = self.step_age.take();
         // The shortest way round from the last position: more than an
         // eighth of a turn in one control period (> 30000 rpm at 16 kHz)
         // is no motor's motion.
@@ -1014,9 +1058,7 @@ impl Servo {
         let (ra, rb) = models::pmsm::frames::inv_park(0.0, t_ref / kt, theta_e);
         let i_ref = models::pmsm::frames::inv_clarke(ra, rb);
         let open = self.phase_open.step(i_ref, i_abc, win).is_some();
-        // A period where a phase looks open is no evidence of the
-        // back-EMF (a dead encoder's wrong angle makes a healthy phase's
-        // zero crossing look like one: left out, not the whole window).
+        // A period where a phase looks open voids the voltage equation.
         let suspect = self.phase_open.suspect();
         let dead = flowing
             && self.enc_dead.step(
