@@ -688,6 +688,11 @@ fn inject_now(s: &mut State, f: Injection) -> Result<(), ServoError> {
             }
             Backend::Gp0(_) => Err(unsupported()),
         },
+        Injection::PositionLimit | Injection::Overspeed => {
+            s.servo.tighten_limit(f == Injection::Overspeed)?;
+            s.inject_cycle = s.pl_now();
+            Ok(())
+        }
         Injection::EncoderDead => sim_set(s, "enc_dead", 1.0),
         Injection::PhaseOpen => sim_set(s, "phase_open", 2.0),
         // Paced by the console (`FwDrive::inject`).

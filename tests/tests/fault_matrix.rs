@@ -33,7 +33,7 @@ struct Case {
     how: &'static str,
 }
 
-const CASES: [Case; 7] = [
+const CASES: [Case; 9] = [
     Case {
         fault: "OVERCURRENT",
         code: 1,
@@ -88,6 +88,28 @@ const CASES: [Case; 7] = [
         min_speed: 0.0,
         windowed: false,
         how: "two boundaries without a step; cause = the end of the second such period (PS)",
+    },
+    Case {
+        fault: "POSITION_LIMIT",
+        code: 7,
+        inject: "position-limit",
+        setup: &[],
+        torque: 0.2,
+        warm: 10,
+        min_speed: 0.0,
+        windowed: false,
+        how: "a soft limit moved to one count behind the present position (PS)",
+    },
+    Case {
+        fault: "OVERSPEED",
+        code: 8,
+        inject: "overspeed",
+        setup: &["sim set locked 0"],
+        torque: 0.5,
+        warm: 64,
+        min_speed: 300.0,
+        windowed: false,
+        how: "free rotor at 0.5 N m above 300 rad/s, `vel_limit` lowered to half its speed over the margin (PS)",
     },
     Case {
         fault: "PHASE_OPEN",

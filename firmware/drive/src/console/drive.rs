@@ -193,6 +193,12 @@ pub enum Injection {
     EncoderDead,
     /// Phase b disconnected (`sim set phase_open 2`).
     PhaseOpen,
+    /// A soft limit moved to one count behind the present position
+    /// (`fault clear` restores it).
+    PositionLimit,
+    /// `vel_limit` lowered below the present speed (`fault clear`
+    /// restores it).
+    Overspeed,
 }
 
 impl Injection {
@@ -208,6 +214,8 @@ impl Injection {
             "watchdog" => Some(Injection::Watchdog),
             "encoder-dead" => Some(Injection::EncoderDead),
             "phase-open" => Some(Injection::PhaseOpen),
+            "position-limit" => Some(Injection::PositionLimit),
+            "overspeed" => Some(Injection::Overspeed),
             _ => None,
         }
     }

@@ -143,6 +143,29 @@ fn an_overdue_result_in_mpdtc_is_a_stuck_adc_at_once() {
     assert!(s.faults(&mut pl).unwrap().none());
 }
 
+/// `debug fault position-limit`: the next step latches `POSITION_LIMIT`;
+/// `fault clear` restores the limits (the next run is clean).
+#[test]
+fn a_limit_moved_behind_the_position_trips_at_the_next_step_and_clear_restores_it() {
+    let (mut s, mut pl) = running(Mode::Foc);
+    let before = s.config().motion;
+    s.tighten_limit(false).unwrap();
+    s.control_step(&mut pl).unwrap();
+    assert_eq!(s.faults(&mut pl).unwrap(), Faults(Faults::POSITION_LIMIT));
+    assert_eq!(pl.get(GATE_CTRL_ADDR), 0);
+    // With the gates off: refused, nothing changed.
+    let latched = s.config().motion;
+    assert_eq!(s.tighten_limit(true), Err(ServoError::GatesOff));
+    assert_eq!(s.config().motion, latched);
+    assert!(s.clear_faults(&mut pl).unwrap().none());
+    assert_eq!(s.config().motion, before);
+    s.enable(&mut pl).unwrap();
+    for _ in 0..5 {
+        s.control_step(&mut pl).unwrap();
+    }
+    assert!(s.faults(&mut pl).unwrap().none());
+}
+
 /// The same on the fake PL in FOC: a PL fault that cleared `GATE_EN`.
 #[test]
 fn a_pl_fault_snapshot_on_the_fake_pl_keeps_the_reference() {

@@ -276,6 +276,9 @@ pub struct Servo {
     /// (`None`: not known).
     step_age: Option<u32>,
     prev_step_age: Option<u32>,
+    /// The motion limits (`pos_min`, `pos_max`, `vel_limit`) before
+    /// [`Self::tighten_limit`] moved them.
+    saved_limits: Option<(f64, f64, f64)>,
     /// The dead-encoder check.
     enc_dead: EncoderDead,
     /// The open-phase check.
@@ -358,6 +361,7 @@ impl Servo {
             duties_old: [0.0; 3],
             step_age: None,
             prev_step_age: None,
+            saved_limits: None,
             enc_dead: EncoderDead::default(),
             phase_open: PhaseOpen::default(),
             evidence_skip: EVIDENCE_SKIP,
@@ -708,11 +712,45 @@ impl Servo {
         // The configured trip level (`debug fault overcurrent` lowers it).
         let oc = self.cfg.oc_limit_counts().unwrap_or(2047);
         Fault(&mut *bus).set_oc_limit(oc)?;
+        // The configured motion limits (`debug fault position-limit` or
+        // `overspeed` moved them).
+        if let Some((lo, hi, v)) = self.saved_limits.take() {
+            let m = &mut self.cfg.motion;
+            (m.pos_min, m.pos_max, m.vel_limit) = (lo, hi, v);
+        }
         let left = Fault(&mut *bus).clear()?;
         self.ps_faults = 0;
         self.seen = left.0;
         self.note_skipped();
         Ok(left)
+    }
+
+    /// Makes the next control step latch `POSITION_LIMIT` (`speed` false:
+    /// a soft limit moved to one count behind the present position) or
+    /// `OVERSPEED` (`vel_limit` lowered to half the present speed over the
+    /// trip margin: a rotor at rest does not trip), for `debug fault`;
+    /// `fault clear` restores them. The checks run with the gates on only
+    /// ([`ServoError::GatesOff`] otherwise, nothing changed).
+    pub fn tighten_limit(&mut self, speed: bool) -> Result<(), ServoError> {
+        if !self.gates {
+            return Err(ServoError::GatesOff);
+        }
+        let st = self.motion.status();
+        let m = self.cfg.motion;
+        self.saved_limits
+            .get_or_insert((m.pos_min, m.pos_max, m.vel_limit));
+        let m = &mut self.cfg.motion;
+        if speed {
+            m.vel_limit = libm::fabs(st.velocity_rev_s) / (2.0 * motion::OVERSPEED_MARGIN);
+        } else {
+            let count = 1.0 / f64::from(self.cfg.enc_cpr.max(1));
+            if st.position_rev - count >= m.pos_min {
+                m.pos_max = st.position_rev - count;
+            } else {
+                m.pos_min = st.position_rev + count;
+            }
+        }
+        Ok(())
     }
 
     /// The fault history, oldest first.
