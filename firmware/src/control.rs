@@ -124,6 +124,20 @@ struct State {
     /// Control-period boundaries the next PL tick crosses without a
     /// control step (`debug fault overrun`, simulated PL).
     skip_boundaries: u32,
+    /// PL cycle of the last injected fault's cause (`debug fault-time`).
+    inject_cycle: u64,
+    /// PL time at the start of the last control step.
+    last_step_cycle: u64,
+    /// Simulated PL: the PL cycle just after the last control-period
+    /// boundary a tick advanced to (`None`: not known to the cycle).
+    last_boundary: Option<u64>,
+    /// Co-simulation: the next control step's boundary is the cause of a
+    /// `debug fault overrun` (the second period without a step ends).
+    overrun_cause_due: bool,
+    /// A `debug fault` to make happen right after the next control step.
+    pending_injection: Option<Injection>,
+    /// Its outcome, for the console.
+    injection_result: Option<Result<(), ServoError>>,
     /// The last `mpdcc run`.
     mpdcc_last: Option<HilReport>,
     /// Control interrupts taken.
@@ -263,6 +277,12 @@ pub fn init() -> Boot {
                     sim_start_us: timer::uptime_us(),
                     next_tick: 0,
                     skip_boundaries: 0,
+                    inject_cycle: 0,
+                    last_step_cycle: 0,
+                    last_boundary: None,
+                    overrun_cause_due: false,
+                    pending_injection: None,
+                    injection_result: None,
                     mpdcc_last: None,
                     control_irq: 0,
                     latency: Latency::default(),
@@ -304,19 +324,47 @@ pub fn on_pl_tick() {
             // Up to the next control-period boundary (at most two periods).
             Backend::Sim(sim) => {
                 let period = period_cycles(&s.servo);
+                // MPDTC with the controller running: the averaged ADC
+                // result that makes the boundary is due one period after
+                // the last (the ADC timer's period); a few cycles later it
+                // is overdue (the ADC is stuck, `ADC_STUCK` within the
+                // period).
+                let due = match s.last_boundary {
+                    Some(b) if s.servo.mode() == Mode::Mpdtc && s.servo.controlling() => {
+                        Some(b + period + ADC_DUE_MARGIN)
+                    }
+                    _ => None,
+                };
                 // A boundary that the console's register accesses crossed is
                 // served now (on a board the control interrupt is taken as
                 // soon as the access ends), not one period later.
+                let mut overdue = false;
                 let mut n = if sim.boundaries_crossed() > 0 {
+                    s.last_boundary = None;
                     sim.advance(0).control_periods
+                } else if let Some(due) = due {
+                    let a = sim.advance_to_boundary(due.saturating_sub(sim.pl_cycles()).max(1));
+                    overdue = a.control_periods == 0;
+                    s.last_boundary = (!overdue).then(|| sim.pl_cycles());
+                    a.control_periods
                 } else {
-                    sim.advance_to_boundary(2 * period).control_periods
+                    let a = sim.advance_to_boundary(2 * period);
+                    s.last_boundary = (a.control_periods > 0).then(|| sim.pl_cycles());
+                    a.control_periods
                 };
                 // `debug fault overrun`: more boundaries before the step.
-                for _ in 0..core::mem::take(&mut s.skip_boundaries) {
+                let skip = core::mem::take(&mut s.skip_boundaries);
+                for _ in 0..skip {
                     n += sim.advance_to_boundary(2 * period).control_periods;
+                    s.last_boundary = None;
                 }
-                if n == 0 {
+                if skip > 0 {
+                    // The second period without a step ends here.
+                    s.inject_cycle = sim.pl_cycles();
+                }
+                if overdue {
+                    let _ = s.servo.note_result_overdue(sim);
+                } else if n == 0 {
                     // No result from the ADC that paces the period.
                     let _ = s.servo.note_no_boundary(sim, 2);
                 }
@@ -348,6 +396,11 @@ pub fn on_pl_tick() {
     }
 }
 
+/// PL cycles after its due time that an averaged ADC result is overdue:
+/// the boundary is reported one cycle after the strobe, and the tick's
+/// advance stops just after it.
+const ADC_DUE_MARGIN: u64 = 4;
+
 /// Global-timer counts between a control-period boundary and the PL tick
 /// that serves it in co-simulation (the boundary is reported one cycle
 /// after the strobe; a little margin keeps the tick after it).
@@ -362,6 +415,7 @@ pub fn on_control() {
         let boundary = match ctrl_irq::take(&mut s.bus) {
             Ok(t) if t.status.boundary() => {
                 s.latency.add(t.age);
+                s.servo.note_step_age(t.age);
                 if t.status.missed() {
                     if let Backend::Gp0(_) = s.bus {
                         // The PL saw a boundary the step did not.
@@ -375,12 +429,37 @@ pub fn on_control() {
             Err(_) => true,
         };
         let stalled = s.stalled();
+        // Co-simulation `debug fault overrun`: steps left out.
+        let skip = boundary && matches!(s.bus, Backend::Cosim(_)) && s.skip_boundaries > 0;
+        if let (true, Backend::Cosim(c)) = (boundary && s.overrun_cause_due, &s.bus) {
+            s.inject_cycle = c.last.pl_cycles - u64::from(c.last.since_boundary);
+            s.overrun_cause_due = false;
+        }
         if stalled {
             s.servo.note_skipped();
+        } else if skip {
+            s.skip_boundaries -= 1;
+            s.servo.note_overruns(1);
+            s.overrun_cause_due = s.skip_boundaries == 0;
         } else if boundary {
+            s.last_step_cycle = s.pl_now();
             // A bus error leaves the gates to the PL's own fault logic.
             let start = timer::global_count();
+            // A dead encoder at the boundary, before the step reads the
+            // count: above one count per period the window then starts at
+            // this step, the same every time.
+            if s.servo.controlling() && s.pending_injection == Some(Injection::EncoderDead) {
+                s.pending_injection = None;
+                s.injection_result = Some(inject_now(s, Injection::EncoderDead));
+            }
             let _ = s.servo.control_step(&mut s.bus);
+            // After a step of the running controller (not during the
+            // MPDTC's alignment, when the checks over a window wait).
+            if s.servo.controlling() {
+                if let Some(f) = s.pending_injection.take() {
+                    s.injection_result = Some(inject_now(s, f));
+                }
+            }
             crate::telemetry::on_step(&s.servo, timer::global_count() - start);
         }
         let end = timer::global_count();
@@ -536,6 +615,90 @@ fn run<T>(f: impl FnOnce(&mut State) -> Result<T, ServoError>) -> Result<T, Driv
 
 /// `debug flash-pace`: extra time around each flash erase and program, ms.
 static FLASH_PACE_MS: core::sync::atomic::AtomicU32 = core::sync::atomic::AtomicU32::new(0);
+
+/// Makes fault `f` happen now and notes its cause's PL cycle.
+fn inject_now(s: &mut State, f: Injection) -> Result<(), ServoError> {
+    let unsupported = || ServoError::Bus(BusError::SlaveError);
+    // `sim set` on the simulated motor of either PL; the cause is the PL's
+    // present cycle (the change acts from the next one).
+    let sim_set = |s: &mut State, name: &str, v: f64| -> Result<(), ServoError> {
+        let ok = match &mut s.bus {
+            Backend::Sim(sim) => sim.sim_set(name, v).is_ok(),
+            Backend::Cosim(c) => matches!(c.sim_set(name, v), Ok(Ok(()))),
+            Backend::Gp0(_) => false,
+        };
+        s.inject_cycle = s.pl_now();
+        if ok {
+            Ok(())
+        } else {
+            Err(unsupported())
+        }
+    };
+    match f {
+        Injection::AdcStuck => {
+            drive::pl::adc::Adc(&mut s.bus).set_enabled(false)?;
+            s.inject_cycle = s.pl_now();
+            Ok(())
+        }
+        Injection::Overcurrent => {
+            drive::pl::fault::Fault(&mut s.bus).set_oc_limit(0)?;
+            s.inject_cycle = s.pl_now();
+            Ok(())
+        }
+        Injection::External => match &mut s.bus {
+            Backend::Sim(sim) => {
+                // 10 us at the pin; a boundary crossed here is the next
+                // tick's.
+                sim.set_external_fault(true);
+                s.inject_cycle = sim.pl_cycles();
+                let _ = sim.advance(1000);
+                sim.set_external_fault(false);
+                Ok(())
+            }
+            Backend::Cosim(_) => {
+                sim_set(s, "fault_ext", 1.0)?;
+                let until = timer::global_count() + guest_counts(1000);
+                while timer::global_count() < until {}
+                // Runs the PL over the 10 us.
+                drive::pl::fault::Fault(&mut s.bus).latched()?;
+                let cause = s.inject_cycle;
+                sim_set(s, "fault_ext", 0.0)?;
+                s.inject_cycle = cause;
+                Ok(())
+            }
+            Backend::Gp0(_) => Err(unsupported()),
+        },
+        Injection::AdcSwap | Injection::AdcInvert => match &mut s.bus {
+            Backend::Sim(sim) => {
+                let mut w = simpl::AdcWiring::default();
+                if f == Injection::AdcSwap {
+                    w.source = [1, 0, 2];
+                } else {
+                    w.inverted[0] = true;
+                }
+                sim.set_adc_wiring(w);
+                Ok(())
+            }
+            Backend::Gp0(_) | Backend::Cosim(_) => Err(unsupported()),
+        },
+        Injection::Overrun => match &s.bus {
+            Backend::Sim(_) | Backend::Cosim(_) => {
+                s.skip_boundaries = 2;
+                Ok(())
+            }
+            Backend::Gp0(_) => Err(unsupported()),
+        },
+        Injection::PositionLimit | Injection::Overspeed => {
+            s.servo.tighten_limit(f == Injection::Overspeed)?;
+            s.inject_cycle = s.pl_now();
+            Ok(())
+        }
+        Injection::EncoderDead => sim_set(s, "enc_dead", 1.0),
+        Injection::PhaseOpen => sim_set(s, "phase_open", 2.0),
+        // Paced by the console (`FwDrive::inject`).
+        Injection::Watchdog => Err(unsupported()),
+    }
+}
 
 /// Sleeps until an interrupt.
 fn wait() {
@@ -695,43 +858,70 @@ impl DriveOps for FwDrive {
         })
     }
     fn inject(&mut self, f: Injection) -> Result<(), DriveError> {
-        match f {
-            Injection::AdcStuck => run(|s| Ok(drive::pl::adc::Adc(&mut s.bus).set_enabled(false)?)),
-            Injection::External => console(|s| match &mut s.bus {
-                Backend::Sim(sim) => {
-                    // 10 us at the pin; a boundary crossed here is the
-                    // next tick's.
-                    sim.set_external_fault(true);
-                    let _ = sim.advance(1000);
-                    sim.set_external_fault(false);
+        let r = match f {
+            Injection::Watchdog => {
+                run(|s| {
+                    // The last heartbeat is the last step's (written at its
+                    // start): the timeout runs out that long after it.
+                    let wdg = u64::from(s.servo.config().watchdog_cycles);
+                    s.inject_cycle = s.last_step_cycle + wdg;
+                    s.stall_until = s.pl_after_ms(3);
                     Ok(())
+                })?;
+                while console(|s| s.stalled()).unwrap_or(false) {
+                    wait();
                 }
-                Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
-            })
-            .unwrap_or(Err(DriveError::Absent)),
-            Injection::AdcSwap | Injection::AdcInvert => console(|s| match &mut s.bus {
-                Backend::Sim(sim) => {
-                    let mut w = simpl::AdcWiring::default();
-                    if f == Injection::AdcSwap {
-                        w.source = [1, 0, 2];
-                    } else {
-                        w.inverted[0] = true;
+                Ok(())
+            }
+            Injection::Overrun | Injection::AdcSwap | Injection::AdcInvert => {
+                run(|s| inject_now(s, f))
+            }
+            _ => {
+                // At a fixed point of the control period: right after the
+                // next control step of the running controller (after the
+                // MPDTC's alignment; the PL's cycle count from the
+                // boundary is the step's own, the same every time on the
+                // simulated PL); at once with the gates off (no step).
+                let gates = run(|s| Ok(s.servo.gates_on(&mut s.bus)?))?;
+                if !gates {
+                    run(|s| inject_now(s, f))
+                } else {
+                    run(|s| {
+                        s.pending_injection = Some(f);
+                        s.injection_result = None;
+                        Ok(())
+                    })?;
+                    let deadline = timer::uptime_us() + 10_000_000;
+                    loop {
+                        if let Some(r) = console(|s| s.injection_result.take()).flatten() {
+                            break r.map_err(DriveError::Servo);
+                        }
+                        if timer::uptime_us() > deadline {
+                            let _ = console(|s| s.pending_injection = None);
+                            break Err(DriveError::Timeout);
+                        }
+                        wait();
                     }
-                    sim.set_adc_wiring(w);
-                    Ok(())
                 }
-                Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
-            })
-            .unwrap_or(Err(DriveError::Absent)),
-            Injection::Overrun => console(|s| match &s.bus {
-                Backend::Sim(_) => {
-                    s.skip_boundaries = 2;
-                    Ok(())
-                }
-                Backend::Gp0(_) | Backend::Cosim(_) => Err(DriveError::Unsupported),
-            })
-            .unwrap_or(Err(DriveError::Absent)),
-        }
+            }
+        };
+        r.map_err(|e| match e {
+            DriveError::Servo(ServoError::Bus(BusError::SlaveError)) => DriveError::Unsupported,
+            e => e,
+        })
+    }
+    fn fault_time(&mut self) -> Result<(u64, Option<u64>), DriveError> {
+        console(|s| {
+            let off = match &mut s.bus {
+                Backend::Sim(sim) => sim.gates_off_since(),
+                Backend::Cosim(c) => c
+                    .gates_off_since()
+                    .map_err(|e| DriveError::Servo(ServoError::Bus(e)))?,
+                Backend::Gp0(_) => return Err(DriveError::Unsupported),
+            };
+            Ok((s.inject_cycle, off))
+        })
+        .unwrap_or(Err(DriveError::Absent))
     }
     fn config(&mut self) -> Result<ServoConfig, DriveError> {
         run(|s| Ok(*s.servo.config()))

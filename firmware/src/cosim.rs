@@ -115,7 +115,14 @@ impl Cosim {
         Ok(())
     }
 
-    fn sim_request(&mut self, op: Op, addr: usize, bits: u64) -> Result<(), BusError> {
+    /// PL cycle from which all six gate outputs have been off (`None`
+    /// while one is on); the PL does not run.
+    pub fn gates_off_since(&mut self) -> Result<Option<u64>, BusError> {
+        let r = self.sim_request(Op::GatesOff, 0, 0)?;
+        Ok((r.data != u32::MAX).then(|| r.pl_cycles - u64::from(r.data)))
+    }
+
+    fn sim_request(&mut self, op: Op, addr: usize, bits: u64) -> Result<Reply, BusError> {
         let r = Request {
             op,
             addr: addr as u32,
@@ -126,8 +133,9 @@ impl Cosim {
         if !(self.req.write_all(&r.encode()) && self.rep.read_exact(&mut b)) {
             return Err(BusError::Absent);
         }
-        match Reply::decode(&b).map_err(|_| BusError::Absent)?.status {
-            Status::Ok => Ok(()),
+        let reply = Reply::decode(&b).map_err(|_| BusError::Absent)?;
+        match reply.status {
+            Status::Ok => Ok(reply),
             Status::SlaveError | Status::BadRequest => Err(BusError::SlaveError),
         }
     }

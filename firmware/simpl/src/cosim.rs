@@ -36,6 +36,10 @@ pub enum Op {
     SimSet,
     /// The simulated motor's defaults (`sim reset`); the PL does not run.
     SimReset,
+    /// How long all six gate outputs have been off: the reply's `data` is
+    /// the PL cycles since they went off (`u32::MAX`: one is on, or longer
+    /// ago); the PL does not run.
+    GatesOff,
 }
 
 impl Op {
@@ -46,6 +50,7 @@ impl Op {
             Op::Sync => 3,
             Op::SimSet => 4,
             Op::SimReset => 5,
+            Op::GatesOff => 6,
         }
     }
 }
@@ -91,6 +96,7 @@ impl Request {
             3 => Op::Sync,
             4 => Op::SimSet,
             5 => Op::SimReset,
+            6 => Op::GatesOff,
             x => return Err(WireError::BadOp(x)),
         };
         Ok(Self {

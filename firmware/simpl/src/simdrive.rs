@@ -288,6 +288,15 @@ pub struct SimDrive<P = SimPl> {
     carried: Advance,
     segments: u64,
     adc_wiring: AdcWiring,
+    /// The encoder's pins are frozen (`sim set enc_dead`).
+    enc_dead: bool,
+    /// Disconnected phase, 0 none, 1..=3 a..c (`sim set phase_open`).
+    phase_open: u8,
+    /// The external fault input is asserted.
+    fault_ext: bool,
+    /// PL cycle from which all six gate outputs have been off (`None`
+    /// while one is on).
+    gates_off_since: Option<u64>,
 }
 
 impl SimDrive {
@@ -323,6 +332,10 @@ impl<P: PlModel> SimDrive<P> {
             carried: Advance::default(),
             segments: 0,
             adc_wiring: AdcWiring::default(),
+            enc_dead: false,
+            phase_open: 0,
+            fault_ext: false,
+            gates_off_since: Some(0),
         };
         s.update_encoder_pins();
         Ok(s)
@@ -389,6 +402,9 @@ impl<P: PlModel> SimDrive<P> {
             enc_offset: self.enc_offset,
             enc_dir: self.enc_dir,
             locked: !matches!(self.plant.mechanics(), MechanicalMode::Joint(_)),
+            enc_dead: self.enc_dead,
+            phase_open: self.phase_open,
+            fault_ext: self.fault_ext,
         }
     }
 
@@ -423,6 +439,9 @@ impl<P: PlModel> SimDrive<P> {
         self.mech = m.mech;
         self.enc_offset = m.enc_offset;
         self.enc_dir = m.enc_dir;
+        self.enc_dead = m.enc_dead;
+        self.phase_open = m.phase_open.min(3);
+        self.set_external_fault(m.fault_ext);
         self.update_encoder_pins();
         Ok(())
     }
@@ -436,6 +455,7 @@ impl<P: PlModel> SimDrive<P> {
     /// Drives the external fault input (active low at the pin): `true`
     /// asserts the fault from the next cycle on.
     pub fn set_external_fault(&mut self, asserted: bool) {
+        self.fault_ext = asserted;
         self.pl.pins_mut().fault_ext_n = !asserted;
     }
 
@@ -459,6 +479,13 @@ impl<P: PlModel> SimDrive<P> {
     /// sensor check to find), from the next conversion on.
     pub fn set_adc_wiring(&mut self, w: AdcWiring) {
         self.adc_wiring = w;
+    }
+
+    /// PL cycle from which all six gate outputs have been off, `None` while
+    /// one is on: the instant a fault's gates-off took effect for good
+    /// (a dead time alone ends when the next switch turns on).
+    pub fn gates_off_since(&self) -> Option<u64> {
+        self.gates_off_since
     }
 
     /// Control-period boundaries that register accesses crossed since the
@@ -511,6 +538,11 @@ impl<P: PlModel> SimDrive<P> {
                 *n += u64::from(on >> (2 - x) & 1);
             }
             self.gates = (g.hi, g.lo);
+            self.gates_off_since = match (g.hi | g.lo, self.gates_off_since) {
+                (0, Some(c)) => Some(c),
+                (0, None) => Some(self.pl.cycles()),
+                _ => None,
+            };
         }
         if ev.adc_convert {
             self.flush();
@@ -574,6 +606,9 @@ impl<P: PlModel> SimDrive<P> {
                 // Open circuit: no current, the rotor moves on its own.
                 None => self.plant.advance_open(h),
             }
+            if self.phase_open != 0 {
+                self.open_phase();
+            }
             self.theta_m_rad = self.plant.theta_m_rad();
             self.lag -= seg;
             self.segments += 1;
@@ -581,10 +616,32 @@ impl<P: PlModel> SimDrive<P> {
         self.update_encoder_pins();
     }
 
+    /// A disconnected phase `x` carries no current: its terminal floats to
+    /// whatever voltage keeps `i_x = 0`, so the current keeps only its
+    /// component across the other two phases. Modelled by removing the
+    /// component along phase `x`'s axis after each plant segment (segments
+    /// are at most `MAX_SEGMENT` cycles, short against `L / R`).
+    fn open_phase(&mut self) {
+        let st = *self.plant.state();
+        let ang = -2.0 * PI / 3.0 * f64::from(self.phase_open - 1);
+        let (ux, uy) = (libm::cos(ang), libm::sin(ang));
+        let ix = st.i_alpha_a * ux + st.i_beta_a * uy;
+        let _ = self.plant.set_state(
+            st.i_alpha_a - ix * ux,
+            st.i_beta_a - ix * uy,
+            st.theta_e_rad,
+            st.omega_e_rad_s,
+        );
+    }
+
     fn update_encoder_pins(&mut self) {
         let cpr = self.cfg.encoder_cpr as i64;
         let count = libm::floor(self.theta_m_rad / (2.0 * PI) * cpr as f64) as i64;
         self.enc_count = count;
+        if self.enc_dead {
+            // The lines hold their last levels.
+            return;
+        }
         let count = i64::from(self.enc_dir) * count + i64::from(self.enc_offset);
         let (a, b) = [(false, false), (true, false), (true, true), (false, true)]
             [count.rem_euclid(4) as usize];

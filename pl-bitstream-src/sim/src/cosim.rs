@@ -316,6 +316,14 @@ impl Bridge {
                     _ => self.reply(Status::SlaveError, 0),
                 };
             }
+            Op::GatesOff => {
+                let now = self.drive.pl_cycles();
+                let off = self
+                    .drive
+                    .gates_off_since()
+                    .map_or(u32::MAX, |c| u32::try_from(now - c).unwrap_or(u32::MAX));
+                return self.reply(Status::Ok, off);
+            }
             Op::SimReset => {
                 let d = models::pmsm::sim_motor::SimMotor::default();
                 return match self.drive.apply_sim_motor(&d) {
@@ -339,7 +347,7 @@ impl Bridge {
                 Ok(()) => self.reply(Status::Ok, 0),
                 Err(_) => self.reply(Status::SlaveError, 0),
             },
-            Op::SimSet | Op::SimReset => self.reply(Status::BadRequest, 0),
+            Op::SimSet | Op::SimReset | Op::GatesOff => self.reply(Status::BadRequest, 0),
             Op::Sync => {
                 // `run_to` above also collected the boundaries crossed
                 // during the accesses since the last sync.

@@ -184,6 +184,21 @@ pub enum Injection {
     /// Current channel a inverted in the simulated PL's ADC path (until
     /// reboot).
     AdcInvert,
+    /// `OC_LIMIT` set to 0 counts: the next raw sample with current trips
+    /// (`fault clear` restores the limit).
+    Overcurrent,
+    /// The heartbeat stops for 3 ms (`WDG_TIMEOUT` is 2 ms).
+    Watchdog,
+    /// The encoder's lines freeze (`sim set enc_dead 1`).
+    EncoderDead,
+    /// Phase b disconnected (`sim set phase_open 2`).
+    PhaseOpen,
+    /// A soft limit moved to one count behind the present position
+    /// (`fault clear` restores it).
+    PositionLimit,
+    /// `vel_limit` lowered below the present speed (`fault clear`
+    /// restores it).
+    Overspeed,
 }
 
 impl Injection {
@@ -195,6 +210,12 @@ impl Injection {
             "overrun" => Some(Injection::Overrun),
             "adc-swap" => Some(Injection::AdcSwap),
             "adc-invert" => Some(Injection::AdcInvert),
+            "overcurrent" => Some(Injection::Overcurrent),
+            "watchdog" => Some(Injection::Watchdog),
+            "encoder-dead" => Some(Injection::EncoderDead),
+            "phase-open" => Some(Injection::PhaseOpen),
+            "position-limit" => Some(Injection::PositionLimit),
+            "overspeed" => Some(Injection::Overspeed),
             _ => None,
         }
     }
@@ -258,6 +279,11 @@ pub trait DriveOps {
     }
     /// Makes a fault happen (`debug fault`), to test the drive's reaction.
     fn inject(&mut self, _f: Injection) -> Result<(), DriveError> {
+        Err(DriveError::Unsupported)
+    }
+    /// The last injection's cause and the gates-off instant, PL cycles
+    /// (`debug fault-time`): (cause, gates off since, `None` while on).
+    fn fault_time(&mut self) -> Result<(u64, Option<u64>), DriveError> {
         Err(DriveError::Unsupported)
     }
     /// Holds each flash erase and program of later saves `ms` longer

@@ -13,7 +13,7 @@ pub struct Faults(pub u32);
 
 impl Faults {
     /// Bit names, by bit position (the register map's field names first).
-    pub const NAMES: [&'static str; 8] = [
+    pub const NAMES: [&'static str; 10] = [
         "OVERCURRENT",
         "EXTERNAL",
         "WATCHDOG",
@@ -22,6 +22,8 @@ impl Faults {
         "CONTROL_OVERRUN",
         "POSITION_LIMIT",
         "OVERSPEED",
+        "ENCODER_DEAD",
+        "PHASE_OPEN",
     ];
     /// The watchdog bit.
     pub const WATCHDOG: u32 = FaultStatusValue::ZERO.with_watchdog(true).bits();
@@ -38,8 +40,14 @@ impl Faults {
     pub const POSITION_LIMIT: u32 = 1 << 6;
     /// The velocity estimate exceeded `vel_limit` by the margin.
     pub const OVERSPEED: u32 = 1 << 7;
+    /// The encoder stood still for a window while the back-EMF said the
+    /// rotor turns (`servo::evidence`).
+    pub const ENCODER_DEAD: u32 = 1 << 8;
+    /// A phase current stayed at zero for a window while its reference
+    /// said it must not (`servo::evidence`).
+    pub const PHASE_OPEN: u32 = 1 << 9;
     /// The latched flags, in bit order (as [`Self::NAMES`]).
-    fn flags(self) -> [bool; 8] {
+    fn flags(self) -> [bool; 10] {
         let v = FaultStatusValue::from_bits(self.0 & Self::PL_MASK);
         let b = |m: u32| self.0 & m != 0;
         [
@@ -51,6 +59,8 @@ impl Faults {
             b(Self::CONTROL_OVERRUN),
             b(Self::POSITION_LIMIT),
             b(Self::OVERSPEED),
+            b(Self::ENCODER_DEAD),
+            b(Self::PHASE_OPEN),
         ]
     }
     /// Stable code of the fault `bit` (0-based): `bit + 1`.

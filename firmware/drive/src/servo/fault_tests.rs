@@ -23,21 +23,32 @@ fn codes(s: &Servo) -> Vec<u32> {
 }
 
 #[test]
-fn adc_stuck_latches_at_the_second_step_without_a_result_and_clear_restarts_the_adc() {
+fn adc_stuck_latches_at_the_first_foc_step_without_a_result_and_clear_restarts_the_adc() {
     let (mut s, mut pl) = running(Mode::Foc);
-    Adc(&mut pl).set_enabled(false).unwrap();
-    // One stale step is tolerated (a late step may have read its result).
+    // Not known how late the step before was: one stale step tolerated.
+    assert_eq!(s.adc_stale_limit(), 2);
+    // The paper's timing: four averaged results in a PWM period; a step
+    // before served up to three result periods late leaves this one a new
+    // result, later it may not.
+    s.note_step_age(4692);
     s.control_step(&mut pl).unwrap();
-    assert!(s.faults(&mut pl).unwrap().none());
-    assert_eq!(pl.get(GATE_CTRL_ADDR), 1);
+    assert_eq!(s.adc_stale_limit(), 1);
+    s.note_step_age(4693);
+    s.control_step(&mut pl).unwrap();
+    assert_eq!(s.adc_stale_limit(), 2);
+    s.note_step_age(20);
+    s.control_step(&mut pl).unwrap();
+    assert_eq!(s.adc_stale_limit(), 1);
+    Adc(&mut pl).set_enabled(false).unwrap();
+    s.note_step_age(20);
     s.control_step(&mut pl).unwrap();
     assert_eq!(s.faults(&mut pl).unwrap(), Faults(Faults::ADC_STUCK));
     assert_eq!(pl.get(GATE_CTRL_ADDR), 0);
     assert_eq!(codes(&s), [5]);
     let r = s.fault_history().records().next().unwrap();
     assert_eq!(r.snapshot.len(), faults::SNAPSHOT_LEN);
-    // 12 FOC periods of 6256 cycles at 100 MHz.
-    assert!((r.time_s - 12.0 * 62.56e-6).abs() < 1e-9, "{r:?}");
+    // 14 FOC periods of 6256 cycles at 100 MHz.
+    assert!((r.time_s - 14.0 * 62.56e-6).abs() < 1e-9, "{r:?}");
     assert!(matches!(
         s.enable(&mut pl),
         Err(ServoError::FaultLatched(_))
@@ -115,6 +126,43 @@ fn no_boundary_in_mpdtc_is_a_stuck_adc() {
     // FOC is paced by the PWM: a missing boundary there is no ADC matter.
     let (mut s, mut pl) = running(Mode::Foc);
     s.note_no_boundary(&mut pl, 4).unwrap();
+    assert!(s.faults(&mut pl).unwrap().none());
+}
+
+/// An averaged result overdue (the tick knows its due time) latches at
+/// once in MPDTC; FOC is paced by the PWM.
+#[test]
+fn an_overdue_result_in_mpdtc_is_a_stuck_adc_at_once() {
+    let (mut s, mut pl) = running(Mode::Mpdtc);
+    s.note_result_overdue(&mut pl).unwrap();
+    assert_eq!(s.faults(&mut pl).unwrap(), Faults(Faults::ADC_STUCK));
+    assert_eq!(pl.get(GATE_CTRL_ADDR), 0);
+    assert_eq!(codes(&s), [5]);
+    let (mut s, mut pl) = running(Mode::Foc);
+    s.note_result_overdue(&mut pl).unwrap();
+    assert!(s.faults(&mut pl).unwrap().none());
+}
+
+/// `debug fault position-limit`: the next step latches `POSITION_LIMIT`;
+/// `fault clear` restores the limits (the next run is clean).
+#[test]
+fn a_limit_moved_behind_the_position_trips_at_the_next_step_and_clear_restores_it() {
+    let (mut s, mut pl) = running(Mode::Foc);
+    let before = s.config().motion;
+    s.tighten_limit(false).unwrap();
+    s.control_step(&mut pl).unwrap();
+    assert_eq!(s.faults(&mut pl).unwrap(), Faults(Faults::POSITION_LIMIT));
+    assert_eq!(pl.get(GATE_CTRL_ADDR), 0);
+    // With the gates off: refused, nothing changed.
+    let latched = s.config().motion;
+    assert_eq!(s.tighten_limit(true), Err(ServoError::GatesOff));
+    assert_eq!(s.config().motion, latched);
+    assert!(s.clear_faults(&mut pl).unwrap().none());
+    assert_eq!(s.config().motion, before);
+    s.enable(&mut pl).unwrap();
+    for _ in 0..5 {
+        s.control_step(&mut pl).unwrap();
+    }
     assert!(s.faults(&mut pl).unwrap().none());
 }
 

@@ -49,17 +49,26 @@ pub mod calibrate;
 pub mod sensors;
 use calibrate::{CalReport, CalRun};
 use sensors::{PlTime, SensorFault, SensorReport};
+pub mod evidence;
+use evidence::{EncoderDead, PhaseOpen};
 
 /// Control periods without a new ADC result that latch `ADC_STUCK`: two.
 /// A control period holds at least one averaged result (`Config::check`
 /// keeps it so), but a step served late (its interrupt held off by the
 /// console, or a step that ran past the boundary) can read the result the
 /// next step would have read: one stale step is tolerated, as one missed
-/// period is for `CONTROL_OVERRUN`.
+/// period is for `CONTROL_OVERRUN`. Not so where a period holds two results
+/// or more (the FOC's PWM period: four with the paper's timing) and the
+/// step before was not that late: the first step without one latches
+/// ([`Servo::adc_stale_limit`]).
 pub const ADC_STALE_STEPS: u32 = 2;
 /// Control periods missed in a row (between two control steps) that latch
 /// `CONTROL_OVERRUN`: one late step is tolerated, the PL holds its outputs.
 pub const OVERRUN_PERIODS: u64 = 2;
+
+/// Control steps after a start before the checks over a window begin: the
+/// FOC's measurement pairs with the duties of two steps before.
+const EVIDENCE_SKIP: u32 = 2;
 
 /// Configuration of the drive (defaults: the paper's setup).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -268,6 +277,23 @@ pub struct Servo {
     sine: Option<Sine>,
     /// FOC: the duties of the last step (telemetry).
     duties: [f64; 3],
+    /// FOC: the duties of the step before (applied in the period the
+    /// present step measured).
+    duties_old: [f64; 3],
+    /// `BOUNDARY_AGE` of the present step and of the one before, PL cycles
+    /// (`None`: not known).
+    step_age: Option<u32>,
+    prev_step_age: Option<u32>,
+    /// The motion limits (`pos_min`, `pos_max`, `vel_limit`) before
+    /// [`Self::tighten_limit`] moved them.
+    saved_limits: Option<(f64, f64, f64)>,
+    /// The dead-encoder check.
+    enc_dead: EncoderDead,
+    /// The open-phase check.
+    phase_open: PhaseOpen,
+    /// Steps before the checks over a window start again (the voltage of
+    /// the first steps after a start is not yet this run's).
+    evidence_skip: u32,
     /// The sensor check passed with this configuration's motor and sensors.
     sensors_ok: bool,
     /// The outer loops and the multi-turn position.
@@ -340,6 +366,13 @@ impl Servo {
             missed: 0,
             sine: None,
             duties: [0.0; 3],
+            duties_old: [0.0; 3],
+            step_age: None,
+            prev_step_age: None,
+            saved_limits: None,
+            enc_dead: EncoderDead::default(),
+            phase_open: PhaseOpen::default(),
+            evidence_skip: EVIDENCE_SKIP,
             sensors_ok: false,
             motion: Motion::new(cfg.enc_cpr)?,
         })
@@ -648,6 +681,12 @@ impl Servo {
         Pwm(bus).gates_enabled()
     }
 
+    /// The controller runs: the gates are on and, in MPDTC, the rotor
+    /// alignment is over (the checks over a window run only then).
+    pub fn controlling(&self) -> bool {
+        self.gates && (self.mode != Mode::Mpdtc || self.align_zero.is_some())
+    }
+
     /// Checks a torque reference: finite and within the limit.
     pub fn check_torque(&self, nm: f64) -> Result<f64, ServoError> {
         if nm.is_finite() && libm::fabs(nm) <= self.cfg.torque_limit_nm {
@@ -754,11 +793,48 @@ impl Servo {
         self.beat = self.beat.wrapping_add(1);
         Top(&mut *bus).heartbeat(self.beat)?;
         Adc(&mut *bus).set_enabled(true)?;
+        // The configured trip level (`debug fault overcurrent` lowers it).
+        let oc = self.cfg.oc_limit_counts().unwrap_or(2047);
+        Fault(&mut *bus).set_oc_limit(oc)?;
+        // The configured motion limits (`debug fault position-limit` or
+        // `overspeed` moved them).
+        if let Some((lo, hi, v)) = self.saved_limits.take() {
+            let m = &mut self.cfg.motion;
+            (m.pos_min, m.pos_max, m.vel_limit) = (lo, hi, v);
+        }
         let left = Fault(&mut *bus).clear()?;
         self.ps_faults = 0;
         self.seen = left.0;
         self.note_skipped();
         Ok(left)
+    }
+
+    /// Makes the next control step latch `POSITION_LIMIT` (`speed` false:
+    /// a soft limit moved to one count behind the present position) or
+    /// `OVERSPEED` (`vel_limit` lowered to half the present speed over the
+    /// trip margin: a rotor at rest does not trip), for `debug fault`;
+    /// `fault clear` restores them. The checks run with the gates on only
+    /// ([`ServoError::GatesOff`] otherwise, nothing changed).
+    pub fn tighten_limit(&mut self, speed: bool) -> Result<(), ServoError> {
+        if !self.gates {
+            return Err(ServoError::GatesOff);
+        }
+        let st = self.motion.status();
+        let m = self.cfg.motion;
+        self.saved_limits
+            .get_or_insert((m.pos_min, m.pos_max, m.vel_limit));
+        let m = &mut self.cfg.motion;
+        if speed {
+            m.vel_limit = libm::fabs(st.velocity_rev_s) / (2.0 * motion::OVERSPEED_MARGIN);
+        } else {
+            let count = 1.0 / f64::from(self.cfg.enc_cpr.max(1));
+            if st.position_rev - count >= m.pos_min {
+                m.pos_max = st.position_rev - count;
+            } else {
+                m.pos_min = st.position_rev + count;
+            }
+        }
+        Ok(())
     }
 
     /// The fault history, oldest first.
@@ -777,6 +853,9 @@ impl Servo {
         self.last_adc_count = None;
         self.adc_stale = 0;
         self.last_pos = None;
+        self.enc_dead.reset();
+        self.phase_open.reset();
+        self.evidence_skip = EVIDENCE_SKIP;
     }
 
     /// The PL gave no control-period boundary for `periods` control periods
@@ -821,6 +900,40 @@ impl Servo {
         })
     }
 
+    /// Steps without a new ADC result that latch `ADC_STUCK`: one where a
+    /// control period holds two averaged results or more (FOC) and the step
+    /// before was served at most a period less one result period after its
+    /// boundary (its count read then leaves at least one result to this
+    /// one), else [`ADC_STALE_STEPS`].
+    pub fn adc_stale_limit(&self) -> u32 {
+        let p = 2 * self.cfg.foc_half_period_cycles;
+        let r = (4 * self.cfg.adc_period_cycles).max(1);
+        let on_time = self.prev_step_age.is_some_and(|a| a.saturating_add(r) <= p);
+        if self.mode == Mode::Foc && p >= 2 * r && on_time {
+            1
+        } else {
+            ADC_STALE_STEPS
+        }
+    }
+
+    /// The PL cycles from its boundary to the present step's interrupt
+    /// (`BOUNDARY_AGE`), before [`Self::control_step`].
+    pub fn note_step_age(&mut self, cycles: u32) {
+        self.step_age = Some(cycles);
+    }
+
+    /// The averaged ADC result that paces the period (MPDTC, mode off) did
+    /// not come by its due time, the last one's + one period (+ a margin for
+    /// the boundary's report): the PL's ADC timer runs at a fixed period, so
+    /// this is no late step (unlike a count that stood still) and
+    /// `ADC_STUCK` latches at once.
+    pub fn note_result_overdue<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
+        if self.mode == Mode::Foc {
+            return Ok(());
+        }
+        self.latch_ps(bus, Faults::ADC_STUCK)
+    }
+
     /// The PS's checks of one control period: no new ADC result, an
     /// impossible encoder jump, control periods missed. Returns the faults
     /// they found.
@@ -832,9 +945,10 @@ impl Servo {
             self.adc_stale = 0;
         }
         self.last_adc_count = Some(adc_count);
-        if self.adc_stale >= ADC_STALE_STEPS {
+        if self.adc_stale >= self.adc_stale_limit() {
             f |= Faults::ADC_STUCK;
         }
+        self.prev_step_age = self.step_age.take();
         // The shortest way round from the last position: more than an
         // eighth of a turn in one control period (> 30000 rpm at 16 kHz)
         // is no motor's motion.
@@ -985,6 +1099,13 @@ impl Servo {
         self.motion
             .measure(enc.pos, self.control_period_s(), t_last, j);
         let mut ps = self.ps_checks(adc_count, enc.pos, enc.cpr);
+        if gates && running {
+            ps |= self.evidence_checks(enc.pos, i_abc, m.theta_e_rad, torque_ref_nm);
+        } else {
+            self.enc_dead.reset();
+            self.phase_open.reset();
+            self.evidence_skip = EVIDENCE_SKIP;
+        }
         if gates {
             let (pos, speed) = self.motion.limits_violated(&self.cfg.motion);
             if pos {
@@ -1032,8 +1153,58 @@ impl Servo {
         Ok(())
     }
 
+    /// The checks over a window ([`evidence`]) of one period with the
+    /// controller running: the voltage applied while `i_abc` was measured
+    /// (FOC: the duties of two steps ago, loaded at the period start before
+    /// last; MPDTC: the switching state of the last step's boundary).
+    fn evidence_checks(&mut self, pos: u32, i_abc: [f64; 3], theta_e: f64, t_ref: f64) -> u32 {
+        if self.evidence_skip > 0 {
+            self.evidence_skip -= 1;
+            return 0;
+        }
+        let mo = self.cfg.motor;
+        let ts = self.control_period_s();
+        let win = evidence::window_periods(ts);
+        let u = match self.mode {
+            Mode::Foc => models::pmsm::frames::leg_voltage_alpha_beta(self.duties_old, mo.u_dc_v),
+            _ => models::pmsm::frames::switch_state_alpha_beta(self.last_state, mo.u_dc_v),
+        };
+        // Voltage without any current is an open circuit, not back-EMF.
+        let flowing = i_abc.iter().any(|&x| libm::fabs(x) > evidence::ZERO_MAX_A);
+        if !flowing {
+            self.enc_dead.reset();
+        }
+        // The reference current: i_d = 0, i_q from the torque (L_d = L_q
+        // or not, the reluctance term is 0 at i_d = 0).
+        let kt = 1.5 * f64::from(mo.pole_pairs) * mo.psi_pm_wb;
+        let (ra, rb) = models::pmsm::frames::inv_park(0.0, t_ref / kt, theta_e);
+        let i_ref = models::pmsm::frames::inv_clarke(ra, rb);
+        let open = self.phase_open.step(i_ref, i_abc, win).is_some();
+        // A period where a phase looks open voids the voltage equation.
+        let suspect = self.phase_open.suspect();
+        let dead = flowing
+            && self.enc_dead.step(
+                pos,
+                u,
+                clarke(i_abc),
+                suspect,
+                mo.r_s_ohm,
+                mo.l_d_h,
+                ts,
+                win,
+            );
+        if open {
+            Faults::PHASE_OPEN
+        } else if dead {
+            Faults::ENCODER_DEAD
+        } else {
+            0
+        }
+    }
+
     fn foc_step<B: RegisterBus>(&mut self, bus: &mut B, m: &Measurement) -> Result<(), BusError> {
         let half = self.cfg.foc_half_period_cycles;
+        self.duties_old = self.duties;
         if let Actuation::DutyAbc(d) = self.foc.step(m, self.torque_ref_nm) {
             self.duties = d;
             Pwm(&mut *bus).set_duties(d, half)?;

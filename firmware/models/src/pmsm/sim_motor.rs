@@ -49,7 +49,7 @@ const fn p(
 }
 
 /// Every parameter of the simulated motor, in `sim list` order.
-pub const SIM_PARAMS: [SimParam; 12] = [
+pub const SIM_PARAMS: [SimParam; 15] = [
     p("r_s", "ohm", 1e-3, 100.0, false, "stator resistance per phase (star equivalent)"),
     p("l", "H", 1e-6, 0.1, false, "stator inductance L_d = L_q"),
     p("psi_pm", "Wb", 1e-4, 1.0, false, "permanent-magnet flux linkage amplitude"),
@@ -62,6 +62,9 @@ pub const SIM_PARAMS: [SimParam; 12] = [
     p("enc_offset", "counts", 0.0, 65534.0, true, "encoder count with the rotor d axis on phase a (what enc_zero configures; ENC_POS reads it from the first index pulse on)"),
     p("enc_dir", "1", -1.0, 1.0, true, "encoder counting direction, +1 or -1"),
     p("locked", "1", 0.0, 1.0, true, "1: the rotor is held at its angle (a dynamometer at 0 rad/s), 0: it moves"),
+    p("enc_dead", "1", 0.0, 1.0, true, "1: the encoder's lines hold their levels whatever the rotor does (a dead encoder), 0: they follow it"),
+    p("phase_open", "1", 0.0, 3.0, true, "1, 2, 3: phase a, b or c disconnected (its current is 0), 0: all connected"),
+    p("fault_ext", "1", 0.0, 1.0, true, "1: the PL's external fault input asserted, 0: released"),
 ];
 
 /// Why `sim set` refused a value.
@@ -86,6 +89,12 @@ pub struct SimMotor {
     pub enc_dir: i32,
     /// The rotor is held.
     pub locked: bool,
+    /// The encoder's lines are frozen (a dead encoder).
+    pub enc_dead: bool,
+    /// Disconnected phase: 0 none, 1..=3 phase a..c.
+    pub phase_open: u8,
+    /// The external fault input is asserted.
+    pub fault_ext: bool,
 }
 
 impl Default for SimMotor {
@@ -97,6 +106,9 @@ impl Default for SimMotor {
             enc_offset: 0,
             enc_dir: 1,
             locked: true,
+            enc_dead: false,
+            phase_open: 0,
+            fault_ext: false,
         }
     }
 }
@@ -126,6 +138,9 @@ impl SimMotor {
             9 => f64::from(self.enc_offset),
             10 => f64::from(self.enc_dir),
             11 => f64::from(u8::from(self.locked)),
+            12 => f64::from(u8::from(self.enc_dead)),
+            13 => f64::from(self.phase_open),
+            14 => f64::from(u8::from(self.fault_ext)),
             _ => f64::NAN,
         }
     }
@@ -173,7 +188,10 @@ impl SimMotor {
             9 => next.enc_offset = value as u32,
             10 if value == 0.0 => return bad("must be +1 or -1"),
             10 => next.enc_dir = value as i32,
-            _ => next.locked = value == 1.0,
+            11 => next.locked = value == 1.0,
+            12 => next.enc_dead = value == 1.0,
+            13 => next.phase_open = value as u8,
+            _ => next.fault_ext = value == 1.0,
         }
         next.motor.validate().map_err(SimSetError::Bad)?;
         next.mech.validate().map_err(SimSetError::Bad)?;

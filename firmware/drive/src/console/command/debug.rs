@@ -6,15 +6,17 @@ use core::fmt::{self, Write};
 /// The `debug` command.
 pub const DEBUG: Spec = Spec {
     name: "debug",
-    args: "panic|abort|mmu|stall <ms>|bench|fault <f>|flash-pace <ms>",
+    args: "panic|abort|mmu|stall <ms>|bench|fault <f>|fault-time|flash-pace <ms>",
     help: "diagnostics: `panic` forces a firmware panic (gates off, message, halt); \
            `abort` reads an unmapped address (data abort: gates off, DFSR/DFAR, halt); \
            `mmu` reads back SCTLR, the L2 and the translation table's memory types; \
            `stall <ms>` stops the control loop and heartbeat for <ms> of PL time (the \
            simulated PL's under QEMU); `bench` counts guest instructions of the control \
-           code; `fault <f>` makes a fault happen (<f>: external, adc-stuck, overrun; \
+           code; `fault <f>` makes a fault happen (<f>: external, adc-stuck, overrun, \
+           overcurrent, watchdog, encoder-dead, phase-open, position-limit, overspeed; \
            adc-swap or adc-invert: current channels a and b swapped, or a inverted, in the \
-           simulated PL's ADC path until reboot); `flash-pace <ms>` holds each flash \
+           simulated PL's ADC path until reboot); `fault-time` gives the PL cycle of the \
+           last injected fault's cause and of the gates going off; `flash-pace <ms>` holds each flash \
            erase and program of a `config save` <ms> longer (0 ends it), so that a power \
            cut lands inside the write",
 };
@@ -36,6 +38,8 @@ pub enum DebugCmd {
     Mmu,
     /// `debug fault <f>`.
     Fault(drive::Injection),
+    /// `debug fault-time`.
+    FaultTime,
     /// `debug stall <ms>`.
     Stall(u32),
     /// `debug bench`.
@@ -51,12 +55,14 @@ pub fn parse<'a>(args: &[&'a str]) -> Result<DebugCmd, ParseError<'a>> {
         ["abort"] => Ok(DebugCmd::Abort),
         ["mmu"] => Ok(DebugCmd::Mmu),
         ["bench"] => Ok(DebugCmd::Bench),
+        ["fault-time"] => Ok(DebugCmd::FaultTime),
         ["fault", f] => {
             drive::Injection::from_name(f)
                 .map(DebugCmd::Fault)
                 .ok_or(ParseError::BadArgs(
                     "debug",
-                    "fault takes external, adc-stuck, overrun, adc-swap or adc-invert",
+                    "fault takes external, adc-stuck, overrun, overcurrent, watchdog, \
+                     encoder-dead, phase-open, position-limit, overspeed, adc-swap or adc-invert",
                 ))
         }
         ["stall", ms] => match ms.parse::<u32>() {
@@ -76,7 +82,7 @@ pub fn parse<'a>(args: &[&'a str]) -> Result<DebugCmd, ParseError<'a>> {
         _ => Err(ParseError::BadArgs(
             "debug",
             "expected `debug panic`, `debug abort`, `debug mmu`, `debug stall <ms>`, \
-             `debug bench`, `debug fault <f>` or `debug flash-pace <ms>`",
+             `debug bench`, `debug fault <f>`, `debug fault-time` or `debug flash-pace <ms>`",
         )),
     }
 }
@@ -99,6 +105,19 @@ pub fn execute<W: Write>(
         DebugCmd::Fault(f) => {
             try_drive!(out, "debug", drv.inject(f));
             out.write_str("injected\r\n")?;
+        }
+        DebugCmd::FaultTime => {
+            let (cause, off) = try_drive!(out, "debug", drv.fault_time());
+            write!(out, "cause: {cause} cycles\r\n")?;
+            match off {
+                Some(g) => {
+                    write!(out, "gates_off: {g} cycles\r\n")?;
+                    // Negative: the gates were off before the cause.
+                    let l = i128::from(g) - i128::from(cause);
+                    write!(out, "latency: {l} cycles\r\n")?;
+                }
+                None => out.write_str("gates_off: on\r\n")?,
+            }
         }
         DebugCmd::Stall(ms) => {
             try_drive!(out, "debug", drv.stall(ms));

@@ -153,7 +153,7 @@ fn arguments_are_checked() {
     );
     assert_eq!(
         reply("debug"),
-        "ERR bad-args debug: expected `debug panic`, `debug abort`, `debug mmu`, `debug stall <ms>`, `debug bench`, `debug fault <f>` or `debug flash-pace <ms>`\r\n"
+        "ERR bad-args debug: expected `debug panic`, `debug abort`, `debug mmu`, `debug stall <ms>`, `debug bench`, `debug fault <f>`, `debug fault-time` or `debug flash-pace <ms>`\r\n"
     );
     assert_eq!(
         reply("help a b"),

@@ -1,0 +1,336 @@
+//! The fault matrix: every fault on the simulated PL in modes FOC and
+//! MPDTC, caused by `debug fault` right after a control step (a fixed
+//! point of the period), its gates-off time in PL cycles from the cause
+//! (`debug fault-time`: the PL's own gate outputs), the latch, the history
+//! entry and the refusal of `enable` checked. One QEMU boot per mode runs
+//! every fault in turn. The table goes to `target/fault-matrix.md`; the
+//! committed `docs/fault-matrix.md` must be the same
+//! (`FAULT_MATRIX_WRITE=1` writes it).
+use drivectl::link::Session;
+use std::fmt::Write as _;
+use std::time::{Duration, Instant};
+use system_tests::{assert_err, assert_ok, boot, cmd, field, num};
+
+/// PL cycles of one control period: FOC (one PWM period), MPDTC.
+const PERIOD: [(&str, u64); 2] = [("foc", 6256), ("mpdtc", 1564)];
+/// Control periods in the window of the evidence checks (0.5 ms).
+const WINDOW: [u64; 2] = [8, 32];
+
+struct Case {
+    fault: &'static str,
+    code: u32,
+    inject: &'static str,
+    /// Console lines before `enable`.
+    setup: &'static [&'static str],
+    /// Torque reference, N m.
+    torque: f64,
+    /// Control periods to run before the injection.
+    warm: u64,
+    /// Electrical speed to reach before the injection, rad/s.
+    min_speed: f64,
+    /// Checked over a window of evidence: bound = window + one period.
+    windowed: bool,
+    how: &'static str,
+}
+
+const CASES: [Case; 9] = [
+    Case {
+        fault: "OVERCURRENT",
+        code: 1,
+        inject: "overcurrent",
+        setup: &[],
+        torque: 0.2,
+        warm: 10,
+        min_speed: 0.0,
+        windowed: false,
+        how: "`OC_LIMIT` set to 0 counts: the next raw sample is over it (PL)",
+    },
+    Case {
+        fault: "EXTERNAL",
+        code: 2,
+        inject: "external",
+        setup: &[],
+        torque: 0.2,
+        warm: 10,
+        min_speed: 0.0,
+        windowed: false,
+        how: "external fault input asserted for 10 us (PL)",
+    },
+    Case {
+        fault: "WATCHDOG",
+        code: 3,
+        inject: "watchdog",
+        setup: &[],
+        torque: 0.2,
+        warm: 10,
+        min_speed: 0.0,
+        windowed: false,
+        how: "control loop and heartbeat stopped; cause = last heartbeat + `WDG_TIMEOUT` (PL)",
+    },
+    Case {
+        fault: "ADC_STUCK",
+        code: 5,
+        inject: "adc-stuck",
+        setup: &[],
+        torque: 0.2,
+        warm: 10,
+        min_speed: 0.0,
+        windowed: false,
+        how: "`ADC_CTRL.ENABLE` = 0 (PS: no new result; MPDTC: no period boundary)",
+    },
+    Case {
+        fault: "CONTROL_OVERRUN",
+        code: 6,
+        inject: "overrun",
+        setup: &[],
+        torque: 0.2,
+        warm: 10,
+        min_speed: 0.0,
+        windowed: false,
+        how: "two boundaries without a step; cause = the end of the second such period (PS)",
+    },
+    Case {
+        fault: "POSITION_LIMIT",
+        code: 7,
+        inject: "position-limit",
+        setup: &[],
+        torque: 0.2,
+        warm: 10,
+        min_speed: 0.0,
+        windowed: false,
+        how: "a soft limit moved to one count behind the present position (PS)",
+    },
+    Case {
+        fault: "OVERSPEED",
+        code: 8,
+        inject: "overspeed",
+        setup: &["sim set locked 0"],
+        torque: 0.5,
+        warm: 64,
+        min_speed: 300.0,
+        windowed: false,
+        how: "free rotor at 0.5 N m above 300 rad/s, `vel_limit` lowered to half its speed over the margin (PS)",
+    },
+    Case {
+        fault: "PHASE_OPEN",
+        code: 10,
+        inject: "phase-open",
+        setup: &[],
+        torque: 0.2,
+        warm: 10,
+        min_speed: 0.0,
+        windowed: true,
+        how: "phase b disconnected, locked rotor (PS, phase current over a window)",
+    },
+    Case {
+        fault: "ENCODER_DEAD",
+        code: 9,
+        inject: "encoder-dead",
+        setup: &["sim set locked 0"],
+        torque: 0.5,
+        warm: 64,
+        // 5.6x the dead-encoder check's threshold (1.5 V of back-EMF, 161
+        // rad/s) and more than one count per control period: the count
+        // changes at every step before the cause (injected at a boundary),
+        // the window starts there, the same every time.
+        min_speed: 900.0,
+        windowed: true,
+        how: "free rotor at 0.5 N m above 900 rad/s, the encoder's lines freeze at a boundary (PS, back-EMF over a window)",
+    },
+];
+
+fn periods(s: &mut Session) -> u64 {
+    num(&cmd(s, "status"), "periods") as u64
+}
+
+fn wait_periods(s: &mut Session, n: u64) {
+    let p0 = periods(s);
+    let end = Instant::now() + Duration::from_secs(30);
+    while periods(s) < p0 + n {
+        assert!(Instant::now() < end, "the control loop does not run");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+}
+
+fn history_len(s: &mut Session) -> usize {
+    let r = cmd(s, "fault history");
+    assert_ok(&r);
+    r.lines.len() - 1
+}
+
+/// One cell: the gates-off latency in PL cycles.
+fn cell(s: &mut Session, mode: &str, c: &Case) -> i64 {
+    assert_ok(&cmd(s, "sim reset"));
+    assert_ok(&cmd(s, "fault clear"));
+    for l in c.setup {
+        assert_ok(&cmd(s, l));
+    }
+    assert_ok(&cmd(s, &format!("mode {mode}")));
+    assert_ok(&cmd(s, "enable"));
+    assert_ok(&cmd(s, &format!("torque {}", c.torque)));
+    wait_periods(s, c.warm);
+    let end = Instant::now() + Duration::from_secs(30);
+    while num(&cmd(s, "status"), "speed").abs() < c.min_speed {
+        assert!(Instant::now() < end, "{} {mode}: too slow", c.fault);
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    let st = cmd(s, "status");
+    assert_eq!(
+        field(&st, "fault"),
+        Some("none"),
+        "{} {mode}: {st:?}",
+        c.fault
+    );
+    let before = history_len(s);
+    let r = s
+        .command(
+            &format!("debug fault {}", c.inject),
+            Duration::from_secs(60),
+        )
+        .expect("debug fault");
+    assert_eq!(r.lines, ["injected"], "{} {mode}: {r:?}", c.fault);
+    let end = Instant::now() + Duration::from_secs(20);
+    let st = loop {
+        let st = cmd(s, "status");
+        let line = st.lines.iter().find(|l| l.starts_with("fault: ")).unwrap();
+        if line.split_whitespace().any(|w| w == c.fault) {
+            break st;
+        }
+        assert!(Instant::now() < end, "no {} in {mode}: {st:?}", c.fault);
+        std::thread::sleep(Duration::from_millis(10));
+    };
+    assert_eq!(field(&st, "gates"), Some("off"), "{st:?}");
+    assert_err(&cmd(s, "enable"), "fault-latched");
+    let end = Instant::now() + Duration::from_secs(10);
+    loop {
+        let h = cmd(s, "fault history");
+        let new = &h.lines[before.min(h.lines.len() - 1)..h.lines.len() - 1];
+        if new
+            .iter()
+            .any(|l| l.contains(&format!(" code {} {}: ", c.code, c.fault)))
+        {
+            break;
+        }
+        assert!(
+            Instant::now() < end,
+            "{} not in the history: {h:?}",
+            c.fault
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let t = cmd(s, "debug fault-time");
+    assert_ok(&t);
+    let lat = num(&t, "latency") as i64;
+    assert_ok(&cmd(s, "fault clear"));
+    assert_ok(&cmd(s, "disable"));
+    lat
+}
+
+fn bound(mode: usize, c: &Case) -> u64 {
+    let p = PERIOD[mode].1;
+    if c.windowed {
+        (WINDOW[mode] + 1) * p
+    } else {
+        p
+    }
+}
+
+fn measure() -> Vec<[i64; 2]> {
+    let mut out = vec![[0i64; 2]; CASES.len()];
+    for (m, (mode, _)) in PERIOD.iter().enumerate() {
+        let mut s = boot();
+        for (k, c) in CASES.iter().enumerate() {
+            out[k][m] = cell(&mut s, mode, c);
+        }
+        // A locked rotor held at 0.5 N m for 20 ms: no ENCODER_DEAD, no
+        // PHASE_OPEN (their thresholds stand clear of it).
+        assert_ok(&cmd(&mut s, "sim reset"));
+        assert_ok(&cmd(&mut s, &format!("mode {mode}")));
+        assert_ok(&cmd(&mut s, "enable"));
+        assert_ok(&cmd(&mut s, "torque 0.5"));
+        wait_periods(&mut s, 2_000_000 / PERIOD[m].1);
+        let st = cmd(&mut s, "status");
+        assert_eq!(field(&st, "fault"), Some("none"), "{mode}: {st:?}");
+        assert_eq!(field(&st, "gates"), Some("on"), "{mode}: {st:?}");
+    }
+    out
+}
+
+fn table(lat: &[[i64; 2]]) -> String {
+    let mut t = String::new();
+    t.push_str(
+        "| fault | code | cause | FOC: cycles (bound) | MPDTC: cycles (bound) |\n\
+         |---|---|---|---|---|\n",
+    );
+    for (k, c) in CASES.iter().enumerate() {
+        // A cell over its bound shows no number: those vary from run to
+        // run (target/fault-matrix.csv has them).
+        let cell = |m: usize| {
+            if lat[k][m] < 0 || lat[k][m] as u64 > bound(m, c) {
+                format!("**over** ({})", bound(m, c))
+            } else {
+                format!("{} ({})", lat[k][m], bound(m, c))
+            }
+        };
+        let _ = writeln!(
+            t,
+            "| `{}` | {} | {} | {} | {} |",
+            c.fault,
+            c.code,
+            c.how,
+            cell(0),
+            cell(1)
+        );
+    }
+    t
+}
+
+#[test]
+fn every_fault_turns_the_gates_off_within_its_bound_on_the_simulated_pl() {
+    let lat = measure();
+    let t = table(&lat);
+    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    std::fs::write(root.join("target/fault-matrix.md"), &t).unwrap();
+    let csv: String = CASES
+        .iter()
+        .zip(&lat)
+        .map(|(c, l)| format!("{},{},{}\n", c.fault, l[0], l[1]))
+        .collect();
+    std::fs::write(
+        root.join("target/fault-matrix.csv"),
+        format!("fault,foc_cycles,mpdtc_cycles\n{csv}"),
+    )
+    .unwrap();
+    for (k, c) in CASES.iter().enumerate() {
+        for m in 0..2 {
+            let l = lat[k][m];
+            assert!(
+                l >= 0 && l as u64 <= bound(m, c),
+                "{} in {}: {l} cycles, bound {}\n{t}",
+                c.fault,
+                PERIOD[m].0,
+                bound(m, c)
+            );
+        }
+    }
+    // The committed table: between the markers of docs/fault-matrix.md.
+    let doc_path = root.join("docs/fault-matrix.md");
+    let doc = std::fs::read_to_string(&doc_path).unwrap_or_default();
+    let (b, e) = ("<!-- matrix:begin -->\n", "<!-- matrix:end -->");
+    if std::env::var_os("FAULT_MATRIX_WRITE").is_some() {
+        let (head, rest) = doc.split_once(b).expect("begin marker");
+        let (_, tail) = rest.split_once(e).expect("end marker");
+        std::fs::write(&doc_path, format!("{head}{b}{t}{e}{tail}")).unwrap();
+        return;
+    }
+    let committed = doc
+        .split_once(b)
+        .and_then(|(_, r)| r.split_once(e))
+        .map(|(m, _)| m)
+        .unwrap_or_default();
+    assert_eq!(
+        committed, t,
+        "docs/fault-matrix.md differs from the measured table (target/fault-matrix.md); \
+         FAULT_MATRIX_WRITE=1 rewrites it"
+    );
+}
