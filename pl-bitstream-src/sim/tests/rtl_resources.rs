@@ -86,8 +86,12 @@ fn table_rows(text: &str) -> Vec<&str> {
 fn readme_block<'a>(readme: &'a str, name: &str) -> &'a str {
     let b = format!("<!-- {name} begin -->");
     let e = format!("<!-- {name} end -->");
-    let begin = readme.find(&b).unwrap_or_else(|| panic!("README marker {b}"));
-    let end = readme.find(&e).unwrap_or_else(|| panic!("README marker {e}"));
+    let begin = readme
+        .find(&b)
+        .unwrap_or_else(|| panic!("README marker {b}"));
+    let end = readme
+        .find(&e)
+        .unwrap_or_else(|| panic!("README marker {e}"));
     &readme[begin + b.len()..end]
 }
 
@@ -120,7 +124,11 @@ fn every_module_within_8_ns() {
     ] {
         let d = repo_file(doc);
         let rows = table_rows(&d);
-        let head: Vec<&str> = rows[0].trim_matches('|').split('|').map(str::trim).collect();
+        let head: Vec<&str> = rows[0]
+            .trim_matches('|')
+            .split('|')
+            .map(str::trim)
+            .collect();
         let Some(col) = head.iter().position(|h| *h == "delay (ns, est.)") else {
             panic!("{doc}: no delay column in {head:?}")
         };
