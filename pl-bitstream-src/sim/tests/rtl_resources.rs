@@ -115,7 +115,7 @@ fn readme_tables_are_the_generated_ones() {
 /// Every synthesised module's estimated worst register-to-register delay
 /// (the column "delay (ns, est.)") is at most 8 ns.
 #[test]
-#[ignore = "until every table is regenerated with the delay column (`scripts/rtl-synth`, `scripts/rtl-synth pl_top`, `scripts/mpdcc-table`)"]
+#[ignore = "fails: mpdtc_core (16.0 ns) and mpdtc_frontend (8.9 ns) exceed 8 ns (docs/rtl.md); pl_top and the MPDCC table lack the delay column until re-synthesised"]
 fn every_module_within_8_ns() {
     for doc in [
         "docs/rtl-resources.md",
