@@ -6,8 +6,9 @@
 // offset/gain, Clarke and Park -> i_d, i_q in the core's format (CUR).
 //
 // Timing: in_valid_i captures the inputs and registers; out_valid_o is high
-// exactly LATENCY = 9 cycles later with every output valid (they hold until
-// the next capture). Stages read the captured registers, so a new
+// exactly LATENCY = 9 cycles later with every output valid; i_d_o and i_q_o
+// (registers MPDTC_FE_ID/IQ of the PS) change only at that edge and hold
+// the last result. Stages read the captured registers, so a new
 // in_valid_i is taken at most every LATENCY cycles (one period in flight;
 // the control period is far longer). At most one multiplier level and one
 // adder between registers:
@@ -220,10 +221,17 @@ module mpdtc_frontend (
     end
 
     // ------------------------------------------------------------ stage 8
+    // Loaded only at the edge that raises out_valid_o: i_d_o and i_q_o are
+    // the registers MPDTC_FE_ID/IQ, which must hold the last result (a
+    // free-running stage would show mixes of the new currents and the old
+    // angle in the cycles before, since i_alpha and the table values of a
+    // new input arrive in different cycles).
     reg signed [24:0] i_d, i_q;
     always @(posedge clk_i) begin
-        i_d <= sat25((v[1] * i_al + v[0] * i_be + 48'sd32768) >>> 16);
-        i_q <= sat25((v[1] * i_be - v[0] * i_al + 48'sd32768) >>> 16);
+        if (vld_q[LATENCY-2]) begin
+            i_d <= sat25((v[1] * i_al + v[0] * i_be + 48'sd32768) >>> 16);
+            i_q <= sat25((v[1] * i_be - v[0] * i_al + 48'sd32768) >>> 16);
+        end
     end
 
 `ifdef FORMAL
@@ -268,6 +276,9 @@ module mpdtc_frontend (
 
     always @(posedge clk_i) begin
         if (f_past_valid) begin
+            // The currents change only together with out_valid_o (they
+            // hold the last result in between), or after a reset.
+            if (i_d != $past(i_d) || i_q != $past(i_q)) assert (out_valid_o || $past(rst_i));
             // Value m changes only in the cycle after its read, 6 + m
             // cycles after the input: the outputs hold until the next one.
             if (f_v0 != $past(f_v0))

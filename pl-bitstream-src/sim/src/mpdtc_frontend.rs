@@ -34,6 +34,9 @@ pub struct FrontendRun {
     pub out: FrontendOutputs,
     /// Cycles from the `in_valid` cycle to `out_valid`.
     pub latency_cycles: u32,
+    /// `i_d_o`, `i_q_o` kept the previous result in every cycle before
+    /// `out_valid` (they are the registers MPDTC_FE_ID/IQ).
+    pub currents_held: bool,
 }
 
 impl FrontendSim {
@@ -92,6 +95,11 @@ impl FrontendSim {
         v.extend(p.age.iter().map(|&x| x as i64));
         v.extend(p.adc_off.iter().map(|&x| x as i64));
         v.extend(p.adc_gain.iter().map(|&x| x as i64));
+        let before = {
+            let o = self.get();
+            (o[1], o[2])
+        };
+        let mut currents_held = true;
         self.set(&v);
         self.tick();
         v[1] = 0;
@@ -99,6 +107,8 @@ impl FrontendSim {
         let mut n = 1;
         while self.get()[0] == 0 {
             assert!(n < 64, "mpdtc_frontend: no out_valid");
+            let o = self.get();
+            currents_held &= (o[1], o[2]) == before;
             self.tick();
             n += 1;
         }
@@ -123,6 +133,7 @@ impl FrontendSim {
         FrontendRun {
             out,
             latency_cycles: n,
+            currents_held,
         }
     }
 }
@@ -231,7 +242,9 @@ pub fn check(seed: u64, n: u64) -> FrontendSummary {
         let want = frontend(&inp, &p);
         let got = sim.run(&inp, &p);
         sum.vectors += 1;
-        if got.out != want {
+        // A result must also leave the current registers alone until its
+        // out_valid (the previous result stays readable).
+        if got.out != want || !got.currents_held {
             sum.mismatches += 1;
             sum.first_mismatch.get_or_insert(k);
         }

@@ -36,3 +36,31 @@ fn half_turn_by_hand() {
         "{iq}"
     );
 }
+
+/// i_d and i_q are registers of the PS (MPDTC_FE_ID/IQ): they hold the last
+/// result until the edge that raises `out_valid`, also when the new
+/// period's currents and angle differ (a free-running last stage shows the
+/// new currents with the old angle first).
+#[test]
+fn currents_hold_the_last_result_until_out_valid() {
+    let p = drive_params(4, 100, 15.625e-6);
+    let mut sim = FrontendSim::new();
+    let mut last = None;
+    for (pos, adc) in [
+        (612, [128, 0, -128]),
+        (1000, [-300, 200, 100]),
+        (100, [5, -5, 0]),
+    ] {
+        let inp = FrontendInputs {
+            pos,
+            speed: 40,
+            adc,
+            t_ref: 0,
+        };
+        let r = sim.run(&inp, &p);
+        assert_eq!(r.out, frontend(&inp, &p));
+        assert!(r.currents_held, "i_d/i_q changed before out_valid");
+        assert_ne!(Some(r.out.core.i_dq), last, "periods with new currents");
+        last = Some(r.out.core.i_dq);
+    }
+}

@@ -1,8 +1,9 @@
 //! The resource tables that `scripts/rtl-synth` and `scripts/mpdcc-table`
 //! generate: one Yosys for all of them, `pl_top` (with the MPDCC core)
 //! within 60 % of the xc7z020's LUTs (31,920, LUTRAM counted) and 50 % of
-//! its flip-flops (53,200) with a delay estimate, and the README's `pl_top`
-//! figures equal to the generated ones.
+//! its flip-flops (53,200) with a delay estimate, every estimated
+//! register-to-register delay within 8 ns (100 MHz with 2 ns of margin),
+//! and the README's tables equal to the generated ones.
 
 fn repo_file(rel: &str) -> String {
     let p = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -49,8 +50,10 @@ fn pl_top_fits_the_xc7z020_with_margin() {
 #[ignore = "until `scripts/rtl-synth pl_top` has run with the Yosys of scripts/yosys"]
 fn one_yosys_for_every_resource_table() {
     let a = repo_file("docs/rtl-resources-pl-top.md");
-    let b = repo_file("docs/mpdcc-rtl-table.md");
-    assert_eq!(yosys_of(&a), yosys_of(&b));
+    for doc in ["docs/mpdcc-rtl-table.md", "docs/rtl-resources.md"] {
+        let b = repo_file(doc);
+        assert_eq!(yosys_of(&a), yosys_of(&b), "{doc}");
+    }
     assert!(yosys_of(&a).starts_with("Yosys 0.70"), "{}", yosys_of(&a));
 }
 
@@ -72,4 +75,68 @@ fn readme_carries_the_generated_pl_top_figures() {
         .expect("pl_top row in the README");
     let r: Vec<&str> = l.trim_matches('|').split('|').map(str::trim).collect();
     assert_eq!(r, c, "README and docs/rtl-resources-pl-top.md differ");
+}
+
+/// The table rows (lines starting with `|`, header included) of `text`.
+fn table_rows(text: &str) -> Vec<&str> {
+    text.lines().filter(|l| l.starts_with('|')).collect()
+}
+
+/// The README block between `<!-- name begin -->` and `<!-- name end -->`.
+fn readme_block<'a>(readme: &'a str, name: &str) -> &'a str {
+    let b = format!("<!-- {name} begin -->");
+    let e = format!("<!-- {name} end -->");
+    let begin = readme
+        .find(&b)
+        .unwrap_or_else(|| panic!("README marker {b}"));
+    let end = readme
+        .find(&e)
+        .unwrap_or_else(|| panic!("README marker {e}"));
+    &readme[begin + b.len()..end]
+}
+
+#[test]
+fn readme_tables_are_the_generated_ones() {
+    let readme = repo_file("README.md");
+    for (block, doc) in [
+        ("pl-top-resources", "docs/rtl-resources-pl-top.md"),
+        ("rtl-resources", "docs/rtl-resources.md"),
+        ("mpdcc-rtl-table", "docs/mpdcc-rtl-table.md"),
+    ] {
+        let d = repo_file(doc);
+        assert_eq!(
+            table_rows(readme_block(&readme, block)),
+            table_rows(&d),
+            "README block {block} and {doc} differ"
+        );
+    }
+}
+
+/// Every synthesised module's estimated worst register-to-register delay
+/// (the column "delay (ns, est.)") is at most 8 ns.
+#[test]
+#[ignore = "fails: mpdtc_core (16.0 ns) and mpdtc_frontend (8.9 ns) exceed 8 ns (docs/rtl.md); pl_top and the MPDCC table lack the delay column until re-synthesised"]
+fn every_module_within_8_ns() {
+    for doc in [
+        "docs/rtl-resources.md",
+        "docs/rtl-resources-pl-top.md",
+        "docs/mpdcc-rtl-table.md",
+    ] {
+        let d = repo_file(doc);
+        let rows = table_rows(&d);
+        let head: Vec<&str> = rows[0]
+            .trim_matches('|')
+            .split('|')
+            .map(str::trim)
+            .collect();
+        let Some(col) = head.iter().position(|h| *h == "delay (ns, est.)") else {
+            panic!("{doc}: no delay column in {head:?}")
+        };
+        for r in &rows[2..] {
+            let c: Vec<&str> = r.trim_matches('|').split('|').map(str::trim).collect();
+            if let Ok(ns) = c[col].parse::<f64>() {
+                assert!(ns > 0.0 && ns <= 8.0, "{doc}: {r}");
+            }
+        }
+    }
 }
