@@ -745,11 +745,25 @@ module pl_top #(
         end
     end
 
+    // Simulation only (rtl-sim's Verilated pl_top defines SIM_MPDCC_CLOCK_GATE):
+    // the core is clocked only in reset and while MC_BUSY, so Verilator skips
+    // its logic between decisions. Idle, the core only clears done_o (one
+    // edge after done, still inside MC_BUSY) and shifts pipeline data that no
+    // valid bit marks (its formal properties: nothing in flight when idle),
+    // so its outputs are the same edge for edge. The enable is sampled on the
+    // falling edge, stable across the rising one.
+`ifdef SIM_MPDCC_CLOCK_GATE
+    reg  mc_ce_q = 1'b1;
+    always @(negedge clk_i) mc_ce_q <= rst || mc_busy_q;
+    wire mc_clk = clk_i && mc_ce_q;
+`else
+    wire mc_clk = clk_i;
+`endif
     mpdcc_core #(
         .N(MPDCC_N),
         .II(MPDCC_II)
     ) u_mpdcc (
-        .clk_i       (clk_i),
+        .clk_i       (mc_clk),
         .rst_i       (rst),
         .start_i     (mc_go_q),
         .busy_o      (mc_core_busy),

@@ -51,6 +51,8 @@ const TOPS: &[(&str, &[&str], &str)] = &[
             "mpdcc_lane.v",
             "mpdcc_piece.v",
             "mpdcc_pipe.v",
+            "capture_buf.v",
+            "ctrl_irq.v",
         ],
         "pl_top_shim.cpp",
     ),
@@ -142,6 +144,18 @@ fn opt_fast(top: &str) -> &'static str {
     }
 }
 
+/// Verilog defines of a model. `pl_top`: `SIM_MPDCC_CLOCK_GATE`, the MPDCC
+/// core clocked only in reset and while a decision runs (`pl_top.v`), so the
+/// co-simulation does not evaluate the idle core on every edge (about half
+/// of `pl_top`'s evaluation time, docs/speed.md).
+fn defines(top: &str) -> &'static [&'static str] {
+    if top == "pl_top" {
+        &["+define+SIM_MPDCC_CLOCK_GATE"]
+    } else {
+        &[]
+    }
+}
+
 fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
     let netlist = (top == "mpdtc_core")
         .then(|| env::var(NETLIST_ENV).ok())
@@ -186,6 +200,7 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
             &format!("OPT_FAST={} OPT_SLOW=-O1 OPT_GLOBAL=-O1", opt_fast(top)),
         ])
         .arg("-Wno-fatal")
+        .args(defines(top))
         .arg(format!("-I{}", rtl.display()));
     if top == "mpdcc_core" || top == MPDCC_CORE_SHARED {
         // The most explorers of the table; a run uses n_use_i of them.
@@ -260,6 +275,10 @@ fn cache_root(out: &Path) -> Option<PathBuf> {
 fn model_key(rtl: &Path, top: &str, files: &[&str]) -> u64 {
     let mut h = DefaultHasher::new();
     (top, opt_fast(top), MPDCC_CORE_EXPLORERS, KEY_VERSION).hash(&mut h);
+    // Hashed only where there are some: the other models keep their keys.
+    if !defines(top).is_empty() {
+        defines(top).hash(&mut h);
+    }
     for f in files {
         f.hash(&mut h);
         std::fs::read(rtl.join(f))

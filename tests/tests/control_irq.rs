@@ -82,10 +82,9 @@ fn cosimulated_rtl_paces_foc_and_mpdtc() {
     // critical section that held the interrupt off; always inside the
     // period, or the next boundary would count as an overrun.
     check(&foc, 6_256.0, 2.0);
-    // MPDTC: 1,600 periods of 1,564 cycles (25 ms of PL time: the
-    // co-simulation runs tens of periods per wall second here).
+    // MPDTC: 0.1 s of PL time too (6,400 periods of 1,564 cycles).
     let before = num(&foc, "periods");
-    let mpdtc = run_periods(&mut s, "mpdtc", before + 1_600.0, Duration::from_secs(900));
+    let mpdtc = run_periods(&mut s, "mpdtc", before + 6_400.0, Duration::from_secs(900));
     // The latency figures are since boot (FOC's included); that every
     // MPDTC step started before the next boundary is the overrun count.
     check(&mpdtc, 6_256.0, 2.0);

@@ -238,12 +238,8 @@ fn move_in_one_write(s: &mut Session) -> drivectl::link::Reply {
 /// simulated PL: the figures within 5 % (a count where they are counts
 /// near 0). Its PL time is the alignment, the 90 ms move and a 5 ms
 /// window: the longest co-simulation test (about 100 ms of PL time, 10^7
-/// PL cycles: 293 s of wall time at the co-simulation's present speed on
-/// a shared 2-core machine), so it is left out of the default run until
-/// the co-simulation is faster:
-/// `cargo test -p system-tests --test motion -- --include-ignored on_the_rtl`.
+/// PL cycles; 23 s of CPU time, docs/speed.md).
 #[test]
-#[ignore = "about 5 min of wall time in co-simulation; run with --include-ignored"]
 fn move_one_revolution_on_the_rtl_matches_the_simulated_pl() {
     let mut rtl = system_tests::boot_rtl();
     let t0 = Instant::now();

@@ -36,6 +36,8 @@ pub struct RtlPl {
     rtl: PlTopSim,
     shadow: SimPl,
     pins: Pins,
+    /// The RTL's gate outputs after the last edge (`pt_peek` once a cycle).
+    gates_q: (u8, u8),
     cycles: u64,
     mismatches: u64,
     first_mismatch: Option<String>,
@@ -53,10 +55,12 @@ impl RtlPl {
     pub fn with_converter(conv: Converter) -> Self {
         let mut rtl = PlTopSim::new();
         rtl.adc = Some(conv);
+        let o = rtl.peek();
         Self {
             rtl,
             shadow: SimPl::with_converter(conv),
             pins: Pins::default(),
+            gates_q: (o.gate_hi, o.gate_lo),
             cycles: 0,
             mismatches: 0,
             first_mismatch: None,
@@ -81,11 +85,6 @@ impl RtlPl {
         }
     }
 
-    fn rtl_gates(&self) -> (u8, u8) {
-        let o = self.rtl.peek();
-        (o.gate_hi, o.gate_lo)
-    }
-
     /// One clock cycle of both models with the AXI inputs already set;
     /// returns the RTL's outputs before the edge, the cycle's events and
     /// the shadow's bus result.
@@ -100,7 +99,7 @@ impl RtlPl {
         self.rtl.inp.fault_ext_n = u8::from(p.fault_ext_n);
         self.rtl.adc_data = p.adc_word;
         self.shadow.pins = p;
-        let g0 = self.rtl_gates();
+        let g0 = self.gates_q;
         let o = self.rtl.step();
         let after = self.rtl.peek();
         let (sev, res) = match sh {
@@ -116,6 +115,7 @@ impl RtlPl {
         };
         self.cycles += 1;
         let g = (after.gate_hi, after.gate_lo);
+        self.gates_q = g;
         let sg = self.shadow.gates();
         if g != (sg.hi, sg.lo) {
             let c = self.cycles;
@@ -156,7 +156,7 @@ impl PlModel for RtlPl {
         self.cycles
     }
     fn gates(&self) -> GateOutputs {
-        let (hi, lo) = self.rtl_gates();
+        let (hi, lo) = self.gates_q;
         GateOutputs { hi, lo }
     }
     fn mode(&self) -> u32 {

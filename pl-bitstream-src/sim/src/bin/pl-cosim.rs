@@ -5,7 +5,8 @@
 //! the Verilated `pl_top` and the plant until the request FIFO closes. On
 //! exit it prints one JSON line of statistics (to FILE, or stderr): requests,
 //! PL cycles, control periods, wall seconds, control periods per wall
-//! second and shadow-model mismatches. Exit status 2 on bad arguments or
+//! second, this process's CPU seconds (a loaded machine inflates the wall
+//! time, not these) and shadow-model mismatches. Exit status 2 on bad arguments or
 //! when the FIFOs cannot be made, 1 on a mismatch.
 use rtl_sim::cosim::Bridge;
 use std::fs::OpenOptions;
@@ -67,7 +68,7 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let t0 = Instant::now();
+    let (t0, c0) = (Instant::now(), rtl_sim::thread_cpu_s());
     let mut buf = [0u8; simpl::cosim::REQUEST_LEN];
     loop {
         match req.read_exact(&mut buf) {
@@ -84,16 +85,20 @@ fn main() -> ExitCode {
         }
     }
     let wall = t0.elapsed().as_secs_f64();
+    let cpu = rtl_sim::thread_cpu_s() - c0;
     let pl = bridge.drive().pl();
     let line = format!(
         "{{\"requests\":{},\"pl_cycles\":{},\"control_periods\":{},\"wall_s\":{:.3},\
-         \"control_periods_per_wall_s\":{:.1},\"pl_cycles_per_wall_s\":{:.0},\"mismatches\":{},\"first_mismatch\":{:?}}}",
+         \"control_periods_per_wall_s\":{:.1},\"pl_cycles_per_wall_s\":{:.0},\"cpu_s\":{:.3},\
+         \"pl_cycles_per_cpu_s\":{:.0},\"mismatches\":{},\"first_mismatch\":{:?}}}",
         bridge.requests,
         bridge.drive().pl_cycles(),
         bridge.periods,
         wall,
         bridge.periods as f64 / wall.max(1e-9),
         bridge.drive().pl_cycles() as f64 / wall.max(1e-9),
+        cpu,
+        bridge.drive().pl_cycles() as f64 / cpu.max(1e-9),
         pl.mismatches(),
         pl.first_mismatch().unwrap_or("")
     );
