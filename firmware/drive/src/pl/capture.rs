@@ -14,11 +14,11 @@
 //! saturated at the ends, NaN written as 0.
 use regmap::bus::{BusError, RegisterBus};
 use regmap::regs::capture::{
-    self as r, CapArm, CapArmValue, CapData0, CapData1, CapData2, CapDecim, CapDecimValue, CapInId,
-    CapInIdValue, CapInIq, CapInIqValue, CapInTorque, CapInTorqueValue, CapInTref, CapInTrefValue,
-    CapInFerr, CapInFerrValue, CapInPos, CapInPosValue, CapInVel, CapInVelValue, CapPre,
-    CapPreValue, CapRdIndex, CapRdIndexValue, CapSource, CapSourceValue, CapStep,
-    CapStepValue, CapThrCh, CapThrChValue, CapThrEdge, CapThrEdgeValue, CapThrLevel,
+    self as r, CapArm, CapArmValue, CapData0, CapData1, CapData2, CapDecim, CapDecimValue,
+    CapInFerr, CapInFerrValue, CapInId, CapInIdValue, CapInIq, CapInIqValue, CapInPos,
+    CapInPosValue, CapInTorque, CapInTorqueValue, CapInTref, CapInTrefValue, CapInVel,
+    CapInVelValue, CapPre, CapPreValue, CapRdIndex, CapRdIndexValue, CapSource, CapSourceValue,
+    CapStep, CapStepValue, CapThrCh, CapThrChValue, CapThrEdge, CapThrEdgeValue, CapThrLevel,
     CapThrLevelValue, CapTrig, CapTrigValue,
 };
 use regmap::{cap_source, cap_state, CAPTURE_DEPTH};
@@ -307,9 +307,8 @@ impl<B: RegisterBus> Capture<B> {
         )?;
         CapInFerr::write(
             b,
-            CapInFerrValue::ZERO.with_value(u32::from(encode_following_error(
-                following_error_counts,
-            ))),
+            CapInFerrValue::ZERO
+                .with_value(u32::from(encode_following_error(following_error_counts))),
         )
     }
 

@@ -958,11 +958,7 @@ impl Servo {
         let me = self.measured;
         Capture(&mut *bus).write_channels(me.i_d_a, me.i_q_a, me.torque_nm, self.torque_ref_nm)?;
         let ms = self.motion.status();
-        Capture(&mut *bus).write_motion(
-            ms.counts,
-            ms.velocity_rev_s,
-            ms.following_error_counts,
-        )?;
+        Capture(&mut *bus).write_motion(ms.counts, ms.velocity_rev_s, ms.following_error_counts)?;
         Ok(())
     }
 
