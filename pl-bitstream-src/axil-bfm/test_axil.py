@@ -151,7 +151,6 @@ def pauser(rng, p):
 async def setup(dut):
     cocotb.start_soon(Clock(dut.clk, 10, units="ns").start())
     m = AxiLiteMaster(AxiLiteBus.from_prefix(dut, "s_axi"), dut.clk, dut.rst_n, reset_active_level=False)
-    m.log.setLevel(logging.WARNING)
     for c in (m.write_if, m.read_if):
         c.log.setLevel(logging.WARNING)
     dut.rst_n.value = 0
