@@ -208,6 +208,32 @@ module capture_buf #(
             end
         end
     end
+    // A sample stores every channel where the word layout above says
+    // (the read-back registers CAP_DATA0..5 slice that layout).
+    reg f_took_q = 1'b0;
+    reg [AW-1:0] f_slot_q;
+    reg [162:0] f_word_q;
+    always @(posedge clk_i) begin
+        f_took_q <= take && !arm_i;
+        f_slot_q <= wr_ptr_q;
+        f_word_q[15:0] <= ch_id_i;
+        f_word_q[31:16] <= ch_iq_i;
+        f_word_q[47:32] <= ch_torque_i;
+        f_word_q[63:48] <= ch_tref_i;
+        f_word_q[79:64] <= ch_sel_i;
+        f_word_q[82:80] <= ch_sw_i;
+        f_word_q[114:83] <= ch_pos_i;
+        f_word_q[146:115] <= ch_vel_i;
+        f_word_q[162:147] <= ch_ferr_i;
+    end
+    always @(*) begin
+        if (f_past_valid && f_took_q) begin
+            assert (mem_q[f_slot_q][162:147] == f_word_q[162:147]);
+            assert (mem_q[f_slot_q][146:115] == f_word_q[146:115]);
+            assert (mem_q[f_slot_q][114:83] == f_word_q[114:83]);
+            assert (mem_q[f_slot_q][82:0] == f_word_q[82:0]);
+        end
+    end
     always @(posedge clk_i) begin
         if (f_past_valid && !$past(rst_i)) begin
             if ($past(arm_i)) assert (state_q == ARMED && count_q == 0 && wr_ptr_q == 0);
