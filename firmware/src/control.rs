@@ -957,8 +957,8 @@ impl DriveOps for FwDrive {
     fn reconfigure(&mut self, cfg: &ServoConfig) -> Result<(), DriveError> {
         run(|s| s.servo.reconfigure(&mut s.bus, cfg))
     }
-    fn capture_arm(&mut self, t: Trigger, pre: u32) -> Result<(), DriveError> {
-        run(|s| s.servo.capture_arm(&mut s.bus, t, pre))
+    fn capture_arm(&mut self, t: Trigger, pre: u32, every: u32) -> Result<(), DriveError> {
+        run(|s| s.servo.capture_arm(&mut s.bus, t, pre, every))
     }
     fn capture_trigger(&mut self) -> Result<(), DriveError> {
         run(|s| s.servo.capture_trigger(&mut s.bus))
@@ -985,7 +985,7 @@ impl DriveOps for FwDrive {
             wait();
         }
         run(|s| {
-            s.servo.capture_arm(&mut s.bus, Trigger::Manual, 0)?;
+            s.servo.capture_arm(&mut s.bus, Trigger::Manual, 0, 1)?;
             s.servo.capture_trigger(&mut s.bus)
         })?;
         let count = loop {

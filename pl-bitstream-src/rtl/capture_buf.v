@@ -6,8 +6,12 @@
 //                strobes while ARMED or TRIGGERED
 //   ch_*_i       the channels of a sample: i_d, i_q, torque, torque
 //                reference (16-bit two's complement, written by the PS each
-//                control period), the selectable channel (16 bits) and the
-//                switching state at the gate driver (3 bits)
+//                control period), the selectable channel (16 bits), the
+//                switching state at the gate driver (3 bits), and the PS's
+//                multi-turn position (32-bit counts), velocity (Q16.16
+//                rev/s) and following error (Q12.4 counts), formats in the
+//                register table (CAP_IN_POS, CAP_IN_VEL, CAP_IN_FERR); only
+//                stored and read back, never computed on here
 //   arm_i        one-cycle strobe: empty the ring, latch pre_i, ARMED
 //   trig_i       one-cycle strobe: manual trigger at the next sample
 //   source_i     0 manual only, 1 reference step (|tref - previous tref|
@@ -18,8 +22,9 @@
 // A record: after the trigger sample, DEPTH - pre - 1 more samples are
 // taken, then DONE; the ring then holds the last min(taken, DEPTH) samples,
 // the trigger sample at trig_index_o = count_o - (DEPTH - pre) (fewer than
-// pre samples before it when the trigger came early). Memory word:
-// {sw[2:0], sel, tref, torque, i_q, i_d}, i_d in bits 15..0.
+// pre samples before it when the trigger came early). Memory word
+// (W = 163 bits): {ferr, vel[31:0], pos[31:0], sw[2:0], sel, tref, torque,
+// i_q, i_d}, i_d in bits 15..0, pos in 114..83, vel 146..115, ferr 162..147.
 `default_nettype none
 
 module capture_buf #(
@@ -46,18 +51,21 @@ module capture_buf #(
     input  wire [  15:0] ch_tref_i,
     input  wire [  15:0] ch_sel_i,
     input  wire [   2:0] ch_sw_i,
+    input  wire [  31:0] ch_pos_i,
+    input  wire [  31:0] ch_vel_i,
+    input  wire [  15:0] ch_ferr_i,
     input  wire [  15:0] rd_index_i,
     output wire [   1:0] state_o,
     output wire [  AW:0] count_o,
     output wire [  AW:0] trig_index_o,
-    output reg  [  82:0] rd_data_o
+    output reg  [ 162:0] rd_data_o
 );
     localparam integer DEPTH = 1 << AW;
     localparam [1:0] IDLE = 2'd0, ARMED = 2'd1, TRIG = 2'd2, DONE = 2'd3;
     localparam [AW:0] DEPTH_W = DEPTH[AW:0];
     localparam [AW:0] ONE = 1;
 
-    reg [82:0] mem_q[0:DEPTH-1];
+    reg [162:0] mem_q[0:DEPTH-1];
     reg [1:0] state_q;
     reg [AW-1:0] wr_ptr_q;
     reg [AW:0] count_q;
@@ -70,7 +78,7 @@ module capture_buf #(
     reg [15:0] thr_prev_q;
 
     integer i;
-    initial for (i = 0; i < DEPTH; i = i + 1) mem_q[i] = 83'd0;
+    initial for (i = 0; i < DEPTH; i = i + 1) mem_q[i] = 163'd0;
 
     // pre_i is clamped to CAPTURE_DEPTH - 1 by the register file; the
     // clamp here keeps a smaller ring consistent.
@@ -108,12 +116,14 @@ module capture_buf #(
 
     always @(posedge clk_i) begin
         if (rst_i) begin
-            rd_data_o <= 83'd0;
+            rd_data_o <= 163'd0;
         end else begin
             rd_data_o <= mem_q[rd_ptr];
         end
         if (take && !arm_i) begin
-            mem_q[wr_ptr_q] <= {ch_sw_i, ch_sel_i, ch_tref_i, ch_torque_i, ch_iq_i, ch_id_i};
+            mem_q[wr_ptr_q] <= {
+                ch_ferr_i, ch_vel_i, ch_pos_i, ch_sw_i, ch_sel_i, ch_tref_i, ch_torque_i, ch_iq_i, ch_id_i
+            };
         end
     end
 
@@ -196,6 +206,32 @@ module capture_buf #(
                 assert (count_q >= post_len);
                 assert (trig_index_o <= {1'b0, pre_q});
             end
+        end
+    end
+    // A sample stores every channel where the word layout above says
+    // (the read-back registers CAP_DATA0..5 slice that layout).
+    reg f_took_q = 1'b0;
+    reg [AW-1:0] f_slot_q;
+    reg [162:0] f_word_q;
+    always @(posedge clk_i) begin
+        f_took_q <= take && !arm_i;
+        f_slot_q <= wr_ptr_q;
+        f_word_q[15:0] <= ch_id_i;
+        f_word_q[31:16] <= ch_iq_i;
+        f_word_q[47:32] <= ch_torque_i;
+        f_word_q[63:48] <= ch_tref_i;
+        f_word_q[79:64] <= ch_sel_i;
+        f_word_q[82:80] <= ch_sw_i;
+        f_word_q[114:83] <= ch_pos_i;
+        f_word_q[146:115] <= ch_vel_i;
+        f_word_q[162:147] <= ch_ferr_i;
+    end
+    always @(*) begin
+        if (f_past_valid && f_took_q) begin
+            assert (mem_q[f_slot_q][162:147] == f_word_q[162:147]);
+            assert (mem_q[f_slot_q][146:115] == f_word_q[146:115]);
+            assert (mem_q[f_slot_q][114:83] == f_word_q[114:83]);
+            assert (mem_q[f_slot_q][82:0] == f_word_q[82:0]);
         end
     end
     always @(posedge clk_i) begin

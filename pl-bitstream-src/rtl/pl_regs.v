@@ -233,7 +233,13 @@ module pl_regs (
     input  wire  [15:0] cap_data1_torque_i,
     input  wire  [15:0] cap_data1_tref_i,
     input  wire   [2:0] cap_data2_sw_i,
-    input  wire  [15:0] cap_data2_sel_i
+    input  wire  [15:0] cap_data2_sel_i,
+    output wire  [31:0] cap_in_pos_o,
+    output wire  [31:0] cap_in_vel_o,
+    output wire  [15:0] cap_in_ferr_o,
+    input  wire  [31:0] cap_data3_i,
+    input  wire  [31:0] cap_data4_i,
+    input  wire  [15:0] cap_data5_i
 );
 
     // Byte-strobe merge of a write over the current (zero-extended) value.
@@ -376,6 +382,9 @@ module pl_regs (
     reg  [15:0] cap_in_torque_q;
     reg  [15:0] cap_in_tref_q;
     reg   [9:0] cap_rd_index_q;
+    reg  [31:0] cap_in_pos_q;
+    reg  [31:0] cap_in_vel_q;
+    reg  [15:0] cap_in_ferr_q;
 
     // Write decode, and the word each write leaves (merged, clamped).
     wire w_ctrl = wr_i && wr_addr_i == 15'h0008;
@@ -635,6 +644,12 @@ module pl_regs (
     wire [31:0] n_cap_in_tref = merge({16'd0, cap_in_tref_q}, wr_data_i, wr_strb_i);
     wire w_cap_rd_index = wr_i && wr_addr_i == 15'h7040;
     wire [31:0] n_cap_rd_index = clamp(merge({22'd0, cap_rd_index_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h000003ff);
+    wire w_cap_in_pos = wr_i && wr_addr_i == 15'h7054;
+    wire [31:0] n_cap_in_pos = merge(cap_in_pos_q, wr_data_i, wr_strb_i);
+    wire w_cap_in_vel = wr_i && wr_addr_i == 15'h7058;
+    wire [31:0] n_cap_in_vel = merge(cap_in_vel_q, wr_data_i, wr_strb_i);
+    wire w_cap_in_ferr = wr_i && wr_addr_i == 15'h705c;
+    wire [31:0] n_cap_in_ferr = merge({16'd0, cap_in_ferr_q}, wr_data_i, wr_strb_i);
     wire w_any_ok = w_ctrl | w_err | w_heartbeat | w_scratch | w_irq_en
         | w_irq_status | w_mpdtc_ctrl | w_mpdtc_start | w_mpdtc_in_id | w_mpdtc_in_iq
         | w_mpdtc_in_cos0 | w_mpdtc_in_sin0 | w_mpdtc_in_cos1 | w_mpdtc_in_sin1 | w_mpdtc_in_cos2
@@ -659,7 +674,8 @@ module pl_regs (
         | w_fault_status | w_oc_limit | w_wdg_timeout | w_cap_source | w_cap_pre
         | w_cap_decim | w_cap_step | w_cap_thr_ch | w_cap_thr_level | w_cap_thr_edge
         | w_cap_sel | w_cap_arm | w_cap_trig | w_cap_in_id | w_cap_in_iq
-        | w_cap_in_torque | w_cap_in_tref | w_cap_rd_index;
+        | w_cap_in_torque | w_cap_in_tref | w_cap_rd_index | w_cap_in_pos | w_cap_in_vel
+        | w_cap_in_ferr;
     // Access errors of this cycle (set ERR).
     wire bad_value = (w_ctrl && bad_ctrl) || (w_mpdcc_bnd_ia && bad_mpdcc_bnd_ia) || (w_mpdcc_bnd_ib && bad_mpdcc_bnd_ib) || (w_mpdcc_bnd_ic && bad_mpdcc_bnd_ic) || (w_mpdcc_bnd_vn && bad_mpdcc_bnd_vn) || (w_mpdcc_bnd_vpa && bad_mpdcc_bnd_vpa) || (w_mpdcc_bnd_vpb && bad_mpdcc_bnd_vpb) || (w_mpdcc_bnd_vpc && bad_mpdcc_bnd_vpc) || (w_adc_avg_log2 && bad_adc_avg_log2) || (w_cap_thr_ch && bad_cap_thr_ch) || (w_cap_sel && bad_cap_sel);
     wire bad_addr = (wr_i && !w_any_ok) || (rd_i && rd_err_o);
@@ -789,6 +805,9 @@ module pl_regs (
             cap_in_torque_q <= 16'h0;
             cap_in_tref_q <= 16'h0;
             cap_rd_index_q <= 10'h0;
+            cap_in_pos_q <= 32'h0;
+            cap_in_vel_q <= 32'h0;
+            cap_in_ferr_q <= 16'h0;
         end else begin
             if (w_ctrl && !bad_ctrl) ctrl_q <= n_ctrl[1:0];
             // A flag set in this cycle wins over its clear.
@@ -913,6 +932,9 @@ module pl_regs (
             if (w_cap_in_torque) cap_in_torque_q <= n_cap_in_torque[15:0];
             if (w_cap_in_tref) cap_in_tref_q <= n_cap_in_tref[15:0];
             if (w_cap_rd_index) cap_rd_index_q <= n_cap_rd_index[9:0];
+            if (w_cap_in_pos) cap_in_pos_q <= n_cap_in_pos[31:0];
+            if (w_cap_in_vel) cap_in_vel_q <= n_cap_in_vel[31:0];
+            if (w_cap_in_ferr) cap_in_ferr_q <= n_cap_in_ferr[15:0];
         end
     end
 
@@ -1077,6 +1099,12 @@ module pl_regs (
             15'h7048: rd_data_o = {cap_data1_tref_i, cap_data1_torque_i};  // CAP_DATA1
             15'h704c: rd_data_o = {cap_data2_sel_i, 13'd0, cap_data2_sw_i};  // CAP_DATA2
             15'h7050: rd_data_o = 32'h00000400;  // CAP_DEPTH
+            15'h7054: rd_data_o = cap_in_pos_q;  // CAP_IN_POS
+            15'h7058: rd_data_o = cap_in_vel_q;  // CAP_IN_VEL
+            15'h705c: rd_data_o = {16'd0, cap_in_ferr_q};  // CAP_IN_FERR
+            15'h7060: rd_data_o = cap_data3_i;  // CAP_DATA3
+            15'h7064: rd_data_o = cap_data4_i;  // CAP_DATA4
+            15'h7068: rd_data_o = {16'd0, cap_data5_i};  // CAP_DATA5
             default: rd_err_o = rd_i;
         endcase
     end
@@ -1213,6 +1241,9 @@ module pl_regs (
     assign cap_in_torque_o = cap_in_torque_q;
     assign cap_in_tref_o = cap_in_tref_q;
     assign cap_rd_index_o = cap_rd_index_q;
+    assign cap_in_pos_o = cap_in_pos_q;
+    assign cap_in_vel_o = cap_in_vel_q;
+    assign cap_in_ferr_o = cap_in_ferr_q;
 
 `ifdef FORMAL
     reg f_past_valid = 1'b0;
@@ -1509,6 +1540,12 @@ module pl_regs (
             if ($past(!w_cap_in_tref)) assert (cap_in_tref_q == $past(cap_in_tref_q));
             // CAP_RD_INDEX: changed only by a write.
             if ($past(!w_cap_rd_index)) assert (cap_rd_index_q == $past(cap_rd_index_q));
+            // CAP_IN_POS: changed only by a write.
+            if ($past(!w_cap_in_pos)) assert (cap_in_pos_q == $past(cap_in_pos_q));
+            // CAP_IN_VEL: changed only by a write.
+            if ($past(!w_cap_in_vel)) assert (cap_in_vel_q == $past(cap_in_vel_q));
+            // CAP_IN_FERR: changed only by a write.
+            if ($past(!w_cap_in_ferr)) assert (cap_in_ferr_q == $past(cap_in_ferr_q));
         end
     end
 `endif

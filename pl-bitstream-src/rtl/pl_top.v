@@ -26,8 +26,9 @@
 //                    started by the sequence, or by MPDTC_START while the
 //                    sequence is IDLE and AUTO = 0); PWM.SW_STATE drives the
 //                    gates instead when MPDTC_CTRL.MANUAL = 1 (reset)
-//   capture_buf   <- PS-written i_d, i_q, torque, torque reference, the
-//                    selected switching state and a selectable channel, one
+//   capture_buf   <- PS-written i_d, i_q, torque, torque reference,
+//                    position, velocity and following error, the selected
+//                    switching state and a selectable channel, one
 //                    sample per CAP_DECIM + 1 averaged ADC results (CAPTURE
 //                    page)
 //   gate_driver   <- selected state, DEAD_TIME, enable = GATE_EN && mode != off
@@ -215,10 +216,12 @@ module pl_top #(
     wire [ 2:0] cap_thr_ch, cap_sel;
     wire        cap_thr_edge, cap_arm, cap_trig;
     wire [15:0] cap_in_id, cap_in_iq, cap_in_torque, cap_in_tref;
+    wire [31:0] cap_in_pos, cap_in_vel;
+    wire [15:0] cap_in_ferr;
     wire [ 9:0] cap_rd_index;
     wire [ 1:0] cap_state;
     wire [CAP_AW:0] cap_count, cap_trig_index;
-    wire [82:0] cap_rd;
+    wire [162:0] cap_rd;
     reg  [15:0] cap_sel_ch;
 
     // MPDCC page: the inputs and constants as one word vector (16-bit words
@@ -467,7 +470,13 @@ module pl_top #(
         .cap_data1_torque_i         (cap_rd[47:32]),
         .cap_data1_tref_i           (cap_rd[63:48]),
         .cap_data2_sw_i             (cap_rd[82:80]),
-        .cap_data2_sel_i            (cap_rd[79:64])
+        .cap_data2_sel_i            (cap_rd[79:64]),
+        .cap_in_pos_o               (cap_in_pos),
+        .cap_in_vel_o               (cap_in_vel),
+        .cap_in_ferr_o              (cap_in_ferr),
+        .cap_data3_i                (cap_rd[114:83]),
+        .cap_data4_i                (cap_rd[146:115]),
+        .cap_data5_i                (cap_rd[162:147])
     );
 
     // Selectable channel (CAP_SEL; the register rejects values above 4).
@@ -504,10 +513,10 @@ module pl_top #(
     assign cap_state = 2'd0;
     assign cap_count = {(CAP_AW + 1) {1'b0}};
     assign cap_trig_index = {(CAP_AW + 1) {1'b0}};
-    assign cap_rd = 83'd0;
+    assign cap_rd = 163'd0;
     wire unused_cap = ^{cap_arm, cap_trig, cap_source, cap_pre, cap_decim, cap_step, cap_thr_ch,
         cap_thr_level, cap_thr_edge, cap_sel_ch, cap_in_id, cap_in_iq, cap_in_torque, cap_in_tref,
-        cap_rd_index};
+        cap_rd_index, cap_in_pos, cap_in_vel, cap_in_ferr};
 `else
     capture_buf #(
         .AW(CAP_AW)
@@ -531,6 +540,9 @@ module pl_top #(
         .ch_tref_i   (cap_in_tref),
         .ch_sel_i    (cap_sel_ch),
         .ch_sw_i     (state_sel),
+        .ch_pos_i    (cap_in_pos),
+        .ch_vel_i    (cap_in_vel),
+        .ch_ferr_i   (cap_in_ferr),
         .rd_index_i  ({6'd0, cap_rd_index}),
         .state_o     (cap_state),
         .count_o     (cap_count),

@@ -570,7 +570,7 @@ localparam [31:0] RM_WDG_TIMEOUT_RESET = 32'h00989680;
 localparam [31:0] RM_WDG_TIMEOUT_MIN = 32'h000003e8;
 localparam [31:0] RM_WDG_TIMEOUT_MAX = 32'hffffffff;
 
-// Block 7 CAPTURE: Triggered capture buffer (capture_buf): a ring of CAPTURE_DEPTH samples of six channels at the control rate, with pre-trigger.
+// Block 7 CAPTURE: Triggered capture buffer (capture_buf): a ring of CAPTURE_DEPTH samples of nine channels at the control rate, with pre-trigger.
 localparam [2:0] RM_BLK_CAPTURE = 3'd7;
 localparam [14:0] RM_CAP_SOURCE_ADDR = 15'h7000;
 localparam integer RM_CAP_SOURCE_W = 2;
@@ -656,3 +656,21 @@ localparam integer RM_CAP_DATA2_SEL_W = 16;
 localparam [14:0] RM_CAP_DEPTH_ADDR = 15'h7050;
 localparam integer RM_CAP_DEPTH_W = 16;
 localparam [31:0] RM_CAP_DEPTH_RESET = 32'h00000400;
+localparam [14:0] RM_CAP_IN_POS_ADDR = 15'h7054;
+localparam integer RM_CAP_IN_POS_W = 32;
+localparam [31:0] RM_CAP_IN_POS_RESET = 32'h00000000;
+localparam [14:0] RM_CAP_IN_VEL_ADDR = 15'h7058;
+localparam integer RM_CAP_IN_VEL_W = 32;
+localparam [31:0] RM_CAP_IN_VEL_RESET = 32'h00000000;
+localparam [14:0] RM_CAP_IN_FERR_ADDR = 15'h705c;
+localparam integer RM_CAP_IN_FERR_W = 16;
+localparam [31:0] RM_CAP_IN_FERR_RESET = 32'h00000000;
+localparam [14:0] RM_CAP_DATA3_ADDR = 15'h7060;
+localparam integer RM_CAP_DATA3_W = 32;
+localparam [31:0] RM_CAP_DATA3_RESET = 32'h00000000;
+localparam [14:0] RM_CAP_DATA4_ADDR = 15'h7064;
+localparam integer RM_CAP_DATA4_W = 32;
+localparam [31:0] RM_CAP_DATA4_RESET = 32'h00000000;
+localparam [14:0] RM_CAP_DATA5_ADDR = 15'h7068;
+localparam integer RM_CAP_DATA5_W = 16;
+localparam [31:0] RM_CAP_DATA5_RESET = 32'h00000000;

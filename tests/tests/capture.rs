@@ -32,7 +32,10 @@ fn bad_capture_and_sweep_arguments_change_nothing() {
         "capture arm torque>0.1<0.2",
         "capture arm manual 1024",
         "capture arm manual -1",
-        "capture arm manual 10 20",
+        "capture arm manual 10 0",
+        "capture arm manual 10 257",
+        "capture arm manual 10 2.5",
+        "capture arm manual 10 2 3",
         "capture dumpp",
         "sweep",
         "sweep 100",
@@ -83,14 +86,22 @@ fn capture_dump_shows_an_mpdtc_step_with_pre_trigger() {
     assert_ok(&d);
     assert_eq!(
         d.lines[0],
-        "t_ms,i_d_A,i_q_A,torque_Nm,torque_ref_Nm,sw_state,adc_ia_raw"
+        "t_ms,i_d_A,i_q_A,torque_Nm,torque_ref_Nm,sw_state,adc_ia_raw,position_counts,\
+         velocity_rev_s,following_error_counts"
     );
     let rows: Vec<Vec<f64>> = d.lines[1..]
         .iter()
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
         .collect();
     assert_eq!(rows.len(), 1024);
-    assert!(rows.iter().all(|r| r.len() == 7));
+    assert!(rows.iter().all(|r| r.len() == 10));
+    // Locked rotor, torque loop: the position does not change, and the
+    // following error is 0.
+    assert!(
+        rows.iter().all(|r| r[7] == rows[0][7] && r[9] == 0.0),
+        "{:?}",
+        rows.iter().find(|r| r[7] != rows[0][7] || r[9] != 0.0)
+    );
     // t = 0 at the trigger sample; sample period 15.64 us.
     assert_eq!(rows[100][0], 0.0);
     assert!(
@@ -157,4 +168,46 @@ fn sweep_prints_the_frequency_response_in_both_modes() {
         let st = cmd(&mut s, "status");
         assert!(num(&st, "torque_ref").abs() < 1e-9, "{st:?}");
     }
+}
+
+/// A `move` recorded by the capture buffer: `capture arm manual 0 8` (one
+/// sample every 8 control periods), then `move 1` restarts and triggers the
+/// record. The position channel travels the revolution (4096 counts) and
+/// ends within a count of it, the velocity channel peaks at the trajectory's
+/// 20 rev/s, the following error stays within the move's figure, and the
+/// record matches the host simulation of the same move.
+#[test]
+fn capture_records_a_move_with_position_velocity_and_following_error() {
+    let mut s = boot();
+    assert_ok(&cmd(&mut s, "sim set locked 0"));
+    assert_ok(&cmd(&mut s, "mode mpdtc"));
+    assert_ok(&cmd(&mut s, "enable"));
+    let a = cmd(&mut s, "capture arm manual 0 8");
+    assert_ok(&a);
+    let ts_us = num(&a, "sample_period");
+    assert!((ts_us - 8.0 * 15.64).abs() < 0.05, "{a:?}");
+    let r = cmd(&mut s, "move 1");
+    assert_ok(&r);
+    let st = wait_done(&mut s);
+    assert_eq!(num(&st, "trigger_index"), 0.0, "{st:?}");
+    let d = cmd(&mut s, "capture dump");
+    let rows: Vec<Vec<f64>> = d.lines[1..]
+        .iter()
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 1024);
+    let (p0, p1) = (rows[0][7], rows[1023][7]);
+    let vmax = rows.iter().map(|r| r[8]).fold(f64::MIN, f64::max);
+    let fe = rows.iter().map(|r| r[9].abs()).fold(0.0, f64::max);
+    let first = rows.iter().position(|r| r[4] != 0.0).unwrap();
+    println!(
+        "move record: {p0} -> {p1} counts, peak {vmax} rev/s, |following error| <= {fe} counts, \
+         torque reference from sample {first}; move: {:?}",
+        r.lines
+    );
+    assert!((p1 - p0 - 4096.0).abs() <= 1.0, "{p0} -> {p1}");
+    assert!((vmax - 20.0).abs() < 0.5, "{vmax}");
+    // The record's following error (1/16 count, every 8th period) within
+    // the move's own maximum (every period, printed to a count).
+    assert!(fe <= num(&r, "max_following_error") + 0.5, "{fe} vs {r:?}");
 }

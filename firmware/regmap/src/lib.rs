@@ -1607,6 +1607,12 @@ pub mod cap_state {
 }
 const CAP_I_FMT: &str = "signed 16-bit two's complement, mA (range +-32.767 A)";
 const CAP_T_FMT: &str = "signed 16-bit two's complement, 0.1 mN m (range +-3.2767 N m)";
+const CAP_POS_FMT: &str = "signed 32-bit two's complement, encoder counts (range +-2^31 \
+                           counts: +-524288 rev at 4096 counts/rev), wraps";
+const CAP_VEL_FMT: &str = "signed Q16.16 rev/s (32-bit two's complement, LSB 2^-16 rev/s, \
+                           range -32768..+32767.99998 rev/s)";
+const CAP_FERR_FMT: &str = "signed Q12.4 counts (16-bit two's complement, LSB 1/16 count, \
+                            range -2048..+2047.9375 counts)";
 /// CAPTURE: trigger source.
 pub const CAP_SOURCE: Register = Register {
     name: "CAP_SOURCE",
@@ -1847,7 +1853,7 @@ pub const CAP_RD_INDEX: Register = Register {
     },
     hw: Hw::Plain,
     fields: &[],
-    doc: "Sample CAP_DATA0..2 show, one cycle after the write.",
+    doc: "Sample CAP_DATA0..5 show, one cycle after the write.",
 };
 /// CAPTURE: read data, currents.
 pub const CAP_DATA0: Register = Register {
@@ -1921,11 +1927,96 @@ pub const CAP_DEPTH: Register = Register {
     doc: "Size of the ring.",
 };
 
+/// CAPTURE: PS-written multi-turn position.
+pub const CAP_IN_POS: Register = Register {
+    name: "CAP_IN_POS",
+    offset: 0x054,
+    access: Access::Rw,
+    width: 32,
+    reset: 0,
+    format: CAP_POS_FMT,
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Channel 6, multi-turn position, written by the PS every control period: the \
+          encoder steps since the last `pos zero`, each taken the shortest way round and \
+          summed in 64 bits (models::motion::PositionEstimator), of which this is the \
+          low 32 bits (a reader unwraps it by sample differences below 2^31 counts).",
+};
+/// CAPTURE: PS-written velocity estimate.
+pub const CAP_IN_VEL: Register = Register {
+    name: "CAP_IN_VEL",
+    offset: 0x058,
+    access: Access::Rw,
+    width: 32,
+    reset: 0,
+    format: CAP_VEL_FMT,
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Channel 7, velocity, written by the PS every control period: the estimate \
+          `status` shows (the tracking observer on the count, \
+          models::motion::PositionEstimator), rounded to nearest, saturated.",
+};
+/// CAPTURE: PS-written following error.
+pub const CAP_IN_FERR: Register = Register {
+    name: "CAP_IN_FERR",
+    offset: 0x05C,
+    access: Access::Rw,
+    width: 16,
+    reset: 0,
+    format: CAP_FERR_FMT,
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Channel 8, position reference minus position (0 in the torque loop), written \
+          by the PS every control period, rounded to nearest, saturated.",
+};
+/// CAPTURE: read data, position.
+pub const CAP_DATA3: Register = Register {
+    name: "CAP_DATA3",
+    offset: 0x060,
+    access: Access::Ro,
+    width: 32,
+    reset: 0,
+    format: CAP_POS_FMT,
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Channel 6 (position) of sample CAP_RD_INDEX.",
+};
+/// CAPTURE: read data, velocity.
+pub const CAP_DATA4: Register = Register {
+    name: "CAP_DATA4",
+    offset: 0x064,
+    access: Access::Ro,
+    width: 32,
+    reset: 0,
+    format: CAP_VEL_FMT,
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Channel 7 (velocity) of sample CAP_RD_INDEX.",
+};
+/// CAPTURE: read data, following error.
+pub const CAP_DATA5: Register = Register {
+    name: "CAP_DATA5",
+    offset: 0x068,
+    access: Access::Ro,
+    width: 16,
+    reset: 0,
+    format: CAP_FERR_FMT,
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "Channel 8 (following error) of sample CAP_RD_INDEX.",
+};
+
 /// Block 7.
 pub const CAPTURE: Block = Block {
     name: "CAPTURE",
     index: 7,
-    doc: "Triggered capture buffer (capture_buf): a ring of CAPTURE_DEPTH samples of six \
+    doc: "Triggered capture buffer (capture_buf): a ring of CAPTURE_DEPTH samples of nine \
           channels at the control rate, with pre-trigger.",
     registers: &[
         &CAP_SOURCE,
@@ -1948,6 +2039,12 @@ pub const CAPTURE: Block = Block {
         &CAP_DATA1,
         &CAP_DATA2,
         &CAP_DEPTH,
+        &CAP_IN_POS,
+        &CAP_IN_VEL,
+        &CAP_IN_FERR,
+        &CAP_DATA3,
+        &CAP_DATA4,
+        &CAP_DATA5,
     ],
 };
 

@@ -10414,7 +10414,7 @@ pub mod fault {
     }
 }
 
-/// Block 7 `CAPTURE` at `0x43C07000`: Triggered capture buffer (capture_buf): a ring of CAPTURE_DEPTH samples of six channels at the control rate, with pre-trigger.
+/// Block 7 `CAPTURE` at `0x43C07000`: Triggered capture buffer (capture_buf): a ring of CAPTURE_DEPTH samples of nine channels at the control rate, with pre-trigger.
 pub mod capture {
     use super::*;
 
@@ -11554,7 +11554,7 @@ pub mod capture {
         }
     }
 
-    /// `CAPTURE.CAP_RD_INDEX` at `0x43C07040` (RW, 10 bits, reset `0x0`): Sample CAP_DATA0..2 show, one cycle after the write.
+    /// `CAPTURE.CAP_RD_INDEX` at `0x43C07040` (RW, 10 bits, reset `0x0`): Sample CAP_DATA0..5 show, one cycle after the write.
     ///
     /// Format: unsigned, record index (0 = oldest). Writes: the hardware clamps the written word to 0..=1023 (so a value wider than the field is clamped, not wrapped).
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -11871,6 +11871,407 @@ pub mod capture {
     }
 
     impl Default for CapDepthValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_IN_POS` at `0x43C07054` (RW, 32 bits, reset `0x0`): Channel 6, multi-turn position, written by the PS every control period: the encoder steps since the last `pos zero`, each taken the shortest way round and summed in 64 bits (models::motion::PositionEstimator), of which this is the low 32 bits (a reader unwraps it by sample differences below 2^31 counts).
+    ///
+    /// Format: signed 32-bit two's complement, encoder counts (range +-2^31 counts: +-524288 rev at 4096 counts/rev), wraps. Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInPos;
+
+    impl CapInPos {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07054;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_IN_POS;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapInPosValue, BusError> {
+            bus.read(Self::ADDR).map(CapInPosValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapInPosValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapInPosValue) -> CapInPosValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapInPos`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInPosValue(u32);
+
+    impl CapInPosValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (signed 32-bit two's complement, encoder counts (range +-2^31 counts: +-524288 rev at 4096 counts/rev), wraps).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for CapInPosValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_IN_VEL` at `0x43C07058` (RW, 32 bits, reset `0x0`): Channel 7, velocity, written by the PS every control period: the estimate `status` shows (the tracking observer on the count, models::motion::PositionEstimator), rounded to nearest, saturated.
+    ///
+    /// Format: signed Q16.16 rev/s (32-bit two's complement, LSB 2^-16 rev/s, range -32768..+32767.99998 rev/s). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInVel;
+
+    impl CapInVel {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07058;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_IN_VEL;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapInVelValue, BusError> {
+            bus.read(Self::ADDR).map(CapInVelValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapInVelValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapInVelValue) -> CapInVelValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapInVel`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInVelValue(u32);
+
+    impl CapInVelValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (signed Q16.16 rev/s (32-bit two's complement, LSB 2^-16 rev/s, range -32768..+32767.99998 rev/s)).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for CapInVelValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_IN_FERR` at `0x43C0705C` (RW, 16 bits, reset `0x0`): Channel 8, position reference minus position (0 in the torque loop), written by the PS every control period, rounded to nearest, saturated.
+    ///
+    /// Format: signed Q12.4 counts (16-bit two's complement, LSB 1/16 count, range -2048..+2047.9375 counts). Writes: every value of the implemented bits is valid; bits above the width are dropped.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInFerr;
+
+    impl CapInFerr {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C0705C;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_IN_FERR;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapInFerrValue, BusError> {
+            bus.read(Self::ADDR).map(CapInFerrValue)
+        }
+
+        /// Writes `value` (one store).
+        pub fn write<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            value: CapInFerrValue,
+        ) -> Result<(), BusError> {
+            bus.write(Self::ADDR, value.0)
+        }
+
+        /// Reads, applies `f`, writes the result back (not atomic).
+        pub fn modify<B: RegisterBus + ?Sized>(
+            bus: &mut B,
+            f: impl FnOnce(CapInFerrValue) -> CapInFerrValue,
+        ) -> Result<(), BusError> {
+            let v = Self::read(bus)?;
+            Self::write(bus, f(v))
+        }
+    }
+
+    /// A value of [`CapInFerr`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapInFerrValue(u32);
+
+    impl CapInFerrValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed Q12.4 counts (16-bit two's complement, LSB 1/16 count, range -2048..+2047.9375 counts)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for CapInFerrValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_DATA3` at `0x43C07060` (RO, 32 bits, reset `0x0`): Channel 6 (position) of sample CAP_RD_INDEX.
+    ///
+    /// Format: signed 32-bit two's complement, encoder counts (range +-2^31 counts: +-524288 rev at 4096 counts/rev), wraps. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapData3;
+
+    impl CapData3 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07060;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_DATA3;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapData3Value, BusError> {
+            bus.read(Self::ADDR).map(CapData3Value)
+        }
+    }
+
+    /// A value of [`CapData3`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapData3Value(u32);
+
+    impl CapData3Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (signed 32-bit two's complement, encoder counts (range +-2^31 counts: +-524288 rev at 4096 counts/rev), wraps).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for CapData3Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_DATA4` at `0x43C07064` (RO, 32 bits, reset `0x0`): Channel 7 (velocity) of sample CAP_RD_INDEX.
+    ///
+    /// Format: signed Q16.16 rev/s (32-bit two's complement, LSB 2^-16 rev/s, range -32768..+32767.99998 rev/s). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapData4;
+
+    impl CapData4 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07064;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_DATA4;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapData4Value, BusError> {
+            bus.read(Self::ADDR).map(CapData4Value)
+        }
+    }
+
+    /// A value of [`CapData4`]; bits above bit 31 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapData4Value(u32);
+
+    impl CapData4Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 31:0, 32 bits): The whole register (signed Q16.16 rev/s (32-bit two's complement, LSB 2^-16 rev/s, range -32768..+32767.99998 rev/s)).
+        pub const fn value(self) -> u32 {
+            self.0
+        }
+
+        /// Sets `VALUE` (bits 31:0, 32 bits).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self(v)
+        }
+    }
+
+    impl Default for CapData4Value {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
+
+    /// `CAPTURE.CAP_DATA5` at `0x43C07068` (RO, 16 bits, reset `0x0`): Channel 8 (following error) of sample CAP_RD_INDEX.
+    ///
+    /// Format: signed Q12.4 counts (16-bit two's complement, LSB 1/16 count, range -2048..+2047.9375 counts). Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapData5;
+
+    impl CapData5 {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C07068;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::CAP_DATA5;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<CapData5Value, BusError> {
+            bus.read(Self::ADDR).map(CapData5Value)
+        }
+    }
+
+    /// A value of [`CapData5`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct CapData5Value(u32);
+
+    impl CapData5Value {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (signed Q12.4 counts (16-bit two's complement, LSB 1/16 count, range -2048..+2047.9375 counts)).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+
+        /// `VALUE` as a two's-complement number: bit 15 sign-extended.
+        pub const fn value_i32(self) -> i32 {
+            ((self.0 << 16) as i32) >> 16
+        }
+
+        /// Sets `VALUE` to `v` in two's complement, its low 16 bits (higher bits are dropped).
+        pub const fn with_value_i32(self, v: i32) -> Self {
+            Self((self.0 & !0xFFFF) | (v as u32 & 0xFFFF))
+        }
+    }
+
+    impl Default for CapData5Value {
         fn default() -> Self {
             Self::RESET
         }

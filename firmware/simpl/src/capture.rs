@@ -4,7 +4,9 @@
 //!
 //! Channel formats (register table): i_d, i_q in mA, torque and its
 //! reference in 0.1 mN m, 16-bit two's complement; the selectable channel is
-//! the low 16 bits of its register; the switching state 3 bits.
+//! the low 16 bits of its register; the switching state 3 bits; position in
+//! counts (32-bit two's complement, wraps), velocity Q16.16 rev/s (32 bits),
+//! following error Q12.4 counts (16 bits). The ring only stores them.
 
 use regmap::{cap_source, cap_state, CAPTURE_DEPTH};
 
@@ -13,7 +15,7 @@ pub const DEPTH: usize = CAPTURE_DEPTH as usize;
 const MASK: u16 = (DEPTH - 1) as u16;
 const DEPTH16: u16 = DEPTH as u16;
 
-/// One sample of the six channels (raw register bits).
+/// One sample of the nine channels (raw register bits).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Sample {
     /// i_d, mA (two's complement).
@@ -28,6 +30,12 @@ pub struct Sample {
     pub sel: u16,
     /// Switching state at the gate driver.
     pub sw: u8,
+    /// Multi-turn position, counts (`CAP_IN_POS`).
+    pub pos: u32,
+    /// Velocity, Q16.16 rev/s (`CAP_IN_VEL`).
+    pub vel: u32,
+    /// Following error, Q12.4 counts (`CAP_IN_FERR`).
+    pub ferr: u16,
 }
 
 impl Sample {

@@ -79,6 +79,9 @@ const S_CAP_IN_IQ: usize = slot_of(&CAPTURE, &rm::CAP_IN_IQ);
 const S_CAP_IN_TORQUE: usize = slot_of(&CAPTURE, &rm::CAP_IN_TORQUE);
 const S_CAP_IN_TREF: usize = slot_of(&CAPTURE, &rm::CAP_IN_TREF);
 const S_CAP_RD_INDEX: usize = slot_of(&CAPTURE, &rm::CAP_RD_INDEX);
+const S_CAP_IN_POS: usize = slot_of(&CAPTURE, &rm::CAP_IN_POS);
+const S_CAP_IN_VEL: usize = slot_of(&CAPTURE, &rm::CAP_IN_VEL);
+const S_CAP_IN_FERR: usize = slot_of(&CAPTURE, &rm::CAP_IN_FERR);
 
 const S_MPDCC_START: usize = slot_of(&MPDCC, &rm::MPDCC_START);
 const S_MPDCC_N_USE: usize = slot_of(&MPDCC, &rm::MPDCC_N_USE);
@@ -133,6 +136,9 @@ const A_CAP_DATA0: usize = CAPTURE.addr(&rm::CAP_DATA0);
 const A_CAP_DATA1: usize = CAPTURE.addr(&rm::CAP_DATA1);
 const A_CAP_DATA2: usize = CAPTURE.addr(&rm::CAP_DATA2);
 const A_CAP_DEPTH: usize = CAPTURE.addr(&rm::CAP_DEPTH);
+const A_CAP_DATA3: usize = CAPTURE.addr(&rm::CAP_DATA3);
+const A_CAP_DATA4: usize = CAPTURE.addr(&rm::CAP_DATA4);
+const A_CAP_DATA5: usize = CAPTURE.addr(&rm::CAP_DATA5);
 
 const DT_MAX: DeadTime = match DeadTime::new(DEAD_TIME_MAX_CYCLES) {
     Ok(d) => d,
@@ -418,6 +424,9 @@ impl SimPl {
                 tref: self.r(S_CAP_IN_TREF) as u16,
                 sel: sel as u16,
                 sw: c.state_sel,
+                pos: self.r(S_CAP_IN_POS),
+                vel: self.r(S_CAP_IN_VEL),
+                ferr: self.r(S_CAP_IN_FERR) as u16,
             },
             rd_index: self.r(S_CAP_RD_INDEX),
         }
@@ -782,6 +791,9 @@ impl SimPl {
             A_CAP_DATA1 => (u32::from(self.cap.rd.tref) << 16) | u32::from(self.cap.rd.torque),
             A_CAP_DATA2 => (u32::from(self.cap.rd.sel) << 16) | u32::from(self.cap.rd.sw),
             A_CAP_DEPTH => rm::CAP_DEPTH.reset,
+            A_CAP_DATA3 => self.cap.rd.pos,
+            A_CAP_DATA4 => self.cap.rd.vel,
+            A_CAP_DATA5 => u32::from(self.cap.rd.ferr),
             _ => return slot(addr).map(|s| self.r(s)),
         };
         Some(v)

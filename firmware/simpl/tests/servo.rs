@@ -183,7 +183,7 @@ fn capture_records_a_step_with_pre_trigger() {
     let (mut s, mut sim) = setup(Mode::Mpdtc);
     let n = (2.5e-3 * s.control_rate_hz()) as u32;
     run(&mut s, &mut sim, n, |_| false);
-    s.capture_arm(&mut sim, Trigger::RefStep(0.05), 100)
+    s.capture_arm(&mut sim, Trigger::RefStep(0.05), 100, 1)
         .unwrap();
     run(&mut s, &mut sim, 200, |_| false);
     assert_eq!(s.capture_status(&mut sim).unwrap().state, CapState::Armed);
@@ -224,7 +224,7 @@ fn sweep_points_on_the_simulated_pl() {
             s.sine_start(&mut sim, f, 0.2).unwrap();
             let n = (Servo::sine_settle_s(f) * s.control_rate_hz()) as u32;
             run(&mut s, &mut sim, n, |_| false);
-            s.capture_arm(&mut sim, drive::pl::capture::Trigger::Manual, 0)
+            s.capture_arm(&mut sim, drive::pl::capture::Trigger::Manual, 0, 1)
                 .unwrap();
             s.capture_trigger(&mut sim).unwrap();
             run(&mut s, &mut sim, 1100, |_| false);

@@ -96,7 +96,7 @@ fn unmapped_and_unaligned_addresses_answer_slverr() {
     let mut sim = PlTopSim::new();
     // Holes between and after registers (MPDCC page too), an unaligned offset.
     for a in [
-        0x2044u16, 0x2114, 0x702C, 0x7054, 0x001C, 0x0FFC, 0x3002, 0x6010, 0x1038, 0x1088, 0x1094,
+        0x2044u16, 0x2114, 0x702C, 0x706C, 0x001C, 0x0FFC, 0x3002, 0x6010, 0x1038, 0x1088, 0x1094,
     ] {
         assert_eq!(sim.read(a), (0, SLVERR), "read {a:#06x}");
         assert_eq!(sim.write(a, 0xFFFF_FFFF), SLVERR, "write {a:#06x}");

@@ -52,6 +52,9 @@ struct Pair {
     cap_data: u64,
     /// Reads of CAP_STATUS in state DONE.
     cap_done: u64,
+    /// Reads of CAP_DATA3..5 (position, velocity, following error) that
+    /// returned a nonzero sample.
+    cap_motion: u64,
     /// The simulated PL's answer to the last read.
     last_read: Result<u32, BusError>,
     /// MPDCC decisions read through the driver, by kind (kept, optimal,
@@ -81,6 +84,7 @@ impl Pair {
             log: Vec::new(),
             cap_data: 0,
             cap_done: 0,
+            cap_motion: 0,
             last_read: Ok(0),
             mc_kinds: [0; 3],
             auto_cycles: 0,
@@ -168,6 +172,9 @@ impl Pair {
             let n = name(rel);
             if n.starts_with("CAP_DATA") && v != 0 {
                 self.cap_data += 1;
+                if matches!(n, "CAP_DATA3" | "CAP_DATA4" | "CAP_DATA5") {
+                    self.cap_motion += 1;
+                }
             }
             if n == "CAP_STATUS" && v & 3 == rm::cap_state::DONE {
                 self.cap_done += 1;
@@ -505,6 +512,11 @@ fn run(seed: u64, ops: usize) -> Pair {
                         let v = rng.range(-200, 200) * (1 + (rng.next_u64() % 2) as i32 * 100);
                         p.write(rel(&rm::CAPTURE, r), v as u32 & 0xFFFF);
                     }
+                    // Position, velocity, following error: full-width
+                    // words (the register file masks the 16-bit one).
+                    for r in [&rm::CAP_IN_POS, &rm::CAP_IN_VEL, &rm::CAP_IN_FERR] {
+                        p.write(rel(&rm::CAPTURE, r), rng.next_u64() as u32);
+                    }
                     p.write(rel(&rm::MPDTC, &rm::MPDTC_START), rng.next_u64() as u32);
                 }
             }
@@ -617,14 +629,16 @@ fn simulated_pl_equals_verilated_pl_top() {
     assert!(p.reads > 1000 && p.writes > 1000);
     // The capture buffer completed records and its data was read.
     println!(
-        "capture: {} CAP_STATUS reads in DONE, {} nonzero CAP_DATA reads",
-        p.cap_done, p.cap_data
+        "capture: {} CAP_STATUS reads in DONE, {} nonzero CAP_DATA reads ({} of position, \
+         velocity, following error)",
+        p.cap_done, p.cap_data, p.cap_motion
     );
     assert!(
-        p.cap_done > 5 && p.cap_data > 100,
-        "capture: {} done, {} data",
+        p.cap_done > 5 && p.cap_data > 100 && p.cap_motion > 20,
+        "capture: {} done, {} data, {} motion data",
         p.cap_done,
-        p.cap_data
+        p.cap_data,
+        p.cap_motion
     );
     // MPDCC decisions of every kind went through the page.
     println!(

@@ -151,6 +151,10 @@ pub struct Row {
     pub torque_ref_nm: f64,
     pub sw: u8,
     pub adc_ia_raw: i32,
+    /// Multi-turn position modulo 2^32 as the drive wrote it, counts.
+    pub position_counts: i32,
+    pub velocity_rev_s: f64,
+    pub following_error_counts: f64,
 }
 
 /// Parses the `capture dump` reply (header, then CSV rows).
@@ -162,7 +166,7 @@ pub fn parse_dump(r: &Reply) -> Result<Vec<Row>> {
     }
     it.map(|l| {
         let v: Vec<&str> = l.split(',').collect();
-        if v.len() != 7 {
+        if v.len() != 10 {
             bail!("bad capture row {l:?}");
         }
         let f = |i: usize| -> Result<f64> {
@@ -176,13 +180,16 @@ pub fn parse_dump(r: &Reply) -> Result<Vec<Row>> {
             torque_ref_nm: f(4)?,
             sw: v[5].parse()?,
             adc_ia_raw: v[6].parse()?,
+            position_counts: v[7].parse()?,
+            velocity_rev_s: f(8)?,
+            following_error_counts: f(9)?,
         })
     })
     .collect()
 }
 
 /// Waits for a complete record, then dumps it.
-fn wait_and_dump(s: &mut Session, timeout_s: f64, quiet: bool) -> Result<Vec<Row>> {
+pub(crate) fn wait_and_dump(s: &mut Session, timeout_s: f64, quiet: bool) -> Result<Vec<Row>> {
     let pb = spinner("capture: waiting for the record", quiet);
     let t0 = std::time::Instant::now();
     loop {

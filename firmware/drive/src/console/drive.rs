@@ -303,9 +303,9 @@ pub trait DriveOps {
     fn reconfigure(&mut self, _cfg: &ServoConfig) -> Result<(), DriveError> {
         Err(DriveError::Unsupported)
     }
-    /// Arms the capture buffer at the control rate with `pre` samples
-    /// before the trigger.
-    fn capture_arm(&mut self, _t: Trigger, _pre: u32) -> Result<(), DriveError> {
+    /// Arms the capture buffer with `pre` samples before the trigger and
+    /// one sample every `every` control periods.
+    fn capture_arm(&mut self, _t: Trigger, _pre: u32, _every: u32) -> Result<(), DriveError> {
         Err(DriveError::Unsupported)
     }
     /// Manual capture trigger.

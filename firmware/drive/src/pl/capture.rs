@@ -4,13 +4,21 @@
 //!
 //! Channel formats (the register table's): currents in mA, torques in
 //! 0.1 mN m, 16-bit two's complement, saturated at the ends when written
-//! (+-32.767 A, +-3.2767 N m), rounded to nearest.
+//! (+-32.767 A, +-3.2767 N m), rounded to nearest. Position: the
+//! multi-turn count since the last `pos zero` (an `i64` on the PS) modulo
+//! 2^32, 32-bit two's complement; a reader unwraps it by the difference of
+//! consecutive samples (less than 2^31 counts apart at any speed the
+//! estimator reads). Velocity: Q16.16 rev/s (32-bit two's complement, LSB
+//! 2^-16 rev/s, +-32768 rev/s), following error: Q12.4 counts (16-bit, LSB
+//! 1/16 count, -2048..+2047.9375 counts); both rounded to nearest and
+//! saturated at the ends, NaN written as 0.
 use regmap::bus::{BusError, RegisterBus};
 use regmap::regs::capture::{
-    self as r, CapArm, CapArmValue, CapData0, CapData1, CapData2, CapDecim, CapDecimValue, CapInId,
-    CapInIdValue, CapInIq, CapInIqValue, CapInTorque, CapInTorqueValue, CapInTref, CapInTrefValue,
-    CapPre, CapPreValue, CapRdIndex, CapRdIndexValue, CapSource, CapSourceValue, CapStep,
-    CapStepValue, CapThrCh, CapThrChValue, CapThrEdge, CapThrEdgeValue, CapThrLevel,
+    self as r, CapArm, CapArmValue, CapData0, CapData1, CapData2, CapDecim, CapDecimValue,
+    CapInFerr, CapInFerrValue, CapInId, CapInIdValue, CapInIq, CapInIqValue, CapInPos,
+    CapInPosValue, CapInTorque, CapInTorqueValue, CapInTref, CapInTrefValue, CapInVel,
+    CapInVelValue, CapPre, CapPreValue, CapRdIndex, CapRdIndexValue, CapSource, CapSourceValue,
+    CapStep, CapStepValue, CapThrCh, CapThrChValue, CapThrEdge, CapThrEdgeValue, CapThrLevel,
     CapThrLevelValue, CapTrig, CapTrigValue,
 };
 use regmap::{cap_source, cap_state, CAPTURE_DEPTH};
@@ -19,6 +27,10 @@ use regmap::{cap_source, cap_state, CAPTURE_DEPTH};
 pub const CURRENT_LSB_A: f64 = 1e-3;
 /// Torque channel resolution, N m per LSB.
 pub const TORQUE_LSB_NM: f64 = 1e-4;
+/// Velocity channel resolution (Q16.16), rev/s per LSB.
+pub const VELOCITY_LSB_REV_S: f64 = 1.0 / 65536.0;
+/// Following-error channel resolution (Q12.4), counts per LSB.
+pub const FERR_LSB_COUNTS: f64 = 1.0 / 16.0;
 /// Samples in the ring.
 pub const DEPTH: u32 = CAPTURE_DEPTH;
 
@@ -85,9 +97,29 @@ impl Channel {
 /// `x / lsb` rounded to nearest and saturated to 16-bit two's complement;
 /// NaN gives 0.
 fn quantize(x: f64, lsb: f64) -> u16 {
-    let v = libm::round(x / lsb);
+    quantize32(x, lsb).clamp(i32::from(i16::MIN), i32::from(i16::MAX)) as i16 as u16
+}
+
+/// `x / lsb` rounded to nearest (half away from zero) and saturated to
+/// 32-bit two's complement; NaN gives 0.
+fn quantize32(x: f64, lsb: f64) -> i32 {
     // `as` saturates and maps NaN to 0.
-    (v.clamp(f64::from(i16::MIN), f64::from(i16::MAX)) as i16) as u16
+    libm::round(x / lsb) as i32
+}
+
+/// Velocity, rev/s, to the `CAP_IN_VEL` word (Q16.16).
+pub fn encode_velocity(v_rev_s: f64) -> u32 {
+    quantize32(v_rev_s, VELOCITY_LSB_REV_S) as u32
+}
+
+/// Following error, counts, to the `CAP_IN_FERR` bits (Q12.4).
+pub fn encode_following_error(e_counts: f64) -> u16 {
+    quantize(e_counts, FERR_LSB_COUNTS)
+}
+
+/// Multi-turn count to the `CAP_IN_POS` word (its low 32 bits).
+pub fn encode_position(counts: i64) -> u32 {
+    counts as u32
 }
 
 /// What starts the post-trigger part of a record.
@@ -161,6 +193,12 @@ pub struct CapSample {
     pub sw: u8,
     /// Selectable channel, raw 16 bits (`CAP_SEL`, reset: `ADC_IA`).
     pub sel: u16,
+    /// Multi-turn position modulo 2^32, counts.
+    pub position_counts: i32,
+    /// Velocity, rev/s.
+    pub velocity_rev_s: f64,
+    /// Position reference minus position, counts.
+    pub following_error_counts: f64,
 }
 
 fn signed(bits: u32) -> f64 {
@@ -202,6 +240,12 @@ impl<B: RegisterBus> Capture<B> {
         CapPre::write(b, CapPreValue::ZERO.with_value(pre.min(DEPTH - 1)))?;
         CapDecim::write(b, CapDecimValue::ZERO.with_value(u32::from(decim)))?;
         CapArm::write(b, CapArmValue::ZERO.with_value(true))
+    }
+
+    /// Starts the armed record again with the latched settings (a
+    /// `CAP_ARM` write: the ring empties, `CAP_PRE` is latched again).
+    pub fn restart(&mut self) -> Result<(), BusError> {
+        CapArm::write(&mut self.0, CapArmValue::ZERO.with_value(true))
     }
 
     /// Manual trigger (taken at the next sample while armed).
@@ -247,6 +291,27 @@ impl<B: RegisterBus> Capture<B> {
         )
     }
 
+    /// The outer loops' channels of this control period: multi-turn
+    /// count, velocity (rev/s), following error (counts).
+    pub fn write_motion(
+        &mut self,
+        counts: i64,
+        velocity_rev_s: f64,
+        following_error_counts: f64,
+    ) -> Result<(), BusError> {
+        let b = &mut self.0;
+        CapInPos::write(b, CapInPosValue::ZERO.with_value(encode_position(counts)))?;
+        CapInVel::write(
+            b,
+            CapInVelValue::ZERO.with_value(encode_velocity(velocity_rev_s)),
+        )?;
+        CapInFerr::write(
+            b,
+            CapInFerrValue::ZERO
+                .with_value(u32::from(encode_following_error(following_error_counts))),
+        )
+    }
+
     /// Sample `index` of the record (0 = oldest).
     pub fn sample(&mut self, index: u32) -> Result<CapSample, BusError> {
         let b = &mut self.0;
@@ -258,6 +323,9 @@ impl<B: RegisterBus> Capture<B> {
         let d0 = CapData0::read(b)?;
         let d1 = CapData1::read(b)?;
         let d2 = CapData2::read(b)?;
+        let d3 = r::CapData3::read(b)?;
+        let d4 = r::CapData4::read(b)?;
+        let d5 = r::CapData5::read(b)?;
         Ok(CapSample {
             i_d_a: signed(d0.i_d()) * CURRENT_LSB_A,
             i_q_a: signed(d0.i_q()) * CURRENT_LSB_A,
@@ -265,6 +333,9 @@ impl<B: RegisterBus> Capture<B> {
             torque_ref_nm: signed(d1.tref()) * TORQUE_LSB_NM,
             sw: d2.sw() as u8,
             sel: d2.sel() as u16,
+            position_counts: d3.value() as i32,
+            velocity_rev_s: f64::from(d4.value() as i32) * VELOCITY_LSB_REV_S,
+            following_error_counts: signed(d5.value()) * FERR_LSB_COUNTS,
         })
     }
 }
@@ -284,5 +355,25 @@ mod tests {
         assert_eq!(Channel::Torque.encode(f64::NAN), 0);
         assert_eq!(Channel::from_name("i_q"), Some(Channel::Iq));
         assert_eq!(Channel::from_name("iq"), None);
+    }
+
+    #[test]
+    fn motion_channels_round_saturate_and_wrap() {
+        // Q16.16: 1.5 rev/s is 0x18000; half an LSB rounds away from 0.
+        assert_eq!(encode_velocity(1.5), 0x0001_8000);
+        assert_eq!(encode_velocity(-1.0), 0xFFFF_0000);
+        assert_eq!(encode_velocity(0.5 / 65536.0), 1);
+        assert_eq!(encode_velocity(1e9), 0x7FFF_FFFF);
+        assert_eq!(encode_velocity(-1e9), 0x8000_0000);
+        assert_eq!(encode_velocity(f64::NAN), 0);
+        // Q12.4 counts.
+        assert_eq!(encode_following_error(2.5), 40);
+        assert_eq!(encode_following_error(-0.03), 0);
+        assert_eq!(encode_following_error(-0.04), 0xFFFF);
+        assert_eq!(encode_following_error(5000.0), 0x7FFF);
+        assert_eq!(encode_following_error(-5000.0), 0x8000);
+        // Position: the low 32 bits of the multi-turn count.
+        assert_eq!(encode_position(-1), 0xFFFF_FFFF);
+        assert_eq!(encode_position((1 << 32) + 7), 7);
     }
 }

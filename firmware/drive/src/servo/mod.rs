@@ -16,7 +16,7 @@
 //!   15.985 kHz, the paper's 16 kHz within 0.1 %) is exactly 4 averaged
 //!   ADC results.
 use crate::pl::adc::{Adc, AdcScale};
-use crate::pl::capture::Capture;
+use crate::pl::capture::{CapState, Capture};
 use crate::pl::enc::Encoder;
 use crate::pl::fault::{Fault, Faults};
 use crate::pl::mpdtc::{frontend_params, torque_ref_word, FrontendSetup, Mpdtc};
@@ -298,6 +298,8 @@ pub struct Servo {
     sensors_ok: bool,
     /// The outer loops and the multi-turn position.
     motion: Motion,
+    /// Control periods per capture sample of the record armed last.
+    cap_every: u32,
 }
 
 impl Servo {
@@ -375,6 +377,7 @@ impl Servo {
             evidence_skip: EVIDENCE_SKIP,
             sensors_ok: false,
             motion: Motion::new(cfg.enc_cpr)?,
+            cap_every: 1,
         })
     }
 
@@ -749,9 +752,18 @@ impl Servo {
         self.need_gates(bus)?;
         self.rec.cancel();
         self.sine = None;
-        Ok(self
-            .motion
-            .begin_move(&self.cfg.motion, distance, window_s)?)
+        self.motion
+            .begin_move(&self.cfg.motion, distance, window_s)?;
+        // An armed capture record starts with the move: re-armed (the ring
+        // empties, the decimation counter restarts) and triggered, so that
+        // sample j of the record is taken at the (j + 1) x every-th
+        // sample strobe after this command, a fixed offset from the move.
+        let mut cap = Capture(&mut *bus);
+        if cap.status()?.state == CapState::Armed {
+            cap.restart()?;
+            cap.trigger()?;
+        }
+        Ok(())
     }
 
     /// `pos zero`.
@@ -1150,6 +1162,8 @@ impl Servo {
         // that the MPDTC core's inputs go out first).
         let me = self.measured;
         Capture(&mut *bus).write_channels(me.i_d_a, me.i_q_a, me.torque_nm, self.torque_ref_nm)?;
+        let ms = self.motion.status();
+        Capture(&mut *bus).write_motion(ms.counts, ms.velocity_rev_s, ms.following_error_counts)?;
         Ok(())
     }
 

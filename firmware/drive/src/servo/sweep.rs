@@ -98,29 +98,34 @@ pub fn bandwidth_hz(points: &[SweepPoint]) -> Option<f64> {
 }
 
 impl Servo {
-    /// Averaged ADC results per capture sample, less one: one sample per
-    /// control period of the active mode.
+    /// Averaged ADC results per capture sample, less one: one sample
+    /// every `self.cap_every` control periods of the active mode, at most
+    /// 256 averaged results per sample (`CAP_DECIM` is 8 bits).
     fn capture_decim(&self) -> u8 {
         let per_result =
             4.0 * f64::from(self.cfg.adc_period_cycles.max(1)) / f64::from(regmap::PL_CLOCK_HZ);
         let k = libm::round(self.control_period_s() / per_result) as i64;
-        (k - 1).clamp(0, 255) as u8
+        (k.max(1) * i64::from(self.cap_every.max(1)) - 1).clamp(0, 255) as u8
     }
 
-    /// Time between two capture samples of a record armed now, s.
+    /// Time between two capture samples of the record armed last, s.
     pub fn capture_period_s(&self) -> f64 {
         let per_result =
             4.0 * f64::from(self.cfg.adc_period_cycles.max(1)) / f64::from(regmap::PL_CLOCK_HZ);
         per_result * f64::from(self.capture_decim() + 1)
     }
 
-    /// Arms a record at the control rate of the active mode.
+    /// Arms a record with one sample every `every` control periods of the
+    /// active mode (1: the control rate; clamped to 256 averaged ADC
+    /// results per sample, [`Self::capture_period_s`] says what it is).
     pub fn capture_arm<B: RegisterBus>(
         &mut self,
         bus: &mut B,
         trigger: Trigger,
         pre: u32,
+        every: u32,
     ) -> Result<(), ServoError> {
+        self.cap_every = every.max(1);
         let decim = self.capture_decim();
         Ok(Capture(bus).arm(trigger, pre, decim)?)
     }

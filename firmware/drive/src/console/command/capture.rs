@@ -8,24 +8,29 @@ use core::fmt::{self, Write};
 /// The `capture` command.
 pub const CAPTURE: Spec = Spec {
     name: "capture",
-    args: "arm <trigger> [<pre_samples>]|trigger|status|dump",
+    args: "arm <trigger> [<pre_samples> [<every>]]|trigger|status|dump",
     help: "PL capture buffer at the control rate (1024 samples: i_d, i_q [A], torque, \
-           torque_ref [Nm], switching state, ADC_IA): `arm` with trigger manual, step \
-           (reference step >= 0.05 Nm), fault, or <channel>>x / <channel><x (channel i_d, \
-           i_q [A], torque, torque_ref [Nm]) and pre-trigger samples (default 64, at most \
-           1023); `trigger` triggers by hand; `status`; `dump` prints the record as CSV",
+           torque_ref [Nm], switching state, ADC_IA, position [counts], velocity [rev/s], \
+           following error [counts]): `arm` with trigger manual, step (reference step >= \
+           0.05 Nm), fault, or <channel>>x / <channel><x (channel i_d, i_q [A], torque, \
+           torque_ref [Nm]), pre-trigger samples (default 64, at most 1023) and one sample \
+           every <every> control periods (1..=256, default 1; at most 256 ADC results); a \
+           `move` triggers an armed record at its start; `trigger` triggers by hand; \
+           `status`; `dump` prints the record as CSV",
 };
 
 /// Default pre-trigger length of `capture arm`, samples.
 pub const CAPTURE_PRE_DEFAULT: u32 = 64;
+/// Largest `every` of `capture arm` (`CAP_DECIM` + 1 is at most 256).
+pub const CAPTURE_EVERY_MAX: u32 = 256;
 /// Reference step that triggers `capture arm step`, N m.
 pub const CAPTURE_STEP_NM: f64 = 0.05;
 
 /// A `capture` subcommand.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum CaptureCmd {
-    /// `capture arm <trigger> [pre]`.
-    Arm(Trigger, u32),
+    /// `capture arm <trigger> [pre [every]]`.
+    Arm(Trigger, u32, u32),
     /// `capture trigger`.
     Trigger,
     /// `capture status`.
@@ -64,15 +69,15 @@ pub fn parse<'a>(args: &[&'a str]) -> Result<CaptureCmd, ParseError<'a>> {
         ["trigger"] => Ok(CaptureCmd::Trigger),
         ["status"] => Ok(CaptureCmd::Status),
         ["dump"] => Ok(CaptureCmd::Dump),
-        ["arm", t, rest @ ..] if rest.len() <= 1 => {
+        ["arm", t, rest @ ..] if rest.len() <= 2 => {
             let t = capture_trigger(t).ok_or(ParseError::BadArgs(
                 "capture",
                 "trigger must be manual, step, fault or <channel>>x / <channel><x with channel \
                  i_d, i_q, torque or torque_ref and a finite level",
             ))?;
-            let pre = match rest {
-                [] => CAPTURE_PRE_DEFAULT,
-                [p] => match p.parse::<u32>() {
+            let pre = match rest.first() {
+                None => CAPTURE_PRE_DEFAULT,
+                Some(p) => match p.parse::<u32>() {
                     Ok(p) if p < pl_capture::DEPTH => p,
                     _ => {
                         return Err(ParseError::BadArgs(
@@ -81,9 +86,20 @@ pub fn parse<'a>(args: &[&'a str]) -> Result<CaptureCmd, ParseError<'a>> {
                         ))
                     }
                 },
-                _ => unreachable!(),
             };
-            Ok(CaptureCmd::Arm(t, pre))
+            let every = match rest.get(1) {
+                None => 1,
+                Some(e) => match e.parse::<u32>() {
+                    Ok(e @ 1..=CAPTURE_EVERY_MAX) => e,
+                    _ => {
+                        return Err(ParseError::BadArgs(
+                            "capture",
+                            "every must be a whole number of control periods in 1..=256",
+                        ))
+                    }
+                },
+            };
+            Ok(CaptureCmd::Arm(t, pre, every))
         }
         _ => Err(ParseError::BadArgs("capture", USAGE)),
     }
@@ -96,9 +112,14 @@ pub fn execute<W: Write>(
     out: &mut W,
 ) -> Result<Outcome, fmt::Error> {
     match c {
-        CaptureCmd::Arm(t, pre) => {
-            try_drive!(out, "capture", drv.capture_arm(t, pre));
+        CaptureCmd::Arm(t, pre, every) => {
+            try_drive!(out, "capture", drv.capture_arm(t, pre, every));
             write!(out, "capture: armed, pre {pre} samples\r\n")?;
+            write!(
+                out,
+                "sample_period: {:.3} us\r\n",
+                drv.capture_period_s() * 1e6
+            )?;
         }
         CaptureCmd::Trigger => {
             try_drive!(out, "capture", drv.capture_trigger());
@@ -129,14 +150,25 @@ pub fn execute<W: Write>(
                 return Ok(Outcome::Final);
             }
             let ts = drv.capture_period_s();
-            out.write_str("t_ms,i_d_A,i_q_A,torque_Nm,torque_ref_Nm,sw_state,adc_ia_raw\r\n")?;
+            out.write_str(
+                "t_ms,i_d_A,i_q_A,torque_Nm,torque_ref_Nm,sw_state,adc_ia_raw,position_counts,\
+                 velocity_rev_s,following_error_counts\r\n",
+            )?;
             for i in 0..st.count {
                 let x = try_drive!(out, "capture", drv.capture_sample(i));
                 let t = (f64::from(i) - f64::from(st.trig_index)) * ts * 1e3;
                 write!(
                     out,
-                    "{t:.4},{:.3},{:.3},{:.4},{:.4},{},{}\r\n",
-                    x.i_d_a, x.i_q_a, x.torque_nm, x.torque_ref_nm, x.sw, x.sel as i16
+                    "{t:.4},{:.3},{:.3},{:.4},{:.4},{},{},{},{:.5},{:.4}\r\n",
+                    x.i_d_a,
+                    x.i_q_a,
+                    x.torque_nm,
+                    x.torque_ref_nm,
+                    x.sw,
+                    x.sel as i16,
+                    x.position_counts,
+                    x.velocity_rev_s,
+                    x.following_error_counts
                 )?;
             }
         }

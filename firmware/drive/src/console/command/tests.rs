@@ -199,6 +199,7 @@ fn every_table_entry_parses() {
             .replace("<f>", "adc-stuck")
             .replace("<trigger>", "torque>0.2")
             .replace("<pre_samples>", "10")
+            .replace("<every>", "4")
             .replace("<f_start_hz>", "100")
             .replace("<f_stop_hz>", "1000")
             .replace("<amplitude_nm>", "0.1")
