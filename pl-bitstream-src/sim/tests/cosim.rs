@@ -37,16 +37,26 @@ fn mpdtc_step<P: PlModel>(sim: &mut SimDrive<P>) -> (StepResult, Vec<u8>) {
     s.enable(sim).unwrap();
     s.begin_step(sim, 0.4, 2e-3).unwrap();
     let mut decisions = Vec::new();
+    // A step's decision is read at the next boundary, when the core has
+    // surely finished it: read within the step, it would depend on how
+    // many bus cycles the step's other accesses took, which differ
+    // between the two PLs' bus models.
+    let mut decided = false;
     for _ in 0..1000 {
         let a = sim.advance_to_boundary(20_000);
         assert!(a.control_periods >= 1, "no boundary in 200 us");
-        s.control_step(&mut *sim).unwrap();
-        if s.torque_ref_nm() != 0.0 {
+        if decided {
             decisions.push(Mpdtc(&mut *sim).last_decision().unwrap());
         }
+        s.control_step(&mut *sim).unwrap();
+        decided = s.torque_ref_nm() != 0.0;
         if !s.step_pending() {
             break;
         }
+    }
+    if decided {
+        sim.advance_to_boundary(20_000);
+        decisions.push(Mpdtc(&mut *sim).last_decision().unwrap());
     }
     assert_eq!(s.overruns(), 0);
     (s.step_result().expect("step completed"), decisions)
