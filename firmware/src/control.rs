@@ -162,7 +162,7 @@ fn with<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
 /// change the period (the next tick was planned with the old one), so the
 /// PL is synced and the next tick planned again.
 fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
-    let (r, raise) = crate::irq::free(|| {
+    let r = crate::irq::free(|| {
         let mut st = STATE.0.try_borrow_mut().ok()?;
         let s = st.as_mut()?;
         let before = match &s.bus {
@@ -171,6 +171,19 @@ fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
         };
         let r = f(s);
         let mut raise = false;
+        // The simulated PL: a boundary that this section's register
+        // accesses crossed is served at its end, as a board takes the
+        // control interrupt as soon as the accesses end. Left to the next
+        // PL tick, a second section (an `mpdcc run` decision of up to 927
+        // cycles each) could cross the next boundary first: a missed step.
+        if let Backend::Sim(sim) = &mut s.bus {
+            if sim.boundaries_crossed() > 0 {
+                let n = sim.advance(0).control_periods;
+                let line = sim.pl().irq_line();
+                s.last_boundary = None;
+                raise = s.serve(n) && line;
+            }
+        }
         if let (Some(before), Backend::Cosim(c)) = (before, &s.bus) {
             if c.last.pl_cycles != before {
                 let n = s.cosim_sync(timer::global_count());
@@ -180,11 +193,13 @@ fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
                 }
             }
         }
-        Some((r, raise))
+        if raise {
+            // Pending before the interrupts are back on: a PL tick taken
+            // in between would advance past the next boundary first.
+            gic::set_pending(IRQ_CONTROL);
+        }
+        Some(r)
     })?;
-    if raise {
-        gic::set_pending(IRQ_CONTROL);
-    }
     Some(r)
 }
 
@@ -289,7 +304,11 @@ pub fn init() -> Boot {
                     store,
                 });
             });
-            gic::enable(IRQ_CONTROL);
+            // Above the PL tick (IRQ 27, which at equal priority would win
+            // by its lower ID): a pending control step runs before the
+            // tick advances the simulated PL to the next boundary, which
+            // would count the pending one as missed.
+            gic::enable_at(IRQ_CONTROL, gic::PRIORITY_HIGH);
             if !matches!(pl_kind, PlKind::Bitstream(_)) {
                 // The PL model's time under QEMU.
                 gic::enable(gic::IRQ_GLOBAL_TIMER);
@@ -320,6 +339,12 @@ pub fn on_pl_tick() {
     let now = timer::global_count();
     let raise = with(|s| {
         s.tick_start = now;
+        if s.control_pending && gic::is_pending(IRQ_CONTROL) {
+            // The control step runs first (it has the higher priority and
+            // plans the next tick): advancing the PL now would count its
+            // boundary as missed.
+            return false;
+        }
         let boundaries = match &mut s.bus {
             // Up to the next control-period boundary (at most two periods).
             Backend::Sim(sim) => {

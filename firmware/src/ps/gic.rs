@@ -47,12 +47,24 @@ pub fn init() {
     }
 }
 
+/// The priority of [`enable`]: the middle of the range.
+pub const PRIORITY_DEFAULT: u8 = 0xA0;
+/// A priority above [`PRIORITY_DEFAULT`] (a lower value is taken first).
+pub const PRIORITY_HIGH: u8 = 0x90;
+
 /// Routes `id` to CPU0 at a middle priority and enables it.
 pub fn enable(id: u32) {
+    enable_at(id, PRIORITY_DEFAULT);
+}
+
+/// Routes `id` to CPU0 at `priority` and enables it. Handlers do not nest:
+/// the priority only decides which of two pending interrupts is taken
+/// first (at equal priority, the lower ID).
+pub fn enable_at(id: u32, priority: u8) {
     let id = id as usize;
     // SAFETY: per-interrupt configuration registers of a valid ID.
     unsafe {
-        reg8(DIST + ICDIPR + id).write(0xA0);
+        reg8(DIST + ICDIPR + id).write(priority);
         if id >= 32 {
             reg8(DIST + ICDIPTR + id).write(0x01);
         }
@@ -83,4 +95,12 @@ pub fn set_pending(id: u32) {
     let id = id as usize;
     // SAFETY: the set-pending register of a valid ID; writing 1 sets only it.
     unsafe { reg(DIST + ICDISPR + 4 * (id / 32)).write(1 << (id % 32)) };
+}
+
+/// Whether interrupt `id` is pending in the distributor (`GICD_ISPENDR`
+/// reads the pending bits).
+pub fn is_pending(id: u32) -> bool {
+    let id = id as usize;
+    // A read of the set-pending register has no side effect.
+    reg(DIST + ICDISPR + 4 * (id / 32)).read() & (1 << (id % 32)) != 0
 }
