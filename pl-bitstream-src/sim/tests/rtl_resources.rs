@@ -34,7 +34,6 @@ fn num(cell: &str) -> f64 {
 }
 
 #[test]
-#[ignore = "until `scripts/rtl-synth pl_top` has run on the current build (over an hour)"]
 fn pl_top_fits_the_xc7z020_with_margin() {
     let doc = repo_file("docs/rtl-resources-pl-top.md");
     let c = row(&doc, "pl_top");
@@ -47,7 +46,6 @@ fn pl_top_fits_the_xc7z020_with_margin() {
 }
 
 #[test]
-#[ignore = "until `scripts/rtl-synth pl_top` has run with the Yosys of scripts/yosys"]
 fn one_yosys_for_every_resource_table() {
     let a = repo_file("docs/rtl-resources-pl-top.md");
     for doc in ["docs/mpdcc-rtl-table.md", "docs/rtl-resources.md"] {
