@@ -42,12 +42,15 @@ fn experiment_move_plots_the_drives_capture_beside_the_host_run() {
     assert!((f("/capture/travel_counts") - 4096.0).abs() <= 1.0, "{r}");
     assert!((f("/capture/max_velocity_rev_s") - 20.0).abs() < 0.5, "{r}");
     // Drive against host, sample by sample: within the position change of
-    // half a sample period at 20 rev/s (the alignment's resolution) plus a
-    // count, the velocity within 1 rev/s (the estimator's quantisation ripple), the
-    // following error within 3 counts.
-    let half_sample_counts = 20.0 * 4096.0 * f("/capture/sample_period_us") * 1e-6 / 2.0;
+    // one sample period at 20 rev/s plus a count (the alignment picks the
+    // sample nearest the trajectory's start, and the drive's start within
+    // a sample varies: in MPDTC it comes 1.6 to 1.8 ms after the trigger,
+    // measured 5 to 7 counts apart), the velocity within 1 rev/s (the
+    // estimator's quantisation ripple), the following error within 3
+    // counts.
+    let sample_counts = 20.0 * 4096.0 * f("/capture/sample_period_us") * 1e-6;
     assert!(
-        f("/capture/max_position_diff_counts") <= half_sample_counts + 1.0,
+        f("/capture/max_position_diff_counts") <= sample_counts + 1.0,
         "{r}"
     );
     assert!(f("/capture/max_velocity_diff_rev_s") <= 1.0, "{r}");
