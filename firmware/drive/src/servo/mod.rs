@@ -553,15 +553,9 @@ impl Servo {
             amps_per_count: self.cfg.adc.amps_per_count,
         };
         let r = run.sequence(half, target, u64::from(4 * self.cfg.adc_period_cycles));
-        // Whatever happened: gates off, duties neutral, the mode back.
-        let off = Pwm(&mut *bus).set_gates(false);
-        let duties = Pwm(&mut *bus).set_duties([0.5; 3], half);
-        let mode = Top(&mut *bus).set_mode(self.mode);
-        self.note_skipped();
+        let restored = self.end_open_loop(bus, half);
         let r = r?;
-        off?;
-        duties?;
-        mode?;
+        restored?;
         self.sensors_ok = r.result.is_ok();
         Ok(r)
     }
@@ -605,15 +599,28 @@ impl Servo {
             cycles: 0,
         };
         let r = run.run(setup, on_phase, stop);
+        let restored = self.end_open_loop(bus, half);
+        let r = r?;
+        restored?;
+        Ok(r)
+    }
+
+    /// After a sequence that drove the inverter itself (sensor check,
+    /// calibration), whatever happened: gates off, duties neutral, the
+    /// mode back; every write is tried, the first error returned.
+    fn end_open_loop<B: RegisterBus + ?Sized>(
+        &mut self,
+        bus: &mut B,
+        half: u32,
+    ) -> Result<(), ServoError> {
         let off = Pwm(&mut *bus).set_gates(false);
         let duties = Pwm(&mut *bus).set_duties([0.5; 3], half);
         let mode = Top(&mut *bus).set_mode(self.mode);
         self.note_skipped();
-        let r = r?;
         off?;
         duties?;
         mode?;
-        Ok(r)
+        Ok(())
     }
 
     /// The calibration's starting point from this configuration: its
