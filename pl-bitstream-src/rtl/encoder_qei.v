@@ -10,6 +10,9 @@
 // Speed: the counts moved during each window of window_i clock cycles,
 // saturated to signed 16 bits (speed_o, updated at the end of each window).
 // The first clock after reset only samples the inputs (no count, no index).
+// Sampled position: pos_sample_o takes pos_o of the cycle sample_i is high
+// (the control-period boundary), so the control step reads the position of
+// its sample's instant however late after the boundary its read comes.
 // The electrical angle is pos * pole pairs * 2 pi / cpr (firmware / core).
 `default_nettype none
 
@@ -21,9 +24,11 @@ module encoder_qei (
     input  wire        z_i,
     input  wire [15:0] cpr_i,
     input  wire [23:0] window_i,
+    input  wire        sample_i,
     output wire [15:0] pos_o,
     output wire [15:0] speed_o,
-    output wire [15:0] index_cnt_o
+    output wire [15:0] index_cnt_o,
+    output wire [15:0] pos_sample_o
 );
     localparam signed [15:0] SMAX = 16'sh7FFF;
     localparam signed [15:0] SMIN = -16'sh7FFF - 16'sh0001;
@@ -36,6 +41,7 @@ module encoder_qei (
     reg  [23:0] win_q;
     reg  signed [15:0] acc_q;
     reg  signed [15:0] speed_q;
+    reg  [15:0] pos_sample_q;
 
     wire [1:0] ph = {b_i, a_i ^ b_i};
     wire [1:0] step = ph - ph_q;
@@ -57,7 +63,9 @@ module encoder_qei (
             win_q   <= 24'd0;
             acc_q   <= 16'sd0;
             speed_q <= 16'sd0;
+            pos_sample_q <= 16'd0;
         end else begin
+            if (sample_i) pos_sample_q <= pos_q;
             ph_q     <= ph;
             primed_q <= 1'b1;
             z_q      <= z_i;
@@ -83,6 +91,21 @@ module encoder_qei (
     assign pos_o       = pos_q;
     assign speed_o     = speed_q;
     assign index_cnt_o = index_q;
+    assign pos_sample_o = pos_sample_q;
+
+`ifdef FORMAL
+    reg f_past_valid = 1'b0;
+    always @(posedge clk_i) f_past_valid <= 1'b1;
+    always @(*) if (!f_past_valid) assume (rst_i);
+    always @(posedge clk_i) begin
+        if (f_past_valid && !$past(rst_i)) begin
+            // The sample is the position of the strobe's cycle, and holds
+            // between strobes.
+            if ($past(sample_i)) assert (pos_sample_q == $past(pos_q));
+            if (!$past(sample_i)) assert (pos_sample_q == $past(pos_sample_q));
+        end
+    end
+`endif
 endmodule
 
 `default_nettype wire

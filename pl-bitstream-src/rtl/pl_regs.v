@@ -199,6 +199,7 @@ module pl_regs (
     input  wire  [15:0] enc_speed_i,
     output wire  [23:0] enc_window_o,
     input  wire  [15:0] enc_index_i,
+    input  wire  [15:0] enc_pos_sample_i,
     // block FAULT
     input  wire         fault_status_overcurrent_i,
     input  wire         fault_status_external_i,
@@ -1075,6 +1076,7 @@ module pl_regs (
             15'h5008: rd_data_o = {16'd0, enc_speed_i};  // ENC_SPEED
             15'h500c: rd_data_o = {8'd0, enc_window_q};  // ENC_WINDOW
             15'h5010: rd_data_o = {16'd0, enc_index_i};  // ENC_INDEX
+            15'h5014: rd_data_o = {16'd0, enc_pos_sample_i};  // ENC_POS_SAMPLE
             15'h6000: rd_data_o = {29'd0, fault_status_watchdog_i, fault_status_external_i, fault_status_overcurrent_i};  // FAULT_STATUS
             15'h6004: rd_data_o = {29'd0, fault_raw_i};  // FAULT_RAW
             15'h6008: rd_data_o = {21'd0, oc_limit_q};  // OC_LIMIT

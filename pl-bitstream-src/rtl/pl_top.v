@@ -200,6 +200,7 @@ module pl_top #(
     wire [15:0] enc_pos;
     wire [15:0] enc_speed;
     wire [15:0] enc_index;
+    wire [15:0] enc_pos_sample;
     wire [ 2:0] fault_status;
     wire [ 2:0] fault_raw;
     wire        trip;
@@ -436,6 +437,7 @@ module pl_top #(
         .enc_speed_i                (enc_speed),
         .enc_window_o               (enc_window),
         .enc_index_i                (enc_index),
+        .enc_pos_sample_i           (enc_pos_sample),
         // FAULT
         .fault_status_overcurrent_i    (fault_status[0]),
         .fault_status_external_i       (fault_status[1]),
@@ -861,9 +863,11 @@ module pl_top #(
         .z_i        (enc_z),
         .cpr_i      (enc_cpr),
         .window_i   (enc_window),
+        .sample_i   (ctrl_boundary),
         .pos_o      (enc_pos),
         .speed_o    (enc_speed),
-        .index_cnt_o(enc_index)
+        .index_cnt_o(enc_index),
+        .pos_sample_o(enc_pos_sample)
     );
 
     fault_block u_fault (

@@ -544,6 +544,9 @@ localparam [31:0] RM_ENC_WINDOW_MAX = 32'h00ffffff;
 localparam [14:0] RM_ENC_INDEX_ADDR = 15'h5010;
 localparam integer RM_ENC_INDEX_W = 16;
 localparam [31:0] RM_ENC_INDEX_RESET = 32'h00000000;
+localparam [14:0] RM_ENC_POS_SAMPLE_ADDR = 15'h5014;
+localparam integer RM_ENC_POS_SAMPLE_W = 16;
+localparam [31:0] RM_ENC_POS_SAMPLE_RESET = 32'h00000000;
 
 // Block 6 FAULT: Over-current, external and watchdog faults, latched.
 localparam [2:0] RM_BLK_FAULT = 3'd6;

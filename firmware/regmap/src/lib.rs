@@ -717,6 +717,22 @@ pub const ENC_INDEX: Register = Register {
     fields: &[],
     doc: "Index pulses seen since reset.",
 };
+/// Encoder: position at the control-period boundary.
+pub const ENC_POS_SAMPLE: Register = Register {
+    name: "ENC_POS_SAMPLE",
+    offset: 0x014,
+    access: Access::Ro,
+    width: 16,
+    reset: 0,
+    format: "unsigned, counts in 0..ENC_CPR-1",
+    invalid: Invalid::AllValid,
+    hw: Hw::Plain,
+    fields: &[],
+    doc: "ENC_POS latched in the cycle of the control-period boundary (the strobe of \
+          IRQ_STATUS.BOUNDARY: the new ADC average, or the PWM counter bottom in mode \
+          FOC-PWM), so the control step reads the position of the instant its sample \
+          belongs to, however late after the boundary it reads.",
+};
 
 // ---------------------------------------------------------------- block 6
 /// Fault: latched faults.
@@ -1571,7 +1587,14 @@ pub const ENC: Block = Block {
     name: "ENC",
     index: 5,
     doc: "Incremental encoder (A/B quadrature + index).",
-    registers: &[&ENC_CPR, &ENC_POS, &ENC_SPEED, &ENC_WINDOW, &ENC_INDEX],
+    registers: &[
+        &ENC_CPR,
+        &ENC_POS,
+        &ENC_SPEED,
+        &ENC_WINDOW,
+        &ENC_INDEX,
+        &ENC_POS_SAMPLE,
+    ],
 };
 /// Block 6.
 pub const FAULT: Block = Block {

@@ -10122,6 +10122,61 @@ pub mod enc {
             Self::RESET
         }
     }
+
+    /// `ENC.ENC_POS_SAMPLE` at `0x43C05014` (RO, 16 bits, reset `0x0`): ENC_POS latched in the cycle of the control-period boundary (the strobe of IRQ_STATUS.BOUNDARY: the new ADC average, or the PWM counter bottom in mode FOC-PWM), so the control step reads the position of the instant its sample belongs to, however late after the boundary it reads.
+    ///
+    /// Format: unsigned, counts in 0..ENC_CPR-1. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct EncPosSample;
+
+    impl EncPosSample {
+        /// Absolute byte address.
+        pub const ADDR: usize = 0x43C05014;
+        /// The table entry.
+        pub const DEF: &'static Register = &regmap::ENC_POS_SAMPLE;
+
+        /// Reads the register.
+        pub fn read<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<EncPosSampleValue, BusError> {
+            bus.read(Self::ADDR).map(EncPosSampleValue)
+        }
+    }
+
+    /// A value of [`EncPosSample`]; bits above bit 15 are 0 when read.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct EncPosSampleValue(u32);
+
+    impl EncPosSampleValue {
+        /// The value after reset.
+        pub const RESET: Self = Self(0x0);
+        /// All zeros.
+        pub const ZERO: Self = Self(0);
+
+        /// From the raw 32-bit word.
+        pub const fn from_bits(bits: u32) -> Self {
+            Self(bits)
+        }
+
+        /// The raw 32-bit word.
+        pub const fn bits(self) -> u32 {
+            self.0
+        }
+
+        /// `VALUE` (bits 15:0, 16 bits): The whole register (unsigned, counts in 0..ENC_CPR-1).
+        pub const fn value(self) -> u32 {
+            self.0 & 0xFFFF
+        }
+
+        /// Sets `VALUE` (bits 15:0, 16 bits) to the low 16 bits of `v` (higher bits are dropped).
+        pub const fn with_value(self, v: u32) -> Self {
+            Self((self.0 & !0xFFFF) | (v & 0xFFFF))
+        }
+    }
+
+    impl Default for EncPosSampleValue {
+        fn default() -> Self {
+            Self::RESET
+        }
+    }
 }
 
 /// Block 6 `FAULT` at `0x43C06000`: Over-current, external and watchdog faults, latched.

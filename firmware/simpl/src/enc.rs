@@ -44,6 +44,8 @@ pub struct Encoder {
     acc: i16,
     /// Counts in the last window (`ENC_SPEED`).
     pub speed: i16,
+    /// `pos` of the last control-period boundary's cycle (`ENC_POS_SAMPLE`).
+    pub pos_sample: u16,
 }
 
 impl Default for Encoder {
@@ -58,6 +60,7 @@ impl Default for Encoder {
             win: 0,
             acc: 0,
             speed: 0,
+            pos_sample: 0,
         }
     }
 }
@@ -68,8 +71,12 @@ fn phase(a: bool, b: bool) -> u8 {
 }
 
 impl Encoder {
-    /// One clock edge with the synchronised levels and the registers.
-    pub fn step(&mut self, a: bool, b: bool, z: bool, cpr: u16, window: u32) {
+    /// One clock edge with the synchronised levels, the registers and the
+    /// control-period boundary strobe `sample`.
+    pub fn step(&mut self, a: bool, b: bool, z: bool, cpr: u16, window: u32, sample: bool) {
+        if sample {
+            self.pos_sample = self.pos;
+        }
         let ph = phase(a, b);
         let step = ph.wrapping_sub(self.ph) & 3;
         let up = self.primed && step == 1;

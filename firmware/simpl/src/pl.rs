@@ -115,6 +115,7 @@ const A_ADC_COUNT: usize = ADC.addr(&rm::ADC_COUNT);
 const A_ENC_POS: usize = ENC.addr(&rm::ENC_POS);
 const A_ENC_SPEED: usize = ENC.addr(&rm::ENC_SPEED);
 const A_ENC_INDEX: usize = ENC.addr(&rm::ENC_INDEX);
+const A_ENC_POS_SAMPLE: usize = ENC.addr(&rm::ENC_POS_SAMPLE);
 const A_FAULT_STATUS: usize = FAULT.addr(&rm::FAULT_STATUS);
 const A_FAULT_RAW: usize = FAULT.addr(&rm::FAULT_RAW);
 const A_MPDTC_STATUS: usize = MPDTC.addr(&rm::MPDTC_STATUS);
@@ -577,6 +578,7 @@ impl SimPl {
             q[2],
             self.r(S_ENC_CPR) as u16,
             self.r(S_ENC_WINDOW),
+            boundary,
         );
         let pins = [self.pins.enc_a, self.pins.enc_b, self.pins.enc_z];
         for (s, p) in self.enc_sync.iter_mut().zip(pins) {
@@ -766,6 +768,7 @@ impl SimPl {
             A_ENC_POS => u32::from(self.enc.pos),
             A_ENC_SPEED => u32::from(self.enc.speed as u16),
             A_ENC_INDEX => u32::from(self.enc.index),
+            A_ENC_POS_SAMPLE => u32::from(self.enc.pos_sample),
             A_FAULT_STATUS => u32::from(self.fault.status),
             A_FAULT_RAW => u32::from(self.fault.raw(&c.fault_in)),
             A_MPDTC_STATUS => {

@@ -1,12 +1,14 @@
 //! Encoder block: position and speed, and their electrical equivalents.
 use core::f64::consts::TAU;
 use regmap::bus::{BusError, RegisterBus};
-use regmap::regs::enc::{EncCpr, EncPos, EncSpeed, EncWindow};
+use regmap::regs::enc::{EncCpr, EncPos, EncPosSample, EncSpeed, EncWindow};
 
 /// Encoder readings.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct EncReading {
-    /// `ENC_POS`, counts in `0..cpr`.
+    /// `ENC_POS` (live, [`Encoder::read`]) or `ENC_POS_SAMPLE` (at the
+    /// control-period boundary, [`Encoder::read_sampled`]), counts in
+    /// `0..cpr`.
     pub pos: u32,
     /// `ENC_CPR`, counts per mechanical revolution.
     pub cpr: u32,
@@ -36,10 +38,21 @@ impl EncReading {
 pub struct Encoder<B>(pub B);
 
 impl<B: RegisterBus> Encoder<B> {
-    /// Position, resolution, speed and window in one go.
+    /// Live position, resolution, speed and window in one go.
     pub fn read(&mut self) -> Result<EncReading, BusError> {
+        let pos = EncPos::read(&mut self.0)?.value();
+        self.read_with(pos)
+    }
+    /// As [`Encoder::read`], with the position latched at the last
+    /// control-period boundary: the control step's position, of the same
+    /// instant as its sample whenever in the period the step reads it.
+    pub fn read_sampled(&mut self) -> Result<EncReading, BusError> {
+        let pos = EncPosSample::read(&mut self.0)?.value();
+        self.read_with(pos)
+    }
+    fn read_with(&mut self, pos: u32) -> Result<EncReading, BusError> {
         Ok(EncReading {
-            pos: EncPos::read(&mut self.0)?.value(),
+            pos,
             cpr: EncCpr::read(&mut self.0)?.value(),
             speed: EncSpeed::read(&mut self.0)?.value_i32(),
             window: EncWindow::read(&mut self.0)?.value(),
@@ -77,5 +90,14 @@ mod tests {
         // -10 counts per ms = -10/4096 rev per ms.
         let w = -10.0 / 4096.0 * TAU * 7.0 / 1e-3;
         assert!((r.omega_e_rad_s(7) - w).abs() < 1e-9);
+    }
+
+    #[test]
+    fn the_sampled_read_takes_the_boundary_position() {
+        let mut pl = FakePl::new();
+        pl.set(ENC.addr(&regmap::ENC_POS), 1024);
+        pl.set(ENC.addr(&regmap::ENC_POS_SAMPLE), 1020);
+        assert_eq!(Encoder(&mut pl).read().unwrap().pos, 1024);
+        assert_eq!(Encoder(&mut pl).read_sampled().unwrap().pos, 1020);
     }
 }

@@ -68,7 +68,7 @@ fn adc_stuck_latches_at_the_first_foc_step_without_a_result_and_clear_restarts_t
 #[test]
 fn an_impossible_encoder_jump_is_encoder_loss() {
     let (mut s, mut pl) = running(Mode::Foc);
-    let pos = ENC.addr(&regmap::ENC_POS);
+    let pos = ENC.addr(&regmap::ENC_POS_SAMPLE);
     let loss = |s: &mut Servo, pl: &mut FakePl| s.faults(pl).unwrap().0 & Faults::ENCODER_LOSS;
     // 4096 counts per turn: 512 (an eighth) is the most per period,
     // either way and across zero. (At 2,000 rev/s such jumps latch

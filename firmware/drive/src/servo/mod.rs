@@ -1064,7 +1064,9 @@ impl Servo {
         // The autonomous loop: the PL computes the core's inputs itself.
         let auto = self.mode == Mode::Mpdtc && !self.cfg.mpdtc_ps_fed;
         let i_abc = Adc(&mut *bus).currents_a(&self.cfg.adc)?;
-        let enc = Encoder(&mut *bus).read()?;
+        // The position of the boundary's instant, as the currents: a live
+        // read would move with how long the step took to get here.
+        let enc = Encoder(&mut *bus).read_sampled()?;
         let pp = self.cfg.motor.pole_pairs;
         let gates = self.gates && Pwm(&mut *bus).gates_enabled()?;
         // The reference this period ran with: the snapshot keeps it, not the
