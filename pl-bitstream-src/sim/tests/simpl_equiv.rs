@@ -55,6 +55,8 @@ struct Pair {
     /// Reads of CAP_DATA3..5 (position, velocity, following error) that
     /// returned a nonzero sample.
     cap_motion: u64,
+    /// Reads of ENC_POS_SAMPLE that returned a nonzero position.
+    pos_samples: u64,
     /// The simulated PL's answer to the last read.
     last_read: Result<u32, BusError>,
     /// MPDCC decisions read through the driver, by kind (kept, optimal,
@@ -85,6 +87,7 @@ impl Pair {
             cap_data: 0,
             cap_done: 0,
             cap_motion: 0,
+            pos_samples: 0,
             last_read: Ok(0),
             mc_kinds: [0; 3],
             auto_cycles: 0,
@@ -175,6 +178,9 @@ impl Pair {
                 if matches!(n, "CAP_DATA3" | "CAP_DATA4" | "CAP_DATA5") {
                     self.cap_motion += 1;
                 }
+            }
+            if n == "ENC_POS_SAMPLE" && v != 0 {
+                self.pos_samples += 1;
             }
             if n == "CAP_STATUS" && v & 3 == rm::cap_state::DONE {
                 self.cap_done += 1;
@@ -640,6 +646,9 @@ fn simulated_pl_equals_verilated_pl_top() {
         p.cap_data,
         p.cap_motion
     );
+    // The boundary's encoder sample was read while the encoder had moved.
+    println!("{} nonzero ENC_POS_SAMPLE reads", p.pos_samples);
+    assert!(p.pos_samples > 5, "{} ENC_POS_SAMPLE reads", p.pos_samples);
     // MPDCC decisions of every kind went through the page.
     println!(
         "MPDCC decisions (kept, optimal, deadlock): {:?}",
