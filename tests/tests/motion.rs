@@ -264,7 +264,7 @@ fn move_one_revolution_on_the_rtl_matches_the_simulated_pl() {
             "{key}: RTL {a}, simulated PL {b}"
         );
     }
-    // Within 5 % or one digit of the printed figure (0.1 count). The
+    // Within 5 % or two digits of the printed figure (0.2 count). The
     // control step's position is ENC_POS_SAMPLE, latched at the boundary on
     // both PLs, so the bus models' access times (the live ENC_POS read came
     // 174..1453 PL cycles after the boundary on the RTL, 8 on the simulated
@@ -273,11 +273,12 @@ fn move_one_revolution_on_the_rtl_matches_the_simulated_pl() {
     // 1.1/1.0, 1.1/1.0, 1.2/1.1 counts: the simulated PL alone spreads
     // 1.0..1.1 counts from run to run (overshoot 0..1, final error -1..0),
     // what still depends on guest time (the period the move starts in, a
-    // slow step's torque-reference write), so one printed digit stays.
+    // slow step's torque-reference write), and the RTL 1.1..1.2: the bound
+    // is the two runs' spreads added, two printed digits (0.2 count).
     let fe = num(&r_sim, "max_following_error");
     let fe_rtl = num(&r_rtl, "max_following_error");
     assert!(
-        (fe_rtl / fe - 1.0).abs() <= 0.05 || (fe_rtl - fe).abs() <= 0.1 + 1e-9,
+        (fe_rtl / fe - 1.0).abs() <= 0.05 || (fe_rtl - fe).abs() <= 0.2 + 1e-9,
         "{r_rtl:?} {r_sim:?}"
     );
     let st = cmd(&mut rtl, "status");
