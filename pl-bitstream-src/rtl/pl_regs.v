@@ -243,13 +243,14 @@ module pl_regs (
     input  wire  [15:0] cap_data5_i
 );
 
-    // Byte-strobe merge of a write over the current (zero-extended) value.
+    // Byte-strobe merge of a write over the current (zero-extended) value,
+    // as one mask (a per-byte loop costs the Verilated model about a quarter
+    // of its time: every register's merge is evaluated on every clock).
     function automatic [31:0] merge(input [31:0] old, input [31:0] data, input [3:0] strb);
-        integer i;
+        reg [31:0] m;
         begin
-            for (i = 0; i < 4; i = i + 1) begin
-                merge[8*i+:8] = strb[i] ? data[8*i+:8] : old[8*i+:8];
-            end
+            m = {{8{strb[3]}}, {8{strb[2]}}, {8{strb[1]}}, {8{strb[0]}}};
+            merge = (data & m) | (old & ~m);
         end
     endfunction
 
