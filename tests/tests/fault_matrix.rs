@@ -15,6 +15,10 @@ use system_tests::{assert_err, assert_ok, boot, cmd, field, num};
 const PERIOD: [(&str, u64); 2] = [("foc", 6256), ("mpdtc", 1564)];
 /// Control periods in the window of the evidence checks (0.5 ms).
 const WINDOW: [u64; 2] = [8, 32];
+/// Cycles by which a cell may differ from the committed table: the PS's
+/// injection lands at the same point of the period up to a bus access or
+/// two (`OVERCURRENT` in MPDTC: 364 or 366 from run to run).
+const DOC_TOLERANCE: i64 = 4;
 
 struct Case {
     fault: &'static str,
@@ -339,9 +343,61 @@ fn every_fault_turns_the_gates_off_within_its_bound_on_the_simulated_pl() {
         .and_then(|(_, r)| r.split_once(e))
         .map(|(m, _)| m)
         .unwrap_or_default();
-    assert_eq!(
-        committed, t,
-        "docs/fault-matrix.md differs from the measured table (target/fault-matrix.md); \
-         FAULT_MATRIX_WRITE=1 rewrites it"
+    assert!(
+        same_within(committed, &t, DOC_TOLERANCE),
+        "docs/fault-matrix.md differs from the measured table (target/fault-matrix.md) \
+         by more than {DOC_TOLERANCE} cycles in a cell or in its text; \
+         FAULT_MATRIX_WRITE=1 rewrites it\n{committed}\n{t}"
     );
+}
+
+/// The two tables have the same text but for numbers, and every number
+/// within `tol` of the other's.
+fn same_within(a: &str, b: &str, tol: i64) -> bool {
+    let split = |x: &str| -> (String, Vec<i64>) {
+        let mut text = String::new();
+        let mut nums = Vec::new();
+        let mut cur = String::new();
+        for ch in x.chars().chain(std::iter::once(' ')) {
+            if ch.is_ascii_digit() {
+                cur.push(ch);
+            } else {
+                if !cur.is_empty() {
+                    nums.push(cur.parse().unwrap_or(i64::MAX));
+                    text.push('#');
+                    cur.clear();
+                }
+                text.push(ch);
+            }
+        }
+        (text, nums)
+    };
+    let (ta, na) = split(a);
+    let (tb, nb) = split(b);
+    ta == tb && na.len() == nb.len() && na.iter().zip(&nb).all(|(x, y)| (x - y).abs() <= tol)
+}
+
+#[test]
+fn tables_compare_within_the_tolerance_only() {
+    let a = "| `X` | 1 | cause 10 us | 364 (1564) |\n";
+    assert!(same_within(
+        a,
+        "| `X` | 1 | cause 10 us | 366 (1564) |\n",
+        4
+    ));
+    assert!(!same_within(
+        a,
+        "| `X` | 1 | cause 10 us | 369 (1564) |\n",
+        4
+    ));
+    assert!(!same_within(
+        a,
+        "| `X` | 1 | cause 10 ms | 364 (1564) |\n",
+        4
+    ));
+    assert!(!same_within(
+        a,
+        "| `X` | 1 | cause 10 us | **over** (1564) |\n",
+        4
+    ));
 }
