@@ -220,6 +220,12 @@ fn leaving_the_soft_limits_latches_position_limit_with_the_gates_off() {
 /// write (the move is armed during the rotor alignment and starts at its
 /// end on both PLs); the move's reply.
 fn move_in_one_write(s: &mut Session) -> drivectl::link::Reply {
+    // A 2 ms alignment (the default 0.2 s is 64 s of wall time in
+    // co-simulation): a fresh boot's rotor starts on the d axis (angle 0).
+    assert_ok(&cmd(s, "config set mpdtc_align_time 200000"));
+    // The reconfiguration holds the control interrupt off for more than
+    // two periods on the co-simulated PL (seen: `CONTROL_OVERRUN`).
+    assert_ok(&cmd(s, "fault clear"));
     s.send(b"sim set locked 0\rmode mpdtc\renable\rmove 1 5\r")
         .unwrap();
     let mut last = None;
