@@ -25,11 +25,15 @@ const PL_ADC_RESULT_TIMER: bool = false;
 /// `mpdtc_align_time` in co-simulation, PL cycles (2 ms; the default 0.2 s
 /// is many seconds of wall time there): every cell there is on the locked
 /// rotor of a fresh boot, at angle 0 on the d axis, which no alignment
-/// moves. The checks over a window keep the default: their window starts
-/// with the controller, from the state the alignment leaves (after 2 ms
-/// the alignment current has not settled, L / R = 1.15 ms, and the MPDTC's
-/// `PHASE_OPEN` then closed 3 periods over its bound).
+/// moves.
 const RTL_ALIGN_CYCLES: u32 = 200_000;
+/// The same for the checks over a window, PL cycles (30 ms): their window
+/// starts with the controller, from the state the alignment leaves. After
+/// an alignment of 2 to 10 ms the MPDTC's `PHASE_OPEN` at its start closed
+/// at 35 periods (bound 33), after 12 ms or more at 32 (host probe on the
+/// simulated PL; the cause is not found yet). The default 0.2 s is about a
+/// minute of wall time in co-simulation.
+const RTL_WINDOW_ALIGN_CYCLES: u32 = 3_000_000;
 
 /// PL cycles of one control period: FOC (one PWM period), MPDTC.
 const PERIOD: [(&str, u64); 2] = [("foc", 6256), ("mpdtc", 1564)];
@@ -39,6 +43,10 @@ const WINDOW: [u64; 2] = [8, 32];
 /// injection lands at the same point of the period up to a bus access or
 /// two (`OVERCURRENT` in MPDTC: 364 or 366 from run to run).
 const DOC_TOLERANCE: i64 = 4;
+/// The same for the co-simulated `pl_top`'s columns: the bridge's bus
+/// accesses take a varying number of PL cycles (`POSITION_LIMIT` in FOC
+/// measured 6105 and 6113).
+const RTL_DOC_TOLERANCE: i64 = 64;
 
 struct Case {
     fault: &'static str,
@@ -306,7 +314,7 @@ fn measure(rtl: bool) -> Vec<[Option<i64>; 2]> {
         for (k, c) in CASES.iter().enumerate() {
             if rtl {
                 let align = if c.windowed {
-                    drive::servo::ServoConfig::default().align_cycles
+                    RTL_WINDOW_ALIGN_CYCLES
                 } else {
                     RTL_ALIGN_CYCLES
                 };
@@ -453,15 +461,35 @@ fn every_fault_turns_the_gates_off_within_its_bound_on_both_pls() {
         .map(|(m, _)| m)
         .unwrap_or_default();
     assert!(
-        same_within(committed, &t, DOC_TOLERANCE),
+        same_table(committed, &t),
         "docs/fault-matrix.md differs from the measured table (target/fault-matrix.md) \
          by more than {DOC_TOLERANCE} cycles in a cell or in its text; \
          FAULT_MATRIX_WRITE=1 rewrites it\n{committed}\n{t}"
     );
 }
 
-/// The two tables have the same text but for numbers, and every number
-/// within `tol` of the other's.
+/// The two tables have the same rows and cells, the simulated PL's cells
+/// within `DOC_TOLERANCE`, the co-simulated `pl_top`'s within
+/// `RTL_DOC_TOLERANCE` (the 6th and 7th of the `|`-separated fields).
+fn same_table(a: &str, b: &str) -> bool {
+    let (la, lb): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
+    la.len() == lb.len()
+        && la.iter().zip(&lb).all(|(x, y)| {
+            let (fx, fy): (Vec<&str>, Vec<&str>) = (x.split('|').collect(), y.split('|').collect());
+            fx.len() == fy.len()
+                && fx.iter().zip(&fy).enumerate().all(|(i, (p, q))| {
+                    let tol = if i == 6 || i == 7 {
+                        RTL_DOC_TOLERANCE
+                    } else {
+                        DOC_TOLERANCE
+                    };
+                    same_within(p, q, tol)
+                })
+        })
+}
+
+/// The two texts are the same but for numbers, and every number within
+/// `tol` of the other's.
 fn same_within(a: &str, b: &str, tol: i64) -> bool {
     let split = |x: &str| -> (String, Vec<i64>) {
         let mut text = String::new();
@@ -509,4 +537,10 @@ fn tables_compare_within_the_tolerance_only() {
         "| `X` | 1 | cause 10 us | **over** (1564) |\n",
         4
     ));
+    let row = |s: i64, r: i64| {
+        format!("| `X` | 1 | c | {s} (6256) | 3 (1564) | {r} (6256) | 3 (1564) |\n")
+    };
+    assert!(same_table(&row(100, 200), &row(104, 264)));
+    assert!(!same_table(&row(100, 200), &row(105, 200)));
+    assert!(!same_table(&row(100, 200), &row(100, 265)));
 }
