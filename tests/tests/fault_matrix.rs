@@ -363,14 +363,14 @@ fn table(lat: &[[Option<i64>; 4]]) -> String {
          |---|---|---|---|---|---|---|\n",
     );
     let mut reasons: Vec<&str> = Vec::new();
-    for (k, c) in CASES.iter().enumerate() {
+    for (c, cells) in CASES.iter().zip(lat) {
         let mut row = format!("| `{}` | {} | {} |", c.fault, c.code, c.how);
-        for col in 0..4 {
+        for (col, measured) in cells.iter().enumerate() {
             let (rtl, m) = (col >= 2, col % 2);
             let b = bound(m, c);
             // A cell over its bound shows no number: those vary from run
             // to run (target/fault-matrix.csv has them).
-            let cell = match (lat[k][col], not_measured(c, rtl, m)) {
+            let cell = match (*measured, not_measured(c, rtl, m)) {
                 (_, Some(why)) => {
                     let n = match reasons.iter().position(|r| *r == why) {
                         Some(i) => i,
@@ -426,10 +426,10 @@ fn every_fault_turns_the_gates_off_within_its_bound_on_both_pls() {
         format!("fault,sim_foc_cycles,sim_mpdtc_cycles,rtl_foc_cycles,rtl_mpdtc_cycles\n{csv}"),
     )
     .unwrap();
-    for (k, c) in CASES.iter().enumerate() {
-        for col in 0..4 {
+    for (c, cells) in CASES.iter().zip(&lat) {
+        for (col, measured) in cells.iter().enumerate() {
             let m = col % 2;
-            if let Some(l) = lat[k][col] {
+            if let Some(l) = *measured {
                 assert!(
                     l >= 0 && l as u64 <= bound(m, c),
                     "{} in {} ({}): {l} cycles, bound {}\n{t}",
