@@ -264,6 +264,9 @@ pub struct Servo {
     /// MPDTC: control steps left in the alignment's first step (on
     /// `ALIGN_FIRST`); at 0 the vector goes to `ALIGN_D`.
     align_first_left: Option<u64>,
+    /// A `move` during the MPDTC's alignment: its capture record starts
+    /// with the alignment's end, where the move starts.
+    move_capture_pending: bool,
     /// MPDTC: the decision applied at the last boundary (for transitions).
     last_state: u8,
     /// FOC: the ADC timer was restarted at a PWM period start of this run.
@@ -364,6 +367,7 @@ impl Servo {
             mpdtc,
             align_zero: None,
             align_first_left: None,
+            move_capture_pending: false,
             last_state: 0,
             adc_synced: false,
             periods: 0,
@@ -527,6 +531,7 @@ impl Servo {
         // Fresh controller state for this run.
         self.foc = Foc::new(&self.cfg.motor, &self.foc_params).map_err(|_| ServoError::ModeOff)?;
         self.align_zero = None;
+        self.move_capture_pending = false;
         self.last_state = 0;
         self.adc_synced = false;
         let half = self.cfg.foc_half_period_cycles;
@@ -789,6 +794,17 @@ impl Servo {
         // empties, the decimation counter restarts) and triggered, so that
         // sample j of the record is taken at the (j + 1) x every-th
         // sample strobe after this command, a fixed offset from the move.
+        // During the MPDTC's alignment that is at its end (the move starts
+        // there).
+        self.move_capture_pending = self.mode == Mode::Mpdtc && self.align_zero.is_none();
+        if !self.move_capture_pending {
+            Self::start_move_capture(bus)?;
+        }
+        Ok(())
+    }
+
+    /// An armed capture record restarts and triggers.
+    fn start_move_capture<B: RegisterBus>(bus: &mut B) -> Result<(), BusError> {
         let mut cap = Capture(&mut *bus);
         if cap.status()?.state == CapState::Armed {
             cap.restart()?;
@@ -1116,6 +1132,9 @@ impl Servo {
                     }
                     if m.seq_status()?.aligned {
                         self.align_zero = Some(m.align_pos()?);
+                        if core::mem::take(&mut self.move_capture_pending) {
+                            Self::start_move_capture(&mut *bus)?;
+                        }
                     }
                 }
                 running &= self.align_zero.is_some();
