@@ -179,9 +179,6 @@ fn sweep_prints_the_frequency_response_in_both_modes() {
 #[test]
 fn capture_records_a_move_with_position_velocity_and_following_error() {
     let mut s = boot();
-    // A 2 ms alignment (a fresh boot's rotor is on the d axis), which ends
-    // before `move 1` triggers the record; the default 0.2 s would fill it.
-    assert_ok(&cmd(&mut s, "config set mpdtc_align_time 200000"));
     assert_ok(&cmd(&mut s, "sim set locked 0"));
     assert_ok(&cmd(&mut s, "mode mpdtc"));
     assert_ok(&cmd(&mut s, "enable"));
