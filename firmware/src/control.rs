@@ -1000,8 +1000,9 @@ impl DriveOps for FwDrive {
         console(|s| s.servo.capture_period_s()).unwrap_or(0.0)
     }
     fn sweep_point(&mut self, f_hz: f64, amp_nm: f64) -> Result<SweepPoint, DriveError> {
-        // A sweep right after `enable` in MPDTC waits for the end of the
-        // rotor alignment (0.2 s): no torque follows the sine before it.
+        run(|s| s.servo.sine_start(&mut s.bus, f_hz, amp_nm))?;
+        // Right after `enable` in MPDTC the settling starts at the end of
+        // the rotor alignment (0.2 s): no torque follows the sine before.
         let deadline = timer::uptime_us() + 60_000_000;
         let aligning =
             || console(|s| s.servo.gates_on(&mut s.bus).unwrap_or(false) && !s.servo.controlling());
@@ -1011,7 +1012,6 @@ impl DriveOps for FwDrive {
             }
             wait();
         }
-        run(|s| s.servo.sine_start(&mut s.bus, f_hz, amp_nm))?;
         let settle_ms = (Servo::sine_settle_s(f_hz) * 1e3) as u32 + 1;
         let until = console(|s| s.pl_after_ms(settle_ms)).ok_or(DriveError::Absent)?;
         let deadline = timer::uptime_us() + 60_000_000;
