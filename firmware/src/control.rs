@@ -916,7 +916,9 @@ impl DriveOps for FwDrive {
                         s.injection_result = None;
                         Ok(())
                     })?;
-                    let deadline = timer::uptime_us() + 10_000_000;
+                    // The MPDTC's alignment first (0.2 s of PL time; the simulated
+                    // PL may run 150 times slower than real time).
+                    let deadline = timer::uptime_us() + 60_000_000;
                     loop {
                         if let Some(r) = console(|s| s.injection_result.take()).flatten() {
                             break r.map_err(DriveError::Servo);
@@ -999,6 +1001,17 @@ impl DriveOps for FwDrive {
     }
     fn sweep_point(&mut self, f_hz: f64, amp_nm: f64) -> Result<SweepPoint, DriveError> {
         run(|s| s.servo.sine_start(&mut s.bus, f_hz, amp_nm))?;
+        // Right after `enable` in MPDTC the settling starts at the end of
+        // the rotor alignment (0.2 s): no torque follows the sine before.
+        let deadline = timer::uptime_us() + 60_000_000;
+        let aligning =
+            || console(|s| s.servo.gates_on(&mut s.bus).unwrap_or(false) && !s.servo.controlling());
+        while aligning().unwrap_or(false) {
+            if timer::uptime_us() > deadline {
+                return Err(DriveError::Timeout);
+            }
+            wait();
+        }
         let settle_ms = (Servo::sine_settle_s(f_hz) * 1e3) as u32 + 1;
         let until = console(|s| s.pl_after_ms(settle_ms)).ok_or(DriveError::Absent)?;
         let deadline = timer::uptime_us() + 60_000_000;

@@ -162,14 +162,13 @@ fn step_agrees<C: Controller>(mode: &str, mut ctrl: C) {
     if mode == "mpdtc" {
         assert!(cmd(&mut q, "config set mpdtc_ps_fed 1").is_ok());
     }
-    for l in [
-        &format!("mode {mode}"),
-        "enable",
-        "capture arm step 10",
-        "step 0.4",
-    ] {
+    for l in [&format!("mode {mode}"), "enable", "capture arm step 10"] {
         assert!(cmd(&mut q, l).is_ok(), "{l}");
     }
+    // The step waits for the MPDTC's rotor alignment (0.2 s of PL time,
+    // up to 150 times that under QEMU on a loaded host).
+    let r = q.command("step 0.4", Duration::from_secs(60)).unwrap();
+    assert!(r.is_ok(), "{r:?}");
     for _ in 0..200 {
         let st = cmd(&mut q, "capture status");
         if st.lines.iter().any(|l| l == "capture: done") {

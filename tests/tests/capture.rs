@@ -2,6 +2,7 @@
 //! console: `capture arm|trigger|status|dump` and `sweep` on the simulated
 //! PL, bad arguments included.
 use drivectl::link::{Reply, Session};
+use std::time::Duration;
 use system_tests::{assert_err, assert_ok, boot, cmd, field, num};
 
 /// Polls `capture status` until the record is complete.
@@ -78,7 +79,10 @@ fn capture_dump_shows_an_mpdtc_step_with_pre_trigger() {
     assert_eq!(field(&st, "capture"), Some("armed"), "{st:?}");
     let ts_us = num(&st, "sample_period");
     assert!((ts_us - 15.64).abs() < 0.01, "{st:?}");
-    assert_ok(&cmd(&mut s, "step 0.4"));
+    // The step waits for the MPDTC's alignment (0.2 s of PL time, up to
+    // 150 times that under QEMU on a loaded host).
+    let r = s.command("step 0.4", Duration::from_secs(60)).unwrap();
+    assert_ok(&r);
     let st = wait_done(&mut s);
     assert_eq!(num(&st, "samples"), 1024.0, "{st:?}");
     assert_eq!(num(&st, "trigger_index"), 100.0, "{st:?}");
@@ -186,7 +190,8 @@ fn capture_records_a_move_with_position_velocity_and_following_error() {
     assert_ok(&a);
     let ts_us = num(&a, "sample_period");
     assert!((ts_us - 8.0 * 15.64).abs() < 0.05, "{a:?}");
-    let r = cmd(&mut s, "move 1");
+    // The move waits for the MPDTC's alignment (as `step 0.4` above).
+    let r = s.command("move 1", Duration::from_secs(60)).unwrap();
     assert_ok(&r);
     let st = wait_done(&mut s);
     assert_eq!(num(&st, "trigger_index"), 0.0, "{st:?}");

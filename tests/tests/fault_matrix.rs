@@ -1,20 +1,52 @@
-//! The fault matrix: every fault on the simulated PL in modes FOC and
-//! MPDTC, caused by `debug fault` right after a control step (a fixed
-//! point of the period), its gates-off time in PL cycles from the cause
-//! (`debug fault-time`: the PL's own gate outputs), the latch, the history
-//! entry and the refusal of `enable` checked. One QEMU boot per mode runs
-//! every fault in turn. The table goes to `target/fault-matrix.md`; the
-//! committed `docs/fault-matrix.md` must be the same
+//! The fault matrix: every fault on both PLs (the simulated PL, and the
+//! Verilated `pl_top` in co-simulation) in modes FOC and MPDTC, caused by
+//! `debug fault` right after a control step (a fixed point of the period),
+//! its gates-off time in PL cycles from the cause (`debug fault-time`: the
+//! PL's own gate outputs), the latch, the history entry and the refusal of
+//! `enable` checked. One QEMU boot per PL and mode runs every fault in
+//! turn. The table goes to `target/fault-matrix.md`; the committed
+//! `docs/fault-matrix.md` must be the same within `DOC_TOLERANCE`
 //! (`FAULT_MATRIX_WRITE=1` writes it).
 use drivectl::link::Session;
 use std::fmt::Write as _;
 use std::time::{Duration, Instant};
-use system_tests::{assert_err, assert_ok, boot, cmd, field, num};
+use system_tests::{assert_err, assert_ok, boot, boot_rtl, cmd, field, num};
+
+/// `debug fault encoder-loss` (an illegal quadrature transition on the
+/// encoder lines) exists on both PLs. `false`: its cells are pending, and
+/// the test checks that the injection is refused.
+const ENCODER_LOSS_INJECTION: bool = false;
+/// The PL detects a missing ADC result itself (a result timer), so
+/// `ADC_STUCK` on the co-simulated `pl_top` latches within the period.
+/// `false`: those cells are pending (FOC: the PS's check takes two
+/// periods there, 12352 cycles measured; MPDTC: without a PS tick between
+/// boundaries the RTL's `WATCHDOG` ends such a run after 2 ms).
+const PL_ADC_RESULT_TIMER: bool = false;
+/// `mpdtc_align_time` in co-simulation, PL cycles (2 ms; the default 0.2 s
+/// is many seconds of wall time there): every cell there is on the locked
+/// rotor of a fresh boot, at angle 0 on the d axis, which no alignment
+/// moves.
+const RTL_ALIGN_CYCLES: u32 = 200_000;
+/// The same for the checks over a window, PL cycles (30 ms): their window
+/// starts with the controller, from the state the alignment leaves. After
+/// an alignment of 2 to 10 ms the MPDTC's `PHASE_OPEN` at its start closed
+/// at 35 periods (bound 33), after 12 ms or more at 32 (host probe on the
+/// simulated PL; the cause is not found yet). The default 0.2 s is about a
+/// minute of wall time in co-simulation.
+const RTL_WINDOW_ALIGN_CYCLES: u32 = 3_000_000;
 
 /// PL cycles of one control period: FOC (one PWM period), MPDTC.
 const PERIOD: [(&str, u64); 2] = [("foc", 6256), ("mpdtc", 1564)];
 /// Control periods in the window of the evidence checks (0.5 ms).
 const WINDOW: [u64; 2] = [8, 32];
+/// Cycles by which a cell may differ from the committed table: the PS's
+/// injection lands at the same point of the period up to a bus access or
+/// two (`OVERCURRENT` in MPDTC: 364 or 366 from run to run).
+const DOC_TOLERANCE: i64 = 4;
+/// The same for the co-simulated `pl_top`'s columns: the bridge's bus
+/// accesses take a varying number of PL cycles (`POSITION_LIMIT` in FOC
+/// measured 6105 and 6113).
+const RTL_DOC_TOLERANCE: i64 = 64;
 
 struct Case {
     fault: &'static str,
@@ -33,7 +65,7 @@ struct Case {
     how: &'static str,
 }
 
-const CASES: [Case; 9] = [
+const CASES: [Case; 10] = [
     Case {
         fault: "OVERCURRENT",
         code: 1,
@@ -66,6 +98,17 @@ const CASES: [Case; 9] = [
         min_speed: 0.0,
         windowed: false,
         how: "control loop and heartbeat stopped; cause = last heartbeat + `WDG_TIMEOUT` (PL)",
+    },
+    Case {
+        fault: "ENCODER_LOSS",
+        code: 4,
+        inject: "encoder-loss",
+        setup: &[],
+        torque: 0.2,
+        warm: 10,
+        min_speed: 0.0,
+        windowed: false,
+        how: "an illegal quadrature transition on the encoder lines",
     },
     Case {
         fault: "ADC_STUCK",
@@ -192,7 +235,8 @@ fn cell(s: &mut Session, mode: &str, c: &Case) -> i64 {
     let r = s
         .command(
             &format!("debug fault {}", c.inject),
-            Duration::from_secs(60),
+            // The firmware waits up to 60 s for the MPDTC's alignment.
+            Duration::from_secs(90),
         )
         .expect("debug fault");
     assert_eq!(r.lines, ["injected"], "{} {mode}: {r:?}", c.fault);
@@ -233,6 +277,26 @@ fn cell(s: &mut Session, mode: &str, c: &Case) -> i64 {
     lat
 }
 
+/// A free rotor (spun up before the injection).
+fn free(c: &Case) -> bool {
+    c.setup.contains(&"sim set locked 0")
+}
+
+/// Why a cell is not measured (`None`: it is): pending, a detection or
+/// injection not in this build; not run, over the co-simulation's budget.
+fn not_measured(c: &Case, rtl: bool, mode: usize) -> Option<&'static str> {
+    match (c.fault, rtl, mode) {
+        ("ENCODER_LOSS", _, _) if !ENCODER_LOSS_INJECTION => Some("pending: no `debug fault encoder-loss` yet"),
+        ("ADC_STUCK", true, _) if !PL_ADC_RESULT_TIMER => Some(
+            "pending: no ADC result timer in the PL yet (FOC: the PS's check, after a step the console delayed, needs two stale steps, about two periods; MPDTC: without the simulated PL's tick the RTL's `WATCHDOG` ends the run after 2 ms)",
+        ),
+        (_, true, _) if free(c) => Some(
+            "not run: the spin-up of the free rotor and its 0.2 s alignment are about 0.4 s of PL time, minutes of wall time in co-simulation",
+        ),
+        _ => None,
+    }
+}
+
 fn bound(mode: usize, c: &Case) -> u64 {
     let p = PERIOD[mode].1;
     if c.windowed {
@@ -242,12 +306,39 @@ fn bound(mode: usize, c: &Case) -> u64 {
     }
 }
 
-fn measure() -> Vec<[i64; 2]> {
-    let mut out = vec![[0i64; 2]; CASES.len()];
+/// The cells of one PL, `None` where not measured.
+fn measure(rtl: bool) -> Vec<[Option<i64>; 2]> {
+    let mut out = vec![[None; 2]; CASES.len()];
     for (m, (mode, _)) in PERIOD.iter().enumerate() {
-        let mut s = boot();
+        let mut s = if rtl { boot_rtl() } else { boot() };
         for (k, c) in CASES.iter().enumerate() {
-            out[k][m] = cell(&mut s, mode, c);
+            if rtl {
+                let align = if c.windowed {
+                    RTL_WINDOW_ALIGN_CYCLES
+                } else {
+                    RTL_ALIGN_CYCLES
+                };
+                assert_ok(&cmd(
+                    &mut s,
+                    &format!("config set mpdtc_align_time {align}"),
+                ));
+            }
+            if not_measured(c, rtl, m).is_none() {
+                out[k][m] = Some(cell(&mut s, mode, c));
+            } else if c.fault == "ENCODER_LOSS" && m == 0 {
+                // Pending: the injection is refused (when it is not, the
+                // flag above is to be set).
+                let r = cmd(&mut s, &format!("debug fault {}", c.inject));
+                assert_ne!(
+                    r.lines,
+                    ["injected"],
+                    "`debug fault {}` works: set ENCODER_LOSS_INJECTION",
+                    c.inject
+                );
+            }
+        }
+        if rtl {
+            continue;
         }
         // A locked rotor held at 0.5 N m for 20 ms: no ENCODER_DEAD, no
         // PHASE_OPEN (their thresholds stand clear of it).
@@ -263,69 +354,95 @@ fn measure() -> Vec<[i64; 2]> {
     out
 }
 
-fn table(lat: &[[i64; 2]]) -> String {
+/// Columns: simulated PL FOC, MPDTC; co-simulated `pl_top` FOC, MPDTC.
+fn table(lat: &[[Option<i64>; 4]]) -> String {
     let mut t = String::new();
     t.push_str(
-        "| fault | code | cause | FOC: cycles (bound) | MPDTC: cycles (bound) |\n\
-         |---|---|---|---|---|\n",
+        "| fault | code | cause | simulated PL, FOC: cycles (bound) | simulated PL, MPDTC | \
+         `pl_top` co-sim, FOC | `pl_top` co-sim, MPDTC |\n\
+         |---|---|---|---|---|---|---|\n",
     );
-    for (k, c) in CASES.iter().enumerate() {
-        // A cell over its bound shows no number: those vary from run to
-        // run (target/fault-matrix.csv has them).
-        let cell = |m: usize| {
-            if lat[k][m] < 0 || lat[k][m] as u64 > bound(m, c) {
-                format!("**over** ({})", bound(m, c))
-            } else {
-                format!("{} ({})", lat[k][m], bound(m, c))
-            }
-        };
-        let _ = writeln!(
-            t,
-            "| `{}` | {} | {} | {} | {} |",
-            c.fault,
-            c.code,
-            c.how,
-            cell(0),
-            cell(1)
-        );
+    let mut reasons: Vec<&str> = Vec::new();
+    for (c, cells) in CASES.iter().zip(lat) {
+        let mut row = format!("| `{}` | {} | {} |", c.fault, c.code, c.how);
+        for (col, measured) in cells.iter().enumerate() {
+            let (rtl, m) = (col >= 2, col % 2);
+            let b = bound(m, c);
+            // A cell over its bound shows no number: those vary from run
+            // to run (target/fault-matrix.csv has them).
+            let cell = match (*measured, not_measured(c, rtl, m)) {
+                (_, Some(why)) => {
+                    let n = match reasons.iter().position(|r| *r == why) {
+                        Some(i) => i,
+                        None => {
+                            reasons.push(why);
+                            reasons.len() - 1
+                        }
+                    };
+                    format!("{} [{}] ({b})", why.split(':').next().unwrap_or(why), n + 1)
+                }
+                (Some(l), None) if l >= 0 && l as u64 <= b => format!("{l} ({b})"),
+                _ => format!("**over** ({b})"),
+            };
+            let _ = write!(row, " {cell} |");
+        }
+        t.push_str(&row);
+        t.push('\n');
+    }
+    t.push('\n');
+    for (i, r) in reasons.iter().enumerate() {
+        let _ = writeln!(t, "[{}] {r}.  ", i + 1);
     }
     t
 }
 
-/// Not in the default run: the free-rotor MPDTC cells (`OVERSPEED`,
-/// `ENCODER_DEAD`) depend on where the previous cells left the rotor. The
-/// MPDTC's 2 ms alignment latches the encoder before a free rotor (8.1e-5
-/// kg m^2, about 36 Hz in the alignment field) has moved, so the latched
-/// zero is the rotor's starting angle: near a quarter electrical turn off,
-/// the 0.5 N m reference turns no rotor and the cell times out. Run it with
-/// `cargo test -p system-tests --test fault_matrix -- --include-ignored`.
+/// In the default run: one QEMU boot per mode. The free-rotor MPDTC cells
+/// (`OVERSPEED`, `ENCODER_DEAD`) start from wherever the previous cells left
+/// the rotor; the MPDTC's two-step alignment (0.2 s) finds its d axis from
+/// any angle (`cargo test -p simpl --test alignment`).
 #[test]
-#[ignore = "free-rotor MPDTC cells depend on the rotor's starting angle (alignment)"]
-fn every_fault_turns_the_gates_off_within_its_bound_on_the_simulated_pl() {
-    let lat = measure();
+fn every_fault_turns_the_gates_off_within_its_bound_on_both_pls() {
+    let sim = measure(false);
+    let rtl = measure(true);
+    let lat: Vec<[Option<i64>; 4]> = sim
+        .iter()
+        .zip(&rtl)
+        .map(|(a, b)| [a[0], a[1], b[0], b[1]])
+        .collect();
     let t = table(&lat);
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
     std::fs::write(root.join("target/fault-matrix.md"), &t).unwrap();
+    let show = |x: Option<i64>| x.map_or(String::new(), |v| v.to_string());
     let csv: String = CASES
         .iter()
         .zip(&lat)
-        .map(|(c, l)| format!("{},{},{}\n", c.fault, l[0], l[1]))
+        .map(|(c, l)| {
+            let v: Vec<String> = l.iter().map(|x| show(*x)).collect();
+            format!("{},{}\n", c.fault, v.join(","))
+        })
         .collect();
     std::fs::write(
         root.join("target/fault-matrix.csv"),
-        format!("fault,foc_cycles,mpdtc_cycles\n{csv}"),
+        format!("fault,sim_foc_cycles,sim_mpdtc_cycles,rtl_foc_cycles,rtl_mpdtc_cycles\n{csv}"),
     )
     .unwrap();
-    for (k, c) in CASES.iter().enumerate() {
-        for m in 0..2 {
-            let l = lat[k][m];
-            assert!(
-                l >= 0 && l as u64 <= bound(m, c),
-                "{} in {}: {l} cycles, bound {}\n{t}",
-                c.fault,
-                PERIOD[m].0,
-                bound(m, c)
-            );
+    for (c, cells) in CASES.iter().zip(&lat) {
+        for (col, measured) in cells.iter().enumerate() {
+            let m = col % 2;
+            if let Some(l) = *measured {
+                assert!(
+                    l >= 0 && l as u64 <= bound(m, c),
+                    "{} in {} ({}): {l} cycles, bound {}\n{t}",
+                    c.fault,
+                    PERIOD[m].0,
+                    if col >= 2 {
+                        "co-simulated pl_top"
+                    } else {
+                        "simulated PL"
+                    },
+                    bound(m, c)
+                );
+            }
         }
     }
     // The committed table: between the markers of docs/fault-matrix.md.
@@ -343,9 +460,87 @@ fn every_fault_turns_the_gates_off_within_its_bound_on_the_simulated_pl() {
         .and_then(|(_, r)| r.split_once(e))
         .map(|(m, _)| m)
         .unwrap_or_default();
-    assert_eq!(
-        committed, t,
-        "docs/fault-matrix.md differs from the measured table (target/fault-matrix.md); \
-         FAULT_MATRIX_WRITE=1 rewrites it"
+    assert!(
+        same_table(committed, &t),
+        "docs/fault-matrix.md differs from the measured table (target/fault-matrix.md) \
+         by more than {DOC_TOLERANCE} cycles in a cell or in its text; \
+         FAULT_MATRIX_WRITE=1 rewrites it\n{committed}\n{t}"
     );
+}
+
+/// The two tables have the same rows and cells, the simulated PL's cells
+/// within `DOC_TOLERANCE`, the co-simulated `pl_top`'s within
+/// `RTL_DOC_TOLERANCE` (the 6th and 7th of the `|`-separated fields).
+fn same_table(a: &str, b: &str) -> bool {
+    let (la, lb): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
+    la.len() == lb.len()
+        && la.iter().zip(&lb).all(|(x, y)| {
+            let (fx, fy): (Vec<&str>, Vec<&str>) = (x.split('|').collect(), y.split('|').collect());
+            fx.len() == fy.len()
+                && fx.iter().zip(&fy).enumerate().all(|(i, (p, q))| {
+                    let tol = if i == 6 || i == 7 {
+                        RTL_DOC_TOLERANCE
+                    } else {
+                        DOC_TOLERANCE
+                    };
+                    same_within(p, q, tol)
+                })
+        })
+}
+
+/// The two texts are the same but for numbers, and every number within
+/// `tol` of the other's.
+fn same_within(a: &str, b: &str, tol: i64) -> bool {
+    let split = |x: &str| -> (String, Vec<i64>) {
+        let mut text = String::new();
+        let mut nums = Vec::new();
+        let mut cur = String::new();
+        for ch in x.chars().chain(std::iter::once(' ')) {
+            if ch.is_ascii_digit() {
+                cur.push(ch);
+            } else {
+                if !cur.is_empty() {
+                    nums.push(cur.parse().unwrap_or(i64::MAX));
+                    text.push('#');
+                    cur.clear();
+                }
+                text.push(ch);
+            }
+        }
+        (text, nums)
+    };
+    let (ta, na) = split(a);
+    let (tb, nb) = split(b);
+    ta == tb && na.len() == nb.len() && na.iter().zip(&nb).all(|(x, y)| (x - y).abs() <= tol)
+}
+
+#[test]
+fn tables_compare_within_the_tolerance_only() {
+    let a = "| `X` | 1 | cause 10 us | 364 (1564) |\n";
+    assert!(same_within(
+        a,
+        "| `X` | 1 | cause 10 us | 366 (1564) |\n",
+        4
+    ));
+    assert!(!same_within(
+        a,
+        "| `X` | 1 | cause 10 us | 369 (1564) |\n",
+        4
+    ));
+    assert!(!same_within(
+        a,
+        "| `X` | 1 | cause 10 ms | 364 (1564) |\n",
+        4
+    ));
+    assert!(!same_within(
+        a,
+        "| `X` | 1 | cause 10 us | **over** (1564) |\n",
+        4
+    ));
+    let row = |s: i64, r: i64| {
+        format!("| `X` | 1 | c | {s} (6256) | 3 (1564) | {r} (6256) | 3 (1564) |\n")
+    };
+    assert!(same_table(&row(100, 200), &row(104, 264)));
+    assert!(!same_table(&row(100, 200), &row(105, 200)));
+    assert!(!same_table(&row(100, 200), &row(100, 265)));
 }

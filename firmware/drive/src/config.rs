@@ -294,8 +294,8 @@ pub const PARAMS: [Param; N_PARAMS] = [
         "cycles",
         1000,
         100_000_000,
-        200_000,
-        "MPDTC rotor alignment before the first decision (MPDTC_ALIGN_TIME), PL cycles",
+        20_000_000,
+        "MPDTC rotor alignment before the first decision (MPDTC_ALIGN_TIME, two halves: +60 deg vector, then the d axis), PL cycles",
     ),
     Param {
         gates_off: false,

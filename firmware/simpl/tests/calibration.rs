@@ -180,7 +180,10 @@ fn step_04(sim: &mut SimDrive, cfg: &ServoConfig, mode: Mode) -> Result<(StepRes
             }
         }
     };
-    // 2 ms first (the MPDTC aligns the rotor for 2 ms).
+    // 2 ms first, after the MPDTC's rotor alignment.
+    while !s.controlling() {
+        run(&mut s, sim, 1, false);
+    }
     let n = (2e-3 * s.control_rate_hz()) as u32;
     run(&mut s, sim, n, false);
     s.begin_step(sim, 0.4, 2e-3).map_err(|e| format!("{e:?}"))?;

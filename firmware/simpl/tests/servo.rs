@@ -47,8 +47,9 @@ fn step_from(mode: Mode, from_nm: f64) -> (StepResult, f64, Servo, SimDrive) {
 
 fn step_from_path(mode: Mode, from_nm: f64, ps_fed: bool) -> (StepResult, f64, Servo, SimDrive) {
     let (mut s, mut sim) = setup_path(mode, ps_fed);
-    // Let the drive run 2 ms (the MPDTC aligns the rotor for 2 ms first),
-    // then 4 ms at the starting reference.
+    // Let the drive run 2 ms after the MPDTC's rotor alignment, then 4 ms
+    // at the starting reference.
+    run(&mut s, &mut sim, 100_000, |s| s.controlling());
     let n = (2e-3 * s.control_rate_hz()) as u32;
     run(&mut s, &mut sim, n, |_| false);
     s.set_torque_ref(from_nm).unwrap();
@@ -181,7 +182,8 @@ fn a_step_right_after_a_mode_change_starts_from_rest() {
 fn capture_records_a_step_with_pre_trigger() {
     use drive::pl::capture::{CapState, Trigger};
     let (mut s, mut sim) = setup(Mode::Mpdtc);
-    let n = (2.5e-3 * s.control_rate_hz()) as u32;
+    run(&mut s, &mut sim, 100_000, |s| s.controlling());
+    let n = (0.5e-3 * s.control_rate_hz()) as u32;
     run(&mut s, &mut sim, n, |_| false);
     s.capture_arm(&mut sim, Trigger::RefStep(0.05), 100, 1)
         .unwrap();
@@ -217,7 +219,8 @@ fn capture_records_a_step_with_pre_trigger() {
 fn sweep_points_on_the_simulated_pl() {
     for (mode, f_lo, f_hi) in [(Mode::Mpdtc, 200.0, 12_000.0), (Mode::Foc, 100.0, 3_000.0)] {
         let (mut s, mut sim) = setup(mode);
-        let n = (2.5e-3 * s.control_rate_hz()) as u32;
+        run(&mut s, &mut sim, 100_000, |s| s.controlling());
+        let n = (0.5e-3 * s.control_rate_hz()) as u32;
         run(&mut s, &mut sim, n, |_| false);
         let mut pts = std::vec::Vec::new();
         for f in [f_lo, f_hi] {

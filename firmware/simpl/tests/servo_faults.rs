@@ -23,7 +23,11 @@ fn gates_go_off_within_one_control_period_on_the_simulated_pl() {
         s.set_mode(&mut sim, mode).unwrap();
         s.enable(&mut sim).unwrap();
         s.set_torque_ref(0.3).unwrap();
-        // Past the MPDTC's 2 ms alignment.
+        // Past the MPDTC's alignment, then 200 periods.
+        while !s.controlling() {
+            sim.advance_to_boundary(20_000);
+            s.control_step(&mut sim).unwrap();
+        }
         for _ in 0..200 {
             sim.advance_to_boundary(20_000);
             s.control_step(&mut sim).unwrap();
@@ -131,7 +135,11 @@ fn a_pl_fault_snapshot_keeps_the_reference_before_the_gates_went_off() {
     s.set_mode(&mut sim, Mode::Mpdtc).unwrap();
     s.enable(&mut sim).unwrap();
     s.set_torque_ref(0.4).unwrap();
-    // Past the MPDTC's 2 ms alignment and the torque's rise.
+    // Past the MPDTC's alignment and the torque's rise.
+    while !s.controlling() {
+        sim.advance_to_boundary(20_000);
+        s.control_step(&mut sim).unwrap();
+    }
     for _ in 0..400 {
         sim.advance_to_boundary(20_000);
         s.control_step(&mut sim).unwrap();

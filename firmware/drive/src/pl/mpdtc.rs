@@ -242,6 +242,13 @@ impl<B: RegisterBus> Mpdtc<B> {
     pub fn set_align_time(&mut self, cycles: u32) -> Result<(), BusError> {
         MpdtcAlignTime::write(&mut self.0, MpdtcAlignTimeValue::ZERO.with_value(cycles))
     }
+    /// Switching state of the rotor alignment (bits SaSbSc).
+    pub fn set_align_vec(&mut self, state: u8) -> Result<(), BusError> {
+        MpdtcAlignVec::write(
+            &mut self.0,
+            MpdtcAlignVecValue::ZERO.with_value(u32::from(state)),
+        )
+    }
     /// Encoder position latched at the end of the alignment.
     pub fn align_pos(&mut self) -> Result<u32, BusError> {
         Ok(MpdtcAlignPos::read(&mut self.0)?.value())

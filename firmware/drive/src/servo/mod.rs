@@ -70,6 +70,15 @@ pub const OVERRUN_PERIODS: u64 = 2;
 /// FOC's measurement pairs with the duties of two steps before.
 const EVIDENCE_SKIP: u32 = 2;
 
+/// MPDTC alignment, first step: switching state 110 (bits SaSbSc), the
+/// voltage vector at +60 electrical degrees. A rotor at its dead point
+/// (240 degrees) stays there and is 120 degrees from the second step's
+/// vector; any other settles on +60 degrees, 60 degrees from it.
+pub const ALIGN_FIRST: u8 = 0b110;
+/// MPDTC alignment, second step: 100, the d axis on phase a (angle 0), where
+/// `MPDTC_ALIGN_POS` is latched.
+pub const ALIGN_D: u8 = 0b100;
+
 /// Configuration of the drive (defaults: the paper's setup).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ServoConfig {
@@ -134,8 +143,10 @@ impl Default for ServoConfig {
             dead_time_cycles: 50,
             // 2 ms: 32 FOC or 128 MPDTC periods without a heartbeat.
             watchdog_cycles: 200_000,
-            // 2 ms of rotor alignment before the MPDTC's first decision.
-            align_cycles: 200_000,
+            // 0.2 s of rotor alignment before the MPDTC's first decision:
+            // two steps of 0.1 s (`ALIGN_FIRST`, then `ALIGN_D`), each
+            // about 3.5 of the free rotor's decay times (docs/mpdtc.md).
+            align_cycles: 20_000_000,
             enc_cpr: 4096,
             // Below the 16 A full scale of the simulated PL's ADC.
             current_limit_a: 14.0,
@@ -250,6 +261,12 @@ pub struct Servo {
     fe_regs: FrontendParams,
     /// MPDTC: the encoder zero latched by the alignment of this run.
     align_zero: Option<u32>,
+    /// MPDTC: control steps left in the alignment's first step (on
+    /// `ALIGN_FIRST`); at 0 the vector goes to `ALIGN_D`.
+    align_first_left: Option<u64>,
+    /// A `move` during the MPDTC's alignment: its capture record starts
+    /// with the alignment's end, where the move starts.
+    move_capture_pending: bool,
     /// MPDTC: the decision applied at the last boundary (for transitions).
     last_state: u8,
     /// FOC: the ADC timer was restarted at a PWM period start of this run.
@@ -349,6 +366,8 @@ impl Servo {
             mpdtc_regs: FixedParams::from_config(&mpdtc)?,
             mpdtc,
             align_zero: None,
+            align_first_left: None,
+            move_capture_pending: false,
             last_state: 0,
             adc_synced: false,
             periods: 0,
@@ -512,13 +531,23 @@ impl Servo {
         // Fresh controller state for this run.
         self.foc = Foc::new(&self.cfg.motor, &self.foc_params).map_err(|_| ServoError::ModeOff)?;
         self.align_zero = None;
+        self.move_capture_pending = false;
         self.last_state = 0;
         self.adc_synced = false;
         let half = self.cfg.foc_half_period_cycles;
         Pwm(&mut *bus).set_duties([0.5; 3], half)?;
         if self.mode == Mode::Mpdtc {
-            // The sequence aligns the rotor, then takes the decisions.
-            Mpdtc(&mut *bus).set_ctrl_path(false, false, !self.cfg.mpdtc_ps_fed)?;
+            // The sequence aligns the rotor, then takes the decisions. The
+            // alignment in two steps: the first half of MPDTC_ALIGN_TIME on
+            // the vector 60 electrical degrees ahead of the d axis, then on
+            // the d axis (`control_step` switches), so no starting angle is
+            // the dead point (180 degrees off) of both.
+            let mut m = Mpdtc(&mut *bus);
+            m.set_align_vec(ALIGN_FIRST)?;
+            m.set_ctrl_path(false, false, !self.cfg.mpdtc_ps_fed)?;
+            let period = self.mpdtc.params.control_period_s * f64::from(regmap::PL_CLOCK_HZ);
+            self.align_first_left =
+                Some(libm::ceil(f64::from(self.cfg.align_cycles / 2) / period) as u64);
         }
         Pwm(&mut *bus).set_gates(true)?;
         self.gates = true;
@@ -765,6 +794,17 @@ impl Servo {
         // empties, the decimation counter restarts) and triggered, so that
         // sample j of the record is taken at the (j + 1) x every-th
         // sample strobe after this command, a fixed offset from the move.
+        // During the MPDTC's alignment that is at its end (the move starts
+        // there).
+        self.move_capture_pending = self.mode == Mode::Mpdtc && self.align_zero.is_none();
+        if !self.move_capture_pending {
+            Self::start_move_capture(bus)?;
+        }
+        Ok(())
+    }
+
+    /// An armed capture record restarts and triggers.
+    fn start_move_capture<B: RegisterBus>(bus: &mut B) -> Result<(), BusError> {
         let mut cap = Capture(&mut *bus);
         if cap.status()?.state == CapState::Armed {
             cap.restart()?;
@@ -1084,8 +1124,19 @@ impl Servo {
             Mode::Mpdtc => {
                 if self.align_zero.is_none() && gates {
                     let mut m = Mpdtc(&mut *bus);
+                    match self.align_first_left {
+                        Some(0) => {
+                            m.set_align_vec(ALIGN_D)?;
+                            self.align_first_left = None;
+                        }
+                        Some(n) => self.align_first_left = Some(n - 1),
+                        None => {}
+                    }
                     if m.seq_status()?.aligned {
                         self.align_zero = Some(m.align_pos()?);
+                        if core::mem::take(&mut self.move_capture_pending) {
+                            Self::start_move_capture(&mut *bus)?;
+                        }
                     }
                 }
                 running &= self.align_zero.is_some();
