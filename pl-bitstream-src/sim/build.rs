@@ -127,6 +127,10 @@ fn run(cmd: &mut Command) {
 fn netlist_env(top: &str) -> String {
     format!("RTL_SIM_NETLIST_{}", top.to_uppercase())
 }
+/// C++ optimisation of a netlist's model: none. A flattened netlist is
+/// tens of thousands of cell instances, whose generated code takes gcc
+/// several times longer at -O1; the gate-level checks run few cycles.
+const NETLIST_OPT: &str = "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0";
 /// The models that can run a netlist.
 const NETLIST_TOPS: [&str; 3] = ["mpdtc_core", "mpdtc_frontend", MPDCC_CORE_SHARED];
 /// Xilinx cell models for the netlist (`cells_sim.v` of the yosys that
@@ -210,7 +214,11 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         .args(["-CFLAGS", "-fPIC -O1"])
         .args([
             "-MAKEFLAGS",
-            &format!("OPT_FAST={} OPT_SLOW=-O1 OPT_GLOBAL=-O1", opt_fast(top)),
+            &if netlist.is_some() {
+                NETLIST_OPT.to_string()
+            } else {
+                format!("OPT_FAST={} OPT_SLOW=-O1 OPT_GLOBAL=-O1", opt_fast(top))
+            },
         ])
         .arg("-Wno-fatal")
         .args(defines(top))
@@ -315,7 +323,7 @@ fn xilinx_cells() -> PathBuf {
 /// and the cell models' contents and the Verilator version.
 fn netlist_key(top: &str, netlist: &Path, cells: &Path) -> u64 {
     let mut h = DefaultHasher::new();
-    (top, opt_fast(top), KEY_VERSION).hash(&mut h);
+    (top, NETLIST_OPT, KEY_VERSION).hash(&mut h);
     for f in [netlist, cells] {
         std::fs::read(f)
             .unwrap_or_else(|e| panic!("{}: {e}", f.display()))
