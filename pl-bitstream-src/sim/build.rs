@@ -117,15 +117,29 @@ fn run(cmd: &mut Command) {
     assert!(status.success(), "{cmd:?} failed with {status}");
 }
 
-/// Gate-level option: `RTL_SIM_MPDTC_NETLIST=<netlist.v>` (a yosys
-/// `write_verilog` of the synthesised `mpdtc_core`, see `scripts/rtl-gatesim`)
-/// makes the `mpdtc_core` harness simulate that netlist with yosys' Xilinx
-/// cell models instead of the RTL, so the same bit-exact tests check what
-/// synthesis produced.
-const NETLIST_ENV: &str = "RTL_SIM_MPDTC_NETLIST";
+/// Gate-level option: `RTL_SIM_NETLIST_<MODEL>=<netlist.v>` (`<MODEL>` the
+/// model's name in upper case: `MPDTC_CORE`, `MPDTC_FRONTEND`,
+/// `MPDCC_CORE_SHARED`), a yosys `write_verilog` of that top synthesised for
+/// the xc7 (see `scripts/rtl-gatesim`), makes the model's harness simulate
+/// that netlist with yosys' Xilinx cell models instead of the RTL, so the
+/// same bit-exact checks (`rtl-check`, the tests) check what synthesis
+/// produced.
+fn netlist_env(top: &str) -> String {
+    format!("RTL_SIM_NETLIST_{}", top.to_uppercase())
+}
+/// C++ optimisation of a netlist's model: none. A flattened netlist is
+/// tens of thousands of cell instances, whose generated code takes gcc
+/// several times longer at -O1; the gate-level checks run few cycles.
+const NETLIST_OPT: &str = "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0";
+/// The models that can run a netlist.
+const NETLIST_TOPS: [&str; 3] = ["mpdtc_core", "mpdtc_frontend", MPDCC_CORE_SHARED];
 /// Xilinx cell models for the netlist (`cells_sim.v` of the yosys that
 /// wrote it; `scripts/rtl-gatesim` sets it).
 const CELLS_ENV: &str = "RTL_SIM_XILINX_CELLS";
+/// `<dir>`: the cache of Verilated RTL models to use instead of
+/// `<target>/verilated` (`scripts/rtl-gatesim` builds in its own target
+/// directory and shares the RTL models of the main one).
+const CACHE_ENV: &str = "RTL_SIM_VERILATED_CACHE";
 
 /// Explorers instantiated in the Verilated `mpdcc_core` (`n_use_i` selects
 /// how many a decision uses, so one model serves `--explorers 1..=6`).
@@ -157,14 +171,17 @@ fn defines(top: &str) -> &'static [&'static str] {
 }
 
 fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
-    let netlist = (top == "mpdtc_core")
-        .then(|| env::var(NETLIST_ENV).ok())
-        .flatten();
-    // The cached model, when there is no netlist and a target directory.
-    let cached = match (&netlist, cache_root(out)) {
-        (None, Some(root)) => Some(root.join(format!("{top}-{:016x}", model_key(rtl, top, files)))),
-        _ => None,
-    };
+    let netlist = NETLIST_TOPS
+        .contains(&top)
+        .then(|| env::var(netlist_env(top)).ok())
+        .flatten()
+        .map(|n| (PathBuf::from(n), xilinx_cells()));
+    // The cached model, when there is a target directory (a netlist's
+    // model under its own key: the netlist's and cell models' contents).
+    let cached = cache_root(out).map(|root| match &netlist {
+        None => root.join(format!("{top}-{:016x}", model_key(rtl, top, files))),
+        Some((n, cells)) => root.join(format!("{top}-gl-{:016x}", netlist_key(top, n, cells))),
+    });
     if let Some(dir) = cached.as_ref().filter(|d| d.join(DONE).exists()) {
         copy_model(out, dir, top);
         return dir.clone();
@@ -197,42 +214,29 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         .args(["-CFLAGS", "-fPIC -O1"])
         .args([
             "-MAKEFLAGS",
-            &format!("OPT_FAST={} OPT_SLOW=-O1 OPT_GLOBAL=-O1", opt_fast(top)),
+            &if netlist.is_some() {
+                NETLIST_OPT.to_string()
+            } else {
+                format!("OPT_FAST={} OPT_SLOW=-O1 OPT_GLOBAL=-O1", opt_fast(top))
+            },
         ])
         .arg("-Wno-fatal")
         .args(defines(top))
         .arg(format!("-I{}", rtl.display()));
-    if top == "mpdcc_core" || top == MPDCC_CORE_SHARED {
-        // The most explorers of the table; a run uses n_use_i of them.
+    if (top == "mpdcc_core" || top == MPDCC_CORE_SHARED) && netlist.is_none() {
+        // The most explorers of the table; a run uses n_use_i of them (a
+        // netlist has its parameters fixed by synthesis).
         cmd.arg(format!("-GN={MPDCC_CORE_EXPLORERS}"));
     }
-    if top == MPDCC_CORE_SHARED {
+    if top == MPDCC_CORE_SHARED && netlist.is_none() {
         cmd.arg(format!("-GII={MPDCC_CORE_SHARED_II}"));
     }
-    if let Some(n) = netlist {
-        // The cell models of the yosys that wrote the netlist: `CELLS_ENV`,
-        // else those next to the yosys on PATH (<prefix>/share/yosys).
-        let cells = match env::var(CELLS_ENV) {
-            Ok(c) => PathBuf::from(c),
-            Err(_) => {
-                let bin = String::from_utf8(
-                    Command::new("sh")
-                        .args(["-c", "command -v yosys"])
-                        .output()
-                        .expect("sh")
-                        .stdout,
-                )
-                .unwrap();
-                PathBuf::from(bin.trim())
-                    .parent()
-                    .and_then(Path::parent)
-                    .map(Path::to_path_buf)
-                    .expect("yosys not found")
-                    .join("share/yosys/xilinx/cells_sim.v")
-            }
-        };
-        println!("cargo:rerun-if-changed={n}");
-        println!("cargo:warning=mpdtc_core: simulating the gate-level netlist {n}");
+    if let Some((n, cells)) = &netlist {
+        println!("cargo:rerun-if-changed={}", n.display());
+        println!(
+            "cargo:warning={top}: simulating the gate-level netlist {}",
+            n.display()
+        );
         cmd.args(["-Wno-lint", "-Wno-style"]).arg(n).arg(cells);
     } else {
         for f in files.iter().filter(|f| f.ends_with(".v")) {
@@ -263,6 +267,9 @@ const DONE: &str = "complete";
 /// `<target>/verilated`: `OUT_DIR` is `<target>/<profile>/build/<pkg>/out`
 /// (`None` if that is not so: then nothing is cached).
 fn cache_root(out: &Path) -> Option<PathBuf> {
+    if let Ok(dir) = env::var(CACHE_ENV) {
+        return Some(PathBuf::from(dir));
+    }
     let target = out.ancestors().nth(4)?;
     target
         .join("CACHEDIR.TAG")
@@ -285,13 +292,53 @@ fn model_key(rtl: &Path, top: &str, files: &[&str]) -> u64 {
             .unwrap_or_else(|e| panic!("{}: {e}", rtl.join(f).display()))
             .hash(&mut h);
     }
-    let version = Command::new("verilator")
+    verilator_version().hash(&mut h);
+    h.finish()
+}
+
+/// The cell models for a netlist (`cells_sim.v` of the yosys that wrote
+/// it): `CELLS_ENV`, else those next to the yosys on PATH
+/// (<prefix>/share/yosys).
+fn xilinx_cells() -> PathBuf {
+    if let Ok(c) = env::var(CELLS_ENV) {
+        return PathBuf::from(c);
+    }
+    let bin = String::from_utf8(
+        Command::new("sh")
+            .args(["-c", "command -v yosys"])
+            .output()
+            .expect("sh")
+            .stdout,
+    )
+    .unwrap();
+    PathBuf::from(bin.trim())
+        .parent()
+        .and_then(Path::parent)
+        .map(Path::to_path_buf)
+        .expect("yosys not found")
+        .join("share/yosys/xilinx/cells_sim.v")
+}
+
+/// The cache key of a netlist's model: its name, options, the netlist's
+/// and the cell models' contents and the Verilator version.
+fn netlist_key(top: &str, netlist: &Path, cells: &Path) -> u64 {
+    let mut h = DefaultHasher::new();
+    (top, NETLIST_OPT, KEY_VERSION).hash(&mut h);
+    for f in [netlist, cells] {
+        std::fs::read(f)
+            .unwrap_or_else(|e| panic!("{}: {e}", f.display()))
+            .hash(&mut h);
+    }
+    verilator_version().hash(&mut h);
+    h.finish()
+}
+
+fn verilator_version() -> Vec<u8> {
+    Command::new("verilator")
         .arg("--version")
         .output()
         .expect("verilator not found (run scripts/setup)")
-        .stdout;
-    version.hash(&mut h);
-    h.finish()
+        .stdout
 }
 
 /// Bumped when the way a model is built changes (options not in the key).
@@ -334,7 +381,10 @@ fn main() {
     let rtl = manifest.join("../rtl");
     let out = PathBuf::from(env::var("OUT_DIR").unwrap());
     println!("cargo:rerun-if-changed=build.rs");
-    println!("cargo:rerun-if-env-changed={NETLIST_ENV}");
+    for top in NETLIST_TOPS {
+        println!("cargo:rerun-if-env-changed={}", netlist_env(top));
+    }
+    println!("cargo:rerun-if-env-changed={CACHE_ENV}");
     println!("cargo:rerun-if-env-changed={CELLS_ENV}");
 
     let vroot = String::from_utf8(
