@@ -381,7 +381,8 @@ fn value_for(rng: &mut Rng, r: &Register) -> u32 {
         "ENC_WINDOW" => &[0, 100, 101, 157, 1000],
         "OC_LIMIT" => &[1000, 1800, 2047, 3000, 1800, 250],
         "WDG_TIMEOUT" => &[0, 1000, 30_000, 100_000, 1_000_000],
-        "FAULT_STATUS" | "ERR" => &[7, 1, 2, 4, 3],
+        "FAULT_STATUS" => &[31, 1, 2, 4, 3, 8, 16, 24],
+        "ERR" => &[7, 1, 2, 4, 3],
         "MPDTC_ALIGN_TIME" => &[0, 1, 2, 50, 300, 2000],
         "MPDTC_ALIGN_PERIOD" => &[0, 2, 3, 9, 40, 200],
         "MPDTC_ALIGN_ON" => &[0, 1, 3, 10, 100, 40000],
@@ -551,7 +552,7 @@ fn run(seed: u64, ops: usize) -> Pair {
             75..=84 => {
                 // Re-arm: watchdog fed, faults cleared, a mode, gates on.
                 p.write(rel(&rm::TOP, &rm::HEARTBEAT), 0);
-                p.write(rel(&rm::FAULT, &rm::FAULT_STATUS), 7);
+                p.write(rel(&rm::FAULT, &rm::FAULT_STATUS), 31);
                 let m = [1, 2, 2][(rng.next_u64() % 3) as usize];
                 p.write(rel(&rm::TOP, &rm::CTRL), m);
                 if m == 2 && rng.next_u64() % 4 != 0 {
