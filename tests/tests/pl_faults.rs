@@ -131,6 +131,8 @@ fn encoder_loss_and_adc_stuck_on_the_rtl_within_a_period() {
     check(lat, "mpdtc", ADC_STUCK_CYCLES, "ADC_STUCK");
     let lat = pl_fault(&mut s, "foc", "encoder-loss", "ENCODER_LOSS", 4);
     check(lat, "foc", ENC_LOSS_CYCLES, "ENCODER_LOSS");
+    let lat = pl_fault(&mut s, "foc", "adc-stuck", "ADC_STUCK", 5);
+    check(lat, "foc", ADC_STUCK_CYCLES, "ADC_STUCK");
     let stats = s
         .finish_bridge()
         .expect("a bridge")
