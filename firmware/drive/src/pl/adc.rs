@@ -43,9 +43,18 @@ impl<B: RegisterBus> Adc<B> {
     pub fn count(&mut self) -> Result<u32, BusError> {
         Ok(AdcCount::read(&mut self.0)?.value())
     }
-    /// Cycles between conversion starts (the PL clamps to 16..=65535).
+    /// Cycles between conversion starts (the PL clamps to 16..=65535). A
+    /// new period is followed by a [`Self::restart`]: the sample timer
+    /// would run out its countdown of the old period first, longer than
+    /// the PL's ADC result timer allows with the new one (`ADC_STUCK` at
+    /// the next `GATE_EN`).
     pub fn set_period(&mut self, cycles: u32) -> Result<(), BusError> {
-        AdcPeriod::write(&mut self.0, AdcPeriodValue::ZERO.with_value(cycles))
+        let old = self.period()?;
+        AdcPeriod::write(&mut self.0, AdcPeriodValue::ZERO.with_value(cycles))?;
+        if self.period()? != old {
+            self.restart()?;
+        }
+        Ok(())
     }
     /// Restarts the sample timer (`ADC_CTRL.ENABLE` 0 then 1): called right
     /// after a PWM period start, the conversions take a fixed phase to the
