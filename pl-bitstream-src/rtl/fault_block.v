@@ -38,9 +38,9 @@
 // the timer a fresh sample period for the first conversion, and a disable
 // alone trips one sample period plus the margin after it. A shorter
 // ADC_PERIOD takes effect in the timer at once but in the converter's pace
-// only at its next conversion: a new period is followed by a restart (the
-// firmware's Adc::set_period does it), else a GATE_EN = 1 within the old
-// countdown trips (a false trip: the safe side).
+// only at its next conversion: a new period is written with ENABLE = 0 and
+// then ENABLE = 1 (the firmware's Adc::set_period), else a shorter one
+// trips with the gates on (a false trip: the safe side).
 `default_nettype none
 
 module fault_block (

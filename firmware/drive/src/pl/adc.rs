@@ -44,17 +44,20 @@ impl<B: RegisterBus> Adc<B> {
         Ok(AdcCount::read(&mut self.0)?.value())
     }
     /// Cycles between conversion starts (the PL clamps to 16..=65535). A
-    /// new period is followed by a [`Self::restart`]: the sample timer
-    /// would run out its countdown of the old period first, longer than
-    /// the PL's ADC result timer allows with the new one (`ADC_STUCK` at
-    /// the next `GATE_EN`).
+    /// new period is written with the conversions stopped and restarts
+    /// them (`ADC_CTRL.ENABLE` 0, the period, 1): the sample timer would
+    /// run out its countdown of the old period first, longer than the PL's
+    /// ADC result timer allows with a shorter one (`ADC_STUCK` with the
+    /// gates on); each change of `ENABLE` restarts that timer.
     pub fn set_period(&mut self, cycles: u32) -> Result<(), BusError> {
         let old = self.period()?;
-        AdcPeriod::write(&mut self.0, AdcPeriodValue::ZERO.with_value(cycles))?;
-        if self.period()? != old {
-            self.restart()?;
+        let new = regmap::ADC_PERIOD.apply_write(old, cycles).unwrap_or(old);
+        if new == old {
+            return Ok(());
         }
-        Ok(())
+        AdcCtrl::write(&mut self.0, AdcCtrlValue::ZERO.with_enable(false))?;
+        AdcPeriod::write(&mut self.0, AdcPeriodValue::ZERO.with_value(cycles))?;
+        AdcCtrl::write(&mut self.0, AdcCtrlValue::ZERO.with_enable(true))
     }
     /// Restarts the sample timer (`ADC_CTRL.ENABLE` 0 then 1): called right
     /// after a PWM period start, the conversions take a fixed phase to the
