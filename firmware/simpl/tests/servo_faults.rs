@@ -64,8 +64,13 @@ fn gates_go_off_within_one_control_period_on_the_simulated_pl() {
             // the synchroniser and the capture), which restarts the timer.
             let conv = u64::from(sim2.config().adc_conversion_cycles) + 5;
             let bound = conv + adc + u64::from(regmap::ADC_STUCK_MARGIN_CYCLES) + 1;
-            std::println!("{mode:?}: ADC_STUCK gates off {t0} cycles after the ADC stopped (+{shift})");
-            assert!(t0 <= bound && t0 < period, "{mode:?} +{shift}: {t0} > {bound}");
+            std::println!(
+                "{mode:?}: ADC_STUCK gates off {t0} cycles after the ADC stopped (+{shift})"
+            );
+            assert!(
+                t0 <= bound && t0 < period,
+                "{mode:?} +{shift}: {t0} > {bound}"
+            );
             assert_eq!(
                 s2.faults(&mut sim2).unwrap().0 & Faults::ADC_STUCK,
                 Faults::ADC_STUCK
