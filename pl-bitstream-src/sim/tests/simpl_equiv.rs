@@ -64,6 +64,8 @@ struct Pair {
     auto_cycles: u64,
     /// Reads of MPDTC_FE_ID/IQ that returned a nonzero current.
     fe_data: u64,
+    /// FAULT_STATUS reads with ENCODER_LOSS, ADC_STUCK set.
+    run_faults: [u64; 2],
 }
 
 impl Pair {
@@ -89,6 +91,7 @@ impl Pair {
             mc_kinds: [0; 3],
             auto_cycles: 0,
             fe_data: 0,
+            run_faults: [0; 2],
         }
     }
 
@@ -178,6 +181,10 @@ impl Pair {
             }
             if n == "CAP_STATUS" && v & 3 == rm::cap_state::DONE {
                 self.cap_done += 1;
+            }
+            if n == "FAULT_STATUS" {
+                self.run_faults[0] += u64::from(v >> 3 & 1);
+                self.run_faults[1] += u64::from(v >> 4 & 1);
             }
             if n.starts_with("MPDTC_FE_I") && v != 0 {
                 self.fe_data += 1;
@@ -641,6 +648,12 @@ fn simulated_pl_equals_verilated_pl_top() {
         p.cap_data,
         p.cap_motion
     );
+    // The PL's encoder-loss and ADC-stuck latches were seen.
+    println!(
+        "FAULT_STATUS reads with ENCODER_LOSS, ADC_STUCK: {:?}",
+        p.run_faults
+    );
+    assert!(p.run_faults.iter().all(|&n| n >= 3), "{:?}", p.run_faults);
     // MPDCC decisions of every kind went through the page.
     println!(
         "MPDCC decisions (kept, optimal, deadlock): {:?}",
