@@ -128,9 +128,6 @@ struct State {
     inject_cycle: u64,
     /// PL time at the start of the last control step.
     last_step_cycle: u64,
-    /// Simulated PL: the PL cycle just after the last control-period
-    /// boundary a tick advanced to (`None`: not known to the cycle).
-    last_boundary: Option<u64>,
     /// Co-simulation: the next control step's boundary is the cause of a
     /// `debug fault overrun` (the second period without a step ends).
     overrun_cause_due: bool,
@@ -180,7 +177,6 @@ fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
             if sim.boundaries_crossed() > 0 {
                 let n = sim.advance(0).control_periods;
                 let line = sim.pl().irq_line();
-                s.last_boundary = None;
                 raise = s.serve(n) && line;
             }
         }
@@ -294,7 +290,6 @@ pub fn init() -> Boot {
                     skip_boundaries: 0,
                     inject_cycle: 0,
                     last_step_cycle: 0,
-                    last_boundary: None,
                     overrun_cause_due: false,
                     pending_injection: None,
                     injection_result: None,
@@ -349,47 +344,28 @@ pub fn on_pl_tick() {
             // Up to the next control-period boundary (at most two periods).
             Backend::Sim(sim) => {
                 let period = period_cycles(&s.servo);
-                // MPDTC with the controller running: the averaged ADC
-                // result that makes the boundary is due one period after
-                // the last (the ADC timer's period); a few cycles later it
-                // is overdue (the ADC is stuck, `ADC_STUCK` within the
-                // period).
-                let due = match s.last_boundary {
-                    Some(b) if s.servo.mode() == Mode::Mpdtc && s.servo.controlling() => {
-                        Some(b + period + ADC_DUE_MARGIN)
-                    }
-                    _ => None,
-                };
                 // A boundary that the console's register accesses crossed is
                 // served now (on a board the control interrupt is taken as
-                // soon as the access ends), not one period later.
-                let mut overdue = false;
+                // soon as the access ends), not one period later. A stuck
+                // ADC is the PL's own fault (its result timer), as on a
+                // board.
                 let mut n = if sim.boundaries_crossed() > 0 {
-                    s.last_boundary = None;
                     sim.advance(0).control_periods
-                } else if let Some(due) = due {
-                    let a = sim.advance_to_boundary(due.saturating_sub(sim.pl_cycles()).max(1));
-                    overdue = a.control_periods == 0;
-                    s.last_boundary = (!overdue).then(|| sim.pl_cycles());
-                    a.control_periods
                 } else {
-                    let a = sim.advance_to_boundary(2 * period);
-                    s.last_boundary = (a.control_periods > 0).then(|| sim.pl_cycles());
-                    a.control_periods
+                    sim.advance_to_boundary(2 * period).control_periods
                 };
                 // `debug fault overrun`: more boundaries before the step.
                 let skip = core::mem::take(&mut s.skip_boundaries);
                 for _ in 0..skip {
                     n += sim.advance_to_boundary(2 * period).control_periods;
-                    s.last_boundary = None;
                 }
                 if skip > 0 {
                     // The second period without a step ends here.
                     s.inject_cycle = sim.pl_cycles();
                 }
-                if overdue {
-                    let _ = s.servo.note_result_overdue(sim);
-                } else if n == 0 {
+                if n == 0 {
+                    // The PL's own faults (its ADC result timer) first.
+                    let _ = s.servo.note_pl_faults(sim);
                     // No result from the ADC that paces the period.
                     let _ = s.servo.note_no_boundary(sim, 2);
                 }
@@ -399,7 +375,15 @@ pub fn on_pl_tick() {
             Backend::Gp0(_) => 0,
             // The PL runs to now; the next tick comes just after the next
             // boundary (one global-timer count per PL cycle under QEMU).
-            Backend::Cosim(_) => s.cosim_sync(now),
+            Backend::Cosim(_) => {
+                let n = s.cosim_sync(now);
+                if n == 0 {
+                    // No step to see the PL's faults (a stuck ADC stops
+                    // the MPDTC's boundaries).
+                    let _ = s.servo.note_pl_faults(&mut s.bus);
+                }
+                n
+            }
         };
         // The simulated PL's line, as the board's would be sampled.
         let line = match &s.bus {
@@ -420,11 +404,6 @@ pub fn on_pl_tick() {
         timer::set_compare(next);
     }
 }
-
-/// PL cycles after its due time that an averaged ADC result is overdue:
-/// the boundary is reported one cycle after the strobe, and the tick's
-/// advance stops just after it.
-const ADC_DUE_MARGIN: u64 = 4;
 
 /// Global-timer counts between a control-period boundary and the PL tick
 /// that serves it in co-simulation (the boundary is reported one cycle
@@ -719,6 +698,7 @@ fn inject_now(s: &mut State, f: Injection) -> Result<(), ServoError> {
             Ok(())
         }
         Injection::EncoderDead => sim_set(s, "enc_dead", 1.0),
+        Injection::EncoderLoss => sim_set(s, "enc_invert", 1.0),
         Injection::PhaseOpen => sim_set(s, "phase_open", 2.0),
         // Paced by the console (`FwDrive::inject`).
         Injection::Watchdog => Err(unsupported()),

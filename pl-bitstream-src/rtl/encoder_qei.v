@@ -4,7 +4,8 @@
 // Quadrature decoding, 4 counts per line: the phase (a, b) = 00, 10, 11, 01
 // is 0, 1, 2, 3; a step of +1 (A leads B) counts up, -1 counts down, a jump
 // of 2 (both inputs changed in one clock: the encoder is too fast or noisy)
-// is ignored. The position wraps in 0..cpr_i-1 (mechanical counts per
+// is ignored by the count and flagged on illegal_o (one cycle: the fault
+// block's ENCODER_LOSS). The position wraps in 0..cpr_i-1 (mechanical counts per
 // revolution). A rising edge of z_i sets the position to 0 (it wins over a
 // simultaneous count) and counts in index_cnt_o.
 // Speed: the counts moved during each window of window_i clock cycles,
@@ -28,7 +29,8 @@ module encoder_qei (
     output wire [15:0] pos_o,
     output wire [15:0] speed_o,
     output wire [15:0] index_cnt_o,
-    output wire [15:0] pos_sample_o
+    output wire [15:0] pos_sample_o,
+    output wire        illegal_o
 );
     localparam signed [15:0] SMAX = 16'sh7FFF;
     localparam signed [15:0] SMIN = -16'sh7FFF - 16'sh0001;
@@ -47,6 +49,7 @@ module encoder_qei (
     wire [1:0] step = ph - ph_q;
     wire up = primed_q && (step == 2'd1);
     wire down = primed_q && (step == 2'd3);
+    wire illegal = primed_q && (step == 2'd2);
     wire index = z_i && !z_q;
 
     // Saturating accumulate of this cycle's step.
@@ -106,6 +109,7 @@ module encoder_qei (
         end
     end
 `endif
+    assign illegal_o   = illegal;
 endmodule
 
 `default_nettype wire

@@ -204,10 +204,14 @@ module pl_regs (
     input  wire         fault_status_overcurrent_i,
     input  wire         fault_status_external_i,
     input  wire         fault_status_watchdog_i,
+    input  wire         fault_status_encoder_loss_i,
+    input  wire         fault_status_adc_stuck_i,
     output wire         fault_status_overcurrent_clr_o,
     output wire         fault_status_external_clr_o,
     output wire         fault_status_watchdog_clr_o,
-    input  wire   [2:0] fault_raw_i,
+    output wire         fault_status_encoder_loss_clr_o,
+    output wire         fault_status_adc_stuck_clr_o,
+    input  wire   [4:0] fault_raw_i,
     output wire  [10:0] oc_limit_o,
     output wire  [31:0] wdg_timeout_o,
     // block CAPTURE
@@ -1078,8 +1082,8 @@ module pl_regs (
             15'h500c: rd_data_o = {8'd0, enc_window_q};  // ENC_WINDOW
             15'h5010: rd_data_o = {16'd0, enc_index_i};  // ENC_INDEX
             15'h5014: rd_data_o = {16'd0, enc_pos_sample_i};  // ENC_POS_SAMPLE
-            15'h6000: rd_data_o = {29'd0, fault_status_watchdog_i, fault_status_external_i, fault_status_overcurrent_i};  // FAULT_STATUS
-            15'h6004: rd_data_o = {29'd0, fault_raw_i};  // FAULT_RAW
+            15'h6000: rd_data_o = {27'd0, fault_status_adc_stuck_i, fault_status_encoder_loss_i, fault_status_watchdog_i, fault_status_external_i, fault_status_overcurrent_i};  // FAULT_STATUS
+            15'h6004: rd_data_o = {27'd0, fault_raw_i};  // FAULT_RAW
             15'h6008: rd_data_o = {21'd0, oc_limit_q};  // OC_LIMIT
             15'h600c: rd_data_o = wdg_timeout_q;  // WDG_TIMEOUT
             15'h7000: rd_data_o = {30'd0, cap_source_q};  // CAP_SOURCE
@@ -1227,6 +1231,8 @@ module pl_regs (
     assign fault_status_overcurrent_clr_o = w_fault_status ? n_fault_status[0] : 1'd0;
     assign fault_status_external_clr_o = w_fault_status ? n_fault_status[1] : 1'd0;
     assign fault_status_watchdog_clr_o = w_fault_status ? n_fault_status[2] : 1'd0;
+    assign fault_status_encoder_loss_clr_o = w_fault_status ? n_fault_status[3] : 1'd0;
+    assign fault_status_adc_stuck_clr_o = w_fault_status ? n_fault_status[4] : 1'd0;
     assign oc_limit_o = oc_limit_q;
     assign wdg_timeout_o = wdg_timeout_q;
     assign cap_source_o = cap_source_q;

@@ -5,7 +5,9 @@
 //        field: docs/register-map.md)
 //   adc_frontend  -> raw samples to fault_block, averages to registers
 //   encoder_qei   <- sync2(A, B, Z)
-//   fault_block   <- raw samples, sync2(external fault), heartbeat, watchdog
+//   fault_block   <- raw samples, sync2(external fault), heartbeat, watchdog,
+//                    encoder_qei's illegal steps and the ADC result timer
+//                    (both judged while GATE_EN = 1)
 //   pwm_center    -> switching state in mode FOC-PWM
 //   mpdtc_seq     -> in mode MPDTC with MPDTC_CTRL.MANUAL = 0: the paper's
 //                    control sequence IDLE, INITIAL (rotor alignment), SAMPLE,
@@ -36,7 +38,8 @@
 //                    fault = fault_block trip (all gates off at the next edge)
 // Reset: s_axi_aresetn_i (active low, synchronous, from the PS reset block).
 // Safety chain: a fault condition present in cycle t (over-current on a raw
-// sample, synchronised external fault, watchdog expired) or any latched
+// sample, synchronised external fault, watchdog expired, illegal encoder
+// step or raw ADC sample overdue while GATE_EN = 1) or any latched
 // fault turns every gate off at the edge ending cycle t; the fault latches
 // and also clears GATE_EN, so gates stay off until software clears
 // FAULT_STATUS and sets GATE_EN again. The external pin adds the 2 cycles
@@ -152,7 +155,7 @@ module pl_top #(
     wire [10:0] oc_limit;
     wire [31:0] wdg_timeout;
     wire        heartbeat;
-    wire [ 2:0] fault_clr;
+    wire [ 4:0] fault_clr;
     wire        mp_manual, mp_clr, mp_start, mp_auto;
     wire [24:0] mp_id, mp_iq, mp_u0, mp_u0_half, mp_u0_h, mp_psi_l, mp_kinv_t;
     // Non-negative CUR values: 24 register bits, the core's sign bit is 0.
@@ -201,8 +204,9 @@ module pl_top #(
     wire [15:0] enc_speed;
     wire [15:0] enc_index;
     wire [15:0] enc_pos_sample;
-    wire [ 2:0] fault_status;
-    wire [ 2:0] fault_raw;
+    wire [ 4:0] fault_status;
+    wire [ 4:0] fault_raw;
+    wire        enc_illegal;
     wire        trip;
     wire        enc_a;
     wire        enc_b;
@@ -445,6 +449,10 @@ module pl_top #(
         .fault_status_overcurrent_clr_o(fault_clr[0]),
         .fault_status_external_clr_o   (fault_clr[1]),
         .fault_status_watchdog_clr_o   (fault_clr[2]),
+        .fault_status_encoder_loss_i   (fault_status[3]),
+        .fault_status_adc_stuck_i      (fault_status[4]),
+        .fault_status_encoder_loss_clr_o(fault_clr[3]),
+        .fault_status_adc_stuck_clr_o  (fault_clr[4]),
         .fault_raw_i                (fault_raw),
         .oc_limit_o                 (oc_limit),
         .wdg_timeout_o              (wdg_timeout),
@@ -867,7 +875,8 @@ module pl_top #(
         .pos_o      (enc_pos),
         .speed_o    (enc_speed),
         .index_cnt_o(enc_index),
-        .pos_sample_o(enc_pos_sample)
+        .pos_sample_o(enc_pos_sample),
+        .illegal_o  (enc_illegal)
     );
 
     fault_block u_fault (
@@ -881,6 +890,10 @@ module pl_top #(
         .ext_fault_i   (!fault_ext_n),
         .heartbeat_i   (heartbeat),
         .wdg_timeout_i (wdg_timeout),
+        .run_i         (gate_en),
+        .enc_illegal_i (enc_illegal),
+        .adc_en_i      (adc_en),
+        .adc_period_i  (adc_period),
         .clr_i         (fault_clr),
         .status_o      (fault_status),
         .raw_o         (fault_raw),
@@ -940,7 +953,7 @@ module pl_top #(
             if ($past(fault_any)) assert (gate_hi_o == 3'b000 && gate_lo_o == 3'b000);
             // ... and the source is latched: gates stay off until cleared.
             if ($past(!fault_ext_n || fault_raw[2])) assert (fault_any);
-            if ($past(fault_any && fault_clr == 3'b000)) assert (fault_any);
+            if ($past(fault_any && fault_clr == 5'b00000)) assert (fault_any);
             // Mode off or GATE_EN = 0 also turns every gate off.
             if ($past(!drive_en)) assert (gate_hi_o == 3'b000 && gate_lo_o == 3'b000);
             // The control sequence: back in IDLE one clock after its run

@@ -548,10 +548,10 @@ localparam [14:0] RM_ENC_POS_SAMPLE_ADDR = 15'h5014;
 localparam integer RM_ENC_POS_SAMPLE_W = 16;
 localparam [31:0] RM_ENC_POS_SAMPLE_RESET = 32'h00000000;
 
-// Block 6 FAULT: Over-current, external and watchdog faults, latched.
+// Block 6 FAULT: Over-current, external, watchdog, encoder-loss and ADC-stuck faults, latched.
 localparam [2:0] RM_BLK_FAULT = 3'd6;
 localparam [14:0] RM_FAULT_STATUS_ADDR = 15'h6000;
-localparam integer RM_FAULT_STATUS_W = 3;
+localparam integer RM_FAULT_STATUS_W = 5;
 localparam [31:0] RM_FAULT_STATUS_RESET = 32'h00000000;
 localparam integer RM_FAULT_STATUS_OVERCURRENT_LSB = 0;
 localparam integer RM_FAULT_STATUS_OVERCURRENT_W = 1;
@@ -559,8 +559,12 @@ localparam integer RM_FAULT_STATUS_EXTERNAL_LSB = 1;
 localparam integer RM_FAULT_STATUS_EXTERNAL_W = 1;
 localparam integer RM_FAULT_STATUS_WATCHDOG_LSB = 2;
 localparam integer RM_FAULT_STATUS_WATCHDOG_W = 1;
+localparam integer RM_FAULT_STATUS_ENCODER_LOSS_LSB = 3;
+localparam integer RM_FAULT_STATUS_ENCODER_LOSS_W = 1;
+localparam integer RM_FAULT_STATUS_ADC_STUCK_LSB = 4;
+localparam integer RM_FAULT_STATUS_ADC_STUCK_W = 1;
 localparam [14:0] RM_FAULT_RAW_ADDR = 15'h6004;
-localparam integer RM_FAULT_RAW_W = 3;
+localparam integer RM_FAULT_RAW_W = 5;
 localparam [31:0] RM_FAULT_RAW_RESET = 32'h00000000;
 localparam [14:0] RM_OC_LIMIT_ADDR = 15'h6008;
 localparam integer RM_OC_LIMIT_W = 11;

@@ -740,7 +740,7 @@ pub const FAULT_STATUS: Register = Register {
     name: "FAULT_STATUS",
     offset: 0x000,
     access: Access::W1c,
-    width: 3,
+    width: 5,
     reset: 0,
     format: "bits, latched",
     invalid: Invalid::AllValid,
@@ -754,17 +754,35 @@ pub const FAULT_STATUS: Register = Register {
             1,
             "no HEARTBEAT write for WDG_TIMEOUT cycles",
         ),
+        field(
+            "ENCODER_LOSS",
+            3,
+            1,
+            "an illegal quadrature step (A and B changed in one clock) while GATE_EN = 1",
+        ),
+        field(
+            "ADC_STUCK",
+            4,
+            1,
+            "no raw ADC sample for ADC_PERIOD + 16 cycles while GATE_EN = 1 (the timer \
+             restarts at every sample and every change of ADC_CTRL.ENABLE)",
+        ),
     ],
     doc: "Any set bit forces all gates off (at the clock edge after the condition) \
           and holds GATE_EN at 0; a bit clears on a written 1 unless its condition \
           is present in that cycle. Then GATE_EN must be written 1 again.",
 };
+/// Cycles past `ADC_PERIOD` without a raw ADC sample after which the PL
+/// latches `FAULT_STATUS.ADC_STUCK` while `GATE_EN` = 1 (`fault_block`'s
+/// `ADC_MARGIN`): the data-ready synchroniser's +-1 cycle and a converter's
+/// conversion-time jitter (up to 140 ns), with room.
+pub const ADC_STUCK_MARGIN_CYCLES: u32 = 16;
 /// Fault: live fault conditions.
 pub const FAULT_RAW: Register = Register {
     name: "FAULT_RAW",
     offset: 0x004,
     access: Access::Ro,
-    width: 3,
+    width: 5,
     reset: 0,
     format: "bits, as FAULT_STATUS",
     invalid: Invalid::AllValid,
@@ -1600,7 +1618,7 @@ pub const ENC: Block = Block {
 pub const FAULT: Block = Block {
     name: "FAULT",
     index: 6,
-    doc: "Over-current, external and watchdog faults, latched.",
+    doc: "Over-current, external, watchdog, encoder-loss and ADC-stuck faults, latched.",
     registers: &[&FAULT_STATUS, &FAULT_RAW, &OC_LIMIT, &WDG_TIMEOUT],
 };
 // ---------------------------------------------------------------- block 7

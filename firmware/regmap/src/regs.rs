@@ -10179,14 +10179,14 @@ pub mod enc {
     }
 }
 
-/// Block 6 `FAULT` at `0x43C06000`: Over-current, external and watchdog faults, latched.
+/// Block 6 `FAULT` at `0x43C06000`: Over-current, external, watchdog, encoder-loss and ADC-stuck faults, latched.
 pub mod fault {
     use super::*;
 
     /// Absolute address of the block.
     pub const BASE: usize = 0x43C06000;
 
-    /// `FAULT.FAULT_STATUS` at `0x43C06000` (W1C, 3 bits, reset `0x0`): Any set bit forces all gates off (at the clock edge after the condition) and holds GATE_EN at 0; a bit clears on a written 1 unless its condition is present in that cycle. Then GATE_EN must be written 1 again.
+    /// `FAULT.FAULT_STATUS` at `0x43C06000` (W1C, 5 bits, reset `0x0`): Any set bit forces all gates off (at the clock edge after the condition) and holds GATE_EN at 0; a bit clears on a written 1 unless its condition is present in that cycle. Then GATE_EN must be written 1 again.
     ///
     /// Format: bits, latched. Writes: write 1 to clear (a bit whose condition is still present stays set).
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -10212,7 +10212,7 @@ pub mod fault {
         }
     }
 
-    /// A value of [`FaultStatus`]; bits above bit 2 are 0 when read.
+    /// A value of [`FaultStatus`]; bits above bit 4 are 0 when read.
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
     pub struct FaultStatusValue(u32);
 
@@ -10261,6 +10261,26 @@ pub mod fault {
         pub const fn with_watchdog(self, v: bool) -> Self {
             Self((self.0 & !(1 << 2)) | ((v as u32) << 2))
         }
+
+        /// `ENCODER_LOSS` (bit 3): an illegal quadrature step (A and B changed in one clock) while GATE_EN = 1
+        pub const fn encoder_loss(self) -> bool {
+            (self.0 >> 3) & 1 != 0
+        }
+
+        /// Sets `ENCODER_LOSS` (bit 3).
+        pub const fn with_encoder_loss(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 3)) | ((v as u32) << 3))
+        }
+
+        /// `ADC_STUCK` (bit 4): no raw ADC sample for ADC_PERIOD + 16 cycles while GATE_EN = 1 (the timer restarts at every sample and every change of ADC_CTRL.ENABLE)
+        pub const fn adc_stuck(self) -> bool {
+            (self.0 >> 4) & 1 != 0
+        }
+
+        /// Sets `ADC_STUCK` (bit 4).
+        pub const fn with_adc_stuck(self, v: bool) -> Self {
+            Self((self.0 & !(1 << 4)) | ((v as u32) << 4))
+        }
     }
 
     impl Default for FaultStatusValue {
@@ -10269,7 +10289,7 @@ pub mod fault {
         }
     }
 
-    /// `FAULT.FAULT_RAW` at `0x43C06004` (RO, 3 bits, reset `0x0`): The fault conditions now, unlatched.
+    /// `FAULT.FAULT_RAW` at `0x43C06004` (RO, 5 bits, reset `0x0`): The fault conditions now, unlatched.
     ///
     /// Format: bits, as FAULT_STATUS. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -10287,7 +10307,7 @@ pub mod fault {
         }
     }
 
-    /// A value of [`FaultRaw`]; bits above bit 2 are 0 when read.
+    /// A value of [`FaultRaw`]; bits above bit 4 are 0 when read.
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
     pub struct FaultRawValue(u32);
 
@@ -10307,14 +10327,14 @@ pub mod fault {
             self.0
         }
 
-        /// `VALUE` (bits 2:0, 3 bits): The whole register (bits, as FAULT_STATUS).
+        /// `VALUE` (bits 4:0, 5 bits): The whole register (bits, as FAULT_STATUS).
         pub const fn value(self) -> u32 {
-            self.0 & 0x7
+            self.0 & 0x1F
         }
 
-        /// Sets `VALUE` (bits 2:0, 3 bits) to the low 3 bits of `v` (higher bits are dropped).
+        /// Sets `VALUE` (bits 4:0, 5 bits) to the low 5 bits of `v` (higher bits are dropped).
         pub const fn with_value(self, v: u32) -> Self {
-            Self((self.0 & !0x7) | (v & 0x7))
+            Self((self.0 & !0x1F) | (v & 0x1F))
         }
     }
 

@@ -71,6 +71,12 @@ fn phase(a: bool, b: bool) -> u8 {
 }
 
 impl Encoder {
+    /// `illegal_o`: the synchronised levels make an illegal quadrature
+    /// step this cycle (A and B changed in one clock; not counted).
+    pub fn illegal(&self, a: bool, b: bool) -> bool {
+        self.primed && phase(a, b).wrapping_sub(self.ph) & 3 == 2
+    }
+
     /// One clock edge with the synchronised levels, the registers and the
     /// control-period boundary strobe `sample`.
     pub fn step(&mut self, a: bool, b: bool, z: bool, cpr: u16, window: u32, sample: bool) {

@@ -1,5 +1,6 @@
 //! `fault_block`: over-current on raw samples, external input, watchdog on
-//! HEARTBEAT writes / WDG_TIMEOUT; latched, W1C with set winning.
+//! HEARTBEAT writes / WDG_TIMEOUT, illegal encoder steps and the ADC result
+//! timer while GATE_EN = 1; latched, W1C with set winning.
 
 use super::NEVER;
 
@@ -9,6 +10,14 @@ pub const OVERCURRENT: u8 = 1;
 pub const EXTERNAL: u8 = 2;
 /// Watchdog.
 pub const WATCHDOG: u8 = 4;
+/// Illegal quadrature step while running.
+pub const ENCODER_LOSS: u8 = 8;
+/// No raw ADC sample for `ADC_PERIOD` + [`ADC_MARGIN`] cycles while running.
+pub const ADC_STUCK: u8 = 16;
+/// `fault_block`'s `ADC_MARGIN`, cycles.
+pub const ADC_MARGIN: u32 = regmap::ADC_STUCK_MARGIN_CYCLES;
+/// The result timer's saturation (17 bits).
+const AGE_MAX: u32 = 0x1_FFFF;
 
 /// |x| of a 12-bit two's complement value as 12-bit unsigned (|-2048| = 2048).
 fn mag(x: u16) -> u16 {
@@ -20,12 +29,29 @@ fn mag(x: u16) -> u16 {
 }
 
 /// Registers of `fault_block`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Fault {
     /// Latched faults (`FAULT_STATUS`).
     pub status: u8,
     oc_last: bool,
     wdg: u32,
+    /// Cycles since the last raw sample, ADC_CTRL.ENABLE change or cycle
+    /// with GATE_EN = 0 (`adc_age_q`, saturating at 17 bits).
+    adc_age: u32,
+    /// ADC_CTRL.ENABLE of the cycle before (`adc_en_q`, reset 1).
+    adc_en: bool,
+}
+
+impl Default for Fault {
+    fn default() -> Self {
+        Self {
+            status: 0,
+            oc_last: false,
+            wdg: 0,
+            adc_age: 0,
+            adc_en: true,
+        }
+    }
 }
 
 /// Inputs of one cycle.
@@ -41,6 +67,14 @@ pub struct FaultIn {
     pub ext: bool,
     /// WDG_TIMEOUT, cycles.
     pub wdg_timeout: u32,
+    /// GATE_EN: the drive runs.
+    pub run: bool,
+    /// `encoder_qei`'s illegal step this cycle.
+    pub enc_illegal: bool,
+    /// ADC_CTRL.ENABLE.
+    pub adc_en: bool,
+    /// ADC_PERIOD, cycles.
+    pub adc_period: u16,
 }
 
 impl Fault {
@@ -48,11 +82,24 @@ impl Fault {
         i.sample.iter().any(|&s| mag(s) > i.oc_limit)
     }
 
-    /// Fault conditions of this cycle `{watchdog, external, overcurrent}`.
+    /// The timer's trip level: ADC_PERIOD + the margin.
+    fn adc_limit(i: &FaultIn) -> u32 {
+        u32::from(i.adc_period) + ADC_MARGIN
+    }
+
+    /// Live conditions of encoder loss and ADC stuck (bits 3, 4).
+    fn run_cond(&self, i: &FaultIn) -> u8 {
+        let enc = i.run && i.enc_illegal;
+        let adc = i.run && self.adc_age >= Self::adc_limit(i);
+        (u8::from(adc) << 4) | (u8::from(enc) << 3)
+    }
+
+    /// Fault conditions of this cycle `{adc stuck, encoder loss, watchdog,
+    /// external, overcurrent}`.
     pub fn cond(&self, i: &FaultIn) -> u8 {
         let oc = i.sample_valid && Self::oc_sample(i);
         let wdg = self.wdg >= i.wdg_timeout;
-        (u8::from(wdg) << 2) | (u8::from(i.ext) << 1) | u8::from(oc)
+        self.run_cond(i) | (u8::from(wdg) << 2) | (u8::from(i.ext) << 1) | u8::from(oc)
     }
 
     /// Gate-driver fault input: latched or raised this cycle.
@@ -62,7 +109,10 @@ impl Fault {
 
     /// `FAULT_RAW`.
     pub fn raw(&self, i: &FaultIn) -> u8 {
-        (u8::from(self.wdg >= i.wdg_timeout) << 2) | (u8::from(i.ext) << 1) | u8::from(self.oc_last)
+        self.run_cond(i)
+            | (u8::from(self.wdg >= i.wdg_timeout) << 2)
+            | (u8::from(i.ext) << 1)
+            | u8::from(self.oc_last)
     }
 
     /// One clock edge. `status_after_clear` is `FAULT_STATUS` after this
@@ -78,23 +128,48 @@ impl Fault {
         } else {
             self.wdg = self.wdg.saturating_add(1);
         }
+        let restart = !i.run || i.sample_valid || i.adc_en != self.adc_en;
+        self.adc_en = i.adc_en;
+        self.adc_age = if restart {
+            0
+        } else {
+            (self.adc_age + 1).min(AGE_MAX)
+        };
     }
 
-    /// Cycles from now without a new latched bit or a watchdog expiry
-    /// (no raw sample in them).
+    /// Cycles from now without a new latched bit, a watchdog expiry or an
+    /// ADC result overdue (no raw sample, no encoder step, no change of the
+    /// registers in them).
     pub fn quiet(&self, i: &FaultIn) -> u64 {
-        if self.status | self.cond(i) != self.status {
+        if self.status | self.cond(i) != self.status || i.adc_en != self.adc_en {
             return 0;
         }
-        if self.wdg >= i.wdg_timeout {
+        let wdg = if self.wdg >= i.wdg_timeout {
             NEVER
         } else {
             u64::from(i.wdg_timeout - self.wdg)
-        }
+        };
+        let limit = Self::adc_limit(i);
+        let adc = if !i.run {
+            // The timer holds at 0.
+            if self.adc_age == 0 {
+                NEVER
+            } else {
+                0
+            }
+        } else if self.adc_age >= limit {
+            NEVER
+        } else {
+            u64::from(limit - self.adc_age)
+        };
+        wdg.min(adc)
     }
 
-    /// Applies `k` quiet cycles.
-    pub fn skip(&mut self, k: u64) {
+    /// Applies `k` quiet cycles with the drive running (`run`) or not.
+    pub fn skip(&mut self, k: u64, run: bool) {
         self.wdg = self.wdg.saturating_add(k.min(u64::from(u32::MAX)) as u32);
+        if run {
+            self.adc_age = (u64::from(self.adc_age) + k).min(u64::from(AGE_MAX)) as u32;
+        }
     }
 }

@@ -348,6 +348,10 @@ impl SimPl {
             oc_limit: self.r(S_OC_LIMIT) as u16,
             ext: !self.ext_sync.q,
             wdg_timeout: self.r(S_WDG_TIMEOUT),
+            run: gate_en,
+            enc_illegal: self.enc.illegal(self.enc_sync[0].q, self.enc_sync[1].q),
+            adc_en: self.r(S_ADC_CTRL) & 1 != 0,
+            adc_period: self.r(S_ADC_PERIOD) as u16,
         };
         let trip = self.fault.trip(&fault_in);
         let fault_any = self.fault.status != 0;
@@ -698,7 +702,7 @@ impl SimPl {
         self.pwm.skip(k);
         self.adc.skip(self.r(S_ADC_CTRL) & 1 != 0, k);
         self.enc.skip(k);
-        self.fault.skip(k);
+        self.fault.skip(k, self.r(S_GATE_CTRL) & 1 != 0);
         self.seq.skip(k);
         self.core.skip(k);
         self.mpdcc.skip(k);

@@ -294,6 +294,8 @@ pub struct SimDrive<P = SimPl> {
     phase_open: u8,
     /// The external fault input is asserted.
     fault_ext: bool,
+    /// The encoder's A and B lines are inverted (`sim set enc_invert`).
+    enc_invert: bool,
     /// PL cycle from which all six gate outputs have been off (`None`
     /// while one is on).
     gates_off_since: Option<u64>,
@@ -335,6 +337,7 @@ impl<P: PlModel> SimDrive<P> {
             enc_dead: false,
             phase_open: 0,
             fault_ext: false,
+            enc_invert: false,
             gates_off_since: Some(0),
         };
         s.update_encoder_pins();
@@ -405,6 +408,7 @@ impl<P: PlModel> SimDrive<P> {
             enc_dead: self.enc_dead,
             phase_open: self.phase_open,
             fault_ext: self.fault_ext,
+            enc_invert: self.enc_invert,
         }
     }
 
@@ -442,6 +446,7 @@ impl<P: PlModel> SimDrive<P> {
         self.enc_dead = m.enc_dead;
         self.phase_open = m.phase_open.min(3);
         self.set_external_fault(m.fault_ext);
+        self.enc_invert = m.enc_invert;
         self.update_encoder_pins();
         Ok(())
     }
@@ -645,6 +650,7 @@ impl<P: PlModel> SimDrive<P> {
         let count = i64::from(self.enc_dir) * count + i64::from(self.enc_offset);
         let (a, b) = [(false, false), (true, false), (true, true), (false, true)]
             [count.rem_euclid(4) as usize];
+        let (a, b) = (a ^ self.enc_invert, b ^ self.enc_invert);
         let z = count.rem_euclid(cpr) == 0;
         let pins = self.pl.pins_mut();
         pins.enc_a = a;

@@ -53,39 +53,59 @@ fn gates_go_off_within_one_control_period_on_the_simulated_pl() {
         std::println!("{mode:?}: EXTERNAL gates off after {n} cycles");
         assert!(n <= 4, "{mode:?}: {n}");
 
-        // ADC stuck: the conversions stop; the PS sees it at the second
-        // control step without a new result (FOC: a PWM period holds 4 ADC
-        // periods) or when no period boundary comes in two periods (MPDTC).
+        // ADC stuck: the conversions stop (ADC_CTRL.ENABLE = 0); the PL
+        // latches ADC_STUCK when no
+        // raw sample came for ADC_PERIOD + the margin, at any instant of the
+        // control period, in both modes.
         let (mut s, mut sim, period) = setup(mode);
-        Adc(&mut sim).set_enabled(false).unwrap();
-        let t0 = sim.pl_cycles();
-        let mut k = 0;
-        while !off(&sim) {
-            let a = sim.advance_to_boundary(2 * period);
-            if a.control_periods == 0 {
-                s.note_no_boundary(&mut sim, 2).unwrap();
-            } else {
-                s.control_step(&mut sim).unwrap();
-            }
-            k += 1;
-            assert!(k < 10, "{mode:?}: adc");
+        for shift in [0, 97, 250] {
+            let (mut s2, mut sim2, _) = setup(mode);
+            sim2.advance(shift);
+            let t0 = gates_off_after(&mut sim2, |sim| Adc(sim).set_enabled(false).unwrap());
+            let adc = u64::from(Adc(&mut sim2).period().unwrap());
+            // A conversion under way at the stop still ends in a sample
+            // (its data-ready: conversion time + 2 cycles, then the 3 of
+            // the synchroniser and the capture), which restarts the timer.
+            let conv = u64::from(sim2.config().adc_conversion_cycles) + 5;
+            let bound = conv + adc + u64::from(regmap::ADC_STUCK_MARGIN_CYCLES) + 1;
+            std::println!(
+                "{mode:?}: ADC_STUCK gates off {t0} cycles after the ADC stopped (+{shift})"
+            );
+            assert!(
+                t0 <= bound && t0 < period,
+                "{mode:?} +{shift}: {t0} > {bound}"
+            );
+            assert_eq!(
+                s2.faults(&mut sim2).unwrap().0 & Faults::ADC_STUCK,
+                Faults::ADC_STUCK
+            );
         }
-        let n = sim.pl_cycles() - t0;
-        std::println!(
-            "{mode:?}: ADC_STUCK gates off {n} cycles after the ADC stopped ({:.2} periods)",
-            n as f64 / period as f64
-        );
-        // The first missing result is due one period after the stop (FOC:
-        // the first step after it may still read the last one); the check
-        // gives up on it one period later.
-        let due = period;
-        // (plus the cycles of the register accesses that turn them off).
-        assert!(n - due <= period + 8, "{mode:?}: {n}");
+        // Encoder loss: A and B change in the same instant; the PL latches
+        // it through the pins' 2-flop synchronisers.
+        let t = gates_off_after(&mut sim, |sim| sim.sim_set("enc_invert", 1.0).unwrap());
+        std::println!("{mode:?}: ENCODER_LOSS gates off {t} cycles after the step");
+        assert!(t <= 4, "{mode:?}: {t}");
         assert_eq!(
-            s.faults(&mut sim).unwrap().0 & Faults::ADC_STUCK,
-            Faults::ADC_STUCK
+            s.faults(&mut sim).unwrap().0,
+            Faults::ENCODER_LOSS,
+            "{mode:?}"
         );
     }
+}
+
+/// Runs `cause` (at the present cycle), then the PL cycle by cycle until
+/// all six gates are off: the cycles from the cause to the first cycle with
+/// them off.
+fn gates_off_after(sim: &mut SimDrive, cause: impl FnOnce(&mut SimDrive)) -> u64 {
+    cause(sim);
+    let t0 = sim.pl_cycles();
+    for _ in 0..20_000 {
+        if let Some(t) = sim.gates_off_since() {
+            return t.saturating_sub(t0);
+        }
+        sim.advance(1);
+    }
+    panic!("the gates stay on");
 }
 
 /// Mode changes move the control-period boundary (the first FOC boundary

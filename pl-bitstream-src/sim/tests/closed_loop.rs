@@ -83,6 +83,11 @@ impl RtlMpdtc {
             sim.write(axi_addr(&rm::ADC, &rm::ADC_PERIOD), ADC_PERIOD),
             OKAY
         );
+        // The new pace at once (the sample timer's countdown of the reset
+        // period would outlast the ADC result timer's new limit).
+        for en in [0, 1] {
+            assert_eq!(sim.write(axi_addr(&rm::ADC, &rm::ADC_CTRL), en), OKAY);
+        }
         sim.adc = Some(simpl::adc::Converter::new(10));
         assert_eq!(sim.write(t(&rm::CTRL), mode::MPDTC), OKAY);
         assert_eq!(sim.write(axi_addr(&rm::PWM, &rm::DEAD_TIME), 10), OKAY);

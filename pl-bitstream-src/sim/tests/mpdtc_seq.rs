@@ -68,6 +68,10 @@ fn setup() -> PlTopSim {
     let mut sim = PlTopSim::new();
     sim.adc = Some(simpl::adc::Converter::new(10));
     w(&mut sim, &rm::ADC, &rm::ADC_PERIOD, ADC_PERIOD);
+    // The new pace at once (the sample timer's countdown of the reset
+    // period would outlast the ADC result timer's new limit).
+    w(&mut sim, &rm::ADC, &rm::ADC_CTRL, 0);
+    w(&mut sim, &rm::ADC, &rm::ADC_CTRL, 1);
     w(&mut sim, &rm::PWM, &rm::DEAD_TIME, DT);
     w(&mut sim, &rm::MPDTC, &rm::MPDTC_ALIGN_PERIOD, ALIGN_PERIOD);
     w(&mut sim, &rm::MPDTC, &rm::MPDTC_ALIGN_ON, ALIGN_ON);
@@ -117,7 +121,11 @@ fn until_sampled(sim: &mut PlTopSim) {
     let mut n = 0;
     while status(sim) & 0xF != seq_state::SAMPLE | 8 {
         n += 1;
-        assert!(n < 1000, "no sample in SAMPLE");
+        assert!(
+            n < 1000,
+            "no sample in SAMPLE (FAULT_STATUS {:#x})",
+            r(sim, &rm::FAULT, &rm::FAULT_STATUS)
+        );
     }
 }
 
@@ -212,8 +220,13 @@ fn idle_alignment_then_sample() {
 fn sample_mpdtc_pwm_cycle_and_aborts() {
     let mut sim = setup();
     w(&mut sim, &rm::MPDTC, &rm::MPDTC_ALIGN_TIME, 200);
-    // No ADC results: the sequence waits in SAMPLE, a START is ignored.
+    // No averaged ADC results: the sequence waits in SAMPLE, a START is
+    // ignored. (A slow ADC, not a stopped one: with the gates on, the PL's
+    // ADC result timer trips ADC_STUCK ADC_PERIOD + 16 cycles after the
+    // last raw sample.)
+    w(&mut sim, &rm::ADC, &rm::ADC_PERIOD, 1000);
     w(&mut sim, &rm::ADC, &rm::ADC_CTRL, 0);
+    w(&mut sim, &rm::ADC, &rm::ADC_CTRL, 1);
     w(&mut sim, &rm::PWM, &rm::GATE_CTRL, 1);
     sim.idle(250);
     assert_eq!(
@@ -229,6 +242,10 @@ fn sample_mpdtc_pwm_cycle_and_aborts() {
         "START before the sample is ignored"
     );
     assert_eq!(state(&mut sim), seq_state::SAMPLE);
+    // A shorter period acts on the result timer at once: written with the
+    // conversions stopped (the change of ENABLE restarts the timer).
+    w(&mut sim, &rm::ADC, &rm::ADC_CTRL, 0);
+    w(&mut sim, &rm::ADC, &rm::ADC_PERIOD, ADC_PERIOD);
     w(&mut sim, &rm::ADC, &rm::ADC_CTRL, 1);
     until_sampled(&mut sim);
 

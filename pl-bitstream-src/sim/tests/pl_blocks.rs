@@ -4,6 +4,7 @@
 //! with dead time, encoder position, index and speed.
 use regmap::{self, mode};
 use rtl_sim::pl_top::{axi_addr, PlTopSim, OKAY};
+use simpl::adc::Converter;
 
 fn a(b: &regmap::Block, r: &regmap::Register) -> u16 {
     axi_addr(b, r)
@@ -78,6 +79,8 @@ fn external_fault_trips_in_three_clocks_and_latches() {
 #[test]
 fn watchdog_trips_without_heartbeat() {
     let mut sim = PlTopSim::new();
+    // A converter answering every convert pulse: no ADC_STUCK.
+    sim.adc = Some(Converter::new(10));
     w(&mut sim, &regmap::FAULT, &regmap::WDG_TIMEOUT, 0); // clamped to 1000
     assert_eq!(r(&mut sim, &regmap::FAULT, &regmap::WDG_TIMEOUT), 1000);
     drive_on(&mut sim);
@@ -254,17 +257,39 @@ fn asynchronous_data_ready_gives_one_sample_per_edge() {
 }
 
 /// No converter card: the pull-downs hold data-ready and the data low. No
-/// sample is taken, `ADC_COUNT` stays at 0 (the firmware's ADC-stuck check
-/// trips) and the over-current trip stays quiet; a data-ready held high
-/// through reset is not a result either.
+/// sample is taken, `ADC_COUNT` stays at 0, the over-current trip stays
+/// quiet, and the ADC result timer latches `ADC_STUCK` ADC_PERIOD + 16
+/// cycles after `GATE_EN` (the timer holds at 0 while it is 0); a
+/// data-ready held high through reset is not a result either.
 #[test]
 fn missing_converter_gives_no_samples() {
     let mut sim = PlTopSim::new();
-    drive_on(&mut sim);
-    sim.idle(5000);
+    w(&mut sim, &regmap::PWM, &regmap::DEAD_TIME, 2);
+    w(&mut sim, &regmap::PWM, &regmap::SW_STATE, 0b100);
+    w(&mut sim, &regmap::TOP, &regmap::CTRL, mode::MPDTC);
+    sim.idle(1000);
+    assert_eq!(r(&mut sim, &regmap::FAULT, &regmap::FAULT_STATUS), 0);
+    w(&mut sim, &regmap::PWM, &regmap::GATE_CTRL, 1);
+    // The write's strobe is one cycle before its response.
+    let t0 = sim.cycles - 1;
+    while sim.peek().gate_hi == 0 {
+        sim.step();
+        assert!(sim.cycles - t0 < 20, "gates never on");
+    }
+    while !gates_off(&sim) {
+        sim.step();
+        assert!(sim.cycles - t0 < 2000, "ADC_STUCK never tripped");
+    }
+    // GATE_EN = 1 from the edge ending the strobe cycle t0; the age
+    // counts from 0 at the next edge and reaches 391 + 16 = 407 in cycle
+    // t0 + 408, whose edge turns the gates off.
+    let dt = sim.cycles - t0;
+    let limit = u64::from(regmap::ADC_PERIOD.reset + regmap::ADC_STUCK_MARGIN_CYCLES);
+    assert_eq!(dt, limit + 1, "tripped after {dt} cycles");
+    assert_eq!(r(&mut sim, &regmap::FAULT, &regmap::FAULT_STATUS), 0b1_0000);
+    assert_eq!(r(&mut sim, &regmap::PWM, &regmap::GATE_CTRL), 0);
     assert_eq!(r(&mut sim, &regmap::ADC, &regmap::ADC_COUNT), 0);
     assert_eq!(r(&mut sim, &regmap::ADC, &regmap::ADC_IA), 0);
-    assert!(!gates_off(&sim));
     let mut sim = PlTopSim::new();
     sim.inp.adc_drdy = 1;
     sim.inp.aresetn = 0;
@@ -277,6 +302,7 @@ fn missing_converter_gives_no_samples() {
 #[test]
 fn centre_aligned_pwm_on_times_with_dead_time() {
     let mut sim = PlTopSim::new();
+    sim.adc = Some(Converter::new(10));
     w(&mut sim, &regmap::PWM, &regmap::PWM_PERIOD, 100);
     w(&mut sim, &regmap::PWM, &regmap::DUTY_A, 25);
     w(&mut sim, &regmap::PWM, &regmap::DUTY_B, 50);
@@ -304,6 +330,40 @@ fn centre_aligned_pwm_on_times_with_dead_time() {
     assert_eq!(hi.map(|x| x % 5), [0, 0, 0]);
     let pc = r(&mut sim, &regmap::PWM, &regmap::PWM_COUNT);
     assert!(pc & 0xFFFF < 100);
+}
+
+/// An illegal quadrature step (A and B change together) with the gates on
+/// latches `ENCODER_LOSS` and turns the gates off 3 edges after the pins
+/// change (2 synchroniser flops, then the gate flops); with `GATE_EN` = 0
+/// it latches nothing. The count ignores the step either way.
+#[test]
+fn illegal_encoder_step_is_encoder_loss_while_running() {
+    let mut sim = PlTopSim::new();
+    sim.adc = Some(Converter::new(10));
+    sim.idle(10);
+    // Gates off: no fault.
+    (sim.inp.enc_a, sim.inp.enc_b) = (1, 1);
+    sim.idle(10);
+    assert_eq!(r(&mut sim, &regmap::FAULT, &regmap::FAULT_STATUS), 0);
+    assert_eq!(r(&mut sim, &regmap::ENC, &regmap::ENC_POS), 0);
+    drive_on(&mut sim);
+    // A legal step: no fault.
+    sim.inp.enc_a = 0;
+    sim.idle(10);
+    assert!(!gates_off(&sim));
+    let pos = r(&mut sim, &regmap::ENC, &regmap::ENC_POS);
+    // (0, 1) to (1, 0): both lines change.
+    (sim.inp.enc_a, sim.inp.enc_b) = (1, 0);
+    sim.step();
+    sim.step();
+    assert!(!gates_off(&sim), "off too early (only 2 edges)");
+    sim.step();
+    assert!(gates_off(&sim), "not off at the 3rd edge");
+    assert_eq!(r(&mut sim, &regmap::FAULT, &regmap::FAULT_STATUS), 0b0_1000);
+    assert_eq!(r(&mut sim, &regmap::ENC, &regmap::ENC_POS), pos);
+    // A one-cycle condition: cleared by a written 1.
+    w(&mut sim, &regmap::FAULT, &regmap::FAULT_STATUS, 0b1_1111);
+    assert_eq!(r(&mut sim, &regmap::FAULT, &regmap::FAULT_STATUS), 0);
 }
 
 /// Encoder phases (a, b) in counting-up order.

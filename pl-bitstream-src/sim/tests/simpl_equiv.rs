@@ -66,6 +66,8 @@ struct Pair {
     auto_cycles: u64,
     /// Reads of MPDTC_FE_ID/IQ that returned a nonzero current.
     fe_data: u64,
+    /// FAULT_STATUS reads with ENCODER_LOSS, ADC_STUCK set.
+    run_faults: [u64; 2],
 }
 
 impl Pair {
@@ -92,6 +94,7 @@ impl Pair {
             mc_kinds: [0; 3],
             auto_cycles: 0,
             fe_data: 0,
+            run_faults: [0; 2],
         }
     }
 
@@ -184,6 +187,10 @@ impl Pair {
             }
             if n == "CAP_STATUS" && v & 3 == rm::cap_state::DONE {
                 self.cap_done += 1;
+            }
+            if n == "FAULT_STATUS" {
+                self.run_faults[0] += u64::from(v >> 3 & 1);
+                self.run_faults[1] += u64::from(v >> 4 & 1);
             }
             if n.starts_with("MPDTC_FE_I") && v != 0 {
                 self.fe_data += 1;
@@ -387,7 +394,8 @@ fn value_for(rng: &mut Rng, r: &Register) -> u32 {
         "ENC_WINDOW" => &[0, 100, 101, 157, 1000],
         "OC_LIMIT" => &[1000, 1800, 2047, 3000, 1800, 250],
         "WDG_TIMEOUT" => &[0, 1000, 30_000, 100_000, 1_000_000],
-        "FAULT_STATUS" | "ERR" => &[7, 1, 2, 4, 3],
+        "FAULT_STATUS" => &[31, 1, 2, 4, 3, 8, 16, 24],
+        "ERR" => &[7, 1, 2, 4, 3],
         "MPDTC_ALIGN_TIME" => &[0, 1, 2, 50, 300, 2000],
         "MPDTC_ALIGN_PERIOD" => &[0, 2, 3, 9, 40, 200],
         "MPDTC_ALIGN_ON" => &[0, 1, 3, 10, 100, 40000],
@@ -557,7 +565,7 @@ fn run(seed: u64, ops: usize) -> Pair {
             75..=84 => {
                 // Re-arm: watchdog fed, faults cleared, a mode, gates on.
                 p.write(rel(&rm::TOP, &rm::HEARTBEAT), 0);
-                p.write(rel(&rm::FAULT, &rm::FAULT_STATUS), 7);
+                p.write(rel(&rm::FAULT, &rm::FAULT_STATUS), 31);
                 let m = [1, 2, 2][(rng.next_u64() % 3) as usize];
                 p.write(rel(&rm::TOP, &rm::CTRL), m);
                 if m == 2 && rng.next_u64() % 4 != 0 {
@@ -649,6 +657,12 @@ fn simulated_pl_equals_verilated_pl_top() {
     // The boundary's encoder sample was read while the encoder had moved.
     println!("{} nonzero ENC_POS_SAMPLE reads", p.pos_samples);
     assert!(p.pos_samples > 5, "{} ENC_POS_SAMPLE reads", p.pos_samples);
+    // The PL's encoder-loss and ADC-stuck latches were seen.
+    println!(
+        "FAULT_STATUS reads with ENCODER_LOSS, ADC_STUCK: {:?}",
+        p.run_faults
+    );
+    assert!(p.run_faults.iter().all(|&n| n >= 3), "{:?}", p.run_faults);
     // MPDCC decisions of every kind went through the page.
     println!(
         "MPDCC decisions (kept, optimal, deadlock): {:?}",

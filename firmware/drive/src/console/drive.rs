@@ -199,6 +199,9 @@ pub enum Injection {
     /// `vel_limit` lowered below the present speed (`fault clear`
     /// restores it).
     Overspeed,
+    /// The encoder's A and B lines change in the same instant, an illegal
+    /// quadrature step (`sim set enc_invert 1`; `sim reset` ends it).
+    EncoderLoss,
 }
 
 impl Injection {
@@ -216,6 +219,7 @@ impl Injection {
             "phase-open" => Some(Injection::PhaseOpen),
             "position-limit" => Some(Injection::PositionLimit),
             "overspeed" => Some(Injection::Overspeed),
+            "encoder-loss" => Some(Injection::EncoderLoss),
             _ => None,
         }
     }

@@ -4,10 +4,11 @@ use regmap::regs::fault::{
     FaultStatus, FaultStatusValue, OcLimit, OcLimitValue, WdgTimeout, WdgTimeoutValue,
 };
 
-/// Latched faults of the drive: bits 0..=2 are `FAULT_STATUS` (the PL
+/// Latched faults of the drive: bits 0..=4 are `FAULT_STATUS` (the PL
 /// turns the gates off itself), bits 3.. the faults the PS detects (the
-/// drive turns the gates off in the control step that sees them). The
-/// stable fault code of bit `n` is `n + 1`.
+/// drive turns the gates off in the control step that sees them; bits 3
+/// and 4 have both: the PL's and the PS's checks latch the same fault).
+/// The stable fault code of bit `n` is `n + 1`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Faults(pub u32);
 
@@ -28,12 +29,14 @@ impl Faults {
     /// The watchdog bit.
     pub const WATCHDOG: u32 = FaultStatusValue::ZERO.with_watchdog(true).bits();
     /// The bits of `FAULT_STATUS`.
-    pub const PL_MASK: u32 = 0b111;
-    /// The encoder position jumped further in one control period than the
-    /// motor can turn (noise, lost counts, a broken line).
-    pub const ENCODER_LOSS: u32 = 1 << 3;
-    /// A control period without a new ADC result.
-    pub const ADC_STUCK: u32 = 1 << 4;
+    pub const PL_MASK: u32 = 0b1_1111;
+    /// An illegal quadrature step (PL), or the encoder position jumped
+    /// further in one control period than the motor can turn (PS): noise,
+    /// lost counts, a broken line.
+    pub const ENCODER_LOSS: u32 = FaultStatusValue::ZERO.with_encoder_loss(true).bits();
+    /// No raw ADC sample for a sample period and a margin (PL), or a
+    /// control period without a new ADC result (PS).
+    pub const ADC_STUCK: u32 = FaultStatusValue::ZERO.with_adc_stuck(true).bits();
     /// Two or more control periods in a row without a control step.
     pub const CONTROL_OVERRUN: u32 = 1 << 5;
     /// The multi-turn position left the soft limits `pos_min`..`pos_max`.
@@ -121,7 +124,9 @@ impl<B: RegisterBus> Fault<B> {
             FaultStatusValue::ZERO
                 .with_overcurrent(true)
                 .with_external(true)
-                .with_watchdog(true),
+                .with_watchdog(true)
+                .with_encoder_loss(true)
+                .with_adc_stuck(true),
         )?;
         self.latched()
     }
@@ -166,6 +171,15 @@ mod tests {
         let mut pl = FakePl::new();
         pl.set(regmap::FAULT_STATUS_ADDR, Faults::WATCHDOG);
         assert_eq!(Fault(&mut pl).latched().unwrap(), Faults(4));
+        assert!(Fault(&mut pl).clear().unwrap().none());
+        pl.set(
+            regmap::FAULT_STATUS_ADDR,
+            Faults::ENCODER_LOSS | Faults::ADC_STUCK,
+        );
+        assert_eq!(
+            Fault(&mut pl).latched().unwrap(),
+            Faults(Faults::ENCODER_LOSS | Faults::ADC_STUCK)
+        );
         assert!(Fault(&mut pl).clear().unwrap().none());
         Fault(&mut pl).set_watchdog_timeout(5).unwrap();
         assert_eq!(pl.get(FAULT.addr(&regmap::WDG_TIMEOUT)), 1000);

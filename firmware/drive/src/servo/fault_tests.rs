@@ -129,20 +129,6 @@ fn no_boundary_in_mpdtc_is_a_stuck_adc() {
     assert!(s.faults(&mut pl).unwrap().none());
 }
 
-/// An averaged result overdue (the tick knows its due time) latches at
-/// once in MPDTC; FOC is paced by the PWM.
-#[test]
-fn an_overdue_result_in_mpdtc_is_a_stuck_adc_at_once() {
-    let (mut s, mut pl) = running(Mode::Mpdtc);
-    s.note_result_overdue(&mut pl).unwrap();
-    assert_eq!(s.faults(&mut pl).unwrap(), Faults(Faults::ADC_STUCK));
-    assert_eq!(pl.get(GATE_CTRL_ADDR), 0);
-    assert_eq!(codes(&s), [5]);
-    let (mut s, mut pl) = running(Mode::Foc);
-    s.note_result_overdue(&mut pl).unwrap();
-    assert!(s.faults(&mut pl).unwrap().none());
-}
-
 /// `debug fault position-limit`: the next step latches `POSITION_LIMIT`;
 /// `fault clear` restores the limits (the next run is clean).
 #[test]

@@ -936,6 +936,17 @@ impl Servo {
         Ok(())
     }
 
+    /// Records the PL's newly latched faults between control steps: a
+    /// period without a boundary (MPDTC and mode off are paced by the
+    /// ADC's results, which a stuck ADC stops) has no step to see them.
+    pub fn note_pl_faults<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
+        let pl = Fault(&mut *bus).latched()?.0;
+        if pl & !self.seen != 0 {
+            self.record_new(pl | self.ps_faults);
+        }
+        Ok(())
+    }
+
     /// Records the faults in `latched` not yet in the history.
     fn record_new(&mut self, latched: u32) {
         for bit in Faults(latched & !self.seen).bits() {
@@ -979,18 +990,6 @@ impl Servo {
     /// (`BOUNDARY_AGE`), before [`Self::control_step`].
     pub fn note_step_age(&mut self, cycles: u32) {
         self.step_age = Some(cycles);
-    }
-
-    /// The averaged ADC result that paces the period (MPDTC, mode off) did
-    /// not come by its due time, the last one's + one period (+ a margin for
-    /// the boundary's report): the PL's ADC timer runs at a fixed period, so
-    /// this is no late step (unlike a count that stood still) and
-    /// `ADC_STUCK` latches at once.
-    pub fn note_result_overdue<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
-        if self.mode == Mode::Foc {
-            return Ok(());
-        }
-        self.latch_ps(bus, Faults::ADC_STUCK)
     }
 
     /// The PS's checks of one control period: no new ADC result, an

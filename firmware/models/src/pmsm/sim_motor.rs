@@ -49,7 +49,7 @@ const fn p(
 }
 
 /// Every parameter of the simulated motor, in `sim list` order.
-pub const SIM_PARAMS: [SimParam; 15] = [
+pub const SIM_PARAMS: [SimParam; 16] = [
     p("r_s", "ohm", 1e-3, 100.0, false, "stator resistance per phase (star equivalent)"),
     p("l", "H", 1e-6, 0.1, false, "stator inductance L_d = L_q"),
     p("psi_pm", "Wb", 1e-4, 1.0, false, "permanent-magnet flux linkage amplitude"),
@@ -65,6 +65,7 @@ pub const SIM_PARAMS: [SimParam; 15] = [
     p("enc_dead", "1", 0.0, 1.0, true, "1: the encoder's lines hold their levels whatever the rotor does (a dead encoder), 0: they follow it"),
     p("phase_open", "1", 0.0, 3.0, true, "1, 2, 3: phase a, b or c disconnected (its current is 0), 0: all connected"),
     p("fault_ext", "1", 0.0, 1.0, true, "1: the PL's external fault input asserted, 0: released"),
+    p("enc_invert", "1", 0.0, 1.0, true, "1: the encoder's A and B lines both inverted (two counts off), 0: not; a change moves A and B in the same instant, an illegal quadrature step (the PL's ENCODER_LOSS)"),
 ];
 
 /// Why `sim set` refused a value.
@@ -95,6 +96,8 @@ pub struct SimMotor {
     pub phase_open: u8,
     /// The external fault input is asserted.
     pub fault_ext: bool,
+    /// The encoder's A and B lines are both inverted.
+    pub enc_invert: bool,
 }
 
 impl Default for SimMotor {
@@ -109,6 +112,7 @@ impl Default for SimMotor {
             enc_dead: false,
             phase_open: 0,
             fault_ext: false,
+            enc_invert: false,
         }
     }
 }
@@ -141,6 +145,7 @@ impl SimMotor {
             12 => f64::from(u8::from(self.enc_dead)),
             13 => f64::from(self.phase_open),
             14 => f64::from(u8::from(self.fault_ext)),
+            15 => f64::from(u8::from(self.enc_invert)),
             _ => f64::NAN,
         }
     }
@@ -191,7 +196,8 @@ impl SimMotor {
             11 => next.locked = value == 1.0,
             12 => next.enc_dead = value == 1.0,
             13 => next.phase_open = value as u8,
-            _ => next.fault_ext = value == 1.0,
+            14 => next.fault_ext = value == 1.0,
+            _ => next.enc_invert = value == 1.0,
         }
         next.motor.validate().map_err(SimSetError::Bad)?;
         next.mech.validate().map_err(SimSetError::Bad)?;

@@ -13,7 +13,8 @@ pub const DEBUG: Spec = Spec {
            `stall <ms>` stops the control loop and heartbeat for <ms> of PL time (the \
            simulated PL's under QEMU); `bench` counts guest instructions of the control \
            code; `fault <f>` makes a fault happen (<f>: external, adc-stuck, overrun, \
-           overcurrent, watchdog, encoder-dead, phase-open, position-limit, overspeed; \
+           overcurrent, watchdog, encoder-dead, encoder-loss, phase-open, position-limit, \
+           overspeed; \
            adc-swap or adc-invert: current channels a and b swapped, or a inverted, in the \
            simulated PL's ADC path until reboot); `fault-time` gives the PL cycle of the \
            last injected fault's cause and of the gates going off; `flash-pace <ms>` holds each flash \
@@ -62,7 +63,8 @@ pub fn parse<'a>(args: &[&'a str]) -> Result<DebugCmd, ParseError<'a>> {
                 .ok_or(ParseError::BadArgs(
                     "debug",
                     "fault takes external, adc-stuck, overrun, overcurrent, watchdog, \
-                     encoder-dead, phase-open, position-limit, overspeed, adc-swap or adc-invert",
+                     encoder-dead, encoder-loss, phase-open, position-limit, overspeed, adc-swap \
+                     or adc-invert",
                 ))
         }
         ["stall", ms] => match ms.parse::<u32>() {
