@@ -12,16 +12,6 @@ use std::fmt::Write as _;
 use std::time::{Duration, Instant};
 use system_tests::{assert_err, assert_ok, boot, boot_rtl, cmd, field, num};
 
-/// `debug fault encoder-loss` (an illegal quadrature transition on the
-/// encoder lines) exists on both PLs. `false`: its cells are pending, and
-/// the test checks that the injection is refused.
-const ENCODER_LOSS_INJECTION: bool = false;
-/// The PL detects a missing ADC result itself (a result timer), so
-/// `ADC_STUCK` on the co-simulated `pl_top` latches within the period.
-/// `false`: those cells are pending (FOC: the PS's check takes two
-/// periods there, 12352 cycles measured; MPDTC: without a PS tick between
-/// boundaries the RTL's `WATCHDOG` ends such a run after 2 ms).
-const PL_ADC_RESULT_TIMER: bool = false;
 /// `mpdtc_align_time` in co-simulation, PL cycles (2 ms; the default 0.2 s
 /// is many seconds of wall time there): every cell there is on the locked
 /// rotor of a fresh boot, at angle 0 on the d axis, which no alignment
@@ -119,7 +109,7 @@ const CASES: [Case; 10] = [
         warm: 10,
         min_speed: 0.0,
         windowed: false,
-        how: "`ADC_CTRL.ENABLE` = 0 (PS: no new result; MPDTC: no period boundary)",
+        how: "`ADC_CTRL.ENABLE` = 0: no new sample; the PL's result timer latches at `ADC_PERIOD` + 16 cycles",
     },
     Case {
         fault: "CONTROL_OVERRUN",
@@ -282,14 +272,10 @@ fn free(c: &Case) -> bool {
     c.setup.contains(&"sim set locked 0")
 }
 
-/// Why a cell is not measured (`None`: it is): pending, a detection or
-/// injection not in this build; not run, over the co-simulation's budget.
+/// Why a cell is not measured (`None`: it is): over the co-simulation's
+/// budget.
 fn not_measured(c: &Case, rtl: bool, mode: usize) -> Option<&'static str> {
     match (c.fault, rtl, mode) {
-        ("ENCODER_LOSS", _, _) if !ENCODER_LOSS_INJECTION => Some("pending: no `debug fault encoder-loss` yet"),
-        ("ADC_STUCK", true, _) if !PL_ADC_RESULT_TIMER => Some(
-            "pending: no ADC result timer in the PL yet (FOC: the PS's check, after a step the console delayed, needs two stale steps, about two periods; MPDTC: without the simulated PL's tick the RTL's `WATCHDOG` ends the run after 2 ms)",
-        ),
         (_, true, _) if free(c) => Some(
             "not run: the spin-up of the free rotor and its 0.2 s alignment are about 0.4 s of PL time, minutes of wall time in co-simulation",
         ),
@@ -325,16 +311,6 @@ fn measure(rtl: bool) -> Vec<[Option<i64>; 2]> {
             }
             if not_measured(c, rtl, m).is_none() {
                 out[k][m] = Some(cell(&mut s, mode, c));
-            } else if c.fault == "ENCODER_LOSS" && m == 0 {
-                // Pending: the injection is refused (when it is not, the
-                // flag above is to be set).
-                let r = cmd(&mut s, &format!("debug fault {}", c.inject));
-                assert_ne!(
-                    r.lines,
-                    ["injected"],
-                    "`debug fault {}` works: set ENCODER_LOSS_INJECTION",
-                    c.inject
-                );
             }
         }
         if rtl {
