@@ -5,23 +5,30 @@
 // KINV sQ8.16 (25), WGT sQ3.14 (18), COST = MAG x WGT (43 bits, kept 48).
 //
 // Timing: in_valid_i (with in_ready_o high) captures the inputs and the
-// parameters; out_valid_o is high exactly LATENCY = 11 cycles later, with
+// parameters; out_valid_o is high exactly LATENCY = 39 cycles later, with
 // s_next_o and the debug outputs valid in that cycle (they hold until the
 // next decision); the state registers (S[k], S[k-1], eta, x, i_hat, nu,
 // iq_ref_prev) take their next values at the edge that raises out_valid_o.
-// Initiation interval = 11 cycles: decision k+1 needs S[k+1] and the
+// Initiation interval = 39 cycles: decision k+1 needs S[k+1] and the
 // observer state of decision k, so one decision is in flight at a time
 // (in_ready_o low while busy). Latency and II do not depend on the data.
+// 39 cycles = 0.39 us at 100 MHz, against a control period of 1564 cycles.
 //
 // Multipliers: one decision in flight means a stage's multipliers idle in
-// the other 10 cycles, so 16 shared 18 x 25 multipliers (operands chosen by
+// the other stages, so 16 shared 18 x 25 multipliers (operands chosen by
 // the stage, one-hot ph) do all products of stages 1-8 (at most 16 per
-// stage), plus 8 for the weights of stage 9: 24 DSP48E1. Every stage
-// register loads only in its own cycle.
+// stage), plus 8 for the weights of stage 9: 24 DSP48E1.
 //
-// Pipeline (stage n = register loaded at the n-th edge after capture; at
-// most one multiplier level and one adder (two or three inputs) between
-// registers; R(x) = sat25((x + 2^15) >>> 16)):
+// Pipeline: stage n owns a window of cycles (5, 5, 4, 4, 3, 4, 2, 3, 5, 3
+// for stages 1..10: WIN) and its registers load only at the last edge of
+// its window. Inside a window, free-running registers (suffix _r, _rr)
+// split the arithmetic so that every register-to-register path has at
+// most one multiplier, or one adder (two or three inputs), or a comparison
+// and a mux, or a saturation (the delay budget of docs/rtl.md: 8 ns at
+// 100 MHz): cycle 0 registers the multiplier operands, cycle 1 the
+// products, the next cycles sums and terms, the last edge the saturation
+// or clamp into the stage register. The arithmetic is that of the 10
+// stages (R(x) = sat25((x + 2^15) >>> 16)):
 //   1  full's MAC parts (a i_m + w i_m + eta<<16; the exact step of S[k-1]),
 //      lambda i_m, T* / k_T, kp i_hat, ki i_hat
 //   2  full; exact step of S[k] at angle 1; rounded legs at angle 2;
@@ -118,7 +125,18 @@ module mpdtc_core (
     output wire signed [24:0] st_nu_d_o,
     output wire signed [24:0] st_nu_q_o
 );
-    localparam integer LATENCY = 11;
+    // Cycles of stage n + 1 in WIN[4n +: 4] (stage 1 in the low nibble):
+    // the register levels each stage needs (pipeline comment above).
+    localparam [39:0] WIN = {4'd3, 4'd5, 4'd3, 4'd2, 4'd4, 4'd3, 4'd4, 4'd4, 4'd5, 4'd5};
+    // The first cycle (index into vld_q) of stage n + 1.
+    function automatic integer wfirst(input integer n);
+        integer k;
+        begin
+            wfirst = 0;
+            for (k = 0; k < n; k = k + 1) wfirst = wfirst + {28'd0, WIN[4*k+:4]};
+        end
+    endfunction
+    localparam integer LATENCY = wfirst(10) + 1;
     localparam signed [47:0] MAX25 = 48'sd16777215;
     localparam signed [47:0] MIN25 = -48'sd16777216;
     localparam signed [47:0] RND16 = 48'sd32768;
@@ -150,14 +168,6 @@ module mpdtc_core (
     // zero low bits.
     function automatic signed [47:0] yr16(input signed [24:0] y);
         yr16 = {{7{y[24]}}, y, 16'h8000};
-    endfunction
-
-    // clamp(x, lim) for a CUR x (lim >= 0 meant; the comparator chain of
-    // the model otherwise).
-    function automatic signed [24:0] clamp(input signed [24:0] x, input signed [24:0] lim);
-        if (ext25(x) > ext25(lim)) clamp = lim;
-        else if (ext25(x) < -ext25(lim)) clamp = -lim;
-        else clamp = x;
     endfunction
 
     // alpha2 x (exact product) for alpha2 in -2..2 (state bits a, b, c:
@@ -215,11 +225,26 @@ module mpdtc_core (
     endfunction
 
     // ------------------------------------------------------------ control
-    reg  [LATENCY-1:0] vld_q;  // vld_q[n]: stage n+1 computes in this cycle
+    // vld_q[t]: the (t+1)-th cycle after the capture edge. Stage n owns the
+    // cycles vld_q[wfirst(n-1) .. wfirst(n)-1] (ph[n-1]) and its registers
+    // load at the last of them (ld[n-1]).
+    reg  [LATENCY-1:0] vld_q;
     reg                busy_q;
     wire               start = in_valid_i && !busy_q;
-    wire [LATENCY-2:0] ph = vld_q[LATENCY-2:0];  // ph[n-1]: the cycle of stage n
-    wire               done = vld_q[LATENCY-2];  // stage 10 loads at this edge
+    // stages 5, 7, 9, 10 use no shared multiplier: their ph bits are unused
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [9:0]         ph;
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [9:0]         ld;
+    genvar gw;
+    generate
+        for (gw = 0; gw < 10; gw = gw + 1) begin : g_win
+            localparam integer F = wfirst(gw), L = wfirst(gw + 1) - 1;
+            assign ph[gw] = |vld_q[L:F];
+            assign ld[gw] = vld_q[L];
+        end
+    endgenerate
+    wire               done = ld[9];  // stage 10 loads at this edge
 
     always @(posedge clk_i) begin
         if (rst_i) begin
@@ -314,7 +339,6 @@ module mpdtc_core (
     // products are exact (43 bits).
     reg [18*16-1:0] ma;
     reg [25*16-1:0] mb;
-    wire signed [42:0] mp[0:15];
     always @(*) begin : pool_operands
         integer m;
         m  = 0;
@@ -381,14 +405,20 @@ module mpdtc_core (
             end
         end
     end
-    genvar gm;
-    generate
-        for (gm = 0; gm < 16; gm = gm + 1) begin : g_pool
-            wire signed [17:0] a_w = ma[18*gm+:18];
-            wire signed [24:0] b_w = mb[25*gm+:25];
-            assign mp[gm] = a_w * b_w;
+    // Operands registered (cycle 0 of the window), products registered
+    // (cycle 1): the products of stage n are valid from cycle 2 of its
+    // window on.
+    reg signed [17:0] opa_q[0:15];
+    reg signed [24:0] opb_q[0:15];
+    reg signed [42:0] mp[0:15];
+    always @(posedge clk_i) begin : pool_regs
+        integer m;
+        for (m = 0; m < 16; m = m + 1) begin
+            opa_q[m] <= ma[18*m+:18];
+            opb_q[m] <= mb[25*m+:25];
+            mp[m]    <= opa_q[m] * opb_q[m];
         end
-    endgenerate
+    end
     // Products as 48-bit values.
     wire signed [47:0] P0 = ext43(mp[0]), P1 = ext43(mp[1]), P2 = ext43(mp[2]), P3 = ext43(mp[3]);
     wire signed [47:0] P4 = ext43(mp[4]), P5 = ext43(mp[5]), P6 = ext43(mp[6]), P7 = ext43(mp[7]);
@@ -397,41 +427,84 @@ module mpdtc_core (
     wire signed [47:0] P14 = ext43(mp[14]), P15 = ext43(mp[15]);
 
     // ------------------------------------------------------------ stages 1-3
+    // Free-running intermediate registers (names ending in _r): sums and
+    // terms of the stage whose window it is, from inputs that hold through
+    // the window, so each path has at most one adder (or a term mux and
+    // its negation) between registers. The stage registers load only at
+    // the window's last edge (ld), when every _r register is settled:
+    // products are valid from cycle 2, _r registers fed by products from
+    // cycle 3, the second level (_rr) from cycle 4 = W - 1.
+    reg signed [47:0] s1x_d_r, s1x_q_r, a1d_r, b1d_r, a1q_r, b1q_r, f1q_rr, iqo_r;
+    reg signed [47:0] sf_d_r, sf_q_r, a2d_r, b2d_r, a2q_r, b2q_r, v2d_rr, v2q_rr;
+    reg signed [47:0] la2d_r, la2q_r, lb2d_r, lb2q_r, la2d_rr, la2q_rr, lb2d_rr, lb2q_rr;
+    reg signed [47:0] i0d_r, i0q_r;
+    always @(posedge clk_i) begin : pipe1_3
+        // 1
+        s1x_d_r <= P0 + P1;
+        s1x_q_r <= P2 - P3;
+        a1d_r   <= alpha_term(sp_q, mp[4]);
+        b1d_r   <= beta_term(sp_q[1:0], mp[7]);
+        a1q_r   <= alpha_term(sp_q, mp[5]);
+        b1q_r   <= beta_term(sp_q[1:0], mp[6]);
+        f1q_rr  <= b1q_r - a1q_r;
+        iqo_r   <= P11 + 48'sd8192;
+        // 2
+        sf_d_r  <= fx_d + fy_d;
+        sf_q_r  <= fx_q + fy_q;
+        a2d_r   <= alpha_term(sa_q, mp[0]);
+        b2d_r   <= beta_term(sa_q[1:0], mp[3]);
+        a2q_r   <= alpha_term(sa_q, mp[1]);
+        b2q_r   <= beta_term(sa_q[1:0], mp[2]);
+        v2d_rr  <= a2d_r + b2d_r;
+        v2q_rr  <= b2q_r - a2q_r;
+        la2d_r  <= P4 + P4;
+        la2q_r  <= P5 + P5;
+        lb2d_r  <= P7 - P4;
+        lb2q_r  <= P5 + P6;
+        la2d_rr <= la2d_r + RND16;
+        la2q_rr <= RND16 - la2q_r;
+        lb2d_rr <= lb2d_r + RND16;
+        lb2q_rr <= lb2q_r + RND16;
+        // 3
+        i0d_r   <= P0 + kl_d;
+        i0q_r   <= P1 + kl_q;
+    end
+
     always @(posedge clk_i) begin
-        if (ph[0]) begin
+        if (ld[0]) begin
             // full = R(a im + w J im + u(S[k-1]) + eta_prev<<16), in two parts
-            fx_d  <= P0 + P1 + yr16(etap_d_q);
-            fx_q  <= P2 - P3 + yr16(etap_q_q);
-            fy_d  <= alpha_term(sp_q, mp[4]) + beta_term(sp_q[1:0], mp[7]);
-            fy_q  <= beta_term(sp_q[1:0], mp[6]) - alpha_term(sp_q, mp[5]) - P8;
+            fx_d  <= s1x_d_r + yr16(etap_d_q);
+            fx_q  <= s1x_q_r + yr16(etap_q_q);
+            fy_d  <= a1d_r + b1d_r;
+            fy_q  <= f1q_rr - P8;
             ngpsi <= RND16 - P8;
             kl_d  <= yr16(im_d) - P9;
             kl_q  <= yr16(im_q) - P10;
             // T* (14 frac) x 1/k_T (16 frac) -> CUR: round half up >> 14.
-            iq_orig <= sat25((P11 + 48'sd8192) >>> 14);
+            iq_orig <= sat25(iqo_r >>> 14);
             kh_d  <= yr16(nu_d_q) - P12;
             kh_q  <= yr16(nu_q_q) - P13;
             kn_d  <= yr16(nu_d_q) - P14;
             kn_q  <= yr16(nu_q_q) - P15;
         end
-        if (ph[1]) begin
-            full_d <= sat25((fx_d + fy_d) >>> 16);
-            full_q <= sat25((fx_q + fy_q) >>> 16);
+        if (ld[1]) begin
+            full_d <= sat25(sf_d_r >>> 16);
+            full_q <= sat25(sf_q_r >>> 16);
             // exact step of S[k] at angle 1 (+ rounding; q: - w Ts psi/L)
-            v1r_d <= alpha_term(sa_q, mp[0]) + beta_term(sa_q[1:0], mp[3]) + RND16;
-            v1r_q <= beta_term(sa_q[1:0], mp[2]) - alpha_term(sa_q, mp[1]) + ngpsi;
+            v1r_d <= v2d_rr + RND16;
+            v1r_q <= v2q_rr + ngpsi;
             // legs a, b at angle 2, rounded once
-            la_d <= sat25((ext43(mp[4]) + ext43(mp[4]) + RND16) >>> 16);
-            la_q <= sat25((RND16 - ext43(mp[5]) - ext43(mp[5])) >>> 16);
-            lb_d <= sat25((P7 - P4 + RND16) >>> 16);
-            lb_q <= sat25((P5 + P6 + RND16) >>> 16);
+            la_d <= sat25(la2d_rr >>> 16);
+            la_q <= sat25(la2q_rr >>> 16);
+            lb_d <= sat25(lb2d_rr >>> 16);
+            lb_q <= sat25(lb2q_rr >>> 16);
             ah_d <= P8;
             ah_q <= P9;
             kx   <= yr16(x_q) + P10;
         end
-        if (ph[2]) begin
-            i0_d  <= sat25((P0 + kl_d) >>> 16);
-            i0_q  <= sat25((P1 + kl_q) >>> 16);
+        if (ld[2]) begin
+            i0_d  <= sat25(i0d_r >>> 16);
+            i0_q  <= sat25(i0q_r >>> 16);
             ahv_d <= ah_d + v1r_d;
             ahv_q <= ah_q + v1r_q;
             ab_d  <= w27(la_d) + w27(lb_d);
@@ -447,115 +520,173 @@ module mpdtc_core (
 
     // ------------------------------------------------------------ stages 4-5
     // i1 / i_hat: sat25(MAC >>> 16 + eta) for eta = clamp(eta_raw); the
-    // three outcomes of the clamp are summed in parallel and muxed.
-    function automatic signed [24:0] add_clamped(input signed [47:0] mac, input signed [24:0] raw,
-                                                 input signed [24:0] lim);
-        reg signed [47:0] hi, lo, mid, base;
-        begin
-            base = mac >>> 16;
-            hi   = base + ext25(lim);
-            lo   = base - ext25(lim);
-            mid  = base + ext25(raw);
-            if (ext25(raw) > ext25(lim)) add_clamped = sat25(hi);
-            else if (ext25(raw) < -ext25(lim)) add_clamped = sat25(lo);
-            else add_clamped = sat25(mid);
+    // three outcomes of the clamp (base + lim, base - lim, base + raw) are
+    // summed in parallel, selected by the clamp's comparisons, then
+    // saturated (eta<<16 commutes with the rounding).
+    reg signed [47:0] etd_r, etq_r, nud_r, nuq_r, xr_r, t5d_r, t7q_r;
+    reg signed [47:0] nel_r, nil_r;  // -lim, 48 bits
+    reg               gted_r, lted_r, gteq_r, lteq_r, gtnd_r, ltnd_r, gtnq_r, ltnq_r, gtx_r, ltx_r;
+    reg signed [47:0] hi_r[0:3], lo_r[0:3], mid_r[0:3], sel_rr[0:3];
+    wire signed [47:0] mac5[0:3];
+    assign mac5[0] = t_d;
+    assign mac5[1] = t_q;
+    assign mac5[2] = h_d;
+    assign mac5[3] = h_q;
+    always @(posedge clk_i) begin : pipe4_5
+        integer k;
+        reg signed [47:0] base;
+        reg signed [24:0] raw;
+        reg gt, lt;
+        // 4
+        etd_r  <= P0 + kh_d;
+        etq_r  <= P1 + kh_q;
+        nud_r  <= P2 + kn_d;
+        nuq_r  <= P3 + kn_q;
+        xr_r   <= kx - P4;
+        t5d_r  <= P5 + P6;
+        t7q_r  <= P7 - P8;
+        // 5
+        nel_r  <= -ext25(petalim);
+        nil_r  <= -ext25(pintlim);
+        gted_r <= ext25(etar_d) > ext25(petalim);
+        lted_r <= ext25(etar_d) < nel_r;
+        gteq_r <= ext25(etar_q) > ext25(petalim);
+        lteq_r <= ext25(etar_q) < nel_r;
+        gtnd_r <= ext25(nur_d) > ext25(petalim);
+        ltnd_r <= ext25(nur_d) < nel_r;
+        gtnq_r <= ext25(nur_q) > ext25(petalim);
+        ltnq_r <= ext25(nur_q) < nel_r;
+        gtx_r  <= ext25(xr) > ext25(pintlim);
+        ltx_r  <= ext25(xr) < nil_r;
+        for (k = 0; k < 4; k = k + 1) begin
+            base     = mac5[k] >>> 16;
+            raw      = k[0] ? etar_q : etar_d;
+            gt       = k[0] ? gteq_r : gted_r;
+            lt       = k[0] ? lteq_r : lted_r;
+            hi_r[k]  <= base + ext25(petalim);
+            lo_r[k]  <= base + nel_r;
+            mid_r[k] <= base + ext25(raw);
+            sel_rr[k] <= gt ? hi_r[k] : lt ? lo_r[k] : mid_r[k];
         end
-    endfunction
+    end
 
     always @(posedge clk_i) begin
-        if (ph[3]) begin
-            etar_d <= sat25((P0 + kh_d) >>> 16);
-            etar_q <= sat25((P1 + kh_q) >>> 16);
-            nur_d  <= sat25((P2 + kn_d) >>> 16);
-            nur_q  <= sat25((P3 + kn_q) >>> 16);
-            xr     <= sat25((kx - P4) >>> 16);
-            t_d    <= P5 + P6 + v1r_d;
-            t_q    <= P7 - P8 + v1r_q;
+        if (ld[3]) begin
+            etar_d <= sat25(etd_r >>> 16);
+            etar_q <= sat25(etq_r >>> 16);
+            nur_d  <= sat25(nud_r >>> 16);
+            nur_q  <= sat25(nuq_r >>> 16);
+            xr     <= sat25(xr_r >>> 16);
+            t_d    <= t5d_r + v1r_d;
+            t_q    <= t7q_r + v1r_q;
             h_d    <= ahv_d + P6;
             h_q    <= ahv_q - P8;
         end
-        if (ph[4]) begin
-            eta_d  <= clamp(etar_d, petalim);
-            eta_q  <= clamp(etar_q, petalim);
-            nu_n_d <= clamp(nur_d, petalim);
-            nu_n_q <= clamp(nur_q, petalim);
+        if (ld[4]) begin
+            // clamp(x, lim) = x > lim ? lim : x < -lim ? -lim : x
+            eta_d  <= gted_r ? petalim : lted_r ? nel_r[24:0] : etar_d;
+            eta_q  <= gteq_r ? petalim : lteq_r ? nel_r[24:0] : etar_q;
+            nu_n_d <= gtnd_r ? petalim : ltnd_r ? nel_r[24:0] : nur_d;
+            nu_n_q <= gtnq_r ? petalim : ltnq_r ? nel_r[24:0] : nur_q;
             // Eq. (13), conditional on the previous band hit if enabled.
-            x_n    <= (band_q || !pintcond) ? clamp(xr, pintlim) : x_q;
-            i1_d   <= add_clamped(t_d, etar_d, petalim);
-            i1_q   <= add_clamped(t_q, etar_q, petalim);
-            ihn_d  <= add_clamped(h_d, etar_d, petalim);
-            ihn_q  <= add_clamped(h_q, etar_q, petalim);
+            x_n    <= (band_q || !pintcond) ? (gtx_r ? pintlim : ltx_r ? nil_r[24:0] : xr) : x_q;
+            i1_d   <= sat25(sel_rr[0]);
+            i1_q   <= sat25(sel_rr[1]);
+            ihn_d  <= sat25(sel_rr[2]);
+            ihn_q  <= sat25(sel_rr[3]);
         end
     end
 
     // ------------------------------------------------------------ stages 6-10
-    reg [50:0] keys[0:7];
-    reg [2:0] best;
-    always @(*) begin : select8
-        integer s, j;
-        reg win;
-        for (s = 0; s < 8; s = s + 1) begin
-            keys[s] = key(!inband[s], inband[s] ? cost2[s] : ext25(err[s]),
-                          popcount3(s[2:0] ^ sa_q));
-        end
-        best = 3'd0;
-        for (s = 7; s >= 0; s = s - 1) begin
-            win = 1'b1;
-            for (j = 0; j < 8; j = j + 1) begin
-                if (j < s && !(keys[s] < keys[j])) win = 1'b0;
-                if (j > s && keys[j] < keys[s]) win = 1'b0;
-            end
-            if (win) best = s[2:0];
-        end
-    end
+    reg signed [47:0] cb_d_r, cb_q_r, iqr_r;
+    reg signed [47:0] i2d_r[0:7], i2q_r[0:7], et_r[0:7], net_r[0:7];
+    reg signed [47:0] ss_r[0:7], ss_rr[0:7];
+    reg signed [24:0] wx_r[0:7];     // |I|^2 (CUR), the weight multiplier's operand
+    reg signed [17:0] ww_r[0:7];     // WGT[n] of candidate s
+    reg signed [42:0] wp_r[0:7];     // J^2 = |I|^2 x WGT[n], exact
+    reg        [50:0] key_r[0:7];
+    reg        [ 7:0] lt_r[0:7];     // lt_r[s][j]: key s < key j
 
     // Weight of candidate s: WGT[popcount(s ^ S[k])].
     function automatic signed [17:0] wgt(input [71:0] w, input [1:0] n);
         wgt = w[18*n+:18];
     endfunction
 
+    always @(posedge clk_i) begin : pipe6_10
+        integer s, j;
+        // 6
+        cb_d_r <= P0 + P1;
+        cb_q_r <= P2 - P3;
+        iqr_r  <= ext25(iq_orig) + ext25(x_n);
+        for (s = 0; s < 8; s = s + 1) begin
+            // 7
+            i2d_r[s] <= (cb_d >>> 16) + ext27(y2_d[s]);
+            i2q_r[s] <= (cb_q >>> 16) + ext27(y2_q[s]);
+            // 8
+            et_r[s]  <= ext25(iq_ref) - ext25(i2_q[s]);
+            net_r[s] <= ext25(i2_q[s]) - ext25(iq_ref);
+            // 9: sum, rounding constant, saturation, weight product
+            ss_r[s]  <= sq_d[s] + sq_q[s];
+            ss_rr[s] <= ss_r[s] + 48'sd4096;
+            wx_r[s]  <= sat25(ss_rr[s] >>> 13);
+            ww_r[s]  <= wgt(pw2, popcount3(s[2:0] ^ sa_q));
+            wp_r[s]  <= ww_r[s] * wx_r[s];
+            // 10: the selection keys, then their pairwise comparisons
+            key_r[s] <= key(!inband[s], inband[s] ? cost2[s] : ext25(err[s]),
+                            popcount3(s[2:0] ^ sa_q));
+        end
+        for (s = 0; s < 8; s = s + 1)
+            for (j = 0; j < 8; j = j + 1) lt_r[s][j] <= key_r[s] < key_r[j];
+    end
+
+    // 8-way lexicographic minimum: the first candidate with the least key.
+    reg [2:0] best;
+    always @(*) begin : select8
+        integer s, j;
+        reg win;
+        best = 3'd0;
+        for (s = 7; s >= 0; s = s - 1) begin
+            win = 1'b1;
+            for (j = 0; j < 8; j = j + 1) begin
+                if (j < s && !lt_r[s][j]) win = 1'b0;
+                if (j > s && lt_r[j][s]) win = 1'b0;
+            end
+            if (win) best = s[2:0];
+        end
+    end
+
     always @(posedge clk_i) begin : stages6_10
         integer s;
-        if (ph[5]) begin
-            cb_d   <= P0 + P1 + RND16;
-            cb_q   <= P2 - P3 + ngpsi;
-            iq_ref <= sat25(ext25(iq_orig) + ext25(x_n));
+        if (ld[5]) begin
+            cb_d   <= cb_d_r + RND16;
+            cb_q   <= cb_q_r + ngpsi;
+            iq_ref <= sat25(iqr_r);
             for (s = 0; s < 8; s = s + 1) begin
                 y2_d[s] <= cand(s[2:0], la_d, lb_d, ab_d, nab_d, na_d, nb_d) + w27(eta_d);
                 y2_q[s] <= cand(s[2:0], la_q, lb_q, ab_q, nab_q, na_q, nb_q) + w27(eta_q);
             end
         end
-        if (ph[6]) begin
+        if (ld[6]) begin
             for (s = 0; s < 8; s = s + 1) begin
-                i2_d[s] <= sat25((cb_d >>> 16) + ext27(y2_d[s]));
-                i2_q[s] <= sat25((cb_q >>> 16) + ext27(y2_q[s]));
+                i2_d[s] <= sat25(i2d_r[s]);
+                i2_q[s] <= sat25(i2q_r[s]);
             end
         end
-        if (ph[7]) begin
+        if (ld[7]) begin
             for (s = 0; s < 8; s = s + 1) begin
                 sq_d[s] <= ext43(mp[s]);
                 sq_q[s] <= ext43(mp[s+8]);
-                err[s]  <= abs_clip(ext25(iq_ref) - ext25(i2_q[s]), ext25(i2_q[s]) - ext25(iq_ref));
+                err[s]  <= abs_clip(et_r[s], net_r[s]);
             end
         end
-        if (ph[8]) begin
+        if (ld[8]) begin
             for (s = 0; s < 8; s = s + 1) begin
-                cost2[s]  <= mulw(wgt(pw2, popcount3(s[2:0] ^ sa_q)),
-                                  sat25((sq_d[s] + sq_q[s] + 48'sd4096) >>> 13));
+                cost2[s]  <= ext43(wp_r[s]);
                 inband[s] <= ext25(err[s]) <= ext25(ptol);
             end
         end
-        if (ph[9]) s_next <= best;
+        if (ld[9]) s_next <= best;
     end
-
-    // The 8 weight multipliers of stage 9 (exact, 43 bits, sign-extended).
-    function automatic signed [47:0] mulw(input signed [17:0] c, input signed [24:0] x);
-        reg signed [42:0] p;
-        begin
-            p    = c * x;
-            mulw = ext43(p);
-        end
-    endfunction
 
     // ------------------------------------------------------------ state update
     always @(posedge clk_i) begin

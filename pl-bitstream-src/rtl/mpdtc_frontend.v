@@ -15,13 +15,16 @@
 //   1  pos - align; speed x spd_scale; ADC - offset
 //   2  count (+ cpr if negative); dphi = product >> 8; (ADC - off) x gain
 //   3  phi = count x ang_scale (low 32 bits); (dphi >> 8) x age[j];
-//      w Ts = sat18(round((dphi >> 8) x 2 pi 2^14 / 2^22)); Clarke sums
+//      (dphi >> 8) x 2 pi 2^14; Clarke sums
 //   4  the three instants' angles (phi + offset); i_alpha, i_beta
-//      (x 1/3, x 1/sqrt 3); table read 0: sin and cos at phi
+//      (x 1/3, x 1/sqrt 3); that product + 2^21; table read 0: sin and
+//      cos at phi
 //   5  value 0 = T[i] + round(D[i] f / 2^16) (T[i] << 16 in the addend);
-//      table read 1 (instant 0)
+//      table read 1 (instant 0); w Ts = sat18(that sum >> 22)
 //   6  value 1; read 2          7  value 2; read 3
 //   8  value 3; Park: i_d = R(c i_alpha + s i_beta), i_q = R(c i_beta - s i_alpha)
+//      (products and sums in free-running registers from cycle 6 on, the
+//      saturation at the edge that raises out_valid_o)
 // One 1024-word table (one BRAM36, two read ports) serves all eight
 // lookups; word i = {D[i] = T[i + 1] - T[i], T[i]}.
 `default_nettype none
@@ -134,6 +137,7 @@ module mpdtc_frontend (
     reg signed [24:0] cur[0:2];
     reg        [31:0] phi, offs[0:2];
     reg signed [17:0] w_ts;
+    reg signed [47:0] wtp, wtr;
     reg signed [24:0] csa, csb;
     reg        [31:0] ang[1:3];
     reg signed [24:0] i_al, i_be;
@@ -163,7 +167,7 @@ module mpdtc_frontend (
         // 3
         phi  <= pw[31:0];
         for (k = 0; k < 3; k = k + 1) offs[k] <= po[k][39:8];
-        w_ts <= sat18((dphi24 * TWO_PI_Q14 + 48'sd2097152) >>> 22);
+        wtp  <= dphi24 * TWO_PI_Q14;  // exact, 42 bits
         csa  <= sat25({{23{cur[0][24]}}, cur[0]} + {{23{cur[0][24]}}, cur[0]}
                       - {{23{cur[1][24]}}, cur[1]} - {{23{cur[2][24]}}, cur[2]});
         csb  <= sat25({{23{cur[1][24]}}, cur[1]} - {{23{cur[2][24]}}, cur[2]});
@@ -171,6 +175,9 @@ module mpdtc_frontend (
         for (k = 0; k < 3; k = k + 1) ang[k+1] <= phi + offs[k];
         i_al <= sat25((ONE_THIRD * csa + 48'sd32768) >>> 16);
         i_be <= sat25((INV_SQRT3 * csb + 48'sd32768) >>> 16);
+        wtr  <= wtp + 48'sd2097152;
+        // 5
+        w_ts <= sat18(wtr >>> 22);
     end
 
     // ------------------------------------------------------------ stages 5-8
@@ -226,11 +233,24 @@ module mpdtc_frontend (
     // free-running stage would show mixes of the new currents and the old
     // angle in the cycles before, since i_alpha and the table values of a
     // new input arrive in different cycles).
+    // The products and their sums in free-running registers: v[0], v[1]
+    // and i_alpha, i_beta hold from the cycle vld_q[5] on, so the products
+    // are settled in cycle vld_q[6] and the sums in cycle vld_q[7].
+    reg signed [47:0] pk_q[0:3];  // c i_alpha, s i_beta, c i_beta, s i_alpha (exact)
+    reg signed [47:0] pd_q, pq_q;
+    always @(posedge clk_i) begin
+        pk_q[0] <= v[1] * i_al;
+        pk_q[1] <= v[0] * i_be;
+        pk_q[2] <= v[1] * i_be;
+        pk_q[3] <= v[0] * i_al;
+        pd_q    <= pk_q[0] + pk_q[1] + 48'sd32768;
+        pq_q    <= pk_q[2] - pk_q[3] + 48'sd32768;
+    end
     reg signed [24:0] i_d, i_q;
     always @(posedge clk_i) begin
         if (vld_q[LATENCY-2]) begin
-            i_d <= sat25((v[1] * i_al + v[0] * i_be + 48'sd32768) >>> 16);
-            i_q <= sat25((v[1] * i_be - v[0] * i_al + 48'sd32768) >>> 16);
+            i_d <= sat25(pd_q >>> 16);
+            i_q <= sat25(pq_q >>> 16);
         end
     end
 

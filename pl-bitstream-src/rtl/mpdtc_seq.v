@@ -41,7 +41,7 @@
 //              one cycle) and goes to MPDTC. A start before the sample is
 //              ignored; a second boundary in SAMPLE (the inputs were late)
 //              counts an overrun and S[k] stays.
-//   3 MPDTC    waits for the core's out_valid (11 cycles), latches S[k+1]
+//   3 MPDTC    waits for the core's out_valid (39 cycles), latches S[k+1]
 //              (pending), goes to PWM. A boundary here counts an overrun.
 //   4 PWM      waits for the next boundary (sample_i): then S[k+1] becomes
 //              the applied state (at the gate driver's input 1 cycle after
@@ -51,7 +51,7 @@
 // This is the timeline of models::pmsm::sim (measurement at t_k, decision
 // applied during [t_k+1, t_k+2), 000 before the first decision).
 // start_i in INITIAL, MPDTC and PWM is ignored. In the autonomous loop a
-// period takes 9 (front end) + 1 + 11 (core) cycles from the boundary to
+// period takes 9 (front end) + 1 + 39 (core) cycles from the boundary to
 // S[k+1] pending, so control periods down to 100 cycles (1 us) leave margin.
 `default_nettype none
 

@@ -962,7 +962,7 @@ module pl_regs (
             15'h1000: rd_data_o = {29'd0, mpdtc_ctrl_q};  // MPDTC_CTRL
             15'h1004: rd_data_o = mpdtc_start_q;  // MPDTC_START
             15'h1008: rd_data_o = {mpdtc_status_done_count_i, 12'd0, mpdtc_status_s_next_i, mpdtc_status_busy_i};  // MPDTC_STATUS
-            15'h100c: rd_data_o = 32'h0000000b;  // MPDTC_LATENCY
+            15'h100c: rd_data_o = 32'h00000027;  // MPDTC_LATENCY
             15'h1010: rd_data_o = {7'd0, mpdtc_in_id_q};  // MPDTC_IN_ID
             15'h1014: rd_data_o = {7'd0, mpdtc_in_iq_q};  // MPDTC_IN_IQ
             15'h1018: rd_data_o = {14'd0, mpdtc_in_cos0_q};  // MPDTC_IN_COS0

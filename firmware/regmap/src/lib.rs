@@ -900,7 +900,7 @@ pub const MPDTC_STATUS: Register = Register {
     doc: "Core status; poll DONE_COUNT to see a decision complete.",
 };
 /// Fixed latency of `mpdtc_core`, clock cycles.
-pub const MPDTC_LATENCY_CYCLES: u32 = 11;
+pub const MPDTC_LATENCY_CYCLES: u32 = 39;
 /// MPDTC: latency.
 pub const MPDTC_LATENCY: Register = Register {
     name: "MPDTC_LATENCY",
@@ -1142,7 +1142,7 @@ pub mod seq_state {
     pub const INITIAL: u32 = 1;
     /// Waits for the period's averaged ADC sample and the PS's MPDTC_START.
     pub const SAMPLE: u32 = 2;
-    /// The core decides (MPDTC_LATENCY_CYCLES = 11 cycles).
+    /// The core decides (MPDTC_LATENCY_CYCLES = 39 cycles).
     pub const MPDTC: u32 = 3;
     /// S[k+1] waits for the next control-period boundary (ADC average strobe).
     pub const PWM: u32 = 4;

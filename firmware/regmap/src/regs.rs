@@ -991,7 +991,7 @@ pub mod mpdtc {
         }
     }
 
-    /// `MPDTC.MPDTC_LATENCY` at `0x43C0100C` (RO, 8 bits, reset `0xB`): Input strobe to S[k+1], fixed; also the initiation interval.
+    /// `MPDTC.MPDTC_LATENCY` at `0x43C0100C` (RO, 8 bits, reset `0x27`): Input strobe to S[k+1], fixed; also the initiation interval.
     ///
     /// Format: unsigned, PL clock cycles. Writes: read-only: a write answers SLVERR and sets `ERR.BAD_ADDR`.
     #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -1015,7 +1015,7 @@ pub mod mpdtc {
 
     impl MpdtcLatencyValue {
         /// The value after reset.
-        pub const RESET: Self = Self(0xB);
+        pub const RESET: Self = Self(0x27);
         /// All zeros.
         pub const ZERO: Self = Self(0);
 

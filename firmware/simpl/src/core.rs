@@ -10,11 +10,11 @@ use super::NEVER;
 use models::pmsm::mpdtc_fixed::{self, FixedInputs, FixedParams, FixedState};
 
 const LAT: u32 = regmap::MPDTC_LATENCY_CYCLES;
-const VLD_MASK: u32 = (1 << LAT) - 1;
+const VLD_MASK: u64 = (1 << LAT) - 1;
 /// `vld_q[LATENCY-2]`: the state registers load at this cycle's edge.
-const DONE_BIT: u32 = 1 << (LAT - 2);
+const DONE_BIT: u64 = 1 << (LAT - 2);
 /// `vld_q[LATENCY-1]`: `out_valid`.
-const VALID_BIT: u32 = 1 << (LAT - 1);
+const VALID_BIT: u64 = 1 << (LAT - 1);
 
 /// Sign-extends the low `bits` of a register word.
 pub fn sext(word: u32, bits: u32) -> i32 {
@@ -35,7 +35,7 @@ pub struct Pending {
 /// The core's control and state registers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Core {
-    vld: u32,
+    vld: u64,
     busy: bool,
     /// State registers (S[k], S[k-1], observers, integrator).
     pub state: FixedState,
@@ -72,7 +72,7 @@ impl Core {
         } else if load && !self.busy {
             self.state = FixedState::default();
         }
-        self.vld = ((self.vld << 1) | u32::from(start)) & VLD_MASK;
+        self.vld = ((self.vld << 1) | u64::from(start)) & VLD_MASK;
         if start {
             self.busy = true;
         } else if done {
@@ -91,14 +91,14 @@ impl Core {
         if self.vld == 0 {
             return NEVER;
         }
-        let top = 31 - self.vld.leading_zeros();
+        let top = 63 - self.vld.leading_zeros();
         u64::from(LAT - 2 - top)
     }
 
     /// Applies `k` quiet cycles.
     pub fn skip(&mut self, k: u64) {
         if self.vld != 0 {
-            self.vld = (self.vld << k) & VLD_MASK;
+            self.vld = (self.vld << k.min(63)) & VLD_MASK;
         }
     }
 }

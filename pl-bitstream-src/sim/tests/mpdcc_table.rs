@@ -7,7 +7,8 @@
 //!   core's count for 216 candidates (`cycles::pipelined_core_cycles_ii`);
 //! - a synthesised row: DSP48E1 = 4 shared multipliers of the common terms +
 //!   12 per explorer (the multipliers written in `mpdcc_common.v` and
-//!   `mpdcc_explorer.v`), the share column follows from LUT, LUTRAM and FF,
+//!   `mpdcc_explorer.v`), an estimated delay, the share column follows from
+//!   LUT, LUTRAM and FF,
 //!   and LUT and FF grow with every explorer added (same II); a row not
 //!   synthesised says so in every resource column.
 use models::mpdcc::cycles::{pipelined_core_cycles_ii, PAPER_TABLE2};
@@ -49,7 +50,7 @@ fn mpdcc_table_agrees_with_the_design() {
             let row = rs[6 * block + k];
             let n = k as u32 + 1;
             let c = cells(row);
-            assert_eq!(c.len(), 10, "{row}");
+            assert_eq!(c.len(), 11, "{row}");
             assert_eq!(c[0], ii.to_string(), "{row}");
             assert_eq!(c[1], n.to_string(), "{row}");
             assert_eq!(c[2], PAPER_TABLE2[k].to_string(), "{row}");
@@ -59,7 +60,7 @@ fn mpdcc_table_agrees_with_the_design() {
                 "{row}"
             );
             if c[4] == NS {
-                assert!(c[5..9].iter().all(|&x| x == NS) && c[9] == "?", "{row}");
+                assert!(c[5..10].iter().all(|&x| x == NS) && c[10] == "?", "{row}");
                 continue;
             }
             let lut = number(c[4], "LUT", row);
@@ -67,6 +68,7 @@ fn mpdcc_table_agrees_with_the_design() {
             let ff = number(c[6], "FF", row);
             let dsp = number(c[7], "DSP48E1", row);
             number(c[8], "BRAM36", row);
+            assert!(number(c[9], "delay", row) > 0.0, "{row}");
             assert_eq!(dsp, f64::from(4 + 12 * n), "{row}");
             if let Some((l, f)) = last {
                 assert!(lut > l && ff > f, "{row}");
@@ -77,7 +79,7 @@ fn mpdcc_table_agrees_with_the_design() {
                 100.0 * (lut + lutram) / 53200.0,
                 100.0 * ff / 106400.0
             );
-            assert_eq!(c[9], want, "{row}");
+            assert_eq!(c[10], want, "{row}");
         }
     }
     let readme = repo_file("README.md");

@@ -311,7 +311,7 @@ fn sample_mpdtc_pwm_cycle_and_aborts() {
 
     // Another period: START, then back to SAMPLE after the boundary.
     w(&mut sim, &rm::MPDTC, &rm::MPDTC_START, 1);
-    sim.idle(25);
+    sim.idle(rm::MPDTC_LATENCY_CYCLES);
     assert_eq!(state(&mut sim), seq_state::PWM);
     until_boundary(&mut sim);
     sim.idle(2);

@@ -110,31 +110,47 @@ fn readme_tables_are_the_generated_ones() {
     }
 }
 
-/// Every synthesised module's estimated worst register-to-register delay
-/// (the column "delay (ns, est.)") is at most 8 ns.
-#[test]
-#[ignore = "fails: mpdtc_core (16.0 ns) and mpdtc_frontend (8.9 ns) exceed 8 ns (docs/rtl.md); pl_top and the MPDCC table lack the delay column until re-synthesised"]
-fn every_module_within_8_ns() {
-    for doc in [
-        "docs/rtl-resources.md",
-        "docs/rtl-resources-pl-top.md",
-        "docs/mpdcc-rtl-table.md",
-    ] {
-        let d = repo_file(doc);
-        let rows = table_rows(&d);
-        let head: Vec<&str> = rows[0]
-            .trim_matches('|')
-            .split('|')
-            .map(str::trim)
-            .collect();
-        let Some(col) = head.iter().position(|h| *h == "delay (ns, est.)") else {
-            panic!("{doc}: no delay column in {head:?}")
-        };
-        for r in &rows[2..] {
-            let c: Vec<&str> = r.trim_matches('|').split('|').map(str::trim).collect();
-            if let Ok(ns) = c[col].parse::<f64>() {
-                assert!(ns > 0.0 && ns <= 8.0, "{doc}: {r}");
+/// The rows of `doc` whose estimated worst register-to-register delay (the
+/// column "delay (ns, est.)") exceeds 8 ns; rows without a number (not
+/// synthesised) are skipped, a table without the column fails.
+fn rows_over_8_ns(doc: &str) -> Vec<String> {
+    let d = repo_file(doc);
+    let rows = table_rows(&d);
+    let head: Vec<&str> = rows[0]
+        .trim_matches('|')
+        .split('|')
+        .map(str::trim)
+        .collect();
+    let Some(col) = head.iter().position(|h| *h == "delay (ns, est.)") else {
+        panic!("{doc}: no delay column in {head:?}")
+    };
+    let mut over = Vec::new();
+    for r in &rows[2..] {
+        let c: Vec<&str> = r.trim_matches('|').split('|').map(str::trim).collect();
+        if let Ok(ns) = c[col].parse::<f64>() {
+            assert!(ns > 0.0, "{doc}: {r}");
+            if ns > 8.0 {
+                over.push(format!("{doc}: {r}"));
             }
         }
     }
+    over
+}
+
+/// Every synthesised module of `scripts/rtl-synth` (the PL's blocks and
+/// the MPDTC cores) has an estimated worst register-to-register delay of
+/// at most 8 ns.
+#[test]
+fn every_module_within_8_ns() {
+    let over = rows_over_8_ns("docs/rtl-resources.md");
+    assert!(over.is_empty(), "{over:#?}");
+}
+
+/// The same for `pl_top` and the MPDCC core's table.
+#[test]
+#[ignore = "fails: pl_top (over-current compare to the gate driver, AXI read decode, capture buffer, fault to mpdtc_seq) and mpdcc_core (explorer and common-term paths) exceed 8 ns (docs/rtl.md)"]
+fn pl_top_and_mpdcc_within_8_ns() {
+    let mut over = rows_over_8_ns("docs/rtl-resources-pl-top.md");
+    over.extend(rows_over_8_ns("docs/mpdcc-rtl-table.md"));
+    assert!(over.is_empty(), "{over:#?}");
 }
