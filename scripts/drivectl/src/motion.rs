@@ -24,7 +24,8 @@ pub struct Sample {
 
 /// The servo on the simulated PL with the simulated motor's parameters
 /// `sim` (`name`, value as `sim set` takes them), in `mode`, gates on,
-/// after `settle_s` of running at 0 N m (the MPDTC aligns the rotor first).
+/// after the MPDTC's rotor alignment (`MPDTC_ALIGN_TIME`, 0.2 s by
+/// default) and `settle_s` of running at 0 N m.
 pub fn setup(mode: Mode, sim: &[(&str, f64)], settle_s: f64) -> anyhow::Result<(Servo, SimDrive)> {
     setup_with(mode, sim, &firmware_config(), settle_s)
 }
@@ -54,6 +55,10 @@ pub fn setup_with(
     s.set_mode(&mut d, mode)
         .map_err(|e| anyhow::anyhow!("{e:?}"))?;
     s.enable(&mut d).map_err(|e| anyhow::anyhow!("{e:?}"))?;
+    let align = f64::from(cfg.align_cycles) / f64::from(regmap::PL_CLOCK_HZ);
+    let n = ((align + 1e-3) * s.control_rate_hz()) as usize;
+    run(&mut s, &mut d, n, |s| s.controlling())?;
+    anyhow::ensure!(s.controlling(), "the MPDTC's rotor alignment did not end");
     let n = (settle_s * s.control_rate_hz()) as usize;
     run(&mut s, &mut d, n, |_| false)?;
     Ok((s, d))
