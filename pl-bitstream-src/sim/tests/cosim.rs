@@ -29,6 +29,10 @@ use std::process::{Command, Stdio};
 fn mpdtc_step<P: PlModel>(sim: &mut SimDrive<P>) -> (StepResult, Vec<u8>) {
     let cfg = ServoConfig {
         mpdtc_ps_fed: true,
+        // 2 ms of alignment (the default 0.2 s would be 12,800 periods of
+        // RTL): the simulated motor is held on the d axis, where no
+        // alignment moves it.
+        align_cycles: 200_000,
         ..ServoConfig::for_plant(sim.config().motor, sim.config().adc_amps_per_count)
     };
     let mut s = Servo::new(&cfg).unwrap();
