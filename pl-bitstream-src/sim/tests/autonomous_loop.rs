@@ -128,6 +128,9 @@ fn run<P: PlModel>(sim: &mut SimDrive<P>, r: Rate) -> Run {
     .expect("front-end registers");
     // The parameters, once.
     Adc(&mut *sim).set_period(r.adc_period).unwrap();
+    // The conversions restart at the new period at once (the PL's ADC
+    // result timer would see the old period's countdown as a gap).
+    Adc(&mut *sim).restart().unwrap();
     sim.write(rm::ADC.addr(&rm::ADC_AVG_LOG2), r.avg_log2)
         .unwrap();
     // 100 ns dead time (the reset 500 ns would be half of a 1 us period).
