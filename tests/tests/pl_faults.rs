@@ -125,6 +125,10 @@ fn encoder_loss_and_adc_stuck_are_the_simulated_pls_own_within_a_period() {
 #[test]
 fn encoder_loss_and_adc_stuck_on_the_rtl_within_a_period() {
     let mut s = boot_rtl();
+    // A 2 ms alignment (the default 0.2 s is minutes of co-simulation): a
+    // fresh boot's rotor is held on the d axis, where no alignment moves
+    // it. `pl_fault` clears what the reconfiguration may latch.
+    assert_ok(&cmd(&mut s, "config set mpdtc_align_time 200000"));
     let lat = pl_fault(&mut s, "mpdtc", "encoder-loss", "ENCODER_LOSS", 4);
     check(lat, "mpdtc", ENC_LOSS_CYCLES, "ENCODER_LOSS");
     let lat = pl_fault(&mut s, "mpdtc", "adc-stuck", "ADC_STUCK", 5);
