@@ -962,7 +962,17 @@ impl DriveOps for FwDrive {
         Ok(slot)
     }
     fn reconfigure(&mut self, cfg: &ServoConfig) -> Result<(), DriveError> {
-        run(|s| s.servo.reconfigure(&mut s.bus, cfg))
+        // The controllers are built with the control interrupt enabled (in
+        // co-simulation, one instruction per ns, that arithmetic alone
+        // spans several control periods); only their installation holds
+        // it off. The PL registers follow one access per critical section,
+        // as the MPDCC loop's: the gates are off and stay off meanwhile.
+        let next = Servo::rebuild(cfg).map_err(|e| DriveError::from(ServoError::BadConfig(e)))?;
+        if let Some(pl) = run(|s| s.servo.adopt(next))? {
+            pl.write(&mut Locked)
+                .map_err(|e| DriveError::from(ServoError::Bus(e)))?;
+        }
+        Ok(())
     }
     fn capture_arm(&mut self, t: Trigger, pre: u32, every: u32) -> Result<(), DriveError> {
         run(|s| s.servo.capture_arm(&mut s.bus, t, pre, every))

@@ -319,10 +319,111 @@ pub struct Servo {
     cap_every: u32,
 }
 
+/// A configuration checked and its controllers built ([`Servo::rebuild`]).
+pub struct Rebuilt {
+    cfg: ServoConfig,
+    foc_params: FocParams,
+    foc: Foc,
+    mpdtc: MpdtcConfig,
+    mpdtc_regs: FixedParams,
+    fe_regs: FrontendParams,
+    motion: Motion,
+}
+
+/// A configuration's PL registers (timing, trip levels, MPDTC parameters),
+/// written with the gates off and the core held.
+#[derive(Debug, Clone, Copy)]
+pub struct PlConfig {
+    cfg: ServoConfig,
+    mpdtc_regs: FixedParams,
+    fe_regs: FrontendParams,
+}
+
+impl PlConfig {
+    /// Writes the registers, one access at a time.
+    pub fn write<B: RegisterBus>(&self, bus: &mut B) -> Result<(), BusError> {
+        Adc(&mut *bus).set_period(self.cfg.adc_period_cycles)?;
+        Encoder(&mut *bus).set_cpr(self.cfg.enc_cpr)?;
+        // `Config::check` refuses a limit beyond the ADC's range; any other
+        // `ServoConfig` gets the largest trip level.
+        let oc = self.cfg.oc_limit_counts().unwrap_or(2047);
+        Fault(&mut *bus).set_oc_limit(oc)?;
+        let mut pwm = Pwm(&mut *bus);
+        pwm.set_dead_time(self.cfg.dead_time_cycles)?;
+        pwm.set_half_period(self.cfg.foc_half_period_cycles)?;
+        pwm.set_duties([0.5; 3], self.cfg.foc_half_period_cycles)?;
+        Fault(&mut *bus).set_watchdog_timeout(self.cfg.watchdog_cycles)?;
+        let mut m = Mpdtc(&mut *bus);
+        m.set_ctrl_path(false, true, !self.cfg.mpdtc_ps_fed)?;
+        m.load_params(&self.mpdtc_regs)?;
+        m.load_frontend(&self.fe_regs)?;
+        m.set_align_time(self.cfg.align_cycles)
+    }
+}
+
 impl Servo {
     /// A drive in mode off with the gates off; nothing touches the PL
     /// until [`Servo::init`].
     pub fn new(cfg: &ServoConfig) -> Result<Self, ParamError> {
+        let Rebuilt {
+            cfg: _,
+            foc_params,
+            foc,
+            mpdtc,
+            mpdtc_regs,
+            fe_regs,
+            motion,
+        } = Self::rebuild(cfg)?;
+        Ok(Self {
+            fe_regs,
+            cfg: *cfg,
+            mode: Mode::Off,
+            gates: false,
+            torque_ref_nm: 0.0,
+            foc,
+            foc_params,
+            mpdtc_regs,
+            mpdtc,
+            align_zero: None,
+            align_first_left: None,
+            move_capture_pending: false,
+            last_state: 0,
+            adc_synced: false,
+            periods: 0,
+            overruns: 0,
+            beat: 0,
+            measured: Measured::default(),
+            transitions: [0; 3],
+            rec: StepRecorder::new(),
+            ps_faults: 0,
+            seen: 0,
+            history: FaultHistory::default(),
+            snapshot: Snapshot::default(),
+            time_s: 0.0,
+            last_adc_count: None,
+            adc_stale: 0,
+            last_pos: None,
+            missed: 0,
+            sine: None,
+            duties: [0.0; 3],
+            duties_old: [0.0; 3],
+            step_age: None,
+            prev_step_age: None,
+            saved_limits: None,
+            enc_dead: EncoderDead::default(),
+            phase_open: PhaseOpen::default(),
+            evidence_skip: EVIDENCE_SKIP,
+            sensors_ok: false,
+            motion,
+            cap_every: 1,
+        })
+    }
+
+    /// Checks `cfg` and builds its controllers and PL register values:
+    /// the arithmetic of a reconfiguration, done before it and away from
+    /// the control loop (the firmware builds it outside the control
+    /// interrupt's critical section, then [`Servo::adopt`]s it).
+    pub fn rebuild(cfg: &ServoConfig) -> Result<Rebuilt, ParamError> {
         if !(cfg.torque_limit_nm.is_finite() && cfg.torque_limit_nm > 0.0) {
             return Err(ParamError {
                 field: "torque_limit_nm",
@@ -355,48 +456,14 @@ impl Servo {
             (Err(_), true) => FrontendParams::default(),
             (Err(e), false) => return Err(e),
         };
-        Ok(Self {
-            fe_regs,
+        Ok(Rebuilt {
             cfg: *cfg,
-            mode: Mode::Off,
-            gates: false,
-            torque_ref_nm: 0.0,
             foc: Foc::new(&cfg.motor, &foc_params)?,
             foc_params,
             mpdtc_regs: FixedParams::from_config(&mpdtc)?,
             mpdtc,
-            align_zero: None,
-            align_first_left: None,
-            move_capture_pending: false,
-            last_state: 0,
-            adc_synced: false,
-            periods: 0,
-            overruns: 0,
-            beat: 0,
-            measured: Measured::default(),
-            transitions: [0; 3],
-            rec: StepRecorder::new(),
-            ps_faults: 0,
-            seen: 0,
-            history: FaultHistory::default(),
-            snapshot: Snapshot::default(),
-            time_s: 0.0,
-            last_adc_count: None,
-            adc_stale: 0,
-            last_pos: None,
-            missed: 0,
-            sine: None,
-            duties: [0.0; 3],
-            duties_old: [0.0; 3],
-            step_age: None,
-            prev_step_age: None,
-            saved_limits: None,
-            enc_dead: EncoderDead::default(),
-            phase_open: PhaseOpen::default(),
-            evidence_skip: EVIDENCE_SKIP,
-            sensors_ok: false,
+            fe_regs,
             motion: Motion::new(cfg.enc_cpr)?,
-            cap_every: 1,
         })
     }
 
@@ -411,22 +478,16 @@ impl Servo {
 
     /// Writes the configuration's PL registers (gates off, core held).
     fn write_pl_config<B: RegisterBus>(&mut self, bus: &mut B) -> Result<(), BusError> {
-        Adc(&mut *bus).set_period(self.cfg.adc_period_cycles)?;
-        Encoder(&mut *bus).set_cpr(self.cfg.enc_cpr)?;
-        // `Config::check` refuses a limit beyond the ADC's range; any other
-        // `ServoConfig` gets the largest trip level.
-        let oc = self.cfg.oc_limit_counts().unwrap_or(2047);
-        Fault(&mut *bus).set_oc_limit(oc)?;
-        let mut pwm = Pwm(&mut *bus);
-        pwm.set_dead_time(self.cfg.dead_time_cycles)?;
-        pwm.set_half_period(self.cfg.foc_half_period_cycles)?;
-        pwm.set_duties([0.5; 3], self.cfg.foc_half_period_cycles)?;
-        Fault(&mut *bus).set_watchdog_timeout(self.cfg.watchdog_cycles)?;
-        let mut m = Mpdtc(&mut *bus);
-        m.set_ctrl_path(false, true, !self.cfg.mpdtc_ps_fed)?;
-        m.load_params(&self.mpdtc_regs)?;
-        m.load_frontend(&self.fe_regs)?;
-        m.set_align_time(self.cfg.align_cycles)
+        self.pl_config().write(bus)
+    }
+
+    /// The PL registers of the present configuration.
+    fn pl_config(&self) -> PlConfig {
+        PlConfig {
+            cfg: self.cfg,
+            mpdtc_regs: self.mpdtc_regs,
+            fe_regs: self.fe_regs,
+        }
     }
 
     /// Replaces the configuration. With the gates on only a change of the
@@ -438,7 +499,22 @@ impl Servo {
         bus: &mut B,
         cfg: &ServoConfig,
     ) -> Result<(), ServoError> {
-        let next = Servo::new(cfg).map_err(ServoError::BadConfig)?;
+        let next = Servo::rebuild(cfg).map_err(ServoError::BadConfig)?;
+        if let Some(pl) = self.adopt(next)? {
+            pl.write(bus)?;
+        }
+        Ok(())
+    }
+
+    /// Installs a configuration [`Servo::rebuild`] built: no arithmetic
+    /// beyond copies, so a caller may hold the control loop off around it.
+    /// Returns the PL registers still to write when the gates are off
+    /// (`None` with them on: only the torque limit changed). The writes may
+    /// be interleaved with control steps: the gates stay off until the
+    /// console enables them, and the steps of a drive with the gates off
+    /// only measure. On an error nothing changed.
+    pub fn adopt(&mut self, next: Rebuilt) -> Result<Option<PlConfig>, ServoError> {
+        let cfg = &next.cfg;
         if libm::fabs(self.torque_ref_nm) > cfg.torque_limit_nm {
             return Err(ServoError::TorqueOutOfRange(self.torque_ref_nm));
         }
@@ -451,12 +527,15 @@ impl Servo {
                 return Err(ServoError::GatesOn);
             }
             self.cfg.torque_limit_nm = cfg.torque_limit_nm;
-            return Ok(());
+            return Ok(None);
         }
         // New motor or sensor facts: the next `enable` checks the sensors.
         let sensed = |c: &ServoConfig| (c.motor, c.adc, c.enc_cpr, c.enc_zero, c.current_limit_a);
         if sensed(&next.cfg) != sensed(&self.cfg) {
             self.sensors_ok = false;
+        }
+        if next.cfg.enc_cpr != self.motion.estimator().cpr() {
+            self.motion = next.motion;
         }
         self.cfg = next.cfg;
         self.foc_params = next.foc_params;
@@ -464,11 +543,7 @@ impl Servo {
         self.mpdtc = next.mpdtc;
         self.mpdtc_regs = next.mpdtc_regs;
         self.fe_regs = next.fe_regs;
-        if next.cfg.enc_cpr != self.motion.estimator().cpr() {
-            self.motion = next.motion;
-        }
-        self.write_pl_config(bus)?;
-        Ok(())
+        Ok(Some(self.pl_config()))
     }
 
     /// The configuration.
