@@ -295,7 +295,7 @@ pub const PARAMS: [Param; N_PARAMS] = [
         1000,
         100_000_000,
         20_000_000,
-        "MPDTC rotor alignment before the first decision (MPDTC_ALIGN_TIME, two halves: +60 deg vector, then the d axis), PL cycles",
+        "MPDTC rotor alignment before the first decision, longest (MPDTC_ALIGN_TIME: +60 deg vector for at most half, then the d axis; each step ends once the encoder is still for 20 ms), PL cycles",
     ),
     Param {
         gates_off: false,

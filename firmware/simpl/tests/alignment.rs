@@ -15,12 +15,16 @@
 //! the simulated encoder, not from the servo's arithmetic.
 use drive::pl::mpdtc::Mpdtc;
 use drive::pl::top::Mode;
+use drive::servo::align::ALIGN_SETTLE_S;
 use drive::servo::{Servo, ServoConfig, ALIGN_D};
 use simpl::{SimConfig, SimDrive};
 use std::f64::consts::PI;
 
 /// Bound on the latched zero's error, electrical degrees (module doc).
 const BOUND_DEG: f64 = 2.0;
+
+/// The default `MPDTC_ALIGN_TIME` (0.2 s): the alignment's longest.
+const ALIGN_MAX_S: f64 = 0.2;
 
 /// `x` degrees wrapped to (-180, 180].
 fn wrap_deg(x: f64) -> f64 {
@@ -36,8 +40,9 @@ fn wrap_deg(x: f64) -> f64 {
 /// counts every edge) to `theta0_deg` electrical and left there, `locked`
 /// or free, then enabled in MPDTC and stepped until the alignment is over.
 /// Returns the start angle, the latched zero's error (electrical degrees),
-/// and the servo and drive.
-fn aligned_from(theta0_deg: f64, locked: bool) -> (f64, f64, Servo, SimDrive) {
+/// the alignment's duration (s, from the enable to the first control step
+/// that controls), and the servo and drive.
+fn aligned_from(theta0_deg: f64, locked: bool) -> (f64, f64, f64, Servo, SimDrive) {
     let w = 500.0;
     let mut sim = SimDrive::new(&SimConfig {
         omega_e_rad_s: w,
@@ -59,6 +64,7 @@ fn aligned_from(theta0_deg: f64, locked: bool) -> (f64, f64, Servo, SimDrive) {
     s.clear_faults(&mut sim).unwrap();
     s.set_mode(&mut sim, Mode::Mpdtc).unwrap();
     s.enable(&mut sim).unwrap();
+    let t0 = sim.pl_cycles();
     let mut k = 0;
     while !s.controlling() {
         sim.advance_to_boundary(4000);
@@ -70,25 +76,32 @@ fn aligned_from(theta0_deg: f64, locked: bool) -> (f64, f64, Servo, SimDrive) {
         );
         assert!(s.gates_on(&mut sim).unwrap(), "{theta0_deg} deg: a fault");
     }
+    let took_s = (sim.pl_cycles() - t0) as f64 / f64::from(regmap::PL_CLOCK_HZ);
     let pos = Mpdtc(&mut sim).align_pos().unwrap();
     let pp = f64::from(sim.config().motor.pole_pairs);
     let cpr = f64::from(sim.config().encoder_cpr);
     // The simulated encoder reads 0 at rotor angle 0 (`enc_offset` 0).
     let err = wrap_deg(f64::from(pos) * pp * 360.0 / cpr);
-    (start, err, s, sim)
+    (start, err, took_s, s, sim)
 }
 
 #[test]
 fn a_free_rotor_aligns_on_the_d_axis_from_any_starting_angle() {
     // 12 angles 30 degrees apart (180: the dead point of one vector; 240:
-    // that of the first step's), and both sides of either dead point.
+    // that of the first step's), both sides of either dead point, and
+    // starts at the first step's dead point within a tenth of a degree
+    // (a rotor there moves too slowly for the first step to see it: the
+    // step ends still, the second starts 120 degrees off its vector).
     let starts = (0..12)
         .map(|j| 30.0 * f64::from(j))
-        .chain([179.0, 181.0, 239.0, 241.0]);
-    let mut worst: f64 = 0.0;
+        .chain([179.0, 181.0, 239.0, 241.0, 239.9, 240.1]);
+    let (mut worst, mut longest, mut shortest): (f64, f64, f64) = (0.0, 0.0, f64::MAX);
     for a in starts {
-        let (start, err, _, mut sim) = aligned_from(a, false);
-        println!("start {start:7.2} deg: latched zero {err:+.3} deg electrical");
+        let (start, err, took_s, _, mut sim) = aligned_from(a, false);
+        println!(
+            "start {start:7.2} deg: latched zero {err:+.3} deg electrical after {:.1} ms",
+            took_s * 1e3
+        );
         assert!(
             (wrap_deg(start - a)).abs() < 0.5,
             "start {start} deg, asked {a} deg"
@@ -104,14 +117,25 @@ fn a_free_rotor_aligns_on_the_d_axis_from_any_starting_angle() {
             "start {a}: rotor at {} deg",
             t.theta_e_rad.to_degrees()
         );
-        // The alignment ended on the d-axis vector.
+        // The alignment ended on the d-axis vector, within the configured
+        // time, and no sooner than two settle times.
         let v = regmap::regs::mpdtc::MpdtcAlignVec::read(&mut sim)
             .unwrap()
             .value();
         assert_eq!(v, u32::from(ALIGN_D));
+        assert!(
+            (2.0 * ALIGN_SETTLE_S..=ALIGN_MAX_S).contains(&took_s),
+            "start {a} deg: {took_s} s"
+        );
         worst = worst.max(err.abs());
+        longest = longest.max(took_s);
+        shortest = shortest.min(took_s);
     }
-    println!("worst latched zero: {worst:.3} deg electrical");
+    println!(
+        "worst latched zero: {worst:.3} deg electrical; alignment {:.1} to {:.1} ms",
+        shortest * 1e3,
+        longest * 1e3
+    );
 }
 
 #[test]
@@ -119,8 +143,16 @@ fn a_locked_rotor_aligns_and_the_mpdtc_makes_its_torque() {
     // Locked on the d axis (a dynamometer holds it): the first step's
     // vector pulls against the lock and moves nothing; the zero is right
     // and the MPDTC then makes the reference torque.
-    let (_, err, mut s, mut sim) = aligned_from(0.0, true);
+    let (_, err, took_s, mut s, mut sim) = aligned_from(0.0, true);
     assert!(err.abs() <= BOUND_DEG, "{err}");
+    // Still from the start: each step ends after the settle time (plus
+    // the period in which the PL latches), not at the configured 0.2 s.
+    println!("locked rotor: aligned in {:.2} ms", took_s * 1e3);
+    let period_s = 1.0 / s.control_rate_hz();
+    assert!(
+        (2.0 * ALIGN_SETTLE_S..=2.0 * ALIGN_SETTLE_S + 3.0 * period_s).contains(&took_s),
+        "{took_s} s"
+    );
     s.set_torque_ref(0.4).unwrap();
     for _ in 0..(5e-3 * s.control_rate_hz()) as u32 {
         sim.advance_to_boundary(4000);

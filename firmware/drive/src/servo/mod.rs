@@ -34,9 +34,11 @@ use models::validate::ParamError;
 use regmap::bus::{BusError, RegisterBus};
 use regmap::{self, seq_state};
 
+pub mod align;
 pub mod faults;
 pub mod motion;
 mod step;
+use align::{AlignAction, AlignSteps};
 use faults::{FaultHistory, FaultRecord, Sample, Snapshot};
 use models::motion::law::Impedance;
 use motion::{LoopKind, Motion, MotionConfig, MotionError, MotionStatus, MoveResult};
@@ -143,9 +145,11 @@ impl Default for ServoConfig {
             dead_time_cycles: 50,
             // 2 ms: 32 FOC or 128 MPDTC periods without a heartbeat.
             watchdog_cycles: 200_000,
-            // 0.2 s of rotor alignment before the MPDTC's first decision:
-            // two steps of 0.1 s (`ALIGN_FIRST`, then `ALIGN_D`), each
-            // about 3.5 of the free rotor's decay times (docs/mpdtc.md).
+            // At most 0.2 s of rotor alignment before the MPDTC's first
+            // decision: two steps (`ALIGN_FIRST` for at most 0.1 s, then
+            // `ALIGN_D`), each ending once the rotor is still (`align`;
+            // docs/mpdtc.md): the maximum is about 7 of the free rotor's
+            // decay times per step.
             align_cycles: 20_000_000,
             enc_cpr: 4096,
             // Below the 16 A full scale of the simulated PL's ADC.
@@ -261,9 +265,8 @@ pub struct Servo {
     fe_regs: FrontendParams,
     /// MPDTC: the encoder zero latched by the alignment of this run.
     align_zero: Option<u32>,
-    /// MPDTC: control steps left in the alignment's first step (on
-    /// `ALIGN_FIRST`); at 0 the vector goes to `ALIGN_D`.
-    align_first_left: Option<u64>,
+    /// MPDTC: the alignment's progress (when its steps end).
+    align: Option<AlignSteps>,
     /// A `move` during the MPDTC's alignment: its capture record starts
     /// with the alignment's end, where the move starts.
     move_capture_pending: bool,
@@ -385,7 +388,7 @@ impl Servo {
             mpdtc_regs,
             mpdtc,
             align_zero: None,
-            align_first_left: None,
+            align: None,
             move_capture_pending: false,
             last_state: 0,
             adc_synced: false,
@@ -613,16 +616,20 @@ impl Servo {
         Pwm(&mut *bus).set_duties([0.5; 3], half)?;
         if self.mode == Mode::Mpdtc {
             // The sequence aligns the rotor, then takes the decisions. The
-            // alignment in two steps: the first half of MPDTC_ALIGN_TIME on
-            // the vector 60 electrical degrees ahead of the d axis, then on
-            // the d axis (`control_step` switches), so no starting angle is
-            // the dead point (180 degrees off) of both.
+            // alignment in two steps: on the vector 60 electrical degrees
+            // ahead of the d axis, then on the d axis (`control_step`
+            // switches), so no starting angle is the dead point (180
+            // degrees off) of both. Each step ends once the rotor is still
+            // (`align`), the first at the latest at the half of
+            // MPDTC_ALIGN_TIME, the second at its end; the early end of the
+            // second shortens MPDTC_ALIGN_TIME, restored here.
             let mut m = Mpdtc(&mut *bus);
+            m.set_align_time(self.cfg.align_cycles)?;
             m.set_align_vec(ALIGN_FIRST)?;
             m.set_ctrl_path(false, false, !self.cfg.mpdtc_ps_fed)?;
-            let period = self.mpdtc.params.control_period_s * f64::from(regmap::PL_CLOCK_HZ);
-            self.align_first_left =
-                Some(libm::ceil(f64::from(self.cfg.align_cycles / 2) / period) as u64);
+            let clock = f64::from(regmap::PL_CLOCK_HZ);
+            let period = self.mpdtc.params.control_period_s * clock;
+            self.align = Some(AlignSteps::new(period, self.cfg.align_cycles, clock));
         }
         Pwm(&mut *bus).set_gates(true)?;
         self.gates = true;
@@ -1198,13 +1205,17 @@ impl Servo {
             Mode::Mpdtc => {
                 if self.align_zero.is_none() && gates {
                     let mut m = Mpdtc(&mut *bus);
-                    match self.align_first_left {
-                        Some(0) => {
-                            m.set_align_vec(ALIGN_D)?;
-                            self.align_first_left = None;
-                        }
-                        Some(n) => self.align_first_left = Some(n - 1),
-                        None => {}
+                    let action = match &mut self.align {
+                        Some(a) => a.next(enc.pos, enc.cpr),
+                        None => AlignAction::Hold,
+                    };
+                    match action {
+                        AlignAction::SecondStep => m.set_align_vec(ALIGN_D)?,
+                        // INITIAL ends at the next PL cycle and latches the
+                        // encoder: the rotor has been still for the settle
+                        // time.
+                        AlignAction::End => m.set_align_time(1)?,
+                        AlignAction::Hold => {}
                     }
                     if m.seq_status()?.aligned {
                         self.align_zero = Some(m.align_pos()?);
