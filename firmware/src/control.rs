@@ -966,10 +966,12 @@ impl DriveOps for FwDrive {
         // co-simulation, one instruction per ns, that arithmetic alone
         // spans several control periods); only their installation holds
         // it off. The PL registers follow one access per critical section,
-        // as the MPDCC loop's: the gates are off and stay off meanwhile.
+        // as the MPDCC loop's (the ADC period's restart in one): the gates
+        // are off and stay off meanwhile.
         let next = Servo::rebuild(cfg).map_err(|e| DriveError::from(ServoError::BadConfig(e)))?;
         if let Some(pl) = run(|s| s.servo.adopt(next))? {
-            pl.write(&mut Locked)
+            run(|s| Ok(pl.write_adc(&mut s.bus)?))?;
+            pl.write_rest(&mut Locked)
                 .map_err(|e| DriveError::from(ServoError::Bus(e)))?;
         }
         Ok(())

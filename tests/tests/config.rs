@@ -1,8 +1,9 @@
 //! `config list|get|set|reset|schema` under QEMU: the table on the console,
 //! bad values refused with nothing changed, and the values reaching the
 //! drive (control rates, the MPDTC's band).
-use drivectl::link::Session;
-use system_tests::{assert_err, assert_ok, boot, cmd, field, num};
+use drivectl::link::{parse_reply, Reply, Session, PROMPT};
+use std::time::Duration;
+use system_tests::{assert_err, assert_ok, boot, boot_rtl, cmd, field, num};
 
 /// `config get <name>`: the value and the unit.
 fn get(s: &mut Session, name: &str) -> (f64, String) {
@@ -125,4 +126,73 @@ fn the_values_reach_the_drive() {
     let r = cmd(&mut s, "step 0.4");
     assert_ok(&r);
     assert!((num(&r, "final") - 0.4).abs() < 0.05, "{r:?}");
+}
+
+/// `lines` sent in one write (no host round trip between them), their
+/// replies in order.
+fn burst(s: &mut Session, lines: &[&str]) -> Vec<Reply> {
+    let text: String = lines.iter().map(|l| format!("{l}\r")).collect();
+    s.send(text.as_bytes()).unwrap();
+    lines
+        .iter()
+        .map(|_| {
+            let t = s
+                .read_until(PROMPT.as_bytes(), Duration::from_secs(60))
+                .unwrap_or_else(|e| panic!("{e:#}: {}", String::from_utf8_lossy(&s.transcript)));
+            parse_reply(&String::from_utf8_lossy(&t)).unwrap()
+        })
+        .collect()
+}
+
+/// A period change, then the sensor check, then the gates on: the check
+/// passes (its readings are each vector's own), and a period shortened
+/// right before the gates go on trips no `ADC_STUCK` (the change restarts
+/// the conversions; that the old period's countdown would trip it is
+/// pinned cycle by cycle on both PLs in `rtl-sim`'s `adc_period` test:
+/// here the console's own time between the two lines may exceed the
+/// 15 us countdown).
+fn period_change_then_check_then_enable(s: &mut Session) {
+    // A long period first: 1500 cycles (15 us) between conversions (the
+    // MPDTC's observer and the FOC period bound it).
+    assert_ok(&cmd(s, "config set foc_half_period 6256"));
+    assert_ok(&cmd(s, "config set adc_period 1500"));
+    assert_ok(&cmd(s, "mode foc"));
+    // The check is due (first enable since boot).
+    let r = cmd(s, "enable");
+    assert_ok(&r);
+    assert_ok(&cmd(s, "disable"));
+    // Shortened, then MPDTC (no FOC resync of the ADC) with the gates on
+    // at once; a 2 ms alignment of the held rotor.
+    assert_ok(&cmd(s, "config set mpdtc_align_time 200000"));
+    assert_ok(&cmd(s, "mode mpdtc"));
+    let r = burst(s, &["config set adc_period 391", "enable"]);
+    for x in &r {
+        assert_ok(x);
+    }
+    let st = cmd(s, "status");
+    assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+    assert_eq!(field(&st, "gates"), Some("on"), "{st:?}");
+    assert_ok(&cmd(s, "disable"));
+    // The motor facts change: the next enable checks again, after the
+    // period changes above and `config reset`.
+    assert_ok(&cmd(s, "config reset"));
+    assert_ok(&cmd(s, "config set current_limit 3"));
+    assert_ok(&cmd(s, "mode foc"));
+    let st = cmd(s, "status");
+    assert_eq!(field(&st, "sensor_check"), Some("due"), "{st:?}");
+    assert_ok(&cmd(s, "enable"));
+    let st = cmd(s, "status");
+    assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+    assert_eq!(field(&st, "gates"), Some("on"), "{st:?}");
+    assert_eq!(field(&st, "sensor_check"), Some("passed"), "{st:?}");
+}
+
+#[test]
+fn a_period_change_then_the_sensor_check_then_enable_on_the_simulated_pl() {
+    period_change_then_check_then_enable(&mut boot());
+}
+
+#[test]
+fn a_period_change_then_the_sensor_check_then_enable_on_the_rtl() {
+    period_change_then_check_then_enable(&mut boot_rtl());
 }

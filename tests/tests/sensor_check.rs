@@ -128,3 +128,72 @@ fn a_new_motor_or_sensor_configuration_checks_again() {
     s.reconfigure(&mut pl, &cfg).unwrap();
     assert!(s.sensor_check_due());
 }
+
+#[test]
+fn a_period_change_then_the_check_then_enable() {
+    // `config set foc_half_period 6256`, `adc_period 782`, modes FOC and
+    // MPDTC, `config reset`, `current_limit 3` (the check is due), `mode
+    // foc`, `enable`, with control steps in between: each period change
+    // restarts the ADC's conversions (`Adc::set_period`), which moves the
+    // averaged results against the PWM period. The check read the
+    // previous vector (vector b's reading on phase a: "channels swapped")
+    // while the PWM still had its duties; its readings are now each
+    // vector's own.
+    let sim = SimConfig::default();
+    let (mut s, mut pl) = drive(&sim, AdcWiring::default());
+    s.set_mode(&mut pl, Mode::Off).unwrap();
+    let base = *s.config();
+    let steps = |s: &mut Servo, pl: &mut Timed| {
+        for _ in 0..50 {
+            pl.0.advance_to_boundary(20_000);
+            s.control_step(&mut pl.0).unwrap();
+        }
+    };
+    let set = |s: &mut Servo, pl: &mut Timed, adc: u32, half: u32, limit_a: f64| {
+        let c = ServoConfig {
+            adc_period_cycles: adc,
+            foc_half_period_cycles: half,
+            current_limit_a: limit_a,
+            ..base
+        };
+        s.reconfigure(&mut *pl, &c).unwrap();
+        assert_eq!(drive::pl::adc::Adc(&mut *pl).period().unwrap(), adc);
+    };
+    let limit = base.current_limit_a;
+    set(&mut s, &mut pl, 391, 6256, limit);
+    steps(&mut s, &mut pl);
+    let n0 = drive::pl::adc::Adc(&mut pl).count().unwrap();
+    set(&mut s, &mut pl, 782, 6256, limit);
+    steps(&mut s, &mut pl);
+    // The conversions run at the new period: 50 MPDTC-off periods of 4
+    // results each.
+    assert!(drive::pl::adc::Adc(&mut pl).count().unwrap() - n0 >= 50);
+    for m in [Mode::Foc, Mode::Mpdtc] {
+        s.set_mode(&mut pl, m).unwrap();
+        steps(&mut s, &mut pl);
+    }
+    set(&mut s, &mut pl, 391, 3128, limit);
+    steps(&mut s, &mut pl);
+    set(&mut s, &mut pl, 391, 3128, 3.0);
+    steps(&mut s, &mut pl);
+    s.set_mode(&mut pl, Mode::Foc).unwrap();
+    steps(&mut s, &mut pl);
+    assert!(s.sensor_check_due());
+    let r = s.check_sensors(&mut pl).unwrap();
+    assert_eq!(r.result, Ok(()), "{r:?}");
+    // Each vector's reading is its own phase's, the others about -1/2 of
+    // it (module doc of `drive::servo::sensors`).
+    for (k, row) in r.readings_a.iter().enumerate() {
+        for (j, &x) in row.iter().enumerate() {
+            if j == k {
+                assert!(x >= r.target_a, "{r:?}");
+            } else {
+                assert!((x / row[k] + 0.5).abs() < 0.25, "{r:?}");
+            }
+        }
+    }
+    s.enable_checked(&mut pl).unwrap();
+    steps(&mut s, &mut pl);
+    assert!(s.gates_on(&mut pl).unwrap());
+    assert!(s.faults(&mut pl).unwrap().none());
+}

@@ -43,14 +43,22 @@ impl<B: RegisterBus> Adc<B> {
     pub fn count(&mut self) -> Result<u32, BusError> {
         Ok(AdcCount::read(&mut self.0)?.value())
     }
-    /// Cycles between conversion starts (the PL clamps to 16..=65535). The
-    /// sample timer runs out its countdown of the old period first: with
-    /// the gates on and a shorter period, the PL's ADC result timer can
-    /// trip on that gap, so a caller that changes the period with the
-    /// gates on follows it with [`Adc::restart`] (each change of `ENABLE`
-    /// restarts the result timer).
+    /// Cycles between conversion starts (the PL clamps to 16..=65535). A
+    /// changed period is written with the conversions stopped and restarts
+    /// them (`ADC_CTRL.ENABLE` 0, the period, 1): the sample timer would
+    /// otherwise run out its countdown of the old period first, longer
+    /// than the PL's ADC result timer allows with a shorter one
+    /// (`ADC_STUCK` as soon as the gates go on); each change of `ENABLE`
+    /// restarts that timer. An unchanged period is not written.
     pub fn set_period(&mut self, cycles: u32) -> Result<(), BusError> {
-        AdcPeriod::write(&mut self.0, AdcPeriodValue::ZERO.with_value(cycles))
+        let old = self.period()?;
+        let new = regmap::ADC_PERIOD.apply_write(old, cycles).unwrap_or(old);
+        if new == old {
+            return Ok(());
+        }
+        AdcCtrl::write(&mut self.0, AdcCtrlValue::ZERO.with_enable(false))?;
+        AdcPeriod::write(&mut self.0, AdcPeriodValue::ZERO.with_value(cycles))?;
+        AdcCtrl::write(&mut self.0, AdcCtrlValue::ZERO.with_enable(true))
     }
     /// Restarts the sample timer (`ADC_CTRL.ENABLE` 0 then 1): called right
     /// after a PWM period start, the conversions take a fixed phase to the

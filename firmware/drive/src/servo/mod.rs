@@ -343,9 +343,20 @@ pub struct PlConfig {
 }
 
 impl PlConfig {
-    /// Writes the registers, one access at a time.
+    /// Writes the registers: [`PlConfig::write_adc`], then
+    /// [`PlConfig::write_rest`].
     pub fn write<B: RegisterBus>(&self, bus: &mut B) -> Result<(), BusError> {
-        Adc(&mut *bus).set_period(self.cfg.adc_period_cycles)?;
+        self.write_adc(bus)?;
+        self.write_rest(bus)
+    }
+    /// The ADC's period: a change stops and restarts the conversions
+    /// ([`Adc::set_period`]), accesses that belong together (no control
+    /// step between them: it would find no result).
+    pub fn write_adc<B: RegisterBus>(&self, bus: &mut B) -> Result<(), BusError> {
+        Adc(&mut *bus).set_period(self.cfg.adc_period_cycles)
+    }
+    /// The other registers, each access on its own.
+    pub fn write_rest<B: RegisterBus>(&self, bus: &mut B) -> Result<(), BusError> {
         Encoder(&mut *bus).set_cpr(self.cfg.enc_cpr)?;
         // `Config::check` refuses a limit beyond the ADC's range; any other
         // `ServoConfig` gets the largest trip level.

@@ -10,7 +10,8 @@
 //! request (`selftest sensors`).
 //!
 //! Sequence (gates off before and after, the PL in FOC-PWM mode for its
-//! duration): for each phase k = a, b, c a voltage vector along +k (duty
+//! duration): for each phase k = a, b, c, its duties written and loaded by
+//! the PWM (one PWM period with the gates off), a voltage vector along +k (duty
 //! 0.5 + [`DUTY_STEP`] on leg k, 0.5 - `DUTY_STEP`/2 on the others: phase
 //! k at +`DUTY_STEP` u_dc, the others at -`DUTY_STEP` u_dc / 2), held until
 //! the largest measured phase current reaches [`target_a`] (10 % of the
@@ -235,7 +236,16 @@ impl<B: PlTime> Run<'_, B> {
         Top(&mut *self.bus).set_mode(Mode::Foc)?;
         let enc0 = Encoder(&mut *self.bus).read()?;
         for k in 0..3 {
+            // The PWM loads its duties at the start of each of its periods:
+            // gates turned on right after the write would apply the
+            // previous vector's duties for up to a period, and with a
+            // residue of its current a reading in that period can reach
+            // the target on the previous phase (read as channels swapped;
+            // where in the PWM period the averaged results fall decides
+            // it, so a restart of the ADC's sample timer did). One PWM
+            // period with the gates off loads them.
             Pwm(&mut *self.bus).set_duties(vector(k), half_period)?;
+            self.wait(2 * u64::from(half_period))?;
             Pwm(&mut *self.bus).set_gates(true)?;
             let t0 = self.cycles;
             loop {
