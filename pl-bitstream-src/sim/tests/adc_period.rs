@@ -23,7 +23,7 @@ const SHORT: u32 = 391;
 /// long countdown still to run.
 const AFTER_CONVERSION: u64 = 100;
 /// PL cycles watched with the gates on: several short periods.
-const WATCH: u64 = 3000;
+const WATCH: u64 = 8000;
 
 /// A PL whose time the test lets pass.
 trait Clocked: RegisterBus {
