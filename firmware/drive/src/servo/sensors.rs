@@ -25,7 +25,8 @@
 //! Paper motor (R 0.555 Ohm, L 0.64 mH, u_dc 48 V): phase k at 3.84 V less
 //! the dead time's loss (about 0.77 V at 0.5 us per 62.56 us period),
 //! di/dt about 4.8 kA/s: the 1.4 A target after about 0.3 ms, the whole
-//! check about 1.2 ms of PL time (`selftest sensors` prints it).
+//! check about 1.5 ms of PL time with the duties' loads (`selftest sensors`
+//! prints it).
 //!
 //! Verdict, per channel j: the vector with the largest |reading| on j is
 //! the phase channel j measures (must be j: the order), and the sign of
