@@ -62,9 +62,10 @@ fn writes(s: &mut Session, n: usize, accepted: &[&str], refused_gates_on: bool) 
     }
 }
 
-/// Checks that the writes between `a` and `b` cost nothing: no overrun, no
-/// fault, every period served by one control interrupt, and the start
-/// latency's maximum within `latency_bound` PL cycles.
+/// Checks that the writes between `a` and `b` cost nothing: no overrun in
+/// the window, no fault, every period served by one control interrupt, and the start
+/// latency's maximum raised by the window to at most `latency_bound`
+/// PL cycles.
 fn assert_no_step_lost(what: &str, a: Loop, b: Loop, st: &Reply, latency_bound: f64) {
     // The window's mean from the running means (one sample per control
     // interrupt).
@@ -81,7 +82,7 @@ fn assert_no_step_lost(what: &str, a: Loop, b: Loop, st: &Reply, latency_bound: 
         b.latency_max
     );
     assert!(b.periods > a.periods, "{what}: the loop ran: {st:?}");
-    assert_eq!(b.overruns, 0.0, "{what}: {st:?}");
+    assert_eq!(b.overruns, a.overruns, "{what}: {st:?}");
     assert_eq!(field(st, "fault"), Some("none"), "{what}: {st:?}");
     // One control interrupt per period: none of the boundaries was
     // merged into a later step.
@@ -90,8 +91,11 @@ fn assert_no_step_lost(what: &str, a: Loop, b: Loop, st: &Reply, latency_bound: 
         b.periods - a.periods,
         "{what}: {st:?}"
     );
+    // `status` keeps the maximum since boot (the sensor check at the first
+    // `enable` holds the loop off by design): the window may only raise it
+    // up to the bound.
     assert!(
-        b.latency_max <= latency_bound,
+        b.latency_max <= a.latency_max.max(latency_bound),
         "{what}: start latency {} PL cycles: {st:?}",
         b.latency_max
     );
@@ -114,6 +118,7 @@ fn config_writes_cost_no_step(s: &mut Session, rounds: usize, latency_bound: f64
     );
     let (b, st) = loop_figures(s);
     assert_no_step_lost("idle", a, b, &st, latency_bound);
+    assert_eq!(b.overruns, 0.0, "{st:?}");
     for mode in ["foc", "mpdtc"] {
         assert_ok(&cmd(s, &format!("mode {mode}")));
         assert_ok(&cmd(s, "enable"));
@@ -132,10 +137,11 @@ fn config_writes_cost_no_step(s: &mut Session, rounds: usize, latency_bound: f64
     }
 }
 
-/// The simulated PL's boundary-to-step latency is the PL tick's (a few
-/// hundred PL cycles under QEMU); a step held off by a write would show
-/// as a latency of a period (6,256 cycles at the default FOC rate) or more.
-const LATENCY_BOUND_CYCLES: f64 = 3_000.0;
+/// One MPDTC control period, PL cycles: a step that starts later has let
+/// a boundary pass (the simulated PL's steps start at their boundary, its
+/// latency is 0; the co-simulated `pl_top`'s in the windows averaged 45 to
+/// 77 cycles).
+const LATENCY_BOUND_CYCLES: f64 = 1_564.0;
 
 #[test]
 fn config_writes_and_saves_cost_no_control_step_on_the_simulated_pl() {

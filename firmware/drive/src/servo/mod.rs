@@ -267,6 +267,9 @@ pub struct Servo {
     align_zero: Option<u32>,
     /// MPDTC: the alignment's progress (when its steps end).
     align: Option<AlignSteps>,
+    /// `MPDTC_ALIGN_TIME` was cut to end the alignment early: written back
+    /// once the PL has latched the zero (or at the next `enable`).
+    align_time_cut: bool,
     /// A `move` during the MPDTC's alignment: its capture record starts
     /// with the alignment's end, where the move starts.
     move_capture_pending: bool,
@@ -400,6 +403,7 @@ impl Servo {
             mpdtc,
             align_zero: None,
             align: None,
+            align_time_cut: false,
             move_capture_pending: false,
             last_state: 0,
             adc_synced: false,
@@ -557,6 +561,8 @@ impl Servo {
         self.mpdtc = next.mpdtc;
         self.mpdtc_regs = next.mpdtc_regs;
         self.fe_regs = next.fe_regs;
+        // The writes below include MPDTC_ALIGN_TIME.
+        self.align_time_cut = false;
         Ok(Some(self.pl_config()))
     }
 
@@ -633,9 +639,12 @@ impl Servo {
             // degrees off) of both. Each step ends once the rotor is still
             // (`align`), the first at the latest at the half of
             // MPDTC_ALIGN_TIME, the second at its end; the early end of the
-            // second shortens MPDTC_ALIGN_TIME, restored here.
+            // second cuts MPDTC_ALIGN_TIME, written back at its end (or
+            // here, if a run ended before the PL latched).
             let mut m = Mpdtc(&mut *bus);
-            m.set_align_time(self.cfg.align_cycles)?;
+            if core::mem::take(&mut self.align_time_cut) {
+                m.set_align_time(self.cfg.align_cycles)?;
+            }
             m.set_align_vec(ALIGN_FIRST)?;
             m.set_ctrl_path(false, false, !self.cfg.mpdtc_ps_fed)?;
             let clock = f64::from(regmap::PL_CLOCK_HZ);
@@ -1225,13 +1234,19 @@ impl Servo {
                         // INITIAL ends at the next PL cycle and latches the
                         // encoder: the rotor has been still for the settle
                         // time.
-                        AlignAction::End => m.set_align_time(1)?,
+                        AlignAction::End => {
+                            m.set_align_time(1)?;
+                            self.align_time_cut = true;
+                        }
                         AlignAction::Hold => {}
                     }
                     if m.seq_status()?.aligned {
                         self.align_zero = Some(m.align_pos()?);
                         if core::mem::take(&mut self.move_capture_pending) {
                             Self::start_move_capture(&mut *bus)?;
+                        }
+                        if core::mem::take(&mut self.align_time_cut) {
+                            Mpdtc(&mut *bus).set_align_time(self.cfg.align_cycles)?;
                         }
                     }
                 }
