@@ -148,6 +148,11 @@ fn a_locked_rotor_aligns_and_the_mpdtc_makes_its_torque() {
     // Still from the start: each step ends after the settle time (plus
     // the period in which the PL latches), not at the configured 0.2 s.
     println!("locked rotor: aligned in {:.2} ms", took_s * 1e3);
+    // The cut MPDTC_ALIGN_TIME is the configured one again for the next run.
+    let at = regmap::regs::mpdtc::MpdtcAlignTime::read(&mut sim)
+        .unwrap()
+        .value();
+    assert_eq!(at, s.config().align_cycles);
     let period_s = 1.0 / s.control_rate_hz();
     assert!(
         (2.0 * ALIGN_SETTLE_S..=2.0 * ALIGN_SETTLE_S + 3.0 * period_s).contains(&took_s),
