@@ -1,4 +1,34 @@
-//! Checks that need a window of evidence, not one sample: a dead encoder
+//! The open-phase and dead-encoder checks, in two tiers. The fast tier
+//! decides on one control period's evidence and turns the gates off at
+//! the first step after the cause; where it cannot decide (a phase the
+//! model predicts little current in, a rotor slower than its speed), the
+//! window tier below decides over [`WINDOW_S`].
+//!
+//! Fast, open phase: the motor model the MPDTC predicts with
+//! (`MpdtcConfig::predict_u`, at the FOC's period in FOC) gives this
+//! period's current from the last measured one and the voltage applied in
+//! between (the FOC's duties or the MPDTC's switching state); a phase
+//! predicted at [`FAST_PRED_MIN_A`] or more that measures at most
+//! [`ZERO_MAX_A`] or [`FAST_OPEN_FRACTION`] of its prediction is open. A
+//! torque step or a reversal is in the prediction (it follows the applied
+//! voltage); a model error of 30 % shows as a fraction of one period's
+//! change of current only.
+//!
+//! Fast, dead encoder: the back-EMF over one period, `e = u - R (i_0 +
+//! i_1) / 2 - L (i_1 - i_0) / T` (alpha-beta, angle-free), less what a
+//! model off by [`MODEL_TOL`] (`R`) and [`INDUCTIVE_TOL`] (`L`) could put
+//! in it, says the rotor turned by at least [`FAST_DEAD_COUNTS`] encoder
+//! counts in the period while the count stood still (from the live count
+//! at the end of the last step to this step's sample). A healthy encoder
+//! counts in every period from one count per period on: the estimate may
+//! be off by a factor of two before a healthy encoder trips. The speed
+//! this needs: two counts of 4096 per period, 343 rad/s electrical (7.8
+//! rev/s) in FOC (62.56 us), 1372 rad/s (31 rev/s) in MPDTC (15.64 us),
+//! with the paper's motor (7 pole pairs, 9.3 mWb), and more while the
+//! tolerance's share is large (high current, a current step); the host
+//! tests trip at 1.5 times these speeds at 0.5 N m.
+//!
+//! The window tier: checks that need a window of evidence, not one sample: a dead encoder
 //! (the motor turns, the count does not) and an open phase (a phase
 //! current stays at zero while the reference says it must not). A
 //! transient (a torque step, a reversal) is no fault, so each needs its
@@ -34,23 +64,6 @@
 //! follows a step well within the window; a locked rotor carries its
 //! current in every phase whose reference needs it.
 
-/// One period's evidence (the fast tier), checked before the window's:
-///
-/// Open phase: the motor model the MPDTC predicts with
-/// ([`models::pmsm::mpdtc_ref::MpdtcConfig::predict_u`]) gives the current
-/// of this period from the last measured one and the voltage applied in
-/// between; a phase predicted at [`FAST_PRED_MIN_A`] or more that measures
-/// at most [`ZERO_MAX_A`] or [`FAST_OPEN_FRACTION`] of its prediction is
-/// open. A torque step or a reversal is in the prediction (it follows the
-/// applied voltage), and so are the model's errors only as a fraction of
-/// one period's change of current.
-///
-/// Dead encoder: the back-EMF over one period, `e = u - R (i_0 + i_1) / 2
-/// - L (i_1 - i_0) / T` (alpha-beta, angle-free), says the rotor turned by
-/// at least [`FAST_DEAD_COUNTS`] encoder counts in the period while the
-/// sampled count stood still. A healthy encoder counts in every period
-/// from one count per period on: the estimate may be off by a factor of
-/// two before a healthy encoder trips.
 /// Predicted phase current that must show in one period, A.
 pub const FAST_PRED_MIN_A: f64 = 1.0;
 /// A measured phase current at most this fraction of its prediction is
