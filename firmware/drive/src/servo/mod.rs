@@ -1269,9 +1269,13 @@ impl Servo {
             _ => models::pmsm::frames::switch_state_alpha_beta(self.last_state, mo.u_dc_v),
         };
         // The fast tier first: one period's evidence.
-        let (model, age) = match self.mode {
-            Mode::Foc => (&self.foc_model, FOC_VOLTAGE_AGE),
-            _ => (&self.mpdtc, self.mpdtc.params.meas_age_periods),
+        let (model, age, allow) = match self.mode {
+            Mode::Foc => (&self.foc_model, FOC_VOLTAGE_AGE, evidence::FOC_ALLOWANCE),
+            _ => (
+                &self.mpdtc,
+                self.mpdtc.params.meas_age_periods,
+                evidence::MPDTC_ALLOWANCE,
+            ),
         };
         let now = evidence::Period {
             pos,
@@ -1284,7 +1288,7 @@ impl Servo {
         let skip = self.evidence_skip > 0;
         let v = self
             .fast
-            .step(model, now, self.pos_at_end, age, self.cfg.enc_cpr);
+            .step(model, now, self.pos_at_end, age, self.cfg.enc_cpr, allow);
         self.fast_last = if skip { FastVerdict::default() } else { v };
         if skip {
             self.evidence_skip -= 1;
