@@ -449,13 +449,6 @@ pub fn on_control() {
             s.last_step_cycle = s.pl_now();
             // A bus error leaves the gates to the PL's own fault logic.
             let start = timer::global_count();
-            // A dead encoder at the boundary, before the step reads the
-            // count: above one count per period the window then starts at
-            // this step, the same every time.
-            if s.servo.controlling() && s.pending_injection == Some(Injection::EncoderDead) {
-                s.pending_injection = None;
-                s.injection_result = Some(inject_now(s, Injection::EncoderDead));
-            }
             let _ = s.servo.control_step(&mut s.bus);
             // After a step of the running controller (not during the
             // MPDTC's alignment, when the checks over a window wait).

@@ -1,20 +1,24 @@
-//! The checks over a window (`drive::servo::evidence`) on the simulated PL,
-//! at many instants of the cause: a dead encoder on a turning rotor and an
-//! open phase on a held one close within the window plus one control
-//! period in FOC and MPDTC, whatever the instant (the dead encoder at the
-//! window exactly: no period of the window is lost to a zero crossing that
-//! looks like an open phase).
+//! The open-phase and dead-encoder checks (`drive::servo::evidence`) on
+//! the simulated PL. The fast tier (one period's evidence): an open phase
+//! and a dead encoder above its speed trip at the first step after the
+//! cause, at many instants of the cause, in FOC and MPDTC; the window
+//! tier (0.5 ms) trips a dead encoder below that speed. No trip, with the
+//! margins printed (`-- --nocapture`), on a locked rotor at 0.5 N m,
+//! torque steps and reversals at the torque limit, a slow rotor, a motor
+//! whose parameters are 30 % off the controller's, and the MPDTC's rotor
+//! alignment; the same runs with the fault injected do trip.
 use drive::pl::fault::Faults;
 use drive::pl::top::Mode;
 use drive::servo::{evidence, Servo, ServoConfig};
 use simpl::{SimConfig, SimDrive};
 
-/// A running drive in `mode` at `torque` N m, `locked` or free, stepped
-/// until `ready` (or 20 000 steps).
-fn running(
+/// A running drive in `mode` at `torque` N m, `locked` or free, after the
+/// `sim` settings, stepped until `ready` (or 20 000 steps).
+fn running_with(
     mode: Mode,
     torque: f64,
     locked: bool,
+    sim_set: &[(&str, f64)],
     ready: impl Fn(&Servo, u32) -> bool,
 ) -> (Servo, SimDrive, u64) {
     let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
@@ -26,18 +30,43 @@ fn running(
     s.init(&mut sim).unwrap();
     sim.sim_set("locked", if locked { 1.0 } else { 0.0 })
         .unwrap();
+    for (k, v) in sim_set {
+        sim.sim_set(k, *v).unwrap();
+    }
     s.set_mode(&mut sim, mode).unwrap();
     s.enable(&mut sim).unwrap();
     s.set_torque_ref(torque).unwrap();
-    let period = libm::round(f64::from(regmap::PL_CLOCK_HZ) / s.control_rate_hz()) as u64;
-    let mut k = 0;
+    let period = period(&s);
+    // Steps of the running controller (after the MPDTC's alignment).
+    let (mut k, mut n) = (0, 0);
     while !(s.controlling() && ready(&s, k)) {
         sim.advance_to_boundary(2 * period);
         s.control_step(&mut sim).unwrap();
-        k += 1;
-        assert!(k < 20_000, "{mode:?}: not ready");
+        k += u32::from(s.controlling());
+        n += 1;
+        assert!(n < 30_000, "{mode:?}: not ready");
+        let f = s.faults(&mut sim).unwrap().0;
+        assert_eq!(f, 0, "{mode:?}: trip {f:#x} at {k}: {:?}", s.fast_verdict());
     }
     (s, sim, period)
+}
+
+fn running(
+    mode: Mode,
+    torque: f64,
+    locked: bool,
+    ready: impl Fn(&Servo, u32) -> bool,
+) -> (Servo, SimDrive, u64) {
+    running_with(mode, torque, locked, &[], ready)
+}
+
+fn period(s: &Servo) -> u64 {
+    libm::round(f64::from(regmap::PL_CLOCK_HZ) / s.control_rate_hz()) as u64
+}
+
+fn step(s: &mut Servo, sim: &mut SimDrive, period: u64) {
+    sim.advance_to_boundary(2 * period);
+    s.control_step(sim).unwrap();
 }
 
 /// Control steps from the cause (right after a step) to the one that
@@ -45,56 +74,203 @@ fn running(
 fn steps_to_gates_off(s: &mut Servo, sim: &mut SimDrive, period: u64) -> (u32, u32) {
     let mut j = 0;
     while s.gates_on(sim).unwrap() {
-        sim.advance_to_boundary(2 * period);
-        s.control_step(sim).unwrap();
+        step(s, sim, period);
         j += 1;
-        assert!(j < 1000, "no trip");
+        assert!(j < 1000, "no trip: {:?}", s.fast_verdict());
     }
     (j, s.faults(sim).unwrap().0)
 }
 
+/// Electrical speed from which the fast tier sees a dead encoder: its
+/// count threshold per control period, rad/s.
+fn fast_speed(s: &Servo) -> f64 {
+    let c = ServoConfig::for_plant(
+        SimConfig::default().motor,
+        SimConfig::default().adc_amps_per_count,
+    );
+    let ts = 1.0 / s.control_rate_hz();
+    evidence::FAST_DEAD_COUNTS * 2.0 * core::f64::consts::PI / f64::from(c.enc_cpr) / ts
+        * f64::from(c.motor.pole_pairs)
+}
+
 #[test]
-fn a_dead_encoder_trips_at_the_window_at_any_instant() {
+fn an_open_phase_trips_at_the_next_step_at_any_instant() {
     for mode in [Mode::Foc, Mode::Mpdtc] {
-        for extra in (0..300).step_by(11) {
-            // Free rotor at 0.5 N m; above 900 rad/s (5.6x the threshold,
-            // more than one count per control period) the encoder dies at
-            // a boundary, `extra` steps later each time: the count stands
-            // still from that step on, the window closes `win` steps later.
-            let (mut s, mut sim, period) = running(mode, 0.5, false, |s, k| {
-                k > extra && s.measured().omega_e_rad_s.abs() > 900.0
-            });
+        let mut fast = 0;
+        for (n, extra) in (0..100).step_by(7).enumerate() {
+            // Each phase in turn; a locked rotor at 0.2 N m (the matrix's
+            // cell: on the d axis, phase a carries no current) and a free
+            // one at 0.5 N m.
+            let phase = 1 + n % 3;
+            let (torque, locked) = if n % 2 == 0 {
+                (0.2, true)
+            } else {
+                (0.5, false)
+            };
+            let phase = if locked { 2 + n % 2 } else { phase };
+            let (mut s, mut sim, period) = running(mode, torque, locked, |_, k| k > 200 + extra);
             let win = evidence::window_periods(period as f64 / f64::from(regmap::PL_CLOCK_HZ));
-            sim.advance_to_boundary(2 * period);
+            // The phase carries current the next step predicts: the fast
+            // tier decides; else the window does.
+            let carries = s.fast_verdict().pred_abc[phase - 1].abs() >= 1.2;
+            sim.sim_set("phase_open", phase as f64).unwrap();
+            let cause = sim.pl_cycles();
+            let (j, f) = steps_to_gates_off(&mut s, &mut sim, period);
+            assert_eq!(f, Faults::PHASE_OPEN, "{mode:?} +{extra}: after {j} steps");
+            if carries {
+                assert_eq!(j, 1, "{mode:?} +{extra} phase {phase}");
+                let off = sim.gates_off_since().unwrap() - cause;
+                assert!(off <= period, "{mode:?} +{extra}: {off} cycles");
+                fast += 1;
+            } else {
+                assert!(j <= win + 1, "{mode:?} +{extra}: {j} steps");
+            }
+        }
+        assert!(fast >= 8, "{mode:?}: {fast} of 15 in one period");
+    }
+}
+
+#[test]
+fn a_dead_encoder_trips_at_the_next_step_above_the_fast_tiers_speed() {
+    for mode in [Mode::Foc, Mode::Mpdtc] {
+        for extra in (0..300).step_by(23) {
+            // Free rotor at 0.5 N m, 1.5x the fast tier's speed.
+            let (mut s, mut sim, period) = running(mode, 0.5, false, |s, k| {
+                k > extra && s.measured().omega_e_rad_s.abs() > 1.5 * fast_speed(s)
+            });
+            // Right after a step, as `debug fault` injects it.
             sim.sim_set("enc_dead", 1.0).unwrap();
             let cause = sim.pl_cycles();
-            s.control_step(&mut sim).unwrap();
             let (j, f) = steps_to_gates_off(&mut s, &mut sim, period);
-            assert_eq!(
-                f,
-                Faults::ENCODER_DEAD,
-                "{mode:?} +{extra}: after {j} steps"
-            );
-            assert_eq!(j, win, "{mode:?} +{extra}");
+            assert_eq!(f, Faults::ENCODER_DEAD, "{mode:?} +{extra}: after {j}");
+            assert_eq!(j, 1, "{mode:?} +{extra}");
             let off = sim.gates_off_since().unwrap() - cause;
-            assert!(
-                off <= (u64::from(win) + 1) * period,
-                "{mode:?} +{extra}: {off} cycles"
-            );
+            assert!(off <= period, "{mode:?} +{extra}: {off} cycles");
         }
     }
 }
 
 #[test]
-fn an_open_phase_trips_within_the_window_at_any_instant() {
+fn a_dead_encoder_below_the_fast_tiers_speed_trips_at_the_window() {
     for mode in [Mode::Foc, Mode::Mpdtc] {
-        for extra in (0..100).step_by(11) {
-            let (mut s, mut sim, period) = running(mode, 0.2, true, |_, k| k > 200 + extra);
+        for extra in (0..30).step_by(6) {
+            // Free rotor at 0.5 N m between the window's threshold (161
+            // rad/s) and the fast tier's speed.
+            let (mut s, mut sim, period) = running(mode, 0.5, false, |s, _| {
+                s.measured().omega_e_rad_s.abs() > 250.0 + extra as f64
+            });
+            let w = s.measured().omega_e_rad_s.abs();
+            assert!(w < fast_speed(&s), "{mode:?}: {w} rad/s");
             let win = evidence::window_periods(period as f64 / f64::from(regmap::PL_CLOCK_HZ));
-            sim.sim_set("phase_open", 2.0).unwrap();
+            sim.sim_set("enc_dead", 1.0).unwrap();
             let (j, f) = steps_to_gates_off(&mut s, &mut sim, period);
-            assert_eq!(f, Faults::PHASE_OPEN, "{mode:?} +{extra}: after {j} steps");
+            assert_eq!(f, Faults::ENCODER_DEAD, "{mode:?} +{extra}: after {j}");
             assert!(j <= win + 1, "{mode:?} +{extra}: {j} steps, window {win}");
+        }
+    }
+}
+
+/// The fast tier's closest approach to a trip over `n` steps with `act`
+/// run before each (step index): the smallest measured/predicted ratio
+/// of a phase predicted at 1 A or more, and the most counts the back-EMF
+/// proved in a period where the count stood still. Asserts no trip.
+fn margins(
+    s: &mut Servo,
+    sim: &mut SimDrive,
+    period: u64,
+    n: u32,
+    mut act: impl FnMut(&mut Servo, u32),
+) -> (f64, f64) {
+    let (mut ratio, mut counts) = (f64::INFINITY, 0.0_f64);
+    for k in 0..n {
+        act(s, k);
+        step(s, sim, period);
+        let f = s.faults(sim).unwrap().0;
+        assert_eq!(f, 0, "trip {f:#x} at step {k}: {:?}", s.fast_verdict());
+        let v = s.fast_verdict();
+        ratio = ratio.min(v.open_ratio);
+        if v.still {
+            counts = counts.max(v.counts);
+        }
+    }
+    (ratio, counts)
+}
+
+#[test]
+fn no_trip_without_a_fault_and_the_margins() {
+    let c = evidence::FAST_DEAD_COUNTS;
+    for mode in [Mode::Foc, Mode::Mpdtc] {
+        // Steps at the torque limit (1 N m); the MPDTC's reversal of 2 N m
+        // on a locked rotor overshoots into OVERCURRENT (13.4 A): 0.8 N m.
+        let amp = if mode == Mode::Foc { 1.0 } else { 0.8 };
+        let mut report = Vec::new();
+        let r = if mode == Mode::Foc {
+            evidence::FOC_ALLOWANCE.open_fraction
+        } else {
+            evidence::MPDTC_ALLOWANCE.open_fraction
+        };
+        // A locked rotor at 0.5 N m for 20 ms.
+        let (mut s, mut sim, p) = running(mode, 0.5, true, |_, k| k > 10);
+        let n = (2_000_000 / p) as u32;
+        println!("{mode:?} locked");
+        report.push(("locked 0.5 N m", margins(&mut s, &mut sim, p, n, |_, _| {})));
+        // Steps 0 -> 1 N m -> -1 N m -> 0 every 2 ms, locked and free.
+        for locked in [true, false] {
+            println!("{mode:?} steps {locked}");
+            let (mut s, mut sim, p) = running(mode, 0.0, locked, |_, k| k > 10);
+            let seg = (200_000 / p) as u32;
+            let m = margins(&mut s, &mut sim, p, 8 * seg, |s, k| {
+                if k % seg == 0 {
+                    let t = [1.0, -1.0, 0.0, 1.0, 0.0, -1.0, 1.0, 0.0][(k / seg) as usize];
+                    let t = t * amp;
+                    s.set_torque_ref(t).unwrap();
+                }
+            });
+            report.push((
+                if locked {
+                    "steps, locked"
+                } else {
+                    "steps, free"
+                },
+                m,
+            ));
+        }
+        // A slow rotor: 0.1 N m from rest for 20 ms.
+        println!("{mode:?} slow");
+        let (mut s, mut sim, p) = running(mode, 0.1, false, |_, k| k > 10);
+        report.push(("slow, free", margins(&mut s, &mut sim, p, n, |_, _| {})));
+        // The motor 30 % off the controller's model, each way, stepped.
+        for f in [0.7, 1.3] {
+            let mo = SimConfig::default().motor;
+            let set = [
+                ("r_s", mo.r_s_ohm * f),
+                ("l", mo.l_d_h * f),
+                ("psi_pm", mo.psi_pm_wb * (2.0 - f)),
+            ];
+            println!("{mode:?} mismatch {f}");
+            let (mut s, mut sim, p) = running_with(mode, 0.0, false, &set, |_, k| k > 10);
+            let seg = (200_000 / p) as u32;
+            let m = margins(&mut s, &mut sim, p, 6 * seg, |s, k| {
+                if k % seg == 0 {
+                    let t = [1.0, -1.0, 1.0, 0.0, -1.0, 0.5][(k / seg) as usize] * amp;
+                    s.set_torque_ref(t).unwrap();
+                }
+            });
+            report.push((
+                if f < 1.0 {
+                    "motor -30 %"
+                } else {
+                    "motor +30 %"
+                },
+                m,
+            ));
+        }
+        for (what, (ratio, counts)) in &report {
+            println!(
+                "{mode:?} {what}: measured/predicted >= {ratio:.3} (trips at {r}), \
+                 still-count periods <= {counts:.2} counts (trips at {c})"
+            );
+            assert!(*ratio > 1.2 * r && *counts < 0.75 * c, "{mode:?} {what}");
         }
     }
 }

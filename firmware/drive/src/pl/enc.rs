@@ -50,6 +50,10 @@ impl<B: RegisterBus> Encoder<B> {
         let pos = EncPosSample::read(&mut self.0)?.value();
         self.read_with(pos)
     }
+    /// The live position `ENC_POS` alone, counts.
+    pub fn live_pos(&mut self) -> Result<u32, BusError> {
+        Ok(EncPos::read(&mut self.0)?.value())
+    }
     fn read_with(&mut self, pos: u32) -> Result<EncReading, BusError> {
         Ok(EncReading {
             pos,

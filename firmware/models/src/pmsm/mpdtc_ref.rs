@@ -259,6 +259,42 @@ impl MpdtcConfig {
         })
     }
 
+    /// The motor model alone at period `control_period_s` (no observer, no
+    /// integrator): [`Self::predict_u`] for another controller's period.
+    pub fn prediction_model(model: MotorParams, control_period_s: f64) -> Result<Self, ParamError> {
+        model.validate()?;
+        check_pos("control_period_s", control_period_s)?;
+        let params = MpdtcParams {
+            control_period_s,
+            k_int_per_s: 0.0,
+            obs_kp_v_per_a: 0.0,
+            obs_ki_per_s: 0.0,
+            ..MpdtcParams::default()
+        };
+        for l in [model.l_d_h, model.l_q_h] {
+            let a = 1.0 - model.r_s_ohm * control_period_s / l;
+            if !(a > 0.0 && a < 1.0) {
+                return Err(ParamError {
+                    field: "control_period_s",
+                    reason: "R Ts / L must be in (0, 1) for the first-order model",
+                });
+            }
+        }
+        let gains = |l: f64| AxisGains {
+            a: 1.0 - model.r_s_ohm * control_period_s / l,
+            b_a_per_v: control_period_s / l,
+            kp_v_per_a: 0.0,
+            kint_v_per_a: 0.0,
+            limit_v: params.obs_limit_v,
+        };
+        Ok(Self {
+            model,
+            params,
+            obs_d: gains(model.l_d_h),
+            obs_q: gains(model.l_q_h),
+        })
+    }
+
     /// Flux of the torque equation, Wb.
     pub fn torque_psi_wb(&self) -> f64 {
         self.params.torque_psi_wb.unwrap_or(self.model.psi_pm_wb)
@@ -281,7 +317,21 @@ impl MpdtcConfig {
         w_rad_s: f64,
         eps_v: (f64, f64),
     ) -> (f64, f64) {
-        let (vd, vq) = self.v_eq6(i_dq, s, th_rad, w_rad_s);
+        let u_dq = state_voltage_dq(s, th_rad, self.model.u_dc_v);
+        self.predict_u(i_dq, u_dq, w_rad_s, eps_v)
+    }
+
+    /// [`Self::predict`] for any inverter voltage `u_dq` (V, in the rotor
+    /// frame of the step's start): a switching state's, or the mean of a
+    /// PWM period's duties. Returns `(i_d, i_q)`, A.
+    pub fn predict_u(
+        &self,
+        i_dq: (f64, f64),
+        u_dq: (f64, f64),
+        w_rad_s: f64,
+        eps_v: (f64, f64),
+    ) -> (f64, f64) {
+        let (vd, vq) = self.v_eq6_u(i_dq, u_dq, w_rad_s);
         (
             self.obs_d.a * i_dq.0 + self.obs_d.b_a_per_v * (vd + eps_v.0),
             self.obs_q.a * i_dq.1 + self.obs_q.b_a_per_v * (vq + eps_v.1),
@@ -291,8 +341,13 @@ impl MpdtcConfig {
     /// `V` of eq. (6), V: the inverter voltage plus the coupling and back-EMF
     /// terms, computed from the currents `i_dq` at the start of the step.
     pub fn v_eq6(&self, i_dq: (f64, f64), s: u8, th_rad: f64, w_rad_s: f64) -> (f64, f64) {
+        let u_dq = state_voltage_dq(s, th_rad, self.model.u_dc_v);
+        self.v_eq6_u(i_dq, u_dq, w_rad_s)
+    }
+
+    /// [`Self::v_eq6`] for any inverter voltage `u_dq`, V.
+    fn v_eq6_u(&self, i_dq: (f64, f64), (ud, uq): (f64, f64), w_rad_s: f64) -> (f64, f64) {
         let m = &self.model;
-        let (ud, uq) = state_voltage_dq(s, th_rad, m.u_dc_v);
         (
             ud + w_rad_s * m.l_q_h * i_dq.1,
             uq - w_rad_s * m.l_d_h * i_dq.0 - m.psi_pm_wb * w_rad_s,
