@@ -261,6 +261,42 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
     dir
 }
 
+/// `csrc/pl_top_clock.h` gives `pl_top` clock edges without Verilator's
+/// input-driven ("ico") region, recomputing only the one wire of that region
+/// that reads `clk_i`: the simulation-only MPDCC clock gate. Fails the build
+/// when the generated region reads `clk_i` anywhere else (a new clock-driven
+/// wire would go stale there).
+fn check_input_region(mdir: &Path) {
+    let gate = "pl_top__DOT__mc_clk = ((IData)(vlSelf->clk_i)";
+    let (mut reads, mut gates) = (0, 0);
+    for entry in std::fs::read_dir(mdir).expect("read the pl_top model directory") {
+        let path = entry.expect("model directory entry").path();
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
+        if !(name.starts_with("Vpl_top___024root__DepSet_") && name.ends_with(".cpp")) {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).expect("read a generated file");
+        let mut inside = false;
+        for line in text.lines() {
+            if !inside {
+                inside = line.contains("___ico_sequent") && line.trim_end().ends_with('{');
+                continue;
+            }
+            if line == "}" {
+                inside = false;
+                continue;
+            }
+            reads += line.matches("vlSelf->clk_i").count();
+            gates += line.matches(gate).count();
+        }
+    }
+    assert!(
+        reads == 1 && gates == 1,
+        "pl_top's input-driven region reads clk_i {reads} times, the MPDCC gate {gates} \
+         times: csrc/pl_top_clock.h assumes the gate alone (once)"
+    );
+}
+
 /// Marks a complete model directory in the cache.
 const DONE: &str = "complete";
 
@@ -412,12 +448,21 @@ fn main() {
         }
         let src = manifest.join("csrc").join(shim_src);
         println!("cargo:rerun-if-changed={}", src.display());
+        if *top == "pl_top" {
+            println!(
+                "cargo:rerun-if-changed={}",
+                manifest.join("csrc/pl_top_clock.h").display()
+            );
+        }
         // The port accessors a core's shim includes (generated from its RTL).
         let ports = manifest.join("csrc").join(format!("{top}_ports.h"));
         if ports.exists() {
             println!("cargo:rerun-if-changed={}", ports.display());
         }
         let mdir = verilate(&rtl, &out, top, files);
+        if *top == "pl_top" {
+            check_input_region(&mdir);
+        }
         if models.is_empty() {
             runtime(&out, &mdir, top);
         }
