@@ -660,8 +660,9 @@ module pl_top #(
     // while MPDTC_CTRL.STATE_CLR holds the state at zero); the sequence's
     // INITIAL also holds the state at zero.
     // Simulation only (rtl-sim's Verilated pl_top defines SIM_MPDTC_CLOCK_GATE):
-    // the core is clocked only in reset, at a start, while busy and when a
-    // state load (st_load_i) can change its state, so Verilator skips its
+    // the core is clocked only in reset, at a start, while busy, while
+    // out_valid_o is high (it falls one edge after busy), and when a state
+    // load (st_load_i) can change its state, so Verilator skips its
     // logic for the other 1,500 or so cycles of a control period and during
     // the alignment (which holds st_load_i). Idle, the core changes no
     // register but its free-running ones (_r, _rr, the multiplier pool),
@@ -678,7 +679,7 @@ module pl_top #(
     wire mt_load = mp_clr || seq_clr;
     // The state holds the load's constants before this edge.
     wire mt_zero = (mt_zero_q || mt_ld_q) && core_ready && !rst;
-    wire mt_ce = rst || seq_start || !core_ready || (mt_load && !mt_zero);
+    wire mt_ce = rst || seq_start || !core_ready || core_valid || (mt_load && !mt_zero);
     always @(negedge clk_i) begin
         mt_zero_q <= mt_zero;
         mt_ld_q   <= mt_load && core_ready && mt_ce;  // a load at this edge
