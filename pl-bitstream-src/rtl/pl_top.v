@@ -659,8 +659,38 @@ module pl_top #(
     // write while the sequence is IDLE and AUTO = 0 (ignored while busy or
     // while MPDTC_CTRL.STATE_CLR holds the state at zero); the sequence's
     // INITIAL also holds the state at zero.
+    // Simulation only (rtl-sim's Verilated pl_top defines SIM_MPDTC_CLOCK_GATE):
+    // the core is clocked only in reset, at a start, while busy, while
+    // out_valid_o is high (it falls one edge after busy), and when a state
+    // load (st_load_i) can change its state, so Verilator skips its
+    // logic for the other 1,500 or so cycles of a control period and during
+    // the alignment (which holds st_load_i). Idle, the core changes no
+    // register but its free-running ones (_r, _rr, the multiplier pool),
+    // which no output reads and which every stage recomputes inside its own
+    // window before it loads (mpdtc_core's header); a load gives the state
+    // the constants below, so once one has happened with the core idle
+    // (mt_ld_q), the state holds them until the next decision (mt_zero_q:
+    // cleared while busy) and a further load changes nothing. So the
+    // outputs are the same edge for edge. The enable is sampled on the
+    // falling edge (the harness applies a cycle's inputs with the clock low),
+    // stable across the rising one.
+`ifdef SIM_MPDTC_CLOCK_GATE
+    reg  mt_ce_q = 1'b1, mt_ld_q = 1'b0, mt_zero_q = 1'b0;
+    wire mt_load = mp_clr || seq_clr;
+    // The state holds the load's constants before this edge.
+    wire mt_zero = (mt_zero_q || mt_ld_q) && core_ready && !rst;
+    wire mt_ce = rst || seq_start || !core_ready || core_valid || (mt_load && !mt_zero);
+    always @(negedge clk_i) begin
+        mt_zero_q <= mt_zero;
+        mt_ld_q   <= mt_load && core_ready && mt_ce;  // a load at this edge
+        mt_ce_q   <= mt_ce;
+    end
+    wire mt_clk = clk_i && mt_ce_q;
+`else
+    wire mt_clk = clk_i;
+`endif
     mpdtc_core u_mpdtc (
-        .clk_i           (clk_i),
+        .clk_i           (mt_clk),
         .rst_i           (rst),
         .in_valid_i      (seq_start && !mp_clr),
         .in_ready_o      (core_ready),

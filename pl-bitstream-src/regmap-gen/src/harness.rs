@@ -49,12 +49,15 @@ pub fn shim(ports: &[Port]) -> String {
          // pt_step applies the inputs with the clock low, settles the combinational\n\
          // logic, copies the outputs as the rising edge will sample them (so a Rust\n\
          // AXI master sees READY exactly as the slave presents it), then gives one\n\
-         // rising edge: two evaluations per cycle. No logic of pl_top uses the falling\n\
-         // edge, so the clock returns low in the next cycle's first evaluation, with\n\
-         // that cycle's inputs (a third evaluation would settle nothing new).\n\
+         // rising edge: two evaluations per cycle. Only the simulation-only MPDCC\n\
+         // clock gate uses the falling edge, so the clock returns low in the next\n\
+         // cycle's first evaluation, with that cycle's inputs. The input-driven\n\
+         // logic runs only in that first evaluation and only when an input other\n\
+         // than the clock changed (pl_top_clock.h).\n\
          // pt_peek reads the outputs after the edge.\n\
          #include <cstdint>\n\n\
          #include \"Vpl_top.h\"\n\
+         #include \"pl_top_clock.h\"\n\
          #include \"verilated.h\"\n\n\
          extern \"C\" {\n\n",
     );
@@ -72,7 +75,11 @@ pub fn shim(ports: &[Port]) -> String {
     for p in of(ports, PortDir::In) {
         let _ = writeln!(s, "    t->{} = {};", p.verilog, masked(p));
     }
-    s.push_str("}\n\nstatic void read_out(const Vpl_top* t, PtOut* out) {\n");
+    s.push_str("}\n\n// Every input but the clock as `in` would set it.\nstatic bool unchanged(const Vpl_top* t, const PtIn* in) {\n    return true");
+    for p in of(ports, PortDir::In) {
+        let _ = write!(s, "\n        && t->{} == ({})", p.verilog, masked(p));
+    }
+    s.push_str(";\n}\n\nstatic void read_out(const Vpl_top* t, PtOut* out) {\n");
     for p in of(ports, PortDir::Out) {
         let _ = writeln!(s, "    out->{} = t->{};", p.field, p.verilog);
     }
@@ -86,8 +93,9 @@ pub fn shim(ports: &[Port]) -> String {
     s.push_str(
         "    sim->top->eval();\n    return sim;\n}\n\n\
          void pt_step(void* p, const PtIn* in, PtOut* before_edge) {\n    \
-         auto* t = static_cast<PlTopSim*>(p)->top;\n    apply(t, in);\n    t->clk_i = 0;\n    \
-         t->eval();\n    read_out(t, before_edge);\n    t->clk_i = 1;\n    t->eval();\n}\n\n\
+         auto* t = static_cast<PlTopSim*>(p)->top;\n    if (unchanged(t, in)) {\n        \
+         pl_top_clock::clock(t, 0);\n    } else {\n        apply(t, in);\n        t->clk_i = 0;\n        \
+         t->eval();\n    }\n    read_out(t, before_edge);\n    pl_top_clock::clock(t, 1);\n}\n\n\
          void pt_peek(void* p, PtOut* out) { read_out(static_cast<PlTopSim*>(p)->top, out); }\n\n\
          void pt_free(void* p) {\n    auto* sim = static_cast<PlTopSim*>(p);\n    \
          sim->top->final();\n    delete sim->top;\n    delete sim;\n}\n}\n",

@@ -1,4 +1,4 @@
-//! `pl-cosim --dir DIR [--stats FILE]`: the host end of the co-simulation
+//! `pl-cosim --dir DIR [--stats FILE] [--record FILE]`: the host end of the co-simulation
 //! bridge (`simpl::cosim`). Creates the FIFOs `DIR/req` and `DIR/rep`,
 //! prints `ready` on stdout, then serves the firmware's requests (QEMU
 //! opens `req` for writing and `rep` for reading through semihosting) with
@@ -8,6 +8,12 @@
 //! second, this process's CPU seconds (a loaded machine inflates the wall
 //! time, not these) and shadow-model mismatches. Exit status 2 on bad arguments or
 //! when the FIFOs cannot be made, 1 on a mismatch.
+//!
+//! `--record FILE` also writes every request record to FILE as received;
+//! `pl-cosim --replay FILE [--stats FILE]` serves such a file's requests
+//! without a guest and prints a digest of the replies: the PL side's CPU
+//! time on a real request stream, without QEMU, and a check that two builds
+//! answer it alike (docs/speed.md).
 use rtl_sim::cosim::Bridge;
 use std::fs::OpenOptions;
 use std::io::{ErrorKind, Read, Write};
@@ -16,7 +22,9 @@ use std::process::{Command, ExitCode};
 use std::time::Instant;
 
 fn usage() -> ExitCode {
-    eprintln!("usage: pl-cosim --dir DIR [--stats FILE]");
+    eprintln!(
+        "usage: pl-cosim --dir DIR [--stats FILE] [--record FILE] | --replay FILE [--stats FILE]"
+    );
     ExitCode::from(2)
 }
 
@@ -37,16 +45,55 @@ fn fifo(p: &Path) -> Result<(), String> {
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let (mut dir, mut stats) = (None, None);
+    let (mut dir, mut stats, mut record, mut replay) = (None, None, None, None);
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match (a.as_str(), it.next()) {
             ("--dir", Some(d)) => dir = Some(PathBuf::from(d)),
             ("--stats", Some(f)) => stats = Some(PathBuf::from(f)),
+            ("--record", Some(f)) => record = Some(PathBuf::from(f)),
+            ("--replay", Some(f)) => replay = Some(PathBuf::from(f)),
             _ => return usage(),
         }
     }
+    if let Some(f) = replay {
+        if dir.is_some() || record.is_some() {
+            return usage();
+        }
+        let raw = match std::fs::read(&f) {
+            Ok(r) if r.len() % simpl::cosim::REQUEST_LEN == 0 => r,
+            Ok(_) => {
+                eprintln!("pl-cosim: {}: not whole request records", f.display());
+                return ExitCode::from(2);
+            }
+            Err(e) => {
+                eprintln!("pl-cosim: {}: {e}", f.display());
+                return ExitCode::from(2);
+            }
+        };
+        let mut bridge = Bridge::new();
+        let (t0, c0) = (Instant::now(), rtl_sim::thread_cpu_s());
+        // FNV-1a over every reply: two builds that answer alike print the same.
+        let mut digest: u64 = 0xcbf2_9ce4_8422_2325;
+        for rec in raw.chunks_exact(simpl::cosim::REQUEST_LEN) {
+            let mut buf = [0u8; simpl::cosim::REQUEST_LEN];
+            buf.copy_from_slice(rec);
+            for b in bridge.handle(&buf).encode() {
+                digest = (digest ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+            }
+        }
+        eprintln!("pl-cosim: replies digest {digest:016x}");
+        return finish(&bridge, t0, c0, stats);
+    }
     let Some(dir) = dir else { return usage() };
+    let mut record = match record.map(|f| std::fs::File::create(&f).map_err(|e| (f, e))) {
+        None => None,
+        Some(Ok(w)) => Some(std::io::BufWriter::new(w)),
+        Some(Err((f, e))) => {
+            eprintln!("pl-cosim: {}: {e}", f.display());
+            return ExitCode::from(2);
+        }
+    };
     let (req_p, rep_p) = (dir.join("req"), dir.join("rep"));
     for p in [&req_p, &rep_p] {
         if let Err(e) = fifo(p) {
@@ -79,11 +126,24 @@ fn main() -> ExitCode {
                 break;
             }
         }
+        if let Some(w) = &mut record {
+            let _ = w.write_all(&buf);
+        }
         let r = bridge.handle(&buf);
         if rep.write_all(&r.encode()).is_err() {
             break;
         }
     }
+    if let Some(w) = &mut record {
+        if let Err(e) = w.flush() {
+            eprintln!("pl-cosim: record: {e}");
+        }
+    }
+    finish(&bridge, t0, c0, stats)
+}
+
+/// Prints the statistics line; the exit status (1 on a mismatch).
+fn finish(bridge: &Bridge, t0: Instant, c0: f64, stats: Option<PathBuf>) -> ExitCode {
     let wall = t0.elapsed().as_secs_f64();
     let cpu = rtl_sim::thread_cpu_s() - c0;
     let pl = bridge.drive().pl();

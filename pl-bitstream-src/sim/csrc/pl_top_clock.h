@@ -1,0 +1,55 @@
+// A clock edge of the Verilated pl_top without its input-driven region
+// (Verilator 5's "ico" functions), for pl_top_shim.cpp. docs/speed.md.
+//
+// Verilated's eval() runs the whole input-driven combinational region
+// first on every call, whether or not an input changed: in the
+// co-simulation that region (mostly the register file's write decode) was
+// about a sixth of pl-cosim's time, run twice a cycle. After an eval()
+// every signal is settled for the inputs it saw (the clock-driven regions
+// re-settle the logic that depends on both inputs and registers), so with
+// the inputs unchanged a second run of that region computes nothing new,
+// except what reads the clock input itself. In pl_top those are two
+// wires, the simulation-only clock gates of the MPDCC and MPDTC cores
+// (SIM_MPDCC_CLOCK_GATE, SIM_MPDTC_CLOCK_GATE): mc_clk = clk_i && mc_ce_q
+// and mt_clk = clk_i && mt_ce_q, recomputed here. build.rs checks that the
+// region reads clk_i nowhere else (and fails the build otherwise).
+//
+// clock() then runs Verilator's own trigger / active / NBA loop, the same
+// loop as the generated Vpl_top___024root___eval after its input region.
+#pragma once
+
+#include "Vpl_top.h"
+#include "Vpl_top___024root.h"
+#include "verilated.h"
+
+void Vpl_top___024root___eval_triggers__act(Vpl_top___024root* vlSelf);
+void Vpl_top___024root___eval_act(Vpl_top___024root* vlSelf);
+void Vpl_top___024root___eval_nba(Vpl_top___024root* vlSelf);
+
+namespace pl_top_clock {
+
+// Sets clk_i to `level` and evaluates, the other inputs as they were at
+// the last full eval().
+static inline void clock(Vpl_top* t, uint8_t level) {
+    Vpl_top___024root* r = t->rootp;
+    r->clk_i = level;
+    r->pl_top__DOT__mc_clk = level & r->pl_top__DOT__mc_ce_q;
+    r->pl_top__DOT__mt_clk = level & r->pl_top__DOT__mt_ce_q;
+    // Up to 100 rounds each, as Verilator's loop (a design that does not
+    // settle is a fatal error there too).
+    for (int nba = 0;; nba++) {
+        r->__VnbaTriggered.clear();
+        for (int act = 0;; act++) {
+            Vpl_top___024root___eval_triggers__act(r);
+            if (!r->__VactTriggered.any()) break;
+            if (VL_UNLIKELY(act > 100)) VL_FATAL_MT(__FILE__, __LINE__, "", "pl_top: active region did not converge");
+            r->__VnbaTriggered.set(r->__VactTriggered);
+            Vpl_top___024root___eval_act(r);
+        }
+        if (!r->__VnbaTriggered.any()) break;
+        if (VL_UNLIKELY(nba > 100)) VL_FATAL_MT(__FILE__, __LINE__, "", "pl_top: NBA region did not converge");
+        Vpl_top___024root___eval_nba(r);
+    }
+}
+
+}  // namespace pl_top_clock
