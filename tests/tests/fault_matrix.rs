@@ -18,8 +18,9 @@ use system_tests::{assert_err, assert_ok, boot, boot_rtl, cmd, field, num};
 /// fresh boot leaves it and the homing before a free-rotor cell returns
 /// it; the free-rotor cells release it after the alignment.
 const ALIGN_CYCLES: u32 = 200_000;
-/// Control periods to run after `enable` before a free rotor is released:
-/// the alignment (2 ms) and a margin, FOC and MPDTC.
+/// Control periods to run after `enable` before a cell's warm-up (and a
+/// free rotor's release): the alignment (2 ms) and a margin, FOC and
+/// MPDTC.
 const ALIGNED: [u64; 2] = [40, 160];
 
 /// PL cycles of one control period: FOC (one PWM period), MPDTC.
@@ -195,9 +196,10 @@ fn cell(s: &mut Session, m: usize, c: &Case) -> i64 {
     assert_ok(&cmd(s, &format!("mode {mode}")));
     assert_ok(&cmd(s, "enable"));
     assert_ok(&cmd(s, &format!("torque {}", c.torque)));
+    // Aligned on the held rotor (and the one-period checks running: they
+    // start three steps after the controller), then released.
+    wait_periods(s, ALIGNED[m]);
     if c.free {
-        // Aligned on the held rotor, then released.
-        wait_periods(s, ALIGNED[m]);
         assert_ok(&cmd(s, "sim set locked 0"));
     }
     wait_periods(s, c.warm);

@@ -1306,14 +1306,6 @@ impl Servo {
         self.motion
             .measure(enc.pos, self.control_period_s(), t_last, j);
         let mut ps = self.ps_checks(adc_count, enc.pos, enc.cpr);
-        if gates && running {
-            ps |= self.evidence_checks(enc.pos, i_abc, &m, torque_ref_nm);
-        } else {
-            self.enc_dead.reset();
-            self.phase_open.reset();
-            self.fast.reset();
-            self.evidence_skip = EVIDENCE_SKIP;
-        }
         if gates {
             let (pos, speed) = self.motion.limits_violated(&self.cfg.motion);
             if pos {
@@ -1322,6 +1314,16 @@ impl Servo {
             if speed {
                 ps |= Faults::OVERSPEED;
             }
+        }
+        // The checks of `evidence` last: a fault already found latches
+        // without waiting for their arithmetic.
+        if gates && running && ps & !self.ps_faults == 0 {
+            ps |= self.evidence_checks(enc.pos, i_abc, &m, torque_ref_nm);
+        } else if !(gates && running) {
+            self.enc_dead.reset();
+            self.phase_open.reset();
+            self.fast.reset();
+            self.evidence_skip = EVIDENCE_SKIP;
         }
         let pl = Fault(&mut *bus).latched()?.0;
         if ps & !self.ps_faults != 0 {
