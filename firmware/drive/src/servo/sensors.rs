@@ -11,7 +11,7 @@
 //!
 //! Sequence (gates off before and after, the PL in FOC-PWM mode for its
 //! duration): for each phase k = a, b, c, its duties written and loaded by
-//! the PWM (one PWM period with the gates off), a voltage vector along +k (duty
+//! the PWM (the gates off until its next period starts), a voltage vector along +k (duty
 //! 0.5 + [`DUTY_STEP`] on leg k, 0.5 - `DUTY_STEP`/2 on the others: phase
 //! k at +`DUTY_STEP` u_dc, the others at -`DUTY_STEP` u_dc / 2), held until
 //! the largest measured phase current reaches [`target_a`] (10 % of the
@@ -243,10 +243,11 @@ impl<B: PlTime> Run<'_, B> {
             // residue of its current a reading in that period can reach
             // the target on the previous phase (read as channels swapped;
             // where in the PWM period the averaged results fall decides
-            // it, so a restart of the ADC's sample timer did). One PWM
-            // period with the gates off loads them.
+            // it, so a restart of the ADC's sample timer did). The gates
+            // go on once the PWM has started its next period.
             Pwm(&mut *self.bus).set_duties(vector(k), half_period)?;
-            self.wait(2 * u64::from(half_period))?;
+            let phase = Pwm(&mut *self.bus).phase(half_period)?;
+            self.wait(u64::from(2 * half_period - phase.min(2 * half_period)) + 2)?;
             Pwm(&mut *self.bus).set_gates(true)?;
             let t0 = self.cycles;
             loop {
