@@ -76,6 +76,8 @@ module capture_buf #(
     reg prev_valid_q;
     reg [15:0] tref_prev_q;
     reg [15:0] thr_prev_q;
+    reg signed [17:0] step_hi_q;
+    reg signed [17:0] step_lo_q;
 
     integer i;
     initial for (i = 0; i < DEPTH; i = i + 1) mem_q[i] = 163'd0;
@@ -87,9 +89,14 @@ module capture_buf #(
     wire take = running && sample_i && (decim_q >= decim_i);
 
     // Trigger conditions, on the values of this sample.
-    wire [16:0] dref = {ch_tref_i[15], ch_tref_i} - {tref_prev_q[15], tref_prev_q};
-    wire [16:0] dref_mag = dref[16] ? (~dref + 17'd1) : dref;
-    wire step_hit = prev_valid_q && (dref_mag >= {1'b0, step_i});
+    // Reference step |tref - tref_prev| >= step, as tref >= tref_prev + step
+    // or tref <= tref_prev - step against the two bounds kept in registers
+    // (step_hi_q, step_lo_q, 18-bit signed: exact), so the comparison is one
+    // carry chain within the clock (docs/rtl.md, delay model). The bounds
+    // follow tref_prev_q at its own edge and CAP_STEP one clock after its
+    // write: the step in force is step_i of the cycle before.
+    wire signed [17:0] tref_s = {{2{ch_tref_i[15]}}, ch_tref_i};
+    wire step_hit = prev_valid_q && (tref_s >= step_hi_q || tref_s <= step_lo_q);
     reg [15:0] thr_ch;
     always @(*) begin
         case (thr_ch_i)
@@ -173,6 +180,19 @@ module capture_buf #(
         end
     end
 
+    // tref_prev_q after this edge, and the bounds around it.
+    wire [15:0] tref_prev_d = arm_i ? 16'd0 : take ? ch_tref_i : tref_prev_q;
+    wire signed [17:0] tref_prev_s = {{2{tref_prev_d[15]}}, tref_prev_d};
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            step_hi_q <= 18'sd0;
+            step_lo_q <= 18'sd0;
+        end else begin
+            step_hi_q <= tref_prev_s + $signed({2'b00, step_i});
+            step_lo_q <= tref_prev_s - $signed({2'b00, step_i});
+        end
+    end
+
     assign state_o = state_q;
     assign count_o = count_q;
     assign trig_index_o = (state_q == DONE) ? count_q - post_len : {(AW + 1) {1'b0}};
@@ -183,6 +203,15 @@ module capture_buf #(
     always @(posedge clk_i) f_past_valid <= 1'b1;
     always @(*) begin
         if (!f_past_valid) assume (rst_i);
+    end
+    // The step bounds are tref_prev_q +- the step of the cycle before.
+    reg [15:0] f_step_q = 16'd0;
+    always @(posedge clk_i) f_step_q <= rst_i ? 16'd0 : step_i;
+    always @(*) begin
+        if (f_past_valid) begin
+            assert (step_hi_q == $signed({{2{tref_prev_q[15]}}, tref_prev_q}) + $signed({2'b00, f_step_q}));
+            assert (step_lo_q == $signed({{2{tref_prev_q[15]}}, tref_prev_q}) - $signed({2'b00, f_step_q}));
+        end
     end
     always @(*) begin
         if (f_past_valid) begin

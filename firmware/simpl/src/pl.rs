@@ -708,7 +708,7 @@ impl SimPl {
         self.mpdcc.skip(k);
         self.fe.skip(k);
         self.irq.skip(k);
-        self.cap.skip(self.r(S_CAP_RD_INDEX));
+        self.cap.skip(self.r(S_CAP_RD_INDEX), self.r(S_CAP_STEP));
         self.cycles += k;
         self.skips += 1;
     }
