@@ -15,7 +15,8 @@
 //   arm_i        one-cycle strobe: empty the ring, latch pre_i, ARMED
 //   trig_i       one-cycle strobe: manual trigger at the next sample
 //   source_i     0 manual only, 1 reference step (|tref - previous tref|
-//                >= step_i), 2 threshold crossing of channel thr_ch_i over
+//                >= step_i), 2 threshold crossing of the trigger channel
+//                thr_now_i (selected by the caller: CAP_THR_CH) over
 //                thr_level_i (thr_edge_i: 0 rising, 1 falling), 3 fault_i
 //   rd_index_i   record index (0 = oldest sample); rd_data_o shows that
 //                sample one clock later
@@ -40,7 +41,7 @@ module capture_buf #(
     input  wire [  15:0] pre_i,
     input  wire [   7:0] decim_i,
     input  wire [  15:0] step_i,
-    input  wire [   2:0] thr_ch_i,
+    input  wire [  15:0] thr_now_i,
     input  wire [  15:0] thr_level_i,
     input  wire          thr_edge_i,
     input  wire          sample_i,
@@ -97,17 +98,7 @@ module capture_buf #(
     // write: the step in force is step_i of the cycle before.
     wire signed [17:0] tref_s = {{2{ch_tref_i[15]}}, ch_tref_i};
     wire step_hit = prev_valid_q && (tref_s >= step_hi_q || tref_s <= step_lo_q);
-    reg [15:0] thr_ch;
-    always @(*) begin
-        case (thr_ch_i)
-            3'd0: thr_ch = ch_id_i;
-            3'd1: thr_ch = ch_iq_i;
-            3'd2: thr_ch = ch_torque_i;
-            3'd3: thr_ch = ch_tref_i;
-            default: thr_ch = ch_sel_i;
-        endcase
-    end
-    wire signed [15:0] thr_now = thr_ch;
+    wire signed [15:0] thr_now = thr_now_i;
     wire signed [15:0] thr_prev = thr_prev_q;
     wire signed [15:0] thr_lvl = thr_level_i;
     wire rise = (thr_prev < thr_lvl) && (thr_now >= thr_lvl);
@@ -165,7 +156,7 @@ module capture_buf #(
                 count_q      <= (count_q == DEPTH_W) ? DEPTH_W : count_q + 1'b1;
                 prev_valid_q <= 1'b1;
                 tref_prev_q  <= ch_tref_i;
-                thr_prev_q   <= thr_ch;
+                thr_prev_q   <= thr_now_i;
                 if (state_q == ARMED) begin
                     if (trigger) begin
                         trig_pend_q <= 1'b0;

@@ -52,7 +52,7 @@ impl Sample {
 }
 
 /// Inputs of one cycle.
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct CapIn {
     /// `CAP_ARM` write strobe.
     pub arm: bool,

@@ -264,6 +264,9 @@ pub struct SimPl {
     core_iq_ref: i32,
     core_done: u16,
     cap: Capture,
+    /// `capture_buf`'s inputs of the cycle before: `pl_top` registers them
+    /// (all but the read index), so the buffer runs one clock behind.
+    cap_prev: CapIn,
     mpdcc: MpdccBlock,
     irq: CtrlIrq,
     cycles: u64,
@@ -300,6 +303,7 @@ impl SimPl {
             core_iq_ref: 0,
             core_done: 0,
             cap: Capture::default(),
+            cap_prev: CapIn::default(),
             mpdcc: MpdccBlock::new(),
             irq: CtrlIrq::default(),
             cycles: 0,
@@ -622,7 +626,12 @@ impl SimPl {
         if valid {
             self.core_done = self.core_done.wrapping_add(1);
         }
-        self.cap.step(&cap_in);
+        let delayed = CapIn {
+            rd_index: cap_in.rd_index,
+            ..self.cap_prev
+        };
+        self.cap.step(&delayed);
+        self.cap_prev = cap_in;
         if w(S_MPDCC_START) {
             let words = self.mpdcc_words();
             self.mpdcc.step(Some(&words));
@@ -659,6 +668,10 @@ impl SimPl {
             return 0;
         }
         if c.mp_clr && (self.core_s != 0 || self.core_iq_ref != 0) {
+            return 0;
+        }
+        // capture_buf's input registers settle in one clock.
+        if self.cap_inputs(&c, false, false) != self.cap_prev {
             return 0;
         }
         let pins = [self.pins.enc_a, self.pins.enc_b, self.pins.enc_z];
