@@ -212,7 +212,8 @@ impl Events {
             || (self.pwm_period && mask.pwm_period)
     }
 
-    fn merge(&mut self, o: &Self) {
+    /// Adds the events of `o` (either's).
+    pub fn merge(&mut self, o: &Self) {
         self.gates |= o.gates;
         self.adc_convert |= o.adc_convert;
         self.adc_average |= o.adc_average;

@@ -8,9 +8,10 @@
 //! change at the same PL cycles to the same levels. Fails on the first
 //! mismatch and prints the seed (`SIMPL_SEED=<n>` replays one).
 //!
-//! Timing correspondence: an AXI access of the harness takes 2 cycles with
-//! the register-bus strobe in the first; a `SimPl` access is that strobe
-//! cycle, followed here by one idle cycle. The Verilated model leaves reset
+//! Timing correspondence: an AXI read of the harness takes 3 cycles with
+//! the register-bus strobe in the first, a write 4 with the register file's
+//! decoded write in the third; a `SimPl` access is that cycle, with idle
+//! cycles around it here (as `rtl_sim::rtl_timed`). The Verilated model leaves reset
 //! at cycle 4; `SimPl` counts from 0 there.
 use drive::pl::mpdcc::Mpdcc;
 use models::mpdcc::mpdcc_fixed::{self, Coeffs, Inputs};
