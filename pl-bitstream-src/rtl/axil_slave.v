@@ -226,8 +226,8 @@ module axil_slave #(
                 assert (s_rresp_o == $past(s_rresp_o));
             end
             // The held address/data are the ones handshaken.
-            if (!$past(rst_i) && $past(f_aw_hs && !wr_o)) assert (awaddr_q == $past(s_awaddr_i));
-            if (!$past(rst_i) && $past(f_w_hs && !wr_o)) assert (wdata_q == $past(s_wdata_i));
+            if (!$past(rst_i) && $past(f_aw_hs && !wr)) assert (awaddr_q == $past(s_awaddr_i));
+            if (!$past(rst_i) && $past(f_w_hs && !wr)) assert (wdata_q == $past(s_wdata_i));
             // A response only follows a bus access (write or read).
             if (s_bvalid_o && !$past(s_bvalid_o)) assert ($past(wr_ack_q));
             if (wr_ack_q) assert ($past(wr_o));

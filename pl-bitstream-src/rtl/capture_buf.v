@@ -18,6 +18,9 @@
 //                >= step_i), 2 threshold crossing of the trigger channel
 //                thr_now_i (selected by the caller: CAP_THR_CH) over
 //                thr_level_i (thr_edge_i: 0 rising, 1 falling), 3 fault_i
+//   thr_ge_i, thr_le_i  thr_now_i >= thr_level_i, thr_now_i <= thr_level_i
+//                (signed; computed by the caller with them, before its
+//                input registers: no comparison chain on this path)
 //   rd_index_i   record index (0 = oldest sample); rd_data_o shows that
 //                sample one clock later
 // A record: after the trigger sample, DEPTH - pre - 1 more samples are
@@ -42,6 +45,8 @@ module capture_buf #(
     input  wire [   7:0] decim_i,
     input  wire [  15:0] step_i,
     input  wire [  15:0] thr_now_i,
+    input  wire          thr_ge_i,
+    input  wire          thr_le_i,
     input  wire [  15:0] thr_level_i,
     input  wire          thr_edge_i,
     input  wire          sample_i,
@@ -98,11 +103,10 @@ module capture_buf #(
     // write: the step in force is step_i of the cycle before.
     wire signed [17:0] tref_s = {{2{ch_tref_i[15]}}, ch_tref_i};
     wire step_hit = prev_valid_q && (tref_s >= step_hi_q || tref_s <= step_lo_q);
-    wire signed [15:0] thr_now = thr_now_i;
     wire signed [15:0] thr_prev = thr_prev_q;
     wire signed [15:0] thr_lvl = thr_level_i;
-    wire rise = (thr_prev < thr_lvl) && (thr_now >= thr_lvl);
-    wire fall = (thr_prev > thr_lvl) && (thr_now <= thr_lvl);
+    wire rise = (thr_prev < thr_lvl) && thr_ge_i;
+    wire fall = (thr_prev > thr_lvl) && thr_le_i;
     wire thr_hit = prev_valid_q && (thr_edge_i ? fall : rise);
     wire trigger = trig_pend_q || (source_i == 2'd1 && step_hit) ||
         (source_i == 2'd2 && thr_hit) || (source_i == 2'd3 && fault_i);

@@ -28,7 +28,9 @@
 // three magnitudes is registered (oc_hit_q) before it reaches trip_o, so the
 // path from the ADC's sample register to the gate legs stays within one
 // clock at 100 MHz (docs/rtl.md, delay model); the gates go off at the
-// second edge after the sample strobe.
+// second edge after the sample strobe. The watchdog's comparison is
+// registered too: it trips one clock after its counter reaches
+// WDG_TIMEOUT.
 // A latched bit clears on a written 1 only if its condition is not present
 // in the same cycle (set wins). The watchdog counter saturates, so it stays
 // expired until a heartbeat.
@@ -79,12 +81,9 @@ module fault_block (
     // ADC_PERIOD + ADC_MARGIN, registered: the sum stays out of the trip
     // path (one clock at 100 MHz); a new ADC_PERIOD counts one clock later.
     reg  [16:0] adc_limit_q;
-    // The watchdog comparison, registered: the counter after this edge
-    // against WDG_TIMEOUT of this cycle (so a new timeout counts one clock
-    // after its write), out of the trip path.
+    // The watchdog comparison, registered (out of the trip path): the
+    // watchdog trips one clock after the counter reaches WDG_TIMEOUT.
     reg         wdg_exp_q;
-    wire [31:0] wdg_cnt_d = heartbeat_i ? 32'd0 :
-        (wdg_cnt_q != 32'hFFFF_FFFF) ? wdg_cnt_q + 32'd1 : wdg_cnt_q;
 
     // |x| of a signed 12-bit value as 12-bit unsigned (|-2048| = 2048).
     function automatic [11:0] mag(input [11:0] x);
@@ -116,8 +115,9 @@ module fault_block (
             status_q <= (status_q & ~clr_i) | cond;
             if (sample_valid_i) oc_last_q <= oc_sample;
             oc_hit_q <= sample_valid_i && oc_sample;
-            wdg_cnt_q <= wdg_cnt_d;
-            wdg_exp_q <= wdg_cnt_d >= wdg_timeout_i;
+            if (heartbeat_i) wdg_cnt_q <= 32'd0;
+            else if (wdg_cnt_q != 32'hFFFF_FFFF) wdg_cnt_q <= wdg_cnt_q + 32'd1;
+            wdg_exp_q <= wdg_cnt_q >= wdg_timeout_i;
             adc_en_q <= adc_en_i;
             if (adc_restart) adc_age_q <= 17'd0;
             else if (adc_age_q != 17'h1FFFF) adc_age_q <= adc_age_q + 17'd1;
@@ -141,10 +141,9 @@ module fault_block (
         if (rst_i || !run_i || sample_valid_i || adc_en_i != f_en_q) f_quiet_q <= 17'd0;
         else if (f_quiet_q != 17'h1FFFF) f_quiet_q <= f_quiet_q + 17'd1;
     end
-    // the watchdog's limit: WDG_TIMEOUT of the cycle before (none in the
-    // first cycle after reset)
-    reg  [31:0] f_wdg_lim_q = 32'hFFFF_FFFF;
-    always @(posedge clk_i) f_wdg_lim_q <= rst_i ? 32'hFFFF_FFFF : wdg_timeout_i;
+    // the watchdog's condition one clock late
+    reg         f_wdg_q = 1'b0;
+    always @(posedge clk_i) f_wdg_q <= !rst_i && wdg_cnt_q >= wdg_timeout_i;
     // the trip level: ADC_PERIOD of the cycle before + 16
     reg  [16:0] f_limit_q = 17'd0;
     always @(posedge clk_i) f_limit_q <= rst_i ? 17'd0 : {1'b0, adc_period_i} + 17'd16;
@@ -161,8 +160,8 @@ module fault_block (
         // Specification of the three sources, then: a live condition trips
         // at once (over-current one clock after its sample, below).
         if (ext_fault_i) assert (trip_o);
-        if (f_past_valid) assert (wdg_exp_q == (wdg_cnt_q >= f_wdg_lim_q));
-        if (f_past_valid && wdg_cnt_q >= f_wdg_lim_q) assert (trip_o);
+        if (f_past_valid) assert (wdg_exp_q == f_wdg_q);
+        if (f_wdg_q) assert (trip_o);
         if (|cond) assert (trip_o);
         if (|status_q) assert (trip_o);
     end

@@ -549,6 +549,7 @@ module pl_top #(
     reg  [ 9:0] cap_pre_q;
     reg  [ 7:0] cap_decim_q;
     reg  [15:0] cap_step_q, cap_thr_level_q, cap_thr_now_q;
+    reg         cap_thr_ge_q, cap_thr_le_q;
     reg  [15:0] cap_id_q, cap_iq_q, cap_torque_q, cap_tref_q, cap_ch_sel_q, cap_ferr_q;
     reg  [ 2:0] cap_sw_q;
     reg  [31:0] cap_pos_q, cap_vel_q;
@@ -565,6 +566,8 @@ module pl_top #(
             cap_step_q      <= 16'd0;
             cap_thr_level_q <= 16'd0;
             cap_thr_now_q   <= 16'd0;
+            cap_thr_ge_q    <= 1'b1;
+            cap_thr_le_q    <= 1'b1;
             cap_id_q        <= 16'd0;
             cap_iq_q        <= 16'd0;
             cap_torque_q    <= 16'd0;
@@ -586,6 +589,8 @@ module pl_top #(
             cap_step_q      <= cap_step;
             cap_thr_level_q <= cap_thr_level;
             cap_thr_now_q   <= cap_thr_now;
+            cap_thr_ge_q    <= $signed(cap_thr_now) >= $signed(cap_thr_level);
+            cap_thr_le_q    <= $signed(cap_thr_now) <= $signed(cap_thr_level);
             cap_id_q        <= cap_in_id;
             cap_iq_q        <= cap_in_iq;
             cap_torque_q    <= cap_in_torque;
@@ -609,6 +614,8 @@ module pl_top #(
         .decim_i     (cap_decim_q),
         .step_i      (cap_step_q),
         .thr_now_i   (cap_thr_now_q),
+        .thr_ge_i    (cap_thr_ge_q),
+        .thr_le_i    (cap_thr_le_q),
         .thr_level_i (cap_thr_level_q),
         .thr_edge_i  (cap_thr_edge_q),
         .sample_i    (cap_sample_q),

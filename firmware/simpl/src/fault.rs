@@ -48,10 +48,9 @@ pub struct Fault {
     /// (`adc_limit_q`, reset 0: a register, so a new period counts one
     /// clock after its write).
     adc_limit: u32,
-    /// WDG_TIMEOUT of the cycle before (reset: none, `u32::MAX`): the RTL
-    /// registers the watchdog comparison of the next count against the
-    /// present timeout, so a new timeout counts one clock after its write.
-    wdg_limit: u32,
+    /// The watchdog's comparison of the cycle before (`wdg_exp_q`: the
+    /// watchdog trips one clock after its counter reaches WDG_TIMEOUT).
+    wdg_exp: bool,
 }
 
 impl Default for Fault {
@@ -64,7 +63,7 @@ impl Default for Fault {
             adc_age: 0,
             adc_en: true,
             adc_limit: 0,
-            wdg_limit: u32::MAX,
+            wdg_exp: false,
         }
     }
 }
@@ -113,7 +112,7 @@ impl Fault {
     /// external, overcurrent}`.
     pub fn cond(&self, i: &FaultIn) -> u8 {
         let oc = self.oc_hit;
-        let wdg = self.wdg >= self.wdg_limit;
+        let wdg = self.wdg_exp;
         self.run_cond(i) | (u8::from(wdg) << 2) | (u8::from(i.ext) << 1) | u8::from(oc)
     }
 
@@ -125,7 +124,7 @@ impl Fault {
     /// `FAULT_RAW`.
     pub fn raw(&self, i: &FaultIn) -> u8 {
         self.run_cond(i)
-            | (u8::from(self.wdg >= self.wdg_limit) << 2)
+            | (u8::from(self.wdg_exp) << 2)
             | (u8::from(i.ext) << 1)
             | u8::from(self.oc_last)
     }
@@ -139,6 +138,7 @@ impl Fault {
             self.oc_last = Self::oc_sample(i);
         }
         self.oc_hit = i.sample_valid && Self::oc_sample(i);
+        self.wdg_exp = self.wdg >= i.wdg_timeout;
         if heartbeat {
             self.wdg = 0;
         } else {
@@ -147,7 +147,6 @@ impl Fault {
         let restart = !i.run || i.sample_valid || i.adc_en != self.adc_en;
         self.adc_en = i.adc_en;
         self.adc_limit = Self::adc_limit(i);
-        self.wdg_limit = i.wdg_timeout;
         self.adc_age = if restart {
             0
         } else {
@@ -163,7 +162,7 @@ impl Fault {
             || i.adc_en != self.adc_en
             || self.oc_hit
             || self.adc_limit != Self::adc_limit(i)
-            || self.wdg_limit != i.wdg_timeout
+            || self.wdg_exp != (self.wdg >= i.wdg_timeout)
         {
             return 0;
         }
