@@ -30,7 +30,8 @@
 // clock at 100 MHz (docs/rtl.md, delay model); the gates go off at the
 // second edge after the sample strobe. The watchdog's comparison is
 // registered too: it trips one clock after its counter reaches
-// WDG_TIMEOUT.
+// WDG_TIMEOUT (and a heartbeat ends the expired condition one clock after
+// it clears the counter).
 // A latched bit clears on a written 1 only if its condition is not present
 // in the same cycle (set wins). The watchdog counter saturates, so it stays
 // expired until a heartbeat.
