@@ -11,8 +11,8 @@
 //! Timing correspondence: an AXI read of the harness takes 3 cycles with
 //! the register-bus strobe in the first, a write 4 with the register file's
 //! decoded write in the third; a `SimPl` access is that cycle, with idle
-//! cycles around it here (as `rtl_sim::rtl_timed`). The Verilated model leaves reset
-//! at cycle 4; `SimPl` counts from 0 there.
+//! cycles around it here (as `rtl_sim::rtl_timed`). The Verilated model
+//! leaves reset at cycle 4; `SimPl` counts from 0 there.
 use drive::pl::mpdcc::Mpdcc;
 use models::mpdcc::mpdcc_fixed::{self, Coeffs, Inputs};
 use regmap::bus::{BusError, RegisterBus};
