@@ -2,15 +2,22 @@
 //
 // Write: AW and W are accepted independently (each has a one-entry holding
 // register, so they may arrive in the same cycle, in either order, or back
-// to back). A write is issued on the register bus (wr_o, one cycle) as soon
-// as both an address and data are available and the B channel is free
-// (no response pending, or it is being accepted this cycle); its response
-// (OKAY, or SLVERR if wr_err_i) is presented on B the next cycle. With BREADY
-// held high this sustains one write per clock.
-// Read: AR is accepted when no read response is pending or it is being
-// accepted; the register bus read (rd_o) is issued in the same cycle and its
-// data (rd_data_i, combinational) and error are registered onto R. One read
-// per clock with RREADY high. Reads have no side effects in this design.
+// to back). A write is taken as soon as both an address and data are
+// available, no write is in flight and the B channel is free (no response
+// pending, or it is being accepted this cycle); it is issued on the
+// register bus (wr_o, one cycle) from registers the next cycle; the
+// register file decodes it in a registered stage and answers wr_err_i the
+// cycle after wr_o, which is presented on B (OKAY, or SLVERR) the cycle
+// after that. The register stages keep the AXI handshake logic and the
+// address decode each within one clock at 100 MHz (docs/rtl.md). With
+// BREADY held high this sustains one write per three clocks.
+// Read: AR is accepted when no read is in the register file and no read
+// response is pending or it is being accepted; the register bus read (rd_o)
+// is issued in the same cycle with its error (rd_err_i, combinational); the
+// register file answers the data (rd_data_i) the next cycle (its read mux is
+// pipelined), registered onto R with the error: RVALID two cycles after the
+// AR handshake, one read per two clocks with RREADY high. Reads have no side
+// effects in this design.
 // AWPROT/ARPROT are not used (no ports). Reset is synchronous, active high.
 `default_nettype none
 
@@ -61,14 +68,22 @@ module axil_slave #(
     reg          rvalid_q;
     reg [  31:0] rdata_q;
     reg [   1:0] rresp_q;
+    reg          wr_q;
+    reg          wr_ack_q;
+    reg [AW-1:0] wr_addr_q;
+    reg [  31:0] wr_data_q;
+    reg [   3:0] wr_strb_q;
+    reg          rd_pend_q;
+    reg          rd_err_q;
 
     wire aw_avail = aw_held_q || s_awvalid_i;
     wire w_avail = w_held_q || s_wvalid_i;
-    wire b_free = !bvalid_q || s_bready_i;
+    wire b_free = !wr_q && !wr_ack_q && (!bvalid_q || s_bready_i);
+    // a write taken this cycle (on the register bus the next)
     wire wr = !rst_i && aw_avail && w_avail && b_free;
     wire aw_hs = s_awvalid_i && !aw_held_q;
     wire w_hs = s_wvalid_i && !w_held_q;
-    wire rd = !rst_i && s_arvalid_i && (!rvalid_q || s_rready_i);
+    wire rd = !rst_i && s_arvalid_i && !rd_pend_q && (!rvalid_q || s_rready_i);
 
     always @(posedge clk_i) begin
         if (rst_i) begin
@@ -78,20 +93,28 @@ module axil_slave #(
             bresp_q   <= RESP_OKAY;
             rvalid_q  <= 1'b0;
             rresp_q   <= RESP_OKAY;
+            wr_q      <= 1'b0;
+            wr_ack_q  <= 1'b0;
+            rd_pend_q <= 1'b0;
+            rd_err_q  <= 1'b0;
         end else begin
             if (wr) aw_held_q <= 1'b0;
             else if (aw_hs) aw_held_q <= 1'b1;
             if (wr) w_held_q <= 1'b0;
             else if (w_hs) w_held_q <= 1'b1;
-            if (wr) begin
+            wr_q <= wr;
+            wr_ack_q <= wr_q;
+            if (wr_ack_q) begin
                 bvalid_q <= 1'b1;
                 bresp_q  <= wr_err_i ? RESP_SLVERR : RESP_OKAY;
             end else if (s_bready_i) begin
                 bvalid_q <= 1'b0;
             end
-            if (rd) begin
+            rd_pend_q <= rd;
+            if (rd) rd_err_q <= rd_err_i;
+            if (rd_pend_q) begin
                 rvalid_q <= 1'b1;
-                rresp_q  <= rd_err_i ? RESP_SLVERR : RESP_OKAY;
+                rresp_q  <= rd_err_q ? RESP_SLVERR : RESP_OKAY;
             end else if (s_rready_i) begin
                 rvalid_q <= 1'b0;
             end
@@ -105,22 +128,27 @@ module axil_slave #(
             wdata_q <= s_wdata_i;
             wstrb_q <= s_wstrb_i;
         end
-        if (rd) rdata_q <= rd_data_i;
+        if (wr) begin
+            wr_addr_q <= aw_held_q ? awaddr_q : s_awaddr_i;
+            wr_data_q <= w_held_q ? wdata_q : s_wdata_i;
+            wr_strb_q <= w_held_q ? wstrb_q : s_wstrb_i;
+        end
+        if (rd_pend_q) rdata_q <= rd_data_i;
     end
 
     assign s_awready_o = !aw_held_q;
     assign s_wready_o  = !w_held_q;
     assign s_bvalid_o  = bvalid_q;
     assign s_bresp_o   = bresp_q;
-    assign s_arready_o = !rvalid_q || s_rready_i;
+    assign s_arready_o = !rd_pend_q && (!rvalid_q || s_rready_i);
     assign s_rvalid_o  = rvalid_q;
     assign s_rdata_o   = rdata_q;
     assign s_rresp_o   = rresp_q;
 
-    assign wr_o        = wr;
-    assign wr_addr_o   = aw_held_q ? awaddr_q : s_awaddr_i;
-    assign wr_data_o   = w_held_q ? wdata_q : s_wdata_i;
-    assign wr_strb_o   = w_held_q ? wstrb_q : s_wstrb_i;
+    assign wr_o        = wr_q;
+    assign wr_addr_o   = wr_addr_q;
+    assign wr_data_o   = wr_data_q;
+    assign wr_strb_o   = wr_strb_q;
     assign rd_o        = rd;
     assign rd_addr_o   = s_araddr_i;
 
@@ -156,11 +184,15 @@ module axil_slave #(
         if (rst_i) assume (!s_awvalid_i && !s_wvalid_i && !s_arvalid_i);
         // Every B answers one AW and one W; every R answers one AR; at
         // most one address and one data are held while a B waits.
-        assert (f_aw_out_q == {1'b0, aw_held_q} + {1'b0, bvalid_q});
-        assert (f_w_out_q == {1'b0, w_held_q} + {1'b0, bvalid_q});
-        assert (f_ar_out_q == {1'b0, rvalid_q});
-        // A register-bus write consumes exactly one address and one data.
-        if (wr_o) assert (aw_avail && w_avail && b_free);
+        // (a write on the register bus counts until its B is taken).
+        assert (f_aw_out_q == {1'b0, aw_held_q} + {1'b0, wr_q} + {1'b0, wr_ack_q} + {1'b0, bvalid_q});
+        assert (f_w_out_q == {1'b0, w_held_q} + {1'b0, wr_q} + {1'b0, wr_ack_q} + {1'b0, bvalid_q});
+        assert (f_ar_out_q == {1'b0, rd_pend_q} + {1'b0, rvalid_q});
+        // At most one write and one read in flight.
+        assert (!(wr_q && bvalid_q) && !(wr_ack_q && bvalid_q) && !(wr_q && wr_ack_q));
+        assert (!(rd_pend_q && rvalid_q));
+        // A write is taken with exactly one address and one data.
+        if (wr) assert (aw_avail && w_avail && b_free);
     end
 
     always @(posedge clk_i) begin
@@ -194,11 +226,19 @@ module axil_slave #(
                 assert (s_rresp_o == $past(s_rresp_o));
             end
             // The held address/data are the ones handshaken.
-            if (!$past(rst_i) && $past(f_aw_hs && !wr_o)) assert (awaddr_q == $past(s_awaddr_i));
-            if (!$past(rst_i) && $past(f_w_hs && !wr_o)) assert (wdata_q == $past(s_wdata_i));
+            if (!$past(rst_i) && $past(f_aw_hs && !wr)) assert (awaddr_q == $past(s_awaddr_i));
+            if (!$past(rst_i) && $past(f_w_hs && !wr)) assert (wdata_q == $past(s_wdata_i));
             // A response only follows a bus access (write or read).
-            if (s_bvalid_o && !$past(s_bvalid_o)) assert ($past(wr_o));
-            if (s_rvalid_o && !$past(s_rvalid_o)) assert ($past(rd_o));
+            if (s_bvalid_o && !$past(s_bvalid_o)) assert ($past(wr_ack_q));
+            if (wr_ack_q) assert ($past(wr_o));
+            if (s_rvalid_o && !$past(s_rvalid_o)) assert ($past(rd_pend_q));
+            if (rd_pend_q) assert ($past(rd_o));
+            // The register-bus write is the one taken the cycle before.
+            if (!$past(rst_i) && $past(wr)) begin
+                assert (wr_o);
+                assert (wr_addr_o == $past(aw_held_q ? awaddr_q : s_awaddr_i));
+                assert (wr_data_o == $past(w_held_q ? wdata_q : s_wdata_i));
+            end
         end
     end
 `endif

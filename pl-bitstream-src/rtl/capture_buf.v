@@ -15,8 +15,12 @@
 //   arm_i        one-cycle strobe: empty the ring, latch pre_i, ARMED
 //   trig_i       one-cycle strobe: manual trigger at the next sample
 //   source_i     0 manual only, 1 reference step (|tref - previous tref|
-//                >= step_i), 2 threshold crossing of channel thr_ch_i over
+//                >= step_i), 2 threshold crossing of the trigger channel
+//                thr_now_i (selected by the caller: CAP_THR_CH) over
 //                thr_level_i (thr_edge_i: 0 rising, 1 falling), 3 fault_i
+//   thr_ge_i, thr_le_i  thr_now_i >= thr_level_i, thr_now_i <= thr_level_i
+//                (signed; computed by the caller with them, before its
+//                input registers: no comparison chain on this path)
 //   rd_index_i   record index (0 = oldest sample); rd_data_o shows that
 //                sample one clock later
 // A record: after the trigger sample, DEPTH - pre - 1 more samples are
@@ -40,7 +44,9 @@ module capture_buf #(
     input  wire [  15:0] pre_i,
     input  wire [   7:0] decim_i,
     input  wire [  15:0] step_i,
-    input  wire [   2:0] thr_ch_i,
+    input  wire [  15:0] thr_now_i,
+    input  wire          thr_ge_i,
+    input  wire          thr_le_i,
     input  wire [  15:0] thr_level_i,
     input  wire          thr_edge_i,
     input  wire          sample_i,
@@ -76,6 +82,8 @@ module capture_buf #(
     reg prev_valid_q;
     reg [15:0] tref_prev_q;
     reg [15:0] thr_prev_q;
+    reg signed [17:0] step_hi_q;
+    reg signed [17:0] step_lo_q;
 
     integer i;
     initial for (i = 0; i < DEPTH; i = i + 1) mem_q[i] = 163'd0;
@@ -87,24 +95,18 @@ module capture_buf #(
     wire take = running && sample_i && (decim_q >= decim_i);
 
     // Trigger conditions, on the values of this sample.
-    wire [16:0] dref = {ch_tref_i[15], ch_tref_i} - {tref_prev_q[15], tref_prev_q};
-    wire [16:0] dref_mag = dref[16] ? (~dref + 17'd1) : dref;
-    wire step_hit = prev_valid_q && (dref_mag >= {1'b0, step_i});
-    reg [15:0] thr_ch;
-    always @(*) begin
-        case (thr_ch_i)
-            3'd0: thr_ch = ch_id_i;
-            3'd1: thr_ch = ch_iq_i;
-            3'd2: thr_ch = ch_torque_i;
-            3'd3: thr_ch = ch_tref_i;
-            default: thr_ch = ch_sel_i;
-        endcase
-    end
-    wire signed [15:0] thr_now = thr_ch;
+    // Reference step |tref - tref_prev| >= step, as tref >= tref_prev + step
+    // or tref <= tref_prev - step against the two bounds kept in registers
+    // (step_hi_q, step_lo_q, 18-bit signed: exact), so the comparison is one
+    // carry chain within the clock (docs/rtl.md, delay model). The bounds
+    // follow tref_prev_q at its own edge and CAP_STEP one clock after its
+    // write: the step in force is step_i of the cycle before.
+    wire signed [17:0] tref_s = {{2{ch_tref_i[15]}}, ch_tref_i};
+    wire step_hit = prev_valid_q && (tref_s >= step_hi_q || tref_s <= step_lo_q);
     wire signed [15:0] thr_prev = thr_prev_q;
     wire signed [15:0] thr_lvl = thr_level_i;
-    wire rise = (thr_prev < thr_lvl) && (thr_now >= thr_lvl);
-    wire fall = (thr_prev > thr_lvl) && (thr_now <= thr_lvl);
+    wire rise = (thr_prev < thr_lvl) && thr_ge_i;
+    wire fall = (thr_prev > thr_lvl) && thr_le_i;
     wire thr_hit = prev_valid_q && (thr_edge_i ? fall : rise);
     wire trigger = trig_pend_q || (source_i == 2'd1 && step_hit) ||
         (source_i == 2'd2 && thr_hit) || (source_i == 2'd3 && fault_i);
@@ -158,7 +160,7 @@ module capture_buf #(
                 count_q      <= (count_q == DEPTH_W) ? DEPTH_W : count_q + 1'b1;
                 prev_valid_q <= 1'b1;
                 tref_prev_q  <= ch_tref_i;
-                thr_prev_q   <= thr_ch;
+                thr_prev_q   <= thr_now_i;
                 if (state_q == ARMED) begin
                     if (trigger) begin
                         trig_pend_q <= 1'b0;
@@ -173,6 +175,19 @@ module capture_buf #(
         end
     end
 
+    // tref_prev_q after this edge, and the bounds around it.
+    wire [15:0] tref_prev_d = arm_i ? 16'd0 : take ? ch_tref_i : tref_prev_q;
+    wire signed [17:0] tref_prev_s = {{2{tref_prev_d[15]}}, tref_prev_d};
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            step_hi_q <= 18'sd0;
+            step_lo_q <= 18'sd0;
+        end else begin
+            step_hi_q <= tref_prev_s + $signed({2'b00, step_i});
+            step_lo_q <= tref_prev_s - $signed({2'b00, step_i});
+        end
+    end
+
     assign state_o = state_q;
     assign count_o = count_q;
     assign trig_index_o = (state_q == DONE) ? count_q - post_len : {(AW + 1) {1'b0}};
@@ -183,6 +198,15 @@ module capture_buf #(
     always @(posedge clk_i) f_past_valid <= 1'b1;
     always @(*) begin
         if (!f_past_valid) assume (rst_i);
+    end
+    // The step bounds are tref_prev_q +- the step of the cycle before.
+    reg [15:0] f_step_q = 16'd0;
+    always @(posedge clk_i) f_step_q <= rst_i ? 16'd0 : step_i;
+    always @(*) begin
+        if (f_past_valid) begin
+            assert (step_hi_q == $signed({{2{tref_prev_q[15]}}, tref_prev_q}) + $signed({2'b00, f_step_q}));
+            assert (step_lo_q == $signed({{2{tref_prev_q[15]}}, tref_prev_q}) - $signed({2'b00, f_step_q}));
+        end
     end
     always @(*) begin
         if (f_past_valid) begin

@@ -24,6 +24,14 @@
 //   trip_o           combinational: a fault is latched or is being raised
 //                    this cycle. Wired to the gate driver's fault input, it
 //                    turns every gate off at the next clock edge.
+// Over-current is judged one clock after its sample: the comparison of the
+// three magnitudes is registered (oc_hit_q) before it reaches trip_o, so the
+// path from the ADC's sample register to the gate legs stays within one
+// clock at 100 MHz (docs/rtl.md, delay model); the gates go off at the
+// second edge after the sample strobe. The watchdog's comparison is
+// registered too: it trips one clock after its counter reaches
+// WDG_TIMEOUT (and a heartbeat ends the expired condition one clock after
+// it clears the counter).
 // A latched bit clears on a written 1 only if its condition is not present
 // in the same cycle (set wins). The watchdog counter saturates, so it stays
 // expired until a heartbeat.
@@ -37,7 +45,8 @@
 // change of ADC_CTRL.ENABLE: the firmware's restart (ENABLE 0 then 1) gives
 // the timer a fresh sample period for the first conversion, and a disable
 // alone trips one sample period plus the margin after it. A shorter
-// ADC_PERIOD takes effect in the timer at once but in the converter's pace
+// ADC_PERIOD takes effect in the timer one clock after its write (the
+// trip level is a register: adc_limit_q) but in the converter's pace
 // only at its next conversion: a new period is written with ENABLE = 0 and
 // then ENABLE = 1 (the firmware's Adc::set_period), else a shorter one
 // trips with the gates on (a false trip: the safe side).
@@ -66,9 +75,16 @@ module fault_block (
     localparam [16:0] ADC_MARGIN = 17'd16;
     reg  [ 4:0] status_q;
     reg         oc_last_q;
+    reg         oc_hit_q;
     reg  [31:0] wdg_cnt_q;
     reg  [16:0] adc_age_q;
     reg         adc_en_q;
+    // ADC_PERIOD + ADC_MARGIN, registered: the sum stays out of the trip
+    // path (one clock at 100 MHz); a new ADC_PERIOD counts one clock later.
+    reg  [16:0] adc_limit_q;
+    // The watchdog comparison, registered (out of the trip path): the
+    // watchdog trips one clock after the counter reaches WDG_TIMEOUT.
+    reg         wdg_exp_q;
 
     // |x| of a signed 12-bit value as 12-bit unsigned (|-2048| = 2048).
     function automatic [11:0] mag(input [11:0] x);
@@ -77,11 +93,11 @@ module fault_block (
 
     wire [11:0] lim = {1'b0, oc_limit_i};
     wire oc_sample = (mag(ia_i) > lim) || (mag(ib_i) > lim) || (mag(ic_i) > lim);
-    wire oc_now = sample_valid_i && oc_sample;
-    wire wdg_now = (wdg_cnt_q >= wdg_timeout_i);
+    wire oc_now = oc_hit_q;
+    wire wdg_now = wdg_exp_q;
     wire enc_now = run_i && enc_illegal_i;
     wire adc_restart = !run_i || sample_valid_i || (adc_en_i != adc_en_q);
-    wire adc_late = adc_age_q >= {1'b0, adc_period_i} + ADC_MARGIN;
+    wire adc_late = adc_age_q >= adc_limit_q;
     wire adc_now = run_i && adc_late;
     wire [4:0] cond = {adc_now, enc_now, wdg_now, ext_fault_i, oc_now};
 
@@ -89,14 +105,20 @@ module fault_block (
         if (rst_i) begin
             status_q  <= 5'b00000;
             oc_last_q <= 1'b0;
+            oc_hit_q  <= 1'b0;
             wdg_cnt_q <= 32'd0;
             adc_age_q <= 17'd0;
             adc_en_q  <= 1'b1;
+            adc_limit_q <= 17'd0;
+            wdg_exp_q <= 1'b0;
         end else begin
+            adc_limit_q <= {1'b0, adc_period_i} + ADC_MARGIN;
             status_q <= (status_q & ~clr_i) | cond;
             if (sample_valid_i) oc_last_q <= oc_sample;
+            oc_hit_q <= sample_valid_i && oc_sample;
             if (heartbeat_i) wdg_cnt_q <= 32'd0;
             else if (wdg_cnt_q != 32'hFFFF_FFFF) wdg_cnt_q <= wdg_cnt_q + 32'd1;
+            wdg_exp_q <= wdg_cnt_q >= wdg_timeout_i;
             adc_en_q <= adc_en_i;
             if (adc_restart) adc_age_q <= 17'd0;
             else if (adc_age_q != 17'h1FFFF) adc_age_q <= adc_age_q + 17'd1;
@@ -120,7 +142,12 @@ module fault_block (
         if (rst_i || !run_i || sample_valid_i || adc_en_i != f_en_q) f_quiet_q <= 17'd0;
         else if (f_quiet_q != 17'h1FFFF) f_quiet_q <= f_quiet_q + 17'd1;
     end
-    wire [16:0] f_limit = {1'b0, adc_period_i} + 17'd16;
+    // the watchdog's condition one clock late
+    reg         f_wdg_q = 1'b0;
+    always @(posedge clk_i) f_wdg_q <= !rst_i && wdg_cnt_q >= wdg_timeout_i;
+    // the trip level: ADC_PERIOD of the cycle before + 16
+    reg  [16:0] f_limit_q = 17'd0;
+    always @(posedge clk_i) f_limit_q <= rst_i ? 17'd0 : {1'b0, adc_period_i} + 17'd16;
     always @(*) begin
         if (!f_past_valid) assume (rst_i);
         if (f_past_valid) begin
@@ -129,19 +156,21 @@ module fault_block (
         end
         // A raw sample overdue by the margin while running trips at once;
         // an illegal quadrature step while running too.
-        if (run_i && f_quiet_q >= f_limit) assert (trip_o);
+        if (run_i && f_quiet_q >= f_limit_q) assert (trip_o);
         if (run_i && enc_illegal_i) assert (trip_o);
         // Specification of the three sources, then: a live condition trips
-        // at once.
-        if (sample_valid_i && (mag(ia_i) > lim || mag(ib_i) > lim || mag(ic_i) > lim))
-            assert (trip_o);
+        // at once (over-current one clock after its sample, below).
         if (ext_fault_i) assert (trip_o);
-        if (wdg_cnt_q >= wdg_timeout_i) assert (trip_o);
+        if (f_past_valid) assert (wdg_exp_q == f_wdg_q);
+        if (f_wdg_q) assert (trip_o);
         if (|cond) assert (trip_o);
         if (|status_q) assert (trip_o);
     end
     always @(posedge clk_i) begin
         if (f_past_valid && !$past(rst_i)) begin
+            // An over-current sample trips one clock later.
+            if ($past(sample_valid_i && (mag(ia_i) > lim || mag(ib_i) > lim || mag(ic_i) > lim)))
+                assert (trip_o);
             // Every condition latches its bit.
             if ($past(oc_now)) assert (status_q[0]);
             if ($past(ext_fault_i)) assert (status_q[1]);
@@ -161,7 +190,7 @@ module fault_block (
             // No ADC_STUCK before its time, no ENCODER_LOSS without an
             // illegal step, both only while running.
             if (status_q[3] && !$past(status_q[3])) assert ($past(run_i && enc_illegal_i));
-            if (status_q[4] && !$past(status_q[4])) assert ($past(run_i && f_quiet_q >= f_limit));
+            if (status_q[4] && !$past(status_q[4])) assert ($past(run_i && f_quiet_q >= f_limit_q));
             // Without a heartbeat the watchdog counter only grows.
             if (!$past(heartbeat_i)) assert (wdg_cnt_q >= $past(wdg_cnt_q));
         end

@@ -80,15 +80,19 @@ module mpdtc_frontend (
     localparam signed [17:0] ONE_THIRD = 18'sd21845;
     localparam signed [17:0] INV_SQRT3 = 18'sd37837;
 
+    // Saturation to 25 / 18 bits. The range test looks at the bits above
+    // the result's sign (x > MAX: positive with any of them set; x < MIN:
+    // negative with any of them clear): LUTs only, no 48-bit comparison
+    // chain after the adder that feeds it (one clock at 100 MHz, docs/rtl.md).
     function automatic signed [24:0] sat25(input signed [47:0] x);
-        if (x > MAX25) sat25 = MAX25[24:0];
-        else if (x < MIN25) sat25 = MIN25[24:0];
+        if (!x[47] && |x[46:24]) sat25 = MAX25[24:0];
+        else if (x[47] && !(&x[46:24])) sat25 = MIN25[24:0];
         else sat25 = x[24:0];
     endfunction
 
     function automatic signed [17:0] sat18(input signed [47:0] x);
-        if (x > MAX18) sat18 = MAX18[17:0];
-        else if (x < MIN18) sat18 = MIN18[17:0];
+        if (!x[47] && |x[46:17]) sat18 = MAX18[17:0];
+        else if (x[47] && !(&x[46:17])) sat18 = MIN18[17:0];
         else sat18 = x[17:0];
     endfunction
 

@@ -2,12 +2,13 @@
 // do not edit (a test fails when this file is stale).
 //
 // pl_regs: the PL register file behind axil_slave. Register-bus side:
-// wr_i/rd_i are one-cycle strobes; wr_err_o/rd_err_o/rd_data_o are
-// combinational. Write rules (as the table's Register::apply_write): byte
-// strobes merge into the current value, then the 32-bit word is masked to
-// the width (all valid), clamped as a whole to the table's bounds, or
-// rejected (above the bound: the register keeps its value and
-// ERR.BAD_VALUE is set).
+// wr_i/rd_i are one-cycle strobes; a write takes effect and wr_err_o
+// answers it the cycle after wr_i; rd_err_o is combinational and
+// rd_data_o answers rd_i the next cycle. Write rules (as the table's
+// Register::apply_write): byte strobes merge into the current value,
+// then the 32-bit word is masked to the width (all valid), clamped as a
+// whole to the table's bounds, or rejected (above the bound: the
+// register keeps its value and ERR.BAD_VALUE is set).
 // Unmapped offsets, and writes to RO registers, answer SLVERR and set
 // ERR.BAD_ADDR. W1C flags clear on a written 1.
 //
@@ -392,270 +393,666 @@ module pl_regs (
     reg  [31:0] cap_in_vel_q;
     reg  [15:0] cap_in_ferr_q;
 
+    // Write decode stage (one clock each at 100 MHz, docs/rtl.md): every
+    // register's address match is registered with the data and strobes; the
+    // write takes effect, and wr_err_o answers it, the cycle after wr_i.
+    reg        wr_q;
+    reg [31:0] wr_data_q;
+    reg [ 3:0] wr_strb_q;
+    reg        hit_ctrl_q;
+    reg        hit_err_q;
+    reg        hit_heartbeat_q;
+    reg        hit_scratch_q;
+    reg        hit_irq_en_q;
+    reg        hit_irq_status_q;
+    reg        hit_mpdtc_ctrl_q;
+    reg        hit_mpdtc_start_q;
+    reg        hit_mpdtc_in_id_q;
+    reg        hit_mpdtc_in_iq_q;
+    reg        hit_mpdtc_in_cos0_q;
+    reg        hit_mpdtc_in_sin0_q;
+    reg        hit_mpdtc_in_cos1_q;
+    reg        hit_mpdtc_in_sin1_q;
+    reg        hit_mpdtc_in_cos2_q;
+    reg        hit_mpdtc_in_sin2_q;
+    reg        hit_mpdtc_in_w_ts_q;
+    reg        hit_mpdtc_in_t_ref_q;
+    reg        hit_mpdtc_p_a_q;
+    reg        hit_mpdtc_p_lambda_q;
+    reg        hit_mpdtc_p_u0_q;
+    reg        hit_mpdtc_p_u0_half_q;
+    reg        hit_mpdtc_p_u0_h_q;
+    reg        hit_mpdtc_p_psi_l_q;
+    reg        hit_mpdtc_p_kinv_t_q;
+    reg        hit_mpdtc_p_tol_q;
+    reg        hit_mpdtc_p_k_int_q;
+    reg        hit_mpdtc_p_int_lim_q;
+    reg        hit_mpdtc_p_int_cond_q;
+    reg        hit_mpdtc_p_kp_o_q;
+    reg        hit_mpdtc_p_ki_o_q;
+    reg        hit_mpdtc_p_eta_lim_q;
+    reg        hit_mpdtc_p_w2_0_q;
+    reg        hit_mpdtc_p_w2_1_q;
+    reg        hit_mpdtc_p_w2_2_q;
+    reg        hit_mpdtc_p_w2_3_q;
+    reg        hit_mpdtc_align_vec_q;
+    reg        hit_mpdtc_align_period_q;
+    reg        hit_mpdtc_align_on_q;
+    reg        hit_mpdtc_align_time_q;
+    reg        hit_mpdtc_fe_ang_scale_q;
+    reg        hit_mpdtc_fe_spd_scale_q;
+    reg        hit_mpdtc_fe_age0_q;
+    reg        hit_mpdtc_fe_age1_q;
+    reg        hit_mpdtc_fe_age2_q;
+    reg        hit_mpdtc_fe_off_a_q;
+    reg        hit_mpdtc_fe_off_b_q;
+    reg        hit_mpdtc_fe_off_c_q;
+    reg        hit_mpdtc_fe_gain_a_q;
+    reg        hit_mpdtc_fe_gain_b_q;
+    reg        hit_mpdtc_fe_gain_c_q;
+    reg        hit_mpdcc_start_q;
+    reg        hit_mpdcc_n_use_q;
+    reg        hit_mpdcc_s_prev_q;
+    reg        hit_mpdcc_i_a_q;
+    reg        hit_mpdcc_i_b_q;
+    reg        hit_mpdcc_psi_a_q;
+    reg        hit_mpdcc_psi_b_q;
+    reg        hit_mpdcc_v_n_q;
+    reg        hit_mpdcc_v_ph_a_q;
+    reg        hit_mpdcc_v_ph_b_q;
+    reg        hit_mpdcc_v_ph_c_q;
+    reg        hit_mpdcc_iref_a_q;
+    reg        hit_mpdcc_iref_b_q;
+    reg        hit_mpdcc_omega_r_q;
+    reg        hit_mpdcc_omega_s_q;
+    reg        hit_mpdcc_c_tau_q;
+    reg        hit_mpdcc_c_r_q;
+    reg        hit_mpdcc_c_w_q;
+    reg        hit_mpdcc_c_p_q;
+    reg        hit_mpdcc_c_s_q;
+    reg        hit_mpdcc_c_3_q;
+    reg        hit_mpdcc_c_d_q;
+    reg        hit_mpdcc_c_n_q;
+    reg        hit_mpdcc_c_ph_q;
+    reg        hit_mpdcc_s3h_q;
+    reg        hit_mpdcc_v_ph_ref_q;
+    reg        hit_mpdcc_c_tau1_q;
+    reg        hit_mpdcc_c_r1_q;
+    reg        hit_mpdcc_c_w1_q;
+    reg        hit_mpdcc_c_s1_q;
+    reg        hit_mpdcc_vdc_half_q;
+    reg        hit_mpdcc_g3_q;
+    reg        hit_mpdcc_gd_q;
+    reg        hit_mpdcc_g3_1_q;
+    reg        hit_mpdcc_bnd_ia_q;
+    reg        hit_mpdcc_bnd_ib_q;
+    reg        hit_mpdcc_bnd_ic_q;
+    reg        hit_mpdcc_bnd_vn_q;
+    reg        hit_mpdcc_bnd_vpa_q;
+    reg        hit_mpdcc_bnd_vpb_q;
+    reg        hit_mpdcc_bnd_vpc_q;
+    reg        hit_mpdcc_lambda_n_q;
+    reg        hit_gate_ctrl_q;
+    reg        hit_dead_time_q;
+    reg        hit_pwm_period_q;
+    reg        hit_duty_a_q;
+    reg        hit_duty_b_q;
+    reg        hit_duty_c_q;
+    reg        hit_sw_state_q;
+    reg        hit_adc_ctrl_q;
+    reg        hit_adc_period_q;
+    reg        hit_adc_avg_log2_q;
+    reg        hit_enc_cpr_q;
+    reg        hit_enc_window_q;
+    reg        hit_fault_status_q;
+    reg        hit_oc_limit_q;
+    reg        hit_wdg_timeout_q;
+    reg        hit_cap_source_q;
+    reg        hit_cap_pre_q;
+    reg        hit_cap_decim_q;
+    reg        hit_cap_step_q;
+    reg        hit_cap_thr_ch_q;
+    reg        hit_cap_thr_level_q;
+    reg        hit_cap_thr_edge_q;
+    reg        hit_cap_sel_q;
+    reg        hit_cap_arm_q;
+    reg        hit_cap_trig_q;
+    reg        hit_cap_in_id_q;
+    reg        hit_cap_in_iq_q;
+    reg        hit_cap_in_torque_q;
+    reg        hit_cap_in_tref_q;
+    reg        hit_cap_rd_index_q;
+    reg        hit_cap_in_pos_q;
+    reg        hit_cap_in_vel_q;
+    reg        hit_cap_in_ferr_q;
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            wr_q      <= 1'b0;
+            wr_data_q <= 32'd0;
+            wr_strb_q <= 4'd0;
+            hit_ctrl_q <= 1'b0;
+            hit_err_q <= 1'b0;
+            hit_heartbeat_q <= 1'b0;
+            hit_scratch_q <= 1'b0;
+            hit_irq_en_q <= 1'b0;
+            hit_irq_status_q <= 1'b0;
+            hit_mpdtc_ctrl_q <= 1'b0;
+            hit_mpdtc_start_q <= 1'b0;
+            hit_mpdtc_in_id_q <= 1'b0;
+            hit_mpdtc_in_iq_q <= 1'b0;
+            hit_mpdtc_in_cos0_q <= 1'b0;
+            hit_mpdtc_in_sin0_q <= 1'b0;
+            hit_mpdtc_in_cos1_q <= 1'b0;
+            hit_mpdtc_in_sin1_q <= 1'b0;
+            hit_mpdtc_in_cos2_q <= 1'b0;
+            hit_mpdtc_in_sin2_q <= 1'b0;
+            hit_mpdtc_in_w_ts_q <= 1'b0;
+            hit_mpdtc_in_t_ref_q <= 1'b0;
+            hit_mpdtc_p_a_q <= 1'b0;
+            hit_mpdtc_p_lambda_q <= 1'b0;
+            hit_mpdtc_p_u0_q <= 1'b0;
+            hit_mpdtc_p_u0_half_q <= 1'b0;
+            hit_mpdtc_p_u0_h_q <= 1'b0;
+            hit_mpdtc_p_psi_l_q <= 1'b0;
+            hit_mpdtc_p_kinv_t_q <= 1'b0;
+            hit_mpdtc_p_tol_q <= 1'b0;
+            hit_mpdtc_p_k_int_q <= 1'b0;
+            hit_mpdtc_p_int_lim_q <= 1'b0;
+            hit_mpdtc_p_int_cond_q <= 1'b0;
+            hit_mpdtc_p_kp_o_q <= 1'b0;
+            hit_mpdtc_p_ki_o_q <= 1'b0;
+            hit_mpdtc_p_eta_lim_q <= 1'b0;
+            hit_mpdtc_p_w2_0_q <= 1'b0;
+            hit_mpdtc_p_w2_1_q <= 1'b0;
+            hit_mpdtc_p_w2_2_q <= 1'b0;
+            hit_mpdtc_p_w2_3_q <= 1'b0;
+            hit_mpdtc_align_vec_q <= 1'b0;
+            hit_mpdtc_align_period_q <= 1'b0;
+            hit_mpdtc_align_on_q <= 1'b0;
+            hit_mpdtc_align_time_q <= 1'b0;
+            hit_mpdtc_fe_ang_scale_q <= 1'b0;
+            hit_mpdtc_fe_spd_scale_q <= 1'b0;
+            hit_mpdtc_fe_age0_q <= 1'b0;
+            hit_mpdtc_fe_age1_q <= 1'b0;
+            hit_mpdtc_fe_age2_q <= 1'b0;
+            hit_mpdtc_fe_off_a_q <= 1'b0;
+            hit_mpdtc_fe_off_b_q <= 1'b0;
+            hit_mpdtc_fe_off_c_q <= 1'b0;
+            hit_mpdtc_fe_gain_a_q <= 1'b0;
+            hit_mpdtc_fe_gain_b_q <= 1'b0;
+            hit_mpdtc_fe_gain_c_q <= 1'b0;
+            hit_mpdcc_start_q <= 1'b0;
+            hit_mpdcc_n_use_q <= 1'b0;
+            hit_mpdcc_s_prev_q <= 1'b0;
+            hit_mpdcc_i_a_q <= 1'b0;
+            hit_mpdcc_i_b_q <= 1'b0;
+            hit_mpdcc_psi_a_q <= 1'b0;
+            hit_mpdcc_psi_b_q <= 1'b0;
+            hit_mpdcc_v_n_q <= 1'b0;
+            hit_mpdcc_v_ph_a_q <= 1'b0;
+            hit_mpdcc_v_ph_b_q <= 1'b0;
+            hit_mpdcc_v_ph_c_q <= 1'b0;
+            hit_mpdcc_iref_a_q <= 1'b0;
+            hit_mpdcc_iref_b_q <= 1'b0;
+            hit_mpdcc_omega_r_q <= 1'b0;
+            hit_mpdcc_omega_s_q <= 1'b0;
+            hit_mpdcc_c_tau_q <= 1'b0;
+            hit_mpdcc_c_r_q <= 1'b0;
+            hit_mpdcc_c_w_q <= 1'b0;
+            hit_mpdcc_c_p_q <= 1'b0;
+            hit_mpdcc_c_s_q <= 1'b0;
+            hit_mpdcc_c_3_q <= 1'b0;
+            hit_mpdcc_c_d_q <= 1'b0;
+            hit_mpdcc_c_n_q <= 1'b0;
+            hit_mpdcc_c_ph_q <= 1'b0;
+            hit_mpdcc_s3h_q <= 1'b0;
+            hit_mpdcc_v_ph_ref_q <= 1'b0;
+            hit_mpdcc_c_tau1_q <= 1'b0;
+            hit_mpdcc_c_r1_q <= 1'b0;
+            hit_mpdcc_c_w1_q <= 1'b0;
+            hit_mpdcc_c_s1_q <= 1'b0;
+            hit_mpdcc_vdc_half_q <= 1'b0;
+            hit_mpdcc_g3_q <= 1'b0;
+            hit_mpdcc_gd_q <= 1'b0;
+            hit_mpdcc_g3_1_q <= 1'b0;
+            hit_mpdcc_bnd_ia_q <= 1'b0;
+            hit_mpdcc_bnd_ib_q <= 1'b0;
+            hit_mpdcc_bnd_ic_q <= 1'b0;
+            hit_mpdcc_bnd_vn_q <= 1'b0;
+            hit_mpdcc_bnd_vpa_q <= 1'b0;
+            hit_mpdcc_bnd_vpb_q <= 1'b0;
+            hit_mpdcc_bnd_vpc_q <= 1'b0;
+            hit_mpdcc_lambda_n_q <= 1'b0;
+            hit_gate_ctrl_q <= 1'b0;
+            hit_dead_time_q <= 1'b0;
+            hit_pwm_period_q <= 1'b0;
+            hit_duty_a_q <= 1'b0;
+            hit_duty_b_q <= 1'b0;
+            hit_duty_c_q <= 1'b0;
+            hit_sw_state_q <= 1'b0;
+            hit_adc_ctrl_q <= 1'b0;
+            hit_adc_period_q <= 1'b0;
+            hit_adc_avg_log2_q <= 1'b0;
+            hit_enc_cpr_q <= 1'b0;
+            hit_enc_window_q <= 1'b0;
+            hit_fault_status_q <= 1'b0;
+            hit_oc_limit_q <= 1'b0;
+            hit_wdg_timeout_q <= 1'b0;
+            hit_cap_source_q <= 1'b0;
+            hit_cap_pre_q <= 1'b0;
+            hit_cap_decim_q <= 1'b0;
+            hit_cap_step_q <= 1'b0;
+            hit_cap_thr_ch_q <= 1'b0;
+            hit_cap_thr_level_q <= 1'b0;
+            hit_cap_thr_edge_q <= 1'b0;
+            hit_cap_sel_q <= 1'b0;
+            hit_cap_arm_q <= 1'b0;
+            hit_cap_trig_q <= 1'b0;
+            hit_cap_in_id_q <= 1'b0;
+            hit_cap_in_iq_q <= 1'b0;
+            hit_cap_in_torque_q <= 1'b0;
+            hit_cap_in_tref_q <= 1'b0;
+            hit_cap_rd_index_q <= 1'b0;
+            hit_cap_in_pos_q <= 1'b0;
+            hit_cap_in_vel_q <= 1'b0;
+            hit_cap_in_ferr_q <= 1'b0;
+        end else begin
+            wr_q      <= wr_i;
+            wr_data_q <= wr_data_i;
+            wr_strb_q <= wr_strb_i;
+            hit_ctrl_q <= wr_i && wr_addr_i == 15'h0008;
+            hit_err_q <= wr_i && wr_addr_i == 15'h0010;
+            hit_heartbeat_q <= wr_i && wr_addr_i == 15'h0014;
+            hit_scratch_q <= wr_i && wr_addr_i == 15'h0018;
+            hit_irq_en_q <= wr_i && wr_addr_i == 15'h0040;
+            hit_irq_status_q <= wr_i && wr_addr_i == 15'h0044;
+            hit_mpdtc_ctrl_q <= wr_i && wr_addr_i == 15'h1000;
+            hit_mpdtc_start_q <= wr_i && wr_addr_i == 15'h1004;
+            hit_mpdtc_in_id_q <= wr_i && wr_addr_i == 15'h1010;
+            hit_mpdtc_in_iq_q <= wr_i && wr_addr_i == 15'h1014;
+            hit_mpdtc_in_cos0_q <= wr_i && wr_addr_i == 15'h1018;
+            hit_mpdtc_in_sin0_q <= wr_i && wr_addr_i == 15'h101c;
+            hit_mpdtc_in_cos1_q <= wr_i && wr_addr_i == 15'h1020;
+            hit_mpdtc_in_sin1_q <= wr_i && wr_addr_i == 15'h1024;
+            hit_mpdtc_in_cos2_q <= wr_i && wr_addr_i == 15'h1028;
+            hit_mpdtc_in_sin2_q <= wr_i && wr_addr_i == 15'h102c;
+            hit_mpdtc_in_w_ts_q <= wr_i && wr_addr_i == 15'h1030;
+            hit_mpdtc_in_t_ref_q <= wr_i && wr_addr_i == 15'h1034;
+            hit_mpdtc_p_a_q <= wr_i && wr_addr_i == 15'h1040;
+            hit_mpdtc_p_lambda_q <= wr_i && wr_addr_i == 15'h1044;
+            hit_mpdtc_p_u0_q <= wr_i && wr_addr_i == 15'h1048;
+            hit_mpdtc_p_u0_half_q <= wr_i && wr_addr_i == 15'h104c;
+            hit_mpdtc_p_u0_h_q <= wr_i && wr_addr_i == 15'h1050;
+            hit_mpdtc_p_psi_l_q <= wr_i && wr_addr_i == 15'h1054;
+            hit_mpdtc_p_kinv_t_q <= wr_i && wr_addr_i == 15'h1058;
+            hit_mpdtc_p_tol_q <= wr_i && wr_addr_i == 15'h105c;
+            hit_mpdtc_p_k_int_q <= wr_i && wr_addr_i == 15'h1060;
+            hit_mpdtc_p_int_lim_q <= wr_i && wr_addr_i == 15'h1064;
+            hit_mpdtc_p_int_cond_q <= wr_i && wr_addr_i == 15'h1068;
+            hit_mpdtc_p_kp_o_q <= wr_i && wr_addr_i == 15'h106c;
+            hit_mpdtc_p_ki_o_q <= wr_i && wr_addr_i == 15'h1070;
+            hit_mpdtc_p_eta_lim_q <= wr_i && wr_addr_i == 15'h1074;
+            hit_mpdtc_p_w2_0_q <= wr_i && wr_addr_i == 15'h1078;
+            hit_mpdtc_p_w2_1_q <= wr_i && wr_addr_i == 15'h107c;
+            hit_mpdtc_p_w2_2_q <= wr_i && wr_addr_i == 15'h1080;
+            hit_mpdtc_p_w2_3_q <= wr_i && wr_addr_i == 15'h1084;
+            hit_mpdtc_align_vec_q <= wr_i && wr_addr_i == 15'h10a4;
+            hit_mpdtc_align_period_q <= wr_i && wr_addr_i == 15'h10a8;
+            hit_mpdtc_align_on_q <= wr_i && wr_addr_i == 15'h10ac;
+            hit_mpdtc_align_time_q <= wr_i && wr_addr_i == 15'h10b0;
+            hit_mpdtc_fe_ang_scale_q <= wr_i && wr_addr_i == 15'h10b8;
+            hit_mpdtc_fe_spd_scale_q <= wr_i && wr_addr_i == 15'h10bc;
+            hit_mpdtc_fe_age0_q <= wr_i && wr_addr_i == 15'h10c0;
+            hit_mpdtc_fe_age1_q <= wr_i && wr_addr_i == 15'h10c4;
+            hit_mpdtc_fe_age2_q <= wr_i && wr_addr_i == 15'h10c8;
+            hit_mpdtc_fe_off_a_q <= wr_i && wr_addr_i == 15'h10cc;
+            hit_mpdtc_fe_off_b_q <= wr_i && wr_addr_i == 15'h10d0;
+            hit_mpdtc_fe_off_c_q <= wr_i && wr_addr_i == 15'h10d4;
+            hit_mpdtc_fe_gain_a_q <= wr_i && wr_addr_i == 15'h10d8;
+            hit_mpdtc_fe_gain_b_q <= wr_i && wr_addr_i == 15'h10dc;
+            hit_mpdtc_fe_gain_c_q <= wr_i && wr_addr_i == 15'h10e0;
+            hit_mpdcc_start_q <= wr_i && wr_addr_i == 15'h2000;
+            hit_mpdcc_n_use_q <= wr_i && wr_addr_i == 15'h2008;
+            hit_mpdcc_s_prev_q <= wr_i && wr_addr_i == 15'h2010;
+            hit_mpdcc_i_a_q <= wr_i && wr_addr_i == 15'h2014;
+            hit_mpdcc_i_b_q <= wr_i && wr_addr_i == 15'h2018;
+            hit_mpdcc_psi_a_q <= wr_i && wr_addr_i == 15'h201c;
+            hit_mpdcc_psi_b_q <= wr_i && wr_addr_i == 15'h2020;
+            hit_mpdcc_v_n_q <= wr_i && wr_addr_i == 15'h2024;
+            hit_mpdcc_v_ph_a_q <= wr_i && wr_addr_i == 15'h2028;
+            hit_mpdcc_v_ph_b_q <= wr_i && wr_addr_i == 15'h202c;
+            hit_mpdcc_v_ph_c_q <= wr_i && wr_addr_i == 15'h2030;
+            hit_mpdcc_iref_a_q <= wr_i && wr_addr_i == 15'h2034;
+            hit_mpdcc_iref_b_q <= wr_i && wr_addr_i == 15'h2038;
+            hit_mpdcc_omega_r_q <= wr_i && wr_addr_i == 15'h203c;
+            hit_mpdcc_omega_s_q <= wr_i && wr_addr_i == 15'h2040;
+            hit_mpdcc_c_tau_q <= wr_i && wr_addr_i == 15'h2080;
+            hit_mpdcc_c_r_q <= wr_i && wr_addr_i == 15'h2084;
+            hit_mpdcc_c_w_q <= wr_i && wr_addr_i == 15'h2088;
+            hit_mpdcc_c_p_q <= wr_i && wr_addr_i == 15'h208c;
+            hit_mpdcc_c_s_q <= wr_i && wr_addr_i == 15'h2090;
+            hit_mpdcc_c_3_q <= wr_i && wr_addr_i == 15'h2094;
+            hit_mpdcc_c_d_q <= wr_i && wr_addr_i == 15'h2098;
+            hit_mpdcc_c_n_q <= wr_i && wr_addr_i == 15'h209c;
+            hit_mpdcc_c_ph_q <= wr_i && wr_addr_i == 15'h20a0;
+            hit_mpdcc_s3h_q <= wr_i && wr_addr_i == 15'h20a4;
+            hit_mpdcc_v_ph_ref_q <= wr_i && wr_addr_i == 15'h20a8;
+            hit_mpdcc_c_tau1_q <= wr_i && wr_addr_i == 15'h20ac;
+            hit_mpdcc_c_r1_q <= wr_i && wr_addr_i == 15'h20b0;
+            hit_mpdcc_c_w1_q <= wr_i && wr_addr_i == 15'h20b4;
+            hit_mpdcc_c_s1_q <= wr_i && wr_addr_i == 15'h20b8;
+            hit_mpdcc_vdc_half_q <= wr_i && wr_addr_i == 15'h20bc;
+            hit_mpdcc_g3_q <= wr_i && wr_addr_i == 15'h20c0;
+            hit_mpdcc_gd_q <= wr_i && wr_addr_i == 15'h20c4;
+            hit_mpdcc_g3_1_q <= wr_i && wr_addr_i == 15'h20c8;
+            hit_mpdcc_bnd_ia_q <= wr_i && wr_addr_i == 15'h20cc;
+            hit_mpdcc_bnd_ib_q <= wr_i && wr_addr_i == 15'h20d0;
+            hit_mpdcc_bnd_ic_q <= wr_i && wr_addr_i == 15'h20d4;
+            hit_mpdcc_bnd_vn_q <= wr_i && wr_addr_i == 15'h20d8;
+            hit_mpdcc_bnd_vpa_q <= wr_i && wr_addr_i == 15'h20dc;
+            hit_mpdcc_bnd_vpb_q <= wr_i && wr_addr_i == 15'h20e0;
+            hit_mpdcc_bnd_vpc_q <= wr_i && wr_addr_i == 15'h20e4;
+            hit_mpdcc_lambda_n_q <= wr_i && wr_addr_i == 15'h20e8;
+            hit_gate_ctrl_q <= wr_i && wr_addr_i == 15'h3000;
+            hit_dead_time_q <= wr_i && wr_addr_i == 15'h3004;
+            hit_pwm_period_q <= wr_i && wr_addr_i == 15'h3008;
+            hit_duty_a_q <= wr_i && wr_addr_i == 15'h300c;
+            hit_duty_b_q <= wr_i && wr_addr_i == 15'h3010;
+            hit_duty_c_q <= wr_i && wr_addr_i == 15'h3014;
+            hit_sw_state_q <= wr_i && wr_addr_i == 15'h3018;
+            hit_adc_ctrl_q <= wr_i && wr_addr_i == 15'h4000;
+            hit_adc_period_q <= wr_i && wr_addr_i == 15'h4004;
+            hit_adc_avg_log2_q <= wr_i && wr_addr_i == 15'h4018;
+            hit_enc_cpr_q <= wr_i && wr_addr_i == 15'h5000;
+            hit_enc_window_q <= wr_i && wr_addr_i == 15'h500c;
+            hit_fault_status_q <= wr_i && wr_addr_i == 15'h6000;
+            hit_oc_limit_q <= wr_i && wr_addr_i == 15'h6008;
+            hit_wdg_timeout_q <= wr_i && wr_addr_i == 15'h600c;
+            hit_cap_source_q <= wr_i && wr_addr_i == 15'h7000;
+            hit_cap_pre_q <= wr_i && wr_addr_i == 15'h7004;
+            hit_cap_decim_q <= wr_i && wr_addr_i == 15'h7008;
+            hit_cap_step_q <= wr_i && wr_addr_i == 15'h700c;
+            hit_cap_thr_ch_q <= wr_i && wr_addr_i == 15'h7010;
+            hit_cap_thr_level_q <= wr_i && wr_addr_i == 15'h7014;
+            hit_cap_thr_edge_q <= wr_i && wr_addr_i == 15'h7018;
+            hit_cap_sel_q <= wr_i && wr_addr_i == 15'h701c;
+            hit_cap_arm_q <= wr_i && wr_addr_i == 15'h7020;
+            hit_cap_trig_q <= wr_i && wr_addr_i == 15'h7024;
+            hit_cap_in_id_q <= wr_i && wr_addr_i == 15'h7030;
+            hit_cap_in_iq_q <= wr_i && wr_addr_i == 15'h7034;
+            hit_cap_in_torque_q <= wr_i && wr_addr_i == 15'h7038;
+            hit_cap_in_tref_q <= wr_i && wr_addr_i == 15'h703c;
+            hit_cap_rd_index_q <= wr_i && wr_addr_i == 15'h7040;
+            hit_cap_in_pos_q <= wr_i && wr_addr_i == 15'h7054;
+            hit_cap_in_vel_q <= wr_i && wr_addr_i == 15'h7058;
+            hit_cap_in_ferr_q <= wr_i && wr_addr_i == 15'h705c;
+        end
+    end
+
     // Write decode, and the word each write leaves (merged, clamped).
-    wire w_ctrl = wr_i && wr_addr_i == 15'h0008;
-    wire [31:0] n_ctrl = merge({30'd0, ctrl_q}, wr_data_i, wr_strb_i);
+    wire w_ctrl = hit_ctrl_q;
+    wire [31:0] n_ctrl = merge({30'd0, ctrl_q}, wr_data_q, wr_strb_q);
     wire bad_ctrl = n_ctrl > 32'h00000002;
-    wire w_err = wr_i && wr_addr_i == 15'h0010;
-    wire [31:0] n_err = merge(32'd0, wr_data_i, wr_strb_i);
-    wire w_heartbeat = wr_i && wr_addr_i == 15'h0014;
-    wire [31:0] n_heartbeat = merge(heartbeat_q, wr_data_i, wr_strb_i);
-    wire w_scratch = wr_i && wr_addr_i == 15'h0018;
-    wire [31:0] n_scratch = merge(scratch_q, wr_data_i, wr_strb_i);
-    wire w_irq_en = wr_i && wr_addr_i == 15'h0040;
-    wire [31:0] n_irq_en = merge({30'd0, irq_en_q}, wr_data_i, wr_strb_i);
-    wire w_irq_status = wr_i && wr_addr_i == 15'h0044;
-    wire [31:0] n_irq_status = merge(32'd0, wr_data_i, wr_strb_i);
-    wire w_mpdtc_ctrl = wr_i && wr_addr_i == 15'h1000;
-    wire [31:0] n_mpdtc_ctrl = merge({29'd0, mpdtc_ctrl_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_start = wr_i && wr_addr_i == 15'h1004;
-    wire [31:0] n_mpdtc_start = merge(mpdtc_start_q, wr_data_i, wr_strb_i);
-    wire w_mpdtc_in_id = wr_i && wr_addr_i == 15'h1010;
-    wire [31:0] n_mpdtc_in_id = merge({7'd0, mpdtc_in_id_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_in_iq = wr_i && wr_addr_i == 15'h1014;
-    wire [31:0] n_mpdtc_in_iq = merge({7'd0, mpdtc_in_iq_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_in_cos0 = wr_i && wr_addr_i == 15'h1018;
-    wire [31:0] n_mpdtc_in_cos0 = merge({14'd0, mpdtc_in_cos0_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_in_sin0 = wr_i && wr_addr_i == 15'h101c;
-    wire [31:0] n_mpdtc_in_sin0 = merge({14'd0, mpdtc_in_sin0_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_in_cos1 = wr_i && wr_addr_i == 15'h1020;
-    wire [31:0] n_mpdtc_in_cos1 = merge({14'd0, mpdtc_in_cos1_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_in_sin1 = wr_i && wr_addr_i == 15'h1024;
-    wire [31:0] n_mpdtc_in_sin1 = merge({14'd0, mpdtc_in_sin1_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_in_cos2 = wr_i && wr_addr_i == 15'h1028;
-    wire [31:0] n_mpdtc_in_cos2 = merge({14'd0, mpdtc_in_cos2_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_in_sin2 = wr_i && wr_addr_i == 15'h102c;
-    wire [31:0] n_mpdtc_in_sin2 = merge({14'd0, mpdtc_in_sin2_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_in_w_ts = wr_i && wr_addr_i == 15'h1030;
-    wire [31:0] n_mpdtc_in_w_ts = merge({14'd0, mpdtc_in_w_ts_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_in_t_ref = wr_i && wr_addr_i == 15'h1034;
-    wire [31:0] n_mpdtc_in_t_ref = merge({14'd0, mpdtc_in_t_ref_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_a = wr_i && wr_addr_i == 15'h1040;
-    wire [31:0] n_mpdtc_p_a = merge({14'd0, mpdtc_p_a_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_lambda = wr_i && wr_addr_i == 15'h1044;
-    wire [31:0] n_mpdtc_p_lambda = merge({14'd0, mpdtc_p_lambda_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_u0 = wr_i && wr_addr_i == 15'h1048;
-    wire [31:0] n_mpdtc_p_u0 = merge({7'd0, mpdtc_p_u0_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_u0_half = wr_i && wr_addr_i == 15'h104c;
-    wire [31:0] n_mpdtc_p_u0_half = merge({7'd0, mpdtc_p_u0_half_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_u0_h = wr_i && wr_addr_i == 15'h1050;
-    wire [31:0] n_mpdtc_p_u0_h = merge({7'd0, mpdtc_p_u0_h_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_psi_l = wr_i && wr_addr_i == 15'h1054;
-    wire [31:0] n_mpdtc_p_psi_l = merge({7'd0, mpdtc_p_psi_l_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_kinv_t = wr_i && wr_addr_i == 15'h1058;
-    wire [31:0] n_mpdtc_p_kinv_t = merge({7'd0, mpdtc_p_kinv_t_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_tol = wr_i && wr_addr_i == 15'h105c;
-    wire [31:0] n_mpdtc_p_tol = merge({8'd0, mpdtc_p_tol_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_k_int = wr_i && wr_addr_i == 15'h1060;
-    wire [31:0] n_mpdtc_p_k_int = merge({14'd0, mpdtc_p_k_int_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_int_lim = wr_i && wr_addr_i == 15'h1064;
-    wire [31:0] n_mpdtc_p_int_lim = merge({8'd0, mpdtc_p_int_lim_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_int_cond = wr_i && wr_addr_i == 15'h1068;
-    wire [31:0] n_mpdtc_p_int_cond = merge({31'd0, mpdtc_p_int_cond_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_kp_o = wr_i && wr_addr_i == 15'h106c;
-    wire [31:0] n_mpdtc_p_kp_o = merge({14'd0, mpdtc_p_kp_o_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_ki_o = wr_i && wr_addr_i == 15'h1070;
-    wire [31:0] n_mpdtc_p_ki_o = merge({14'd0, mpdtc_p_ki_o_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_eta_lim = wr_i && wr_addr_i == 15'h1074;
-    wire [31:0] n_mpdtc_p_eta_lim = merge({8'd0, mpdtc_p_eta_lim_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_w2_0 = wr_i && wr_addr_i == 15'h1078;
-    wire [31:0] n_mpdtc_p_w2_0 = merge({14'd0, mpdtc_p_w2_0_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_w2_1 = wr_i && wr_addr_i == 15'h107c;
-    wire [31:0] n_mpdtc_p_w2_1 = merge({14'd0, mpdtc_p_w2_1_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_w2_2 = wr_i && wr_addr_i == 15'h1080;
-    wire [31:0] n_mpdtc_p_w2_2 = merge({14'd0, mpdtc_p_w2_2_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_p_w2_3 = wr_i && wr_addr_i == 15'h1084;
-    wire [31:0] n_mpdtc_p_w2_3 = merge({14'd0, mpdtc_p_w2_3_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_align_vec = wr_i && wr_addr_i == 15'h10a4;
-    wire [31:0] n_mpdtc_align_vec = merge({29'd0, mpdtc_align_vec_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_align_period = wr_i && wr_addr_i == 15'h10a8;
-    wire [31:0] n_mpdtc_align_period = clamp(merge({16'd0, mpdtc_align_period_q}, wr_data_i, wr_strb_i), 32'h00000002, 32'h0000ffff);
-    wire w_mpdtc_align_on = wr_i && wr_addr_i == 15'h10ac;
-    wire [31:0] n_mpdtc_align_on = clamp(merge({16'd0, mpdtc_align_on_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h00007fff);
-    wire w_mpdtc_align_time = wr_i && wr_addr_i == 15'h10b0;
-    wire [31:0] n_mpdtc_align_time = clamp(merge(mpdtc_align_time_q, wr_data_i, wr_strb_i), 32'h00000001, 32'hffffffff);
-    wire w_mpdtc_fe_ang_scale = wr_i && wr_addr_i == 15'h10b8;
-    wire [31:0] n_mpdtc_fe_ang_scale = merge(mpdtc_fe_ang_scale_q, wr_data_i, wr_strb_i);
-    wire w_mpdtc_fe_spd_scale = wr_i && wr_addr_i == 15'h10bc;
-    wire [31:0] n_mpdtc_fe_spd_scale = merge(mpdtc_fe_spd_scale_q, wr_data_i, wr_strb_i);
-    wire w_mpdtc_fe_age0 = wr_i && wr_addr_i == 15'h10c0;
-    wire [31:0] n_mpdtc_fe_age0 = merge({14'd0, mpdtc_fe_age0_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_fe_age1 = wr_i && wr_addr_i == 15'h10c4;
-    wire [31:0] n_mpdtc_fe_age1 = merge({14'd0, mpdtc_fe_age1_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_fe_age2 = wr_i && wr_addr_i == 15'h10c8;
-    wire [31:0] n_mpdtc_fe_age2 = merge({14'd0, mpdtc_fe_age2_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_fe_off_a = wr_i && wr_addr_i == 15'h10cc;
-    wire [31:0] n_mpdtc_fe_off_a = merge({16'd0, mpdtc_fe_off_a_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_fe_off_b = wr_i && wr_addr_i == 15'h10d0;
-    wire [31:0] n_mpdtc_fe_off_b = merge({16'd0, mpdtc_fe_off_b_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_fe_off_c = wr_i && wr_addr_i == 15'h10d4;
-    wire [31:0] n_mpdtc_fe_off_c = merge({16'd0, mpdtc_fe_off_c_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_fe_gain_a = wr_i && wr_addr_i == 15'h10d8;
-    wire [31:0] n_mpdtc_fe_gain_a = merge({14'd0, mpdtc_fe_gain_a_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_fe_gain_b = wr_i && wr_addr_i == 15'h10dc;
-    wire [31:0] n_mpdtc_fe_gain_b = merge({14'd0, mpdtc_fe_gain_b_q}, wr_data_i, wr_strb_i);
-    wire w_mpdtc_fe_gain_c = wr_i && wr_addr_i == 15'h10e0;
-    wire [31:0] n_mpdtc_fe_gain_c = merge({14'd0, mpdtc_fe_gain_c_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_start = wr_i && wr_addr_i == 15'h2000;
-    wire [31:0] n_mpdcc_start = merge({31'd0, mpdcc_start_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_n_use = wr_i && wr_addr_i == 15'h2008;
-    wire [31:0] n_mpdcc_n_use = clamp(merge({29'd0, mpdcc_n_use_q}, wr_data_i, wr_strb_i), 32'h00000001, 32'h00000006);
-    wire w_mpdcc_s_prev = wr_i && wr_addr_i == 15'h2010;
-    wire [31:0] n_mpdcc_s_prev = merge({23'd0, mpdcc_s_prev_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_i_a = wr_i && wr_addr_i == 15'h2014;
-    wire [31:0] n_mpdcc_i_a = merge({16'd0, mpdcc_i_a_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_i_b = wr_i && wr_addr_i == 15'h2018;
-    wire [31:0] n_mpdcc_i_b = merge({16'd0, mpdcc_i_b_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_psi_a = wr_i && wr_addr_i == 15'h201c;
-    wire [31:0] n_mpdcc_psi_a = merge({16'd0, mpdcc_psi_a_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_psi_b = wr_i && wr_addr_i == 15'h2020;
-    wire [31:0] n_mpdcc_psi_b = merge({16'd0, mpdcc_psi_b_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_v_n = wr_i && wr_addr_i == 15'h2024;
-    wire [31:0] n_mpdcc_v_n = merge({16'd0, mpdcc_v_n_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_v_ph_a = wr_i && wr_addr_i == 15'h2028;
-    wire [31:0] n_mpdcc_v_ph_a = merge({16'd0, mpdcc_v_ph_a_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_v_ph_b = wr_i && wr_addr_i == 15'h202c;
-    wire [31:0] n_mpdcc_v_ph_b = merge({16'd0, mpdcc_v_ph_b_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_v_ph_c = wr_i && wr_addr_i == 15'h2030;
-    wire [31:0] n_mpdcc_v_ph_c = merge({16'd0, mpdcc_v_ph_c_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_iref_a = wr_i && wr_addr_i == 15'h2034;
-    wire [31:0] n_mpdcc_iref_a = merge({16'd0, mpdcc_iref_a_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_iref_b = wr_i && wr_addr_i == 15'h2038;
-    wire [31:0] n_mpdcc_iref_b = merge({16'd0, mpdcc_iref_b_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_omega_r = wr_i && wr_addr_i == 15'h203c;
-    wire [31:0] n_mpdcc_omega_r = merge({16'd0, mpdcc_omega_r_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_omega_s = wr_i && wr_addr_i == 15'h2040;
-    wire [31:0] n_mpdcc_omega_s = merge({16'd0, mpdcc_omega_s_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_tau = wr_i && wr_addr_i == 15'h2080;
-    wire [31:0] n_mpdcc_c_tau = merge({16'd0, mpdcc_c_tau_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_r = wr_i && wr_addr_i == 15'h2084;
-    wire [31:0] n_mpdcc_c_r = merge({16'd0, mpdcc_c_r_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_w = wr_i && wr_addr_i == 15'h2088;
-    wire [31:0] n_mpdcc_c_w = merge({16'd0, mpdcc_c_w_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_p = wr_i && wr_addr_i == 15'h208c;
-    wire [31:0] n_mpdcc_c_p = merge({16'd0, mpdcc_c_p_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_s = wr_i && wr_addr_i == 15'h2090;
-    wire [31:0] n_mpdcc_c_s = merge({16'd0, mpdcc_c_s_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_3 = wr_i && wr_addr_i == 15'h2094;
-    wire [31:0] n_mpdcc_c_3 = merge({16'd0, mpdcc_c_3_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_d = wr_i && wr_addr_i == 15'h2098;
-    wire [31:0] n_mpdcc_c_d = merge({16'd0, mpdcc_c_d_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_n = wr_i && wr_addr_i == 15'h209c;
-    wire [31:0] n_mpdcc_c_n = merge({16'd0, mpdcc_c_n_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_ph = wr_i && wr_addr_i == 15'h20a0;
-    wire [31:0] n_mpdcc_c_ph = merge({16'd0, mpdcc_c_ph_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_s3h = wr_i && wr_addr_i == 15'h20a4;
-    wire [31:0] n_mpdcc_s3h = merge({16'd0, mpdcc_s3h_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_v_ph_ref = wr_i && wr_addr_i == 15'h20a8;
-    wire [31:0] n_mpdcc_v_ph_ref = merge({16'd0, mpdcc_v_ph_ref_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_tau1 = wr_i && wr_addr_i == 15'h20ac;
-    wire [31:0] n_mpdcc_c_tau1 = merge({16'd0, mpdcc_c_tau1_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_r1 = wr_i && wr_addr_i == 15'h20b0;
-    wire [31:0] n_mpdcc_c_r1 = merge({16'd0, mpdcc_c_r1_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_w1 = wr_i && wr_addr_i == 15'h20b4;
-    wire [31:0] n_mpdcc_c_w1 = merge({16'd0, mpdcc_c_w1_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_c_s1 = wr_i && wr_addr_i == 15'h20b8;
-    wire [31:0] n_mpdcc_c_s1 = merge({16'd0, mpdcc_c_s1_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_vdc_half = wr_i && wr_addr_i == 15'h20bc;
-    wire [31:0] n_mpdcc_vdc_half = merge({16'd0, mpdcc_vdc_half_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_g3 = wr_i && wr_addr_i == 15'h20c0;
-    wire [31:0] n_mpdcc_g3 = merge({16'd0, mpdcc_g3_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_gd = wr_i && wr_addr_i == 15'h20c4;
-    wire [31:0] n_mpdcc_gd = merge({16'd0, mpdcc_gd_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_g3_1 = wr_i && wr_addr_i == 15'h20c8;
-    wire [31:0] n_mpdcc_g3_1 = merge({16'd0, mpdcc_g3_1_q}, wr_data_i, wr_strb_i);
-    wire w_mpdcc_bnd_ia = wr_i && wr_addr_i == 15'h20cc;
-    wire [31:0] n_mpdcc_bnd_ia = merge({16'd0, mpdcc_bnd_ia_q}, wr_data_i, wr_strb_i);
+    wire w_err = hit_err_q;
+    wire [31:0] n_err = merge(32'd0, wr_data_q, wr_strb_q);
+    wire w_heartbeat = hit_heartbeat_q;
+    wire [31:0] n_heartbeat = merge(heartbeat_q, wr_data_q, wr_strb_q);
+    wire w_scratch = hit_scratch_q;
+    wire [31:0] n_scratch = merge(scratch_q, wr_data_q, wr_strb_q);
+    wire w_irq_en = hit_irq_en_q;
+    wire [31:0] n_irq_en = merge({30'd0, irq_en_q}, wr_data_q, wr_strb_q);
+    wire w_irq_status = hit_irq_status_q;
+    wire [31:0] n_irq_status = merge(32'd0, wr_data_q, wr_strb_q);
+    wire w_mpdtc_ctrl = hit_mpdtc_ctrl_q;
+    wire [31:0] n_mpdtc_ctrl = merge({29'd0, mpdtc_ctrl_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_start = hit_mpdtc_start_q;
+    wire [31:0] n_mpdtc_start = merge(mpdtc_start_q, wr_data_q, wr_strb_q);
+    wire w_mpdtc_in_id = hit_mpdtc_in_id_q;
+    wire [31:0] n_mpdtc_in_id = merge({7'd0, mpdtc_in_id_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_in_iq = hit_mpdtc_in_iq_q;
+    wire [31:0] n_mpdtc_in_iq = merge({7'd0, mpdtc_in_iq_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_in_cos0 = hit_mpdtc_in_cos0_q;
+    wire [31:0] n_mpdtc_in_cos0 = merge({14'd0, mpdtc_in_cos0_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_in_sin0 = hit_mpdtc_in_sin0_q;
+    wire [31:0] n_mpdtc_in_sin0 = merge({14'd0, mpdtc_in_sin0_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_in_cos1 = hit_mpdtc_in_cos1_q;
+    wire [31:0] n_mpdtc_in_cos1 = merge({14'd0, mpdtc_in_cos1_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_in_sin1 = hit_mpdtc_in_sin1_q;
+    wire [31:0] n_mpdtc_in_sin1 = merge({14'd0, mpdtc_in_sin1_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_in_cos2 = hit_mpdtc_in_cos2_q;
+    wire [31:0] n_mpdtc_in_cos2 = merge({14'd0, mpdtc_in_cos2_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_in_sin2 = hit_mpdtc_in_sin2_q;
+    wire [31:0] n_mpdtc_in_sin2 = merge({14'd0, mpdtc_in_sin2_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_in_w_ts = hit_mpdtc_in_w_ts_q;
+    wire [31:0] n_mpdtc_in_w_ts = merge({14'd0, mpdtc_in_w_ts_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_in_t_ref = hit_mpdtc_in_t_ref_q;
+    wire [31:0] n_mpdtc_in_t_ref = merge({14'd0, mpdtc_in_t_ref_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_a = hit_mpdtc_p_a_q;
+    wire [31:0] n_mpdtc_p_a = merge({14'd0, mpdtc_p_a_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_lambda = hit_mpdtc_p_lambda_q;
+    wire [31:0] n_mpdtc_p_lambda = merge({14'd0, mpdtc_p_lambda_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_u0 = hit_mpdtc_p_u0_q;
+    wire [31:0] n_mpdtc_p_u0 = merge({7'd0, mpdtc_p_u0_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_u0_half = hit_mpdtc_p_u0_half_q;
+    wire [31:0] n_mpdtc_p_u0_half = merge({7'd0, mpdtc_p_u0_half_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_u0_h = hit_mpdtc_p_u0_h_q;
+    wire [31:0] n_mpdtc_p_u0_h = merge({7'd0, mpdtc_p_u0_h_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_psi_l = hit_mpdtc_p_psi_l_q;
+    wire [31:0] n_mpdtc_p_psi_l = merge({7'd0, mpdtc_p_psi_l_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_kinv_t = hit_mpdtc_p_kinv_t_q;
+    wire [31:0] n_mpdtc_p_kinv_t = merge({7'd0, mpdtc_p_kinv_t_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_tol = hit_mpdtc_p_tol_q;
+    wire [31:0] n_mpdtc_p_tol = merge({8'd0, mpdtc_p_tol_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_k_int = hit_mpdtc_p_k_int_q;
+    wire [31:0] n_mpdtc_p_k_int = merge({14'd0, mpdtc_p_k_int_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_int_lim = hit_mpdtc_p_int_lim_q;
+    wire [31:0] n_mpdtc_p_int_lim = merge({8'd0, mpdtc_p_int_lim_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_int_cond = hit_mpdtc_p_int_cond_q;
+    wire [31:0] n_mpdtc_p_int_cond = merge({31'd0, mpdtc_p_int_cond_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_kp_o = hit_mpdtc_p_kp_o_q;
+    wire [31:0] n_mpdtc_p_kp_o = merge({14'd0, mpdtc_p_kp_o_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_ki_o = hit_mpdtc_p_ki_o_q;
+    wire [31:0] n_mpdtc_p_ki_o = merge({14'd0, mpdtc_p_ki_o_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_eta_lim = hit_mpdtc_p_eta_lim_q;
+    wire [31:0] n_mpdtc_p_eta_lim = merge({8'd0, mpdtc_p_eta_lim_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_w2_0 = hit_mpdtc_p_w2_0_q;
+    wire [31:0] n_mpdtc_p_w2_0 = merge({14'd0, mpdtc_p_w2_0_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_w2_1 = hit_mpdtc_p_w2_1_q;
+    wire [31:0] n_mpdtc_p_w2_1 = merge({14'd0, mpdtc_p_w2_1_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_w2_2 = hit_mpdtc_p_w2_2_q;
+    wire [31:0] n_mpdtc_p_w2_2 = merge({14'd0, mpdtc_p_w2_2_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_p_w2_3 = hit_mpdtc_p_w2_3_q;
+    wire [31:0] n_mpdtc_p_w2_3 = merge({14'd0, mpdtc_p_w2_3_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_align_vec = hit_mpdtc_align_vec_q;
+    wire [31:0] n_mpdtc_align_vec = merge({29'd0, mpdtc_align_vec_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_align_period = hit_mpdtc_align_period_q;
+    wire [31:0] n_mpdtc_align_period = clamp(merge({16'd0, mpdtc_align_period_q}, wr_data_q, wr_strb_q), 32'h00000002, 32'h0000ffff);
+    wire w_mpdtc_align_on = hit_mpdtc_align_on_q;
+    wire [31:0] n_mpdtc_align_on = clamp(merge({16'd0, mpdtc_align_on_q}, wr_data_q, wr_strb_q), 32'h00000000, 32'h00007fff);
+    wire w_mpdtc_align_time = hit_mpdtc_align_time_q;
+    wire [31:0] n_mpdtc_align_time = clamp(merge(mpdtc_align_time_q, wr_data_q, wr_strb_q), 32'h00000001, 32'hffffffff);
+    wire w_mpdtc_fe_ang_scale = hit_mpdtc_fe_ang_scale_q;
+    wire [31:0] n_mpdtc_fe_ang_scale = merge(mpdtc_fe_ang_scale_q, wr_data_q, wr_strb_q);
+    wire w_mpdtc_fe_spd_scale = hit_mpdtc_fe_spd_scale_q;
+    wire [31:0] n_mpdtc_fe_spd_scale = merge(mpdtc_fe_spd_scale_q, wr_data_q, wr_strb_q);
+    wire w_mpdtc_fe_age0 = hit_mpdtc_fe_age0_q;
+    wire [31:0] n_mpdtc_fe_age0 = merge({14'd0, mpdtc_fe_age0_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_fe_age1 = hit_mpdtc_fe_age1_q;
+    wire [31:0] n_mpdtc_fe_age1 = merge({14'd0, mpdtc_fe_age1_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_fe_age2 = hit_mpdtc_fe_age2_q;
+    wire [31:0] n_mpdtc_fe_age2 = merge({14'd0, mpdtc_fe_age2_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_fe_off_a = hit_mpdtc_fe_off_a_q;
+    wire [31:0] n_mpdtc_fe_off_a = merge({16'd0, mpdtc_fe_off_a_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_fe_off_b = hit_mpdtc_fe_off_b_q;
+    wire [31:0] n_mpdtc_fe_off_b = merge({16'd0, mpdtc_fe_off_b_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_fe_off_c = hit_mpdtc_fe_off_c_q;
+    wire [31:0] n_mpdtc_fe_off_c = merge({16'd0, mpdtc_fe_off_c_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_fe_gain_a = hit_mpdtc_fe_gain_a_q;
+    wire [31:0] n_mpdtc_fe_gain_a = merge({14'd0, mpdtc_fe_gain_a_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_fe_gain_b = hit_mpdtc_fe_gain_b_q;
+    wire [31:0] n_mpdtc_fe_gain_b = merge({14'd0, mpdtc_fe_gain_b_q}, wr_data_q, wr_strb_q);
+    wire w_mpdtc_fe_gain_c = hit_mpdtc_fe_gain_c_q;
+    wire [31:0] n_mpdtc_fe_gain_c = merge({14'd0, mpdtc_fe_gain_c_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_start = hit_mpdcc_start_q;
+    wire [31:0] n_mpdcc_start = merge({31'd0, mpdcc_start_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_n_use = hit_mpdcc_n_use_q;
+    wire [31:0] n_mpdcc_n_use = clamp(merge({29'd0, mpdcc_n_use_q}, wr_data_q, wr_strb_q), 32'h00000001, 32'h00000006);
+    wire w_mpdcc_s_prev = hit_mpdcc_s_prev_q;
+    wire [31:0] n_mpdcc_s_prev = merge({23'd0, mpdcc_s_prev_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_i_a = hit_mpdcc_i_a_q;
+    wire [31:0] n_mpdcc_i_a = merge({16'd0, mpdcc_i_a_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_i_b = hit_mpdcc_i_b_q;
+    wire [31:0] n_mpdcc_i_b = merge({16'd0, mpdcc_i_b_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_psi_a = hit_mpdcc_psi_a_q;
+    wire [31:0] n_mpdcc_psi_a = merge({16'd0, mpdcc_psi_a_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_psi_b = hit_mpdcc_psi_b_q;
+    wire [31:0] n_mpdcc_psi_b = merge({16'd0, mpdcc_psi_b_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_v_n = hit_mpdcc_v_n_q;
+    wire [31:0] n_mpdcc_v_n = merge({16'd0, mpdcc_v_n_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_v_ph_a = hit_mpdcc_v_ph_a_q;
+    wire [31:0] n_mpdcc_v_ph_a = merge({16'd0, mpdcc_v_ph_a_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_v_ph_b = hit_mpdcc_v_ph_b_q;
+    wire [31:0] n_mpdcc_v_ph_b = merge({16'd0, mpdcc_v_ph_b_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_v_ph_c = hit_mpdcc_v_ph_c_q;
+    wire [31:0] n_mpdcc_v_ph_c = merge({16'd0, mpdcc_v_ph_c_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_iref_a = hit_mpdcc_iref_a_q;
+    wire [31:0] n_mpdcc_iref_a = merge({16'd0, mpdcc_iref_a_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_iref_b = hit_mpdcc_iref_b_q;
+    wire [31:0] n_mpdcc_iref_b = merge({16'd0, mpdcc_iref_b_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_omega_r = hit_mpdcc_omega_r_q;
+    wire [31:0] n_mpdcc_omega_r = merge({16'd0, mpdcc_omega_r_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_omega_s = hit_mpdcc_omega_s_q;
+    wire [31:0] n_mpdcc_omega_s = merge({16'd0, mpdcc_omega_s_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_tau = hit_mpdcc_c_tau_q;
+    wire [31:0] n_mpdcc_c_tau = merge({16'd0, mpdcc_c_tau_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_r = hit_mpdcc_c_r_q;
+    wire [31:0] n_mpdcc_c_r = merge({16'd0, mpdcc_c_r_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_w = hit_mpdcc_c_w_q;
+    wire [31:0] n_mpdcc_c_w = merge({16'd0, mpdcc_c_w_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_p = hit_mpdcc_c_p_q;
+    wire [31:0] n_mpdcc_c_p = merge({16'd0, mpdcc_c_p_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_s = hit_mpdcc_c_s_q;
+    wire [31:0] n_mpdcc_c_s = merge({16'd0, mpdcc_c_s_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_3 = hit_mpdcc_c_3_q;
+    wire [31:0] n_mpdcc_c_3 = merge({16'd0, mpdcc_c_3_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_d = hit_mpdcc_c_d_q;
+    wire [31:0] n_mpdcc_c_d = merge({16'd0, mpdcc_c_d_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_n = hit_mpdcc_c_n_q;
+    wire [31:0] n_mpdcc_c_n = merge({16'd0, mpdcc_c_n_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_ph = hit_mpdcc_c_ph_q;
+    wire [31:0] n_mpdcc_c_ph = merge({16'd0, mpdcc_c_ph_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_s3h = hit_mpdcc_s3h_q;
+    wire [31:0] n_mpdcc_s3h = merge({16'd0, mpdcc_s3h_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_v_ph_ref = hit_mpdcc_v_ph_ref_q;
+    wire [31:0] n_mpdcc_v_ph_ref = merge({16'd0, mpdcc_v_ph_ref_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_tau1 = hit_mpdcc_c_tau1_q;
+    wire [31:0] n_mpdcc_c_tau1 = merge({16'd0, mpdcc_c_tau1_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_r1 = hit_mpdcc_c_r1_q;
+    wire [31:0] n_mpdcc_c_r1 = merge({16'd0, mpdcc_c_r1_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_w1 = hit_mpdcc_c_w1_q;
+    wire [31:0] n_mpdcc_c_w1 = merge({16'd0, mpdcc_c_w1_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_c_s1 = hit_mpdcc_c_s1_q;
+    wire [31:0] n_mpdcc_c_s1 = merge({16'd0, mpdcc_c_s1_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_vdc_half = hit_mpdcc_vdc_half_q;
+    wire [31:0] n_mpdcc_vdc_half = merge({16'd0, mpdcc_vdc_half_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_g3 = hit_mpdcc_g3_q;
+    wire [31:0] n_mpdcc_g3 = merge({16'd0, mpdcc_g3_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_gd = hit_mpdcc_gd_q;
+    wire [31:0] n_mpdcc_gd = merge({16'd0, mpdcc_gd_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_g3_1 = hit_mpdcc_g3_1_q;
+    wire [31:0] n_mpdcc_g3_1 = merge({16'd0, mpdcc_g3_1_q}, wr_data_q, wr_strb_q);
+    wire w_mpdcc_bnd_ia = hit_mpdcc_bnd_ia_q;
+    wire [31:0] n_mpdcc_bnd_ia = merge({16'd0, mpdcc_bnd_ia_q}, wr_data_q, wr_strb_q);
     wire bad_mpdcc_bnd_ia = n_mpdcc_bnd_ia > 32'h00007fff;
-    wire w_mpdcc_bnd_ib = wr_i && wr_addr_i == 15'h20d0;
-    wire [31:0] n_mpdcc_bnd_ib = merge({16'd0, mpdcc_bnd_ib_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_bnd_ib = hit_mpdcc_bnd_ib_q;
+    wire [31:0] n_mpdcc_bnd_ib = merge({16'd0, mpdcc_bnd_ib_q}, wr_data_q, wr_strb_q);
     wire bad_mpdcc_bnd_ib = n_mpdcc_bnd_ib > 32'h00007fff;
-    wire w_mpdcc_bnd_ic = wr_i && wr_addr_i == 15'h20d4;
-    wire [31:0] n_mpdcc_bnd_ic = merge({16'd0, mpdcc_bnd_ic_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_bnd_ic = hit_mpdcc_bnd_ic_q;
+    wire [31:0] n_mpdcc_bnd_ic = merge({16'd0, mpdcc_bnd_ic_q}, wr_data_q, wr_strb_q);
     wire bad_mpdcc_bnd_ic = n_mpdcc_bnd_ic > 32'h00007fff;
-    wire w_mpdcc_bnd_vn = wr_i && wr_addr_i == 15'h20d8;
-    wire [31:0] n_mpdcc_bnd_vn = merge({16'd0, mpdcc_bnd_vn_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_bnd_vn = hit_mpdcc_bnd_vn_q;
+    wire [31:0] n_mpdcc_bnd_vn = merge({16'd0, mpdcc_bnd_vn_q}, wr_data_q, wr_strb_q);
     wire bad_mpdcc_bnd_vn = n_mpdcc_bnd_vn > 32'h00007fff;
-    wire w_mpdcc_bnd_vpa = wr_i && wr_addr_i == 15'h20dc;
-    wire [31:0] n_mpdcc_bnd_vpa = merge({16'd0, mpdcc_bnd_vpa_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_bnd_vpa = hit_mpdcc_bnd_vpa_q;
+    wire [31:0] n_mpdcc_bnd_vpa = merge({16'd0, mpdcc_bnd_vpa_q}, wr_data_q, wr_strb_q);
     wire bad_mpdcc_bnd_vpa = n_mpdcc_bnd_vpa > 32'h00007fff;
-    wire w_mpdcc_bnd_vpb = wr_i && wr_addr_i == 15'h20e0;
-    wire [31:0] n_mpdcc_bnd_vpb = merge({16'd0, mpdcc_bnd_vpb_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_bnd_vpb = hit_mpdcc_bnd_vpb_q;
+    wire [31:0] n_mpdcc_bnd_vpb = merge({16'd0, mpdcc_bnd_vpb_q}, wr_data_q, wr_strb_q);
     wire bad_mpdcc_bnd_vpb = n_mpdcc_bnd_vpb > 32'h00007fff;
-    wire w_mpdcc_bnd_vpc = wr_i && wr_addr_i == 15'h20e4;
-    wire [31:0] n_mpdcc_bnd_vpc = merge({16'd0, mpdcc_bnd_vpc_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_bnd_vpc = hit_mpdcc_bnd_vpc_q;
+    wire [31:0] n_mpdcc_bnd_vpc = merge({16'd0, mpdcc_bnd_vpc_q}, wr_data_q, wr_strb_q);
     wire bad_mpdcc_bnd_vpc = n_mpdcc_bnd_vpc > 32'h00007fff;
-    wire w_mpdcc_lambda_n = wr_i && wr_addr_i == 15'h20e8;
-    wire [31:0] n_mpdcc_lambda_n = merge({16'd0, mpdcc_lambda_n_q}, wr_data_i, wr_strb_i);
-    wire w_gate_ctrl = wr_i && wr_addr_i == 15'h3000;
-    wire [31:0] n_gate_ctrl = merge({31'd0, gate_ctrl_q}, wr_data_i, wr_strb_i);
-    wire w_dead_time = wr_i && wr_addr_i == 15'h3004;
-    wire [31:0] n_dead_time = clamp(merge({22'd0, dead_time_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h000003ff);
-    wire w_pwm_period = wr_i && wr_addr_i == 15'h3008;
-    wire [31:0] n_pwm_period = clamp(merge({16'd0, pwm_period_q}, wr_data_i, wr_strb_i), 32'h00000002, 32'h0000ffff);
-    wire w_duty_a = wr_i && wr_addr_i == 15'h300c;
-    wire [31:0] n_duty_a = merge({16'd0, duty_a_q}, wr_data_i, wr_strb_i);
-    wire w_duty_b = wr_i && wr_addr_i == 15'h3010;
-    wire [31:0] n_duty_b = merge({16'd0, duty_b_q}, wr_data_i, wr_strb_i);
-    wire w_duty_c = wr_i && wr_addr_i == 15'h3014;
-    wire [31:0] n_duty_c = merge({16'd0, duty_c_q}, wr_data_i, wr_strb_i);
-    wire w_sw_state = wr_i && wr_addr_i == 15'h3018;
-    wire [31:0] n_sw_state = merge({29'd0, sw_state_q}, wr_data_i, wr_strb_i);
-    wire w_adc_ctrl = wr_i && wr_addr_i == 15'h4000;
-    wire [31:0] n_adc_ctrl = merge({31'd0, adc_ctrl_q}, wr_data_i, wr_strb_i);
-    wire w_adc_period = wr_i && wr_addr_i == 15'h4004;
-    wire [31:0] n_adc_period = clamp(merge({16'd0, adc_period_q}, wr_data_i, wr_strb_i), 32'h00000010, 32'h0000ffff);
-    wire w_adc_avg_log2 = wr_i && wr_addr_i == 15'h4018;
-    wire [31:0] n_adc_avg_log2 = merge({30'd0, adc_avg_log2_q}, wr_data_i, wr_strb_i);
+    wire w_mpdcc_lambda_n = hit_mpdcc_lambda_n_q;
+    wire [31:0] n_mpdcc_lambda_n = merge({16'd0, mpdcc_lambda_n_q}, wr_data_q, wr_strb_q);
+    wire w_gate_ctrl = hit_gate_ctrl_q;
+    wire [31:0] n_gate_ctrl = merge({31'd0, gate_ctrl_q}, wr_data_q, wr_strb_q);
+    wire w_dead_time = hit_dead_time_q;
+    wire [31:0] n_dead_time = clamp(merge({22'd0, dead_time_q}, wr_data_q, wr_strb_q), 32'h00000000, 32'h000003ff);
+    wire w_pwm_period = hit_pwm_period_q;
+    wire [31:0] n_pwm_period = clamp(merge({16'd0, pwm_period_q}, wr_data_q, wr_strb_q), 32'h00000002, 32'h0000ffff);
+    wire w_duty_a = hit_duty_a_q;
+    wire [31:0] n_duty_a = merge({16'd0, duty_a_q}, wr_data_q, wr_strb_q);
+    wire w_duty_b = hit_duty_b_q;
+    wire [31:0] n_duty_b = merge({16'd0, duty_b_q}, wr_data_q, wr_strb_q);
+    wire w_duty_c = hit_duty_c_q;
+    wire [31:0] n_duty_c = merge({16'd0, duty_c_q}, wr_data_q, wr_strb_q);
+    wire w_sw_state = hit_sw_state_q;
+    wire [31:0] n_sw_state = merge({29'd0, sw_state_q}, wr_data_q, wr_strb_q);
+    wire w_adc_ctrl = hit_adc_ctrl_q;
+    wire [31:0] n_adc_ctrl = merge({31'd0, adc_ctrl_q}, wr_data_q, wr_strb_q);
+    wire w_adc_period = hit_adc_period_q;
+    wire [31:0] n_adc_period = clamp(merge({16'd0, adc_period_q}, wr_data_q, wr_strb_q), 32'h00000010, 32'h0000ffff);
+    wire w_adc_avg_log2 = hit_adc_avg_log2_q;
+    wire [31:0] n_adc_avg_log2 = merge({30'd0, adc_avg_log2_q}, wr_data_q, wr_strb_q);
     wire bad_adc_avg_log2 = n_adc_avg_log2 > 32'h00000002;
-    wire w_enc_cpr = wr_i && wr_addr_i == 15'h5000;
-    wire [31:0] n_enc_cpr = clamp(merge({16'd0, enc_cpr_q}, wr_data_i, wr_strb_i), 32'h00000004, 32'h0000ffff);
-    wire w_enc_window = wr_i && wr_addr_i == 15'h500c;
-    wire [31:0] n_enc_window = clamp(merge({8'd0, enc_window_q}, wr_data_i, wr_strb_i), 32'h00000064, 32'h00ffffff);
-    wire w_fault_status = wr_i && wr_addr_i == 15'h6000;
-    wire [31:0] n_fault_status = merge(32'd0, wr_data_i, wr_strb_i);
-    wire w_oc_limit = wr_i && wr_addr_i == 15'h6008;
-    wire [31:0] n_oc_limit = clamp(merge({21'd0, oc_limit_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h000007ff);
-    wire w_wdg_timeout = wr_i && wr_addr_i == 15'h600c;
-    wire [31:0] n_wdg_timeout = clamp(merge(wdg_timeout_q, wr_data_i, wr_strb_i), 32'h000003e8, 32'hffffffff);
-    wire w_cap_source = wr_i && wr_addr_i == 15'h7000;
-    wire [31:0] n_cap_source = merge({30'd0, cap_source_q}, wr_data_i, wr_strb_i);
-    wire w_cap_pre = wr_i && wr_addr_i == 15'h7004;
-    wire [31:0] n_cap_pre = clamp(merge({22'd0, cap_pre_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h000003ff);
-    wire w_cap_decim = wr_i && wr_addr_i == 15'h7008;
-    wire [31:0] n_cap_decim = merge({24'd0, cap_decim_q}, wr_data_i, wr_strb_i);
-    wire w_cap_step = wr_i && wr_addr_i == 15'h700c;
-    wire [31:0] n_cap_step = merge({16'd0, cap_step_q}, wr_data_i, wr_strb_i);
-    wire w_cap_thr_ch = wr_i && wr_addr_i == 15'h7010;
-    wire [31:0] n_cap_thr_ch = merge({29'd0, cap_thr_ch_q}, wr_data_i, wr_strb_i);
+    wire w_enc_cpr = hit_enc_cpr_q;
+    wire [31:0] n_enc_cpr = clamp(merge({16'd0, enc_cpr_q}, wr_data_q, wr_strb_q), 32'h00000004, 32'h0000ffff);
+    wire w_enc_window = hit_enc_window_q;
+    wire [31:0] n_enc_window = clamp(merge({8'd0, enc_window_q}, wr_data_q, wr_strb_q), 32'h00000064, 32'h00ffffff);
+    wire w_fault_status = hit_fault_status_q;
+    wire [31:0] n_fault_status = merge(32'd0, wr_data_q, wr_strb_q);
+    wire w_oc_limit = hit_oc_limit_q;
+    wire [31:0] n_oc_limit = clamp(merge({21'd0, oc_limit_q}, wr_data_q, wr_strb_q), 32'h00000000, 32'h000007ff);
+    wire w_wdg_timeout = hit_wdg_timeout_q;
+    wire [31:0] n_wdg_timeout = clamp(merge(wdg_timeout_q, wr_data_q, wr_strb_q), 32'h000003e8, 32'hffffffff);
+    wire w_cap_source = hit_cap_source_q;
+    wire [31:0] n_cap_source = merge({30'd0, cap_source_q}, wr_data_q, wr_strb_q);
+    wire w_cap_pre = hit_cap_pre_q;
+    wire [31:0] n_cap_pre = clamp(merge({22'd0, cap_pre_q}, wr_data_q, wr_strb_q), 32'h00000000, 32'h000003ff);
+    wire w_cap_decim = hit_cap_decim_q;
+    wire [31:0] n_cap_decim = merge({24'd0, cap_decim_q}, wr_data_q, wr_strb_q);
+    wire w_cap_step = hit_cap_step_q;
+    wire [31:0] n_cap_step = merge({16'd0, cap_step_q}, wr_data_q, wr_strb_q);
+    wire w_cap_thr_ch = hit_cap_thr_ch_q;
+    wire [31:0] n_cap_thr_ch = merge({29'd0, cap_thr_ch_q}, wr_data_q, wr_strb_q);
     wire bad_cap_thr_ch = n_cap_thr_ch > 32'h00000004;
-    wire w_cap_thr_level = wr_i && wr_addr_i == 15'h7014;
-    wire [31:0] n_cap_thr_level = merge({16'd0, cap_thr_level_q}, wr_data_i, wr_strb_i);
-    wire w_cap_thr_edge = wr_i && wr_addr_i == 15'h7018;
-    wire [31:0] n_cap_thr_edge = merge({31'd0, cap_thr_edge_q}, wr_data_i, wr_strb_i);
-    wire w_cap_sel = wr_i && wr_addr_i == 15'h701c;
-    wire [31:0] n_cap_sel = merge({29'd0, cap_sel_q}, wr_data_i, wr_strb_i);
+    wire w_cap_thr_level = hit_cap_thr_level_q;
+    wire [31:0] n_cap_thr_level = merge({16'd0, cap_thr_level_q}, wr_data_q, wr_strb_q);
+    wire w_cap_thr_edge = hit_cap_thr_edge_q;
+    wire [31:0] n_cap_thr_edge = merge({31'd0, cap_thr_edge_q}, wr_data_q, wr_strb_q);
+    wire w_cap_sel = hit_cap_sel_q;
+    wire [31:0] n_cap_sel = merge({29'd0, cap_sel_q}, wr_data_q, wr_strb_q);
     wire bad_cap_sel = n_cap_sel > 32'h00000004;
-    wire w_cap_arm = wr_i && wr_addr_i == 15'h7020;
-    wire [31:0] n_cap_arm = merge({31'd0, cap_arm_q}, wr_data_i, wr_strb_i);
-    wire w_cap_trig = wr_i && wr_addr_i == 15'h7024;
-    wire [31:0] n_cap_trig = merge({31'd0, cap_trig_q}, wr_data_i, wr_strb_i);
-    wire w_cap_in_id = wr_i && wr_addr_i == 15'h7030;
-    wire [31:0] n_cap_in_id = merge({16'd0, cap_in_id_q}, wr_data_i, wr_strb_i);
-    wire w_cap_in_iq = wr_i && wr_addr_i == 15'h7034;
-    wire [31:0] n_cap_in_iq = merge({16'd0, cap_in_iq_q}, wr_data_i, wr_strb_i);
-    wire w_cap_in_torque = wr_i && wr_addr_i == 15'h7038;
-    wire [31:0] n_cap_in_torque = merge({16'd0, cap_in_torque_q}, wr_data_i, wr_strb_i);
-    wire w_cap_in_tref = wr_i && wr_addr_i == 15'h703c;
-    wire [31:0] n_cap_in_tref = merge({16'd0, cap_in_tref_q}, wr_data_i, wr_strb_i);
-    wire w_cap_rd_index = wr_i && wr_addr_i == 15'h7040;
-    wire [31:0] n_cap_rd_index = clamp(merge({22'd0, cap_rd_index_q}, wr_data_i, wr_strb_i), 32'h00000000, 32'h000003ff);
-    wire w_cap_in_pos = wr_i && wr_addr_i == 15'h7054;
-    wire [31:0] n_cap_in_pos = merge(cap_in_pos_q, wr_data_i, wr_strb_i);
-    wire w_cap_in_vel = wr_i && wr_addr_i == 15'h7058;
-    wire [31:0] n_cap_in_vel = merge(cap_in_vel_q, wr_data_i, wr_strb_i);
-    wire w_cap_in_ferr = wr_i && wr_addr_i == 15'h705c;
-    wire [31:0] n_cap_in_ferr = merge({16'd0, cap_in_ferr_q}, wr_data_i, wr_strb_i);
+    wire w_cap_arm = hit_cap_arm_q;
+    wire [31:0] n_cap_arm = merge({31'd0, cap_arm_q}, wr_data_q, wr_strb_q);
+    wire w_cap_trig = hit_cap_trig_q;
+    wire [31:0] n_cap_trig = merge({31'd0, cap_trig_q}, wr_data_q, wr_strb_q);
+    wire w_cap_in_id = hit_cap_in_id_q;
+    wire [31:0] n_cap_in_id = merge({16'd0, cap_in_id_q}, wr_data_q, wr_strb_q);
+    wire w_cap_in_iq = hit_cap_in_iq_q;
+    wire [31:0] n_cap_in_iq = merge({16'd0, cap_in_iq_q}, wr_data_q, wr_strb_q);
+    wire w_cap_in_torque = hit_cap_in_torque_q;
+    wire [31:0] n_cap_in_torque = merge({16'd0, cap_in_torque_q}, wr_data_q, wr_strb_q);
+    wire w_cap_in_tref = hit_cap_in_tref_q;
+    wire [31:0] n_cap_in_tref = merge({16'd0, cap_in_tref_q}, wr_data_q, wr_strb_q);
+    wire w_cap_rd_index = hit_cap_rd_index_q;
+    wire [31:0] n_cap_rd_index = clamp(merge({22'd0, cap_rd_index_q}, wr_data_q, wr_strb_q), 32'h00000000, 32'h000003ff);
+    wire w_cap_in_pos = hit_cap_in_pos_q;
+    wire [31:0] n_cap_in_pos = merge(cap_in_pos_q, wr_data_q, wr_strb_q);
+    wire w_cap_in_vel = hit_cap_in_vel_q;
+    wire [31:0] n_cap_in_vel = merge(cap_in_vel_q, wr_data_q, wr_strb_q);
+    wire w_cap_in_ferr = hit_cap_in_ferr_q;
+    wire [31:0] n_cap_in_ferr = merge({16'd0, cap_in_ferr_q}, wr_data_q, wr_strb_q);
     wire w_any_ok = w_ctrl | w_err | w_heartbeat | w_scratch | w_irq_en
         | w_irq_status | w_mpdtc_ctrl | w_mpdtc_start | w_mpdtc_in_id | w_mpdtc_in_iq
         | w_mpdtc_in_cos0 | w_mpdtc_in_sin0 | w_mpdtc_in_cos1 | w_mpdtc_in_sin1 | w_mpdtc_in_cos2
@@ -684,9 +1081,9 @@ module pl_regs (
         | w_cap_in_ferr;
     // Access errors of this cycle (set ERR).
     wire bad_value = (w_ctrl && bad_ctrl) || (w_mpdcc_bnd_ia && bad_mpdcc_bnd_ia) || (w_mpdcc_bnd_ib && bad_mpdcc_bnd_ib) || (w_mpdcc_bnd_ic && bad_mpdcc_bnd_ic) || (w_mpdcc_bnd_vn && bad_mpdcc_bnd_vn) || (w_mpdcc_bnd_vpa && bad_mpdcc_bnd_vpa) || (w_mpdcc_bnd_vpb && bad_mpdcc_bnd_vpb) || (w_mpdcc_bnd_vpc && bad_mpdcc_bnd_vpc) || (w_adc_avg_log2 && bad_adc_avg_log2) || (w_cap_thr_ch && bad_cap_thr_ch) || (w_cap_sel && bad_cap_sel);
-    wire bad_addr = (wr_i && !w_any_ok) || (rd_i && rd_err_o);
+    wire bad_addr = (wr_q && !w_any_ok) || (rd_i && rd_err_o);
 
-    assign wr_err_o = wr_i && !w_any_ok;
+    assign wr_err_o = wr_q && !w_any_ok;
 
     always @(posedge clk_i) begin
         if (rst_i) begin
@@ -944,174 +1341,252 @@ module pl_regs (
         end
     end
 
-    // Read mux.
+    // Read mux, two stages (one clock each at 100 MHz, docs/rtl.md): at
+    // the read strobe each page's registers are multiplexed into that page's
+    // word (the other pages' words are 0); the next cycle rd_data_o is the
+    // addressed page's word. rd_err_o is combinational (ERR.BAD_ADDR is set
+    // at the strobe's edge).
+    reg [2:0] rd_page_q;
+    reg [31:0] rd_top_q;
+    reg [31:0] rd_mpdtc_q;
+    reg [31:0] rd_mpdcc_q;
+    reg [31:0] rd_pwm_q;
+    reg [31:0] rd_adc_q;
+    reg [31:0] rd_enc_q;
+    reg [31:0] rd_fault_q;
+    reg [31:0] rd_capture_q;
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            rd_page_q <= 3'd0;
+            rd_top_q <= 32'd0;
+            rd_mpdtc_q <= 32'd0;
+            rd_mpdcc_q <= 32'd0;
+            rd_pwm_q <= 32'd0;
+            rd_adc_q <= 32'd0;
+            rd_enc_q <= 32'd0;
+            rd_fault_q <= 32'd0;
+            rd_capture_q <= 32'd0;
+        end else if (rd_i) begin
+            rd_page_q <= rd_addr_i[14:12];
+            rd_top_q <= 32'd0;
+            rd_mpdtc_q <= 32'd0;
+            rd_mpdcc_q <= 32'd0;
+            rd_pwm_q <= 32'd0;
+            rd_adc_q <= 32'd0;
+            rd_enc_q <= 32'd0;
+            rd_fault_q <= 32'd0;
+            rd_capture_q <= 32'd0;
+            case (rd_addr_i)
+                15'h0000: rd_top_q <= 32'h50534452;  // ID
+                15'h0004: rd_top_q <= 32'h00010004;  // VERSION
+                15'h0008: rd_top_q <= {30'd0, ctrl_q};  // CTRL
+                15'h000c: rd_top_q <= {28'd0, status_fault_i, status_gates_active_i, status_mode_i};  // STATUS
+                15'h0010: rd_top_q <= {30'd0, err_q};  // ERR
+                15'h0014: rd_top_q <= heartbeat_q;  // HEARTBEAT
+                15'h0018: rd_top_q <= scratch_q;  // SCRATCH
+                15'h0040: rd_top_q <= {30'd0, irq_en_q};  // IRQ_EN
+                15'h0044: rd_top_q <= {29'd0, irq_status_missed_i, irq_status_fault_i, irq_status_boundary_i};  // IRQ_STATUS
+                15'h0048: rd_top_q <= {16'd0, boundary_age_i};  // BOUNDARY_AGE
+                15'h1000: rd_mpdtc_q <= {29'd0, mpdtc_ctrl_q};  // MPDTC_CTRL
+                15'h1004: rd_mpdtc_q <= mpdtc_start_q;  // MPDTC_START
+                15'h1008: rd_mpdtc_q <= {mpdtc_status_done_count_i, 12'd0, mpdtc_status_s_next_i, mpdtc_status_busy_i};  // MPDTC_STATUS
+                15'h100c: rd_mpdtc_q <= 32'h00000027;  // MPDTC_LATENCY
+                15'h1010: rd_mpdtc_q <= {7'd0, mpdtc_in_id_q};  // MPDTC_IN_ID
+                15'h1014: rd_mpdtc_q <= {7'd0, mpdtc_in_iq_q};  // MPDTC_IN_IQ
+                15'h1018: rd_mpdtc_q <= {14'd0, mpdtc_in_cos0_q};  // MPDTC_IN_COS0
+                15'h101c: rd_mpdtc_q <= {14'd0, mpdtc_in_sin0_q};  // MPDTC_IN_SIN0
+                15'h1020: rd_mpdtc_q <= {14'd0, mpdtc_in_cos1_q};  // MPDTC_IN_COS1
+                15'h1024: rd_mpdtc_q <= {14'd0, mpdtc_in_sin1_q};  // MPDTC_IN_SIN1
+                15'h1028: rd_mpdtc_q <= {14'd0, mpdtc_in_cos2_q};  // MPDTC_IN_COS2
+                15'h102c: rd_mpdtc_q <= {14'd0, mpdtc_in_sin2_q};  // MPDTC_IN_SIN2
+                15'h1030: rd_mpdtc_q <= {14'd0, mpdtc_in_w_ts_q};  // MPDTC_IN_W_TS
+                15'h1034: rd_mpdtc_q <= {14'd0, mpdtc_in_t_ref_q};  // MPDTC_IN_T_REF
+                15'h1040: rd_mpdtc_q <= {14'd0, mpdtc_p_a_q};  // MPDTC_P_A
+                15'h1044: rd_mpdtc_q <= {14'd0, mpdtc_p_lambda_q};  // MPDTC_P_LAMBDA
+                15'h1048: rd_mpdtc_q <= {7'd0, mpdtc_p_u0_q};  // MPDTC_P_U0
+                15'h104c: rd_mpdtc_q <= {7'd0, mpdtc_p_u0_half_q};  // MPDTC_P_U0_HALF
+                15'h1050: rd_mpdtc_q <= {7'd0, mpdtc_p_u0_h_q};  // MPDTC_P_U0_H
+                15'h1054: rd_mpdtc_q <= {7'd0, mpdtc_p_psi_l_q};  // MPDTC_P_PSI_L
+                15'h1058: rd_mpdtc_q <= {7'd0, mpdtc_p_kinv_t_q};  // MPDTC_P_KINV_T
+                15'h105c: rd_mpdtc_q <= {8'd0, mpdtc_p_tol_q};  // MPDTC_P_TOL
+                15'h1060: rd_mpdtc_q <= {14'd0, mpdtc_p_k_int_q};  // MPDTC_P_K_INT
+                15'h1064: rd_mpdtc_q <= {8'd0, mpdtc_p_int_lim_q};  // MPDTC_P_INT_LIM
+                15'h1068: rd_mpdtc_q <= {31'd0, mpdtc_p_int_cond_q};  // MPDTC_P_INT_COND
+                15'h106c: rd_mpdtc_q <= {14'd0, mpdtc_p_kp_o_q};  // MPDTC_P_KP_O
+                15'h1070: rd_mpdtc_q <= {14'd0, mpdtc_p_ki_o_q};  // MPDTC_P_KI_O
+                15'h1074: rd_mpdtc_q <= {8'd0, mpdtc_p_eta_lim_q};  // MPDTC_P_ETA_LIM
+                15'h1078: rd_mpdtc_q <= {14'd0, mpdtc_p_w2_0_q};  // MPDTC_P_W2_0
+                15'h107c: rd_mpdtc_q <= {14'd0, mpdtc_p_w2_1_q};  // MPDTC_P_W2_1
+                15'h1080: rd_mpdtc_q <= {14'd0, mpdtc_p_w2_2_q};  // MPDTC_P_W2_2
+                15'h1084: rd_mpdtc_q <= {14'd0, mpdtc_p_w2_3_q};  // MPDTC_P_W2_3
+                15'h1090: rd_mpdtc_q <= {7'd0, mpdtc_iq_ref_i};  // MPDTC_IQ_REF
+                15'h10a0: rd_mpdtc_q <= {mpdtc_seq_status_periods_i, mpdtc_seq_status_overruns_i, 3'd0, mpdtc_seq_status_aligned_i, mpdtc_seq_status_sampled_i, mpdtc_seq_status_state_i};  // MPDTC_SEQ_STATUS
+                15'h10a4: rd_mpdtc_q <= {29'd0, mpdtc_align_vec_q};  // MPDTC_ALIGN_VEC
+                15'h10a8: rd_mpdtc_q <= {16'd0, mpdtc_align_period_q};  // MPDTC_ALIGN_PERIOD
+                15'h10ac: rd_mpdtc_q <= {16'd0, mpdtc_align_on_q};  // MPDTC_ALIGN_ON
+                15'h10b0: rd_mpdtc_q <= mpdtc_align_time_q;  // MPDTC_ALIGN_TIME
+                15'h10b4: rd_mpdtc_q <= {16'd0, mpdtc_align_pos_i};  // MPDTC_ALIGN_POS
+                15'h10b8: rd_mpdtc_q <= mpdtc_fe_ang_scale_q;  // MPDTC_FE_ANG_SCALE
+                15'h10bc: rd_mpdtc_q <= mpdtc_fe_spd_scale_q;  // MPDTC_FE_SPD_SCALE
+                15'h10c0: rd_mpdtc_q <= {14'd0, mpdtc_fe_age0_q};  // MPDTC_FE_AGE0
+                15'h10c4: rd_mpdtc_q <= {14'd0, mpdtc_fe_age1_q};  // MPDTC_FE_AGE1
+                15'h10c8: rd_mpdtc_q <= {14'd0, mpdtc_fe_age2_q};  // MPDTC_FE_AGE2
+                15'h10cc: rd_mpdtc_q <= {16'd0, mpdtc_fe_off_a_q};  // MPDTC_FE_OFF_A
+                15'h10d0: rd_mpdtc_q <= {16'd0, mpdtc_fe_off_b_q};  // MPDTC_FE_OFF_B
+                15'h10d4: rd_mpdtc_q <= {16'd0, mpdtc_fe_off_c_q};  // MPDTC_FE_OFF_C
+                15'h10d8: rd_mpdtc_q <= {14'd0, mpdtc_fe_gain_a_q};  // MPDTC_FE_GAIN_A
+                15'h10dc: rd_mpdtc_q <= {14'd0, mpdtc_fe_gain_b_q};  // MPDTC_FE_GAIN_B
+                15'h10e0: rd_mpdtc_q <= {14'd0, mpdtc_fe_gain_c_q};  // MPDTC_FE_GAIN_C
+                15'h10e4: rd_mpdtc_q <= {7'd0, mpdtc_fe_id_i};  // MPDTC_FE_ID
+                15'h10e8: rd_mpdtc_q <= {7'd0, mpdtc_fe_iq_i};  // MPDTC_FE_IQ
+                15'h2000: rd_mpdcc_q <= {31'd0, mpdcc_start_q};  // MPDCC_START
+                15'h2004: rd_mpdcc_q <= {mpdcc_status_count_i, 14'd0, mpdcc_status_done_i, mpdcc_status_busy_i};  // MPDCC_STATUS
+                15'h2008: rd_mpdcc_q <= {29'd0, mpdcc_n_use_q};  // MPDCC_N_USE
+                15'h200c: rd_mpdcc_q <= {16'd0, mpdcc_config_nodes_i, mpdcc_config_m_bits_i, mpdcc_config_lambda_i, mpdcc_config_explorers_i};  // MPDCC_CONFIG
+                15'h2010: rd_mpdcc_q <= {23'd0, mpdcc_s_prev_q};  // MPDCC_S_PREV
+                15'h2014: rd_mpdcc_q <= {16'd0, mpdcc_i_a_q};  // MPDCC_I_A
+                15'h2018: rd_mpdcc_q <= {16'd0, mpdcc_i_b_q};  // MPDCC_I_B
+                15'h201c: rd_mpdcc_q <= {16'd0, mpdcc_psi_a_q};  // MPDCC_PSI_A
+                15'h2020: rd_mpdcc_q <= {16'd0, mpdcc_psi_b_q};  // MPDCC_PSI_B
+                15'h2024: rd_mpdcc_q <= {16'd0, mpdcc_v_n_q};  // MPDCC_V_N
+                15'h2028: rd_mpdcc_q <= {16'd0, mpdcc_v_ph_a_q};  // MPDCC_V_PH_A
+                15'h202c: rd_mpdcc_q <= {16'd0, mpdcc_v_ph_b_q};  // MPDCC_V_PH_B
+                15'h2030: rd_mpdcc_q <= {16'd0, mpdcc_v_ph_c_q};  // MPDCC_V_PH_C
+                15'h2034: rd_mpdcc_q <= {16'd0, mpdcc_iref_a_q};  // MPDCC_IREF_A
+                15'h2038: rd_mpdcc_q <= {16'd0, mpdcc_iref_b_q};  // MPDCC_IREF_B
+                15'h203c: rd_mpdcc_q <= {16'd0, mpdcc_omega_r_q};  // MPDCC_OMEGA_R
+                15'h2040: rd_mpdcc_q <= {16'd0, mpdcc_omega_s_q};  // MPDCC_OMEGA_S
+                15'h2080: rd_mpdcc_q <= {16'd0, mpdcc_c_tau_q};  // MPDCC_C_TAU
+                15'h2084: rd_mpdcc_q <= {16'd0, mpdcc_c_r_q};  // MPDCC_C_R
+                15'h2088: rd_mpdcc_q <= {16'd0, mpdcc_c_w_q};  // MPDCC_C_W
+                15'h208c: rd_mpdcc_q <= {16'd0, mpdcc_c_p_q};  // MPDCC_C_P
+                15'h2090: rd_mpdcc_q <= {16'd0, mpdcc_c_s_q};  // MPDCC_C_S
+                15'h2094: rd_mpdcc_q <= {16'd0, mpdcc_c_3_q};  // MPDCC_C_3
+                15'h2098: rd_mpdcc_q <= {16'd0, mpdcc_c_d_q};  // MPDCC_C_D
+                15'h209c: rd_mpdcc_q <= {16'd0, mpdcc_c_n_q};  // MPDCC_C_N
+                15'h20a0: rd_mpdcc_q <= {16'd0, mpdcc_c_ph_q};  // MPDCC_C_PH
+                15'h20a4: rd_mpdcc_q <= {16'd0, mpdcc_s3h_q};  // MPDCC_S3H
+                15'h20a8: rd_mpdcc_q <= {16'd0, mpdcc_v_ph_ref_q};  // MPDCC_V_PH_REF
+                15'h20ac: rd_mpdcc_q <= {16'd0, mpdcc_c_tau1_q};  // MPDCC_C_TAU1
+                15'h20b0: rd_mpdcc_q <= {16'd0, mpdcc_c_r1_q};  // MPDCC_C_R1
+                15'h20b4: rd_mpdcc_q <= {16'd0, mpdcc_c_w1_q};  // MPDCC_C_W1
+                15'h20b8: rd_mpdcc_q <= {16'd0, mpdcc_c_s1_q};  // MPDCC_C_S1
+                15'h20bc: rd_mpdcc_q <= {16'd0, mpdcc_vdc_half_q};  // MPDCC_VDC_HALF
+                15'h20c0: rd_mpdcc_q <= {16'd0, mpdcc_g3_q};  // MPDCC_G3
+                15'h20c4: rd_mpdcc_q <= {16'd0, mpdcc_gd_q};  // MPDCC_GD
+                15'h20c8: rd_mpdcc_q <= {16'd0, mpdcc_g3_1_q};  // MPDCC_G3_1
+                15'h20cc: rd_mpdcc_q <= {16'd0, mpdcc_bnd_ia_q};  // MPDCC_BND_IA
+                15'h20d0: rd_mpdcc_q <= {16'd0, mpdcc_bnd_ib_q};  // MPDCC_BND_IB
+                15'h20d4: rd_mpdcc_q <= {16'd0, mpdcc_bnd_ic_q};  // MPDCC_BND_IC
+                15'h20d8: rd_mpdcc_q <= {16'd0, mpdcc_bnd_vn_q};  // MPDCC_BND_VN
+                15'h20dc: rd_mpdcc_q <= {16'd0, mpdcc_bnd_vpa_q};  // MPDCC_BND_VPA
+                15'h20e0: rd_mpdcc_q <= {16'd0, mpdcc_bnd_vpb_q};  // MPDCC_BND_VPB
+                15'h20e4: rd_mpdcc_q <= {16'd0, mpdcc_bnd_vpc_q};  // MPDCC_BND_VPC
+                15'h20e8: rd_mpdcc_q <= {16'd0, mpdcc_lambda_n_q};  // MPDCC_LAMBDA_N
+                15'h2100: rd_mpdcc_q <= {8'd0, mpdcc_decision_l_star_i, 2'd0, mpdcc_decision_kind_i, 3'd0, mpdcc_decision_s_c_i, mpdcc_decision_s_b_i, mpdcc_decision_s_a_i};  // MPDCC_DECISION
+                15'h2104: rd_mpdcc_q <= mpdcc_cost_i;  // MPDCC_COST
+                15'h2108: rd_mpdcc_q <= mpdcc_j_dl_i;  // MPDCC_J_DL
+                15'h210c: rd_mpdcc_q <= {8'd0, mpdcc_cycles_candidates_i, mpdcc_cycles_cycles_i};  // MPDCC_CYCLES
+                15'h2110: rd_mpdcc_q <= {16'd0, mpdcc_deadlocks_i};  // MPDCC_DEADLOCKS
+                15'h3000: rd_pwm_q <= {31'd0, gate_ctrl_q};  // GATE_CTRL
+                15'h3004: rd_pwm_q <= {22'd0, dead_time_q};  // DEAD_TIME
+                15'h3008: rd_pwm_q <= {16'd0, pwm_period_q};  // PWM_PERIOD
+                15'h300c: rd_pwm_q <= {16'd0, duty_a_q};  // DUTY_A
+                15'h3010: rd_pwm_q <= {16'd0, duty_b_q};  // DUTY_B
+                15'h3014: rd_pwm_q <= {16'd0, duty_c_q};  // DUTY_C
+                15'h3018: rd_pwm_q <= {29'd0, sw_state_q};  // SW_STATE
+                15'h301c: rd_pwm_q <= {23'd0, gate_status_state_i, gate_status_lo_i, gate_status_hi_i};  // GATE_STATUS
+                15'h3020: rd_pwm_q <= {15'd0, pwm_count_down_i, pwm_count_count_i};  // PWM_COUNT
+                15'h4000: rd_adc_q <= {31'd0, adc_ctrl_q};  // ADC_CTRL
+                15'h4004: rd_adc_q <= {16'd0, adc_period_q};  // ADC_PERIOD
+                15'h4008: rd_adc_q <= {16'd0, adc_ia_i};  // ADC_IA
+                15'h400c: rd_adc_q <= {16'd0, adc_ib_i};  // ADC_IB
+                15'h4010: rd_adc_q <= {16'd0, adc_ic_i};  // ADC_IC
+                15'h4014: rd_adc_q <= adc_count_i;  // ADC_COUNT
+                15'h4018: rd_adc_q <= {30'd0, adc_avg_log2_q};  // ADC_AVG_LOG2
+                15'h5000: rd_enc_q <= {16'd0, enc_cpr_q};  // ENC_CPR
+                15'h5004: rd_enc_q <= {16'd0, enc_pos_i};  // ENC_POS
+                15'h5008: rd_enc_q <= {16'd0, enc_speed_i};  // ENC_SPEED
+                15'h500c: rd_enc_q <= {8'd0, enc_window_q};  // ENC_WINDOW
+                15'h5010: rd_enc_q <= {16'd0, enc_index_i};  // ENC_INDEX
+                15'h5014: rd_enc_q <= {16'd0, enc_pos_sample_i};  // ENC_POS_SAMPLE
+                15'h6000: rd_fault_q <= {27'd0, fault_status_adc_stuck_i, fault_status_encoder_loss_i, fault_status_watchdog_i, fault_status_external_i, fault_status_overcurrent_i};  // FAULT_STATUS
+                15'h6004: rd_fault_q <= {27'd0, fault_raw_i};  // FAULT_RAW
+                15'h6008: rd_fault_q <= {21'd0, oc_limit_q};  // OC_LIMIT
+                15'h600c: rd_fault_q <= wdg_timeout_q;  // WDG_TIMEOUT
+                15'h7000: rd_capture_q <= {30'd0, cap_source_q};  // CAP_SOURCE
+                15'h7004: rd_capture_q <= {22'd0, cap_pre_q};  // CAP_PRE
+                15'h7008: rd_capture_q <= {24'd0, cap_decim_q};  // CAP_DECIM
+                15'h700c: rd_capture_q <= {16'd0, cap_step_q};  // CAP_STEP
+                15'h7010: rd_capture_q <= {29'd0, cap_thr_ch_q};  // CAP_THR_CH
+                15'h7014: rd_capture_q <= {16'd0, cap_thr_level_q};  // CAP_THR_LEVEL
+                15'h7018: rd_capture_q <= {31'd0, cap_thr_edge_q};  // CAP_THR_EDGE
+                15'h701c: rd_capture_q <= {29'd0, cap_sel_q};  // CAP_SEL
+                15'h7020: rd_capture_q <= {31'd0, cap_arm_q};  // CAP_ARM
+                15'h7024: rd_capture_q <= {31'd0, cap_trig_q};  // CAP_TRIG
+                15'h7028: rd_capture_q <= {5'd0, cap_status_count_i, 1'd0, cap_status_trig_index_i, 2'd0, cap_status_state_i};  // CAP_STATUS
+                15'h7030: rd_capture_q <= {16'd0, cap_in_id_q};  // CAP_IN_ID
+                15'h7034: rd_capture_q <= {16'd0, cap_in_iq_q};  // CAP_IN_IQ
+                15'h7038: rd_capture_q <= {16'd0, cap_in_torque_q};  // CAP_IN_TORQUE
+                15'h703c: rd_capture_q <= {16'd0, cap_in_tref_q};  // CAP_IN_TREF
+                15'h7040: rd_capture_q <= {22'd0, cap_rd_index_q};  // CAP_RD_INDEX
+                15'h7044: rd_capture_q <= {cap_data0_i_q_i, cap_data0_i_d_i};  // CAP_DATA0
+                15'h7048: rd_capture_q <= {cap_data1_tref_i, cap_data1_torque_i};  // CAP_DATA1
+                15'h704c: rd_capture_q <= {cap_data2_sel_i, 13'd0, cap_data2_sw_i};  // CAP_DATA2
+                15'h7050: rd_capture_q <= 32'h00000400;  // CAP_DEPTH
+                15'h7054: rd_capture_q <= cap_in_pos_q;  // CAP_IN_POS
+                15'h7058: rd_capture_q <= cap_in_vel_q;  // CAP_IN_VEL
+                15'h705c: rd_capture_q <= {16'd0, cap_in_ferr_q};  // CAP_IN_FERR
+                15'h7060: rd_capture_q <= cap_data3_i;  // CAP_DATA3
+                15'h7064: rd_capture_q <= cap_data4_i;  // CAP_DATA4
+                15'h7068: rd_capture_q <= {16'd0, cap_data5_i};  // CAP_DATA5
+                default: ;
+            endcase
+        end
+    end
     always @(*) begin
-        rd_data_o = 32'd0;
-        rd_err_o  = 1'b0;
+        case (rd_page_q)
+            3'd0: rd_data_o = rd_top_q;
+            3'd1: rd_data_o = rd_mpdtc_q;
+            3'd2: rd_data_o = rd_mpdcc_q;
+            3'd3: rd_data_o = rd_pwm_q;
+            3'd4: rd_data_o = rd_adc_q;
+            3'd5: rd_data_o = rd_enc_q;
+            3'd6: rd_data_o = rd_fault_q;
+            3'd7: rd_data_o = rd_capture_q;
+            default: rd_data_o = 32'd0;
+        endcase
+    end
+    always @(*) begin
         case (rd_addr_i)
-            15'h0000: rd_data_o = 32'h50534452;  // ID
-            15'h0004: rd_data_o = 32'h00010004;  // VERSION
-            15'h0008: rd_data_o = {30'd0, ctrl_q};  // CTRL
-            15'h000c: rd_data_o = {28'd0, status_fault_i, status_gates_active_i, status_mode_i};  // STATUS
-            15'h0010: rd_data_o = {30'd0, err_q};  // ERR
-            15'h0014: rd_data_o = heartbeat_q;  // HEARTBEAT
-            15'h0018: rd_data_o = scratch_q;  // SCRATCH
-            15'h0040: rd_data_o = {30'd0, irq_en_q};  // IRQ_EN
-            15'h0044: rd_data_o = {29'd0, irq_status_missed_i, irq_status_fault_i, irq_status_boundary_i};  // IRQ_STATUS
-            15'h0048: rd_data_o = {16'd0, boundary_age_i};  // BOUNDARY_AGE
-            15'h1000: rd_data_o = {29'd0, mpdtc_ctrl_q};  // MPDTC_CTRL
-            15'h1004: rd_data_o = mpdtc_start_q;  // MPDTC_START
-            15'h1008: rd_data_o = {mpdtc_status_done_count_i, 12'd0, mpdtc_status_s_next_i, mpdtc_status_busy_i};  // MPDTC_STATUS
-            15'h100c: rd_data_o = 32'h00000027;  // MPDTC_LATENCY
-            15'h1010: rd_data_o = {7'd0, mpdtc_in_id_q};  // MPDTC_IN_ID
-            15'h1014: rd_data_o = {7'd0, mpdtc_in_iq_q};  // MPDTC_IN_IQ
-            15'h1018: rd_data_o = {14'd0, mpdtc_in_cos0_q};  // MPDTC_IN_COS0
-            15'h101c: rd_data_o = {14'd0, mpdtc_in_sin0_q};  // MPDTC_IN_SIN0
-            15'h1020: rd_data_o = {14'd0, mpdtc_in_cos1_q};  // MPDTC_IN_COS1
-            15'h1024: rd_data_o = {14'd0, mpdtc_in_sin1_q};  // MPDTC_IN_SIN1
-            15'h1028: rd_data_o = {14'd0, mpdtc_in_cos2_q};  // MPDTC_IN_COS2
-            15'h102c: rd_data_o = {14'd0, mpdtc_in_sin2_q};  // MPDTC_IN_SIN2
-            15'h1030: rd_data_o = {14'd0, mpdtc_in_w_ts_q};  // MPDTC_IN_W_TS
-            15'h1034: rd_data_o = {14'd0, mpdtc_in_t_ref_q};  // MPDTC_IN_T_REF
-            15'h1040: rd_data_o = {14'd0, mpdtc_p_a_q};  // MPDTC_P_A
-            15'h1044: rd_data_o = {14'd0, mpdtc_p_lambda_q};  // MPDTC_P_LAMBDA
-            15'h1048: rd_data_o = {7'd0, mpdtc_p_u0_q};  // MPDTC_P_U0
-            15'h104c: rd_data_o = {7'd0, mpdtc_p_u0_half_q};  // MPDTC_P_U0_HALF
-            15'h1050: rd_data_o = {7'd0, mpdtc_p_u0_h_q};  // MPDTC_P_U0_H
-            15'h1054: rd_data_o = {7'd0, mpdtc_p_psi_l_q};  // MPDTC_P_PSI_L
-            15'h1058: rd_data_o = {7'd0, mpdtc_p_kinv_t_q};  // MPDTC_P_KINV_T
-            15'h105c: rd_data_o = {8'd0, mpdtc_p_tol_q};  // MPDTC_P_TOL
-            15'h1060: rd_data_o = {14'd0, mpdtc_p_k_int_q};  // MPDTC_P_K_INT
-            15'h1064: rd_data_o = {8'd0, mpdtc_p_int_lim_q};  // MPDTC_P_INT_LIM
-            15'h1068: rd_data_o = {31'd0, mpdtc_p_int_cond_q};  // MPDTC_P_INT_COND
-            15'h106c: rd_data_o = {14'd0, mpdtc_p_kp_o_q};  // MPDTC_P_KP_O
-            15'h1070: rd_data_o = {14'd0, mpdtc_p_ki_o_q};  // MPDTC_P_KI_O
-            15'h1074: rd_data_o = {8'd0, mpdtc_p_eta_lim_q};  // MPDTC_P_ETA_LIM
-            15'h1078: rd_data_o = {14'd0, mpdtc_p_w2_0_q};  // MPDTC_P_W2_0
-            15'h107c: rd_data_o = {14'd0, mpdtc_p_w2_1_q};  // MPDTC_P_W2_1
-            15'h1080: rd_data_o = {14'd0, mpdtc_p_w2_2_q};  // MPDTC_P_W2_2
-            15'h1084: rd_data_o = {14'd0, mpdtc_p_w2_3_q};  // MPDTC_P_W2_3
-            15'h1090: rd_data_o = {7'd0, mpdtc_iq_ref_i};  // MPDTC_IQ_REF
-            15'h10a0: rd_data_o = {mpdtc_seq_status_periods_i, mpdtc_seq_status_overruns_i, 3'd0, mpdtc_seq_status_aligned_i, mpdtc_seq_status_sampled_i, mpdtc_seq_status_state_i};  // MPDTC_SEQ_STATUS
-            15'h10a4: rd_data_o = {29'd0, mpdtc_align_vec_q};  // MPDTC_ALIGN_VEC
-            15'h10a8: rd_data_o = {16'd0, mpdtc_align_period_q};  // MPDTC_ALIGN_PERIOD
-            15'h10ac: rd_data_o = {16'd0, mpdtc_align_on_q};  // MPDTC_ALIGN_ON
-            15'h10b0: rd_data_o = mpdtc_align_time_q;  // MPDTC_ALIGN_TIME
-            15'h10b4: rd_data_o = {16'd0, mpdtc_align_pos_i};  // MPDTC_ALIGN_POS
-            15'h10b8: rd_data_o = mpdtc_fe_ang_scale_q;  // MPDTC_FE_ANG_SCALE
-            15'h10bc: rd_data_o = mpdtc_fe_spd_scale_q;  // MPDTC_FE_SPD_SCALE
-            15'h10c0: rd_data_o = {14'd0, mpdtc_fe_age0_q};  // MPDTC_FE_AGE0
-            15'h10c4: rd_data_o = {14'd0, mpdtc_fe_age1_q};  // MPDTC_FE_AGE1
-            15'h10c8: rd_data_o = {14'd0, mpdtc_fe_age2_q};  // MPDTC_FE_AGE2
-            15'h10cc: rd_data_o = {16'd0, mpdtc_fe_off_a_q};  // MPDTC_FE_OFF_A
-            15'h10d0: rd_data_o = {16'd0, mpdtc_fe_off_b_q};  // MPDTC_FE_OFF_B
-            15'h10d4: rd_data_o = {16'd0, mpdtc_fe_off_c_q};  // MPDTC_FE_OFF_C
-            15'h10d8: rd_data_o = {14'd0, mpdtc_fe_gain_a_q};  // MPDTC_FE_GAIN_A
-            15'h10dc: rd_data_o = {14'd0, mpdtc_fe_gain_b_q};  // MPDTC_FE_GAIN_B
-            15'h10e0: rd_data_o = {14'd0, mpdtc_fe_gain_c_q};  // MPDTC_FE_GAIN_C
-            15'h10e4: rd_data_o = {7'd0, mpdtc_fe_id_i};  // MPDTC_FE_ID
-            15'h10e8: rd_data_o = {7'd0, mpdtc_fe_iq_i};  // MPDTC_FE_IQ
-            15'h2000: rd_data_o = {31'd0, mpdcc_start_q};  // MPDCC_START
-            15'h2004: rd_data_o = {mpdcc_status_count_i, 14'd0, mpdcc_status_done_i, mpdcc_status_busy_i};  // MPDCC_STATUS
-            15'h2008: rd_data_o = {29'd0, mpdcc_n_use_q};  // MPDCC_N_USE
-            15'h200c: rd_data_o = {16'd0, mpdcc_config_nodes_i, mpdcc_config_m_bits_i, mpdcc_config_lambda_i, mpdcc_config_explorers_i};  // MPDCC_CONFIG
-            15'h2010: rd_data_o = {23'd0, mpdcc_s_prev_q};  // MPDCC_S_PREV
-            15'h2014: rd_data_o = {16'd0, mpdcc_i_a_q};  // MPDCC_I_A
-            15'h2018: rd_data_o = {16'd0, mpdcc_i_b_q};  // MPDCC_I_B
-            15'h201c: rd_data_o = {16'd0, mpdcc_psi_a_q};  // MPDCC_PSI_A
-            15'h2020: rd_data_o = {16'd0, mpdcc_psi_b_q};  // MPDCC_PSI_B
-            15'h2024: rd_data_o = {16'd0, mpdcc_v_n_q};  // MPDCC_V_N
-            15'h2028: rd_data_o = {16'd0, mpdcc_v_ph_a_q};  // MPDCC_V_PH_A
-            15'h202c: rd_data_o = {16'd0, mpdcc_v_ph_b_q};  // MPDCC_V_PH_B
-            15'h2030: rd_data_o = {16'd0, mpdcc_v_ph_c_q};  // MPDCC_V_PH_C
-            15'h2034: rd_data_o = {16'd0, mpdcc_iref_a_q};  // MPDCC_IREF_A
-            15'h2038: rd_data_o = {16'd0, mpdcc_iref_b_q};  // MPDCC_IREF_B
-            15'h203c: rd_data_o = {16'd0, mpdcc_omega_r_q};  // MPDCC_OMEGA_R
-            15'h2040: rd_data_o = {16'd0, mpdcc_omega_s_q};  // MPDCC_OMEGA_S
-            15'h2080: rd_data_o = {16'd0, mpdcc_c_tau_q};  // MPDCC_C_TAU
-            15'h2084: rd_data_o = {16'd0, mpdcc_c_r_q};  // MPDCC_C_R
-            15'h2088: rd_data_o = {16'd0, mpdcc_c_w_q};  // MPDCC_C_W
-            15'h208c: rd_data_o = {16'd0, mpdcc_c_p_q};  // MPDCC_C_P
-            15'h2090: rd_data_o = {16'd0, mpdcc_c_s_q};  // MPDCC_C_S
-            15'h2094: rd_data_o = {16'd0, mpdcc_c_3_q};  // MPDCC_C_3
-            15'h2098: rd_data_o = {16'd0, mpdcc_c_d_q};  // MPDCC_C_D
-            15'h209c: rd_data_o = {16'd0, mpdcc_c_n_q};  // MPDCC_C_N
-            15'h20a0: rd_data_o = {16'd0, mpdcc_c_ph_q};  // MPDCC_C_PH
-            15'h20a4: rd_data_o = {16'd0, mpdcc_s3h_q};  // MPDCC_S3H
-            15'h20a8: rd_data_o = {16'd0, mpdcc_v_ph_ref_q};  // MPDCC_V_PH_REF
-            15'h20ac: rd_data_o = {16'd0, mpdcc_c_tau1_q};  // MPDCC_C_TAU1
-            15'h20b0: rd_data_o = {16'd0, mpdcc_c_r1_q};  // MPDCC_C_R1
-            15'h20b4: rd_data_o = {16'd0, mpdcc_c_w1_q};  // MPDCC_C_W1
-            15'h20b8: rd_data_o = {16'd0, mpdcc_c_s1_q};  // MPDCC_C_S1
-            15'h20bc: rd_data_o = {16'd0, mpdcc_vdc_half_q};  // MPDCC_VDC_HALF
-            15'h20c0: rd_data_o = {16'd0, mpdcc_g3_q};  // MPDCC_G3
-            15'h20c4: rd_data_o = {16'd0, mpdcc_gd_q};  // MPDCC_GD
-            15'h20c8: rd_data_o = {16'd0, mpdcc_g3_1_q};  // MPDCC_G3_1
-            15'h20cc: rd_data_o = {16'd0, mpdcc_bnd_ia_q};  // MPDCC_BND_IA
-            15'h20d0: rd_data_o = {16'd0, mpdcc_bnd_ib_q};  // MPDCC_BND_IB
-            15'h20d4: rd_data_o = {16'd0, mpdcc_bnd_ic_q};  // MPDCC_BND_IC
-            15'h20d8: rd_data_o = {16'd0, mpdcc_bnd_vn_q};  // MPDCC_BND_VN
-            15'h20dc: rd_data_o = {16'd0, mpdcc_bnd_vpa_q};  // MPDCC_BND_VPA
-            15'h20e0: rd_data_o = {16'd0, mpdcc_bnd_vpb_q};  // MPDCC_BND_VPB
-            15'h20e4: rd_data_o = {16'd0, mpdcc_bnd_vpc_q};  // MPDCC_BND_VPC
-            15'h20e8: rd_data_o = {16'd0, mpdcc_lambda_n_q};  // MPDCC_LAMBDA_N
-            15'h2100: rd_data_o = {8'd0, mpdcc_decision_l_star_i, 2'd0, mpdcc_decision_kind_i, 3'd0, mpdcc_decision_s_c_i, mpdcc_decision_s_b_i, mpdcc_decision_s_a_i};  // MPDCC_DECISION
-            15'h2104: rd_data_o = mpdcc_cost_i;  // MPDCC_COST
-            15'h2108: rd_data_o = mpdcc_j_dl_i;  // MPDCC_J_DL
-            15'h210c: rd_data_o = {8'd0, mpdcc_cycles_candidates_i, mpdcc_cycles_cycles_i};  // MPDCC_CYCLES
-            15'h2110: rd_data_o = {16'd0, mpdcc_deadlocks_i};  // MPDCC_DEADLOCKS
-            15'h3000: rd_data_o = {31'd0, gate_ctrl_q};  // GATE_CTRL
-            15'h3004: rd_data_o = {22'd0, dead_time_q};  // DEAD_TIME
-            15'h3008: rd_data_o = {16'd0, pwm_period_q};  // PWM_PERIOD
-            15'h300c: rd_data_o = {16'd0, duty_a_q};  // DUTY_A
-            15'h3010: rd_data_o = {16'd0, duty_b_q};  // DUTY_B
-            15'h3014: rd_data_o = {16'd0, duty_c_q};  // DUTY_C
-            15'h3018: rd_data_o = {29'd0, sw_state_q};  // SW_STATE
-            15'h301c: rd_data_o = {23'd0, gate_status_state_i, gate_status_lo_i, gate_status_hi_i};  // GATE_STATUS
-            15'h3020: rd_data_o = {15'd0, pwm_count_down_i, pwm_count_count_i};  // PWM_COUNT
-            15'h4000: rd_data_o = {31'd0, adc_ctrl_q};  // ADC_CTRL
-            15'h4004: rd_data_o = {16'd0, adc_period_q};  // ADC_PERIOD
-            15'h4008: rd_data_o = {16'd0, adc_ia_i};  // ADC_IA
-            15'h400c: rd_data_o = {16'd0, adc_ib_i};  // ADC_IB
-            15'h4010: rd_data_o = {16'd0, adc_ic_i};  // ADC_IC
-            15'h4014: rd_data_o = adc_count_i;  // ADC_COUNT
-            15'h4018: rd_data_o = {30'd0, adc_avg_log2_q};  // ADC_AVG_LOG2
-            15'h5000: rd_data_o = {16'd0, enc_cpr_q};  // ENC_CPR
-            15'h5004: rd_data_o = {16'd0, enc_pos_i};  // ENC_POS
-            15'h5008: rd_data_o = {16'd0, enc_speed_i};  // ENC_SPEED
-            15'h500c: rd_data_o = {8'd0, enc_window_q};  // ENC_WINDOW
-            15'h5010: rd_data_o = {16'd0, enc_index_i};  // ENC_INDEX
-            15'h5014: rd_data_o = {16'd0, enc_pos_sample_i};  // ENC_POS_SAMPLE
-            15'h6000: rd_data_o = {27'd0, fault_status_adc_stuck_i, fault_status_encoder_loss_i, fault_status_watchdog_i, fault_status_external_i, fault_status_overcurrent_i};  // FAULT_STATUS
-            15'h6004: rd_data_o = {27'd0, fault_raw_i};  // FAULT_RAW
-            15'h6008: rd_data_o = {21'd0, oc_limit_q};  // OC_LIMIT
-            15'h600c: rd_data_o = wdg_timeout_q;  // WDG_TIMEOUT
-            15'h7000: rd_data_o = {30'd0, cap_source_q};  // CAP_SOURCE
-            15'h7004: rd_data_o = {22'd0, cap_pre_q};  // CAP_PRE
-            15'h7008: rd_data_o = {24'd0, cap_decim_q};  // CAP_DECIM
-            15'h700c: rd_data_o = {16'd0, cap_step_q};  // CAP_STEP
-            15'h7010: rd_data_o = {29'd0, cap_thr_ch_q};  // CAP_THR_CH
-            15'h7014: rd_data_o = {16'd0, cap_thr_level_q};  // CAP_THR_LEVEL
-            15'h7018: rd_data_o = {31'd0, cap_thr_edge_q};  // CAP_THR_EDGE
-            15'h701c: rd_data_o = {29'd0, cap_sel_q};  // CAP_SEL
-            15'h7020: rd_data_o = {31'd0, cap_arm_q};  // CAP_ARM
-            15'h7024: rd_data_o = {31'd0, cap_trig_q};  // CAP_TRIG
-            15'h7028: rd_data_o = {5'd0, cap_status_count_i, 1'd0, cap_status_trig_index_i, 2'd0, cap_status_state_i};  // CAP_STATUS
-            15'h7030: rd_data_o = {16'd0, cap_in_id_q};  // CAP_IN_ID
-            15'h7034: rd_data_o = {16'd0, cap_in_iq_q};  // CAP_IN_IQ
-            15'h7038: rd_data_o = {16'd0, cap_in_torque_q};  // CAP_IN_TORQUE
-            15'h703c: rd_data_o = {16'd0, cap_in_tref_q};  // CAP_IN_TREF
-            15'h7040: rd_data_o = {22'd0, cap_rd_index_q};  // CAP_RD_INDEX
-            15'h7044: rd_data_o = {cap_data0_i_q_i, cap_data0_i_d_i};  // CAP_DATA0
-            15'h7048: rd_data_o = {cap_data1_tref_i, cap_data1_torque_i};  // CAP_DATA1
-            15'h704c: rd_data_o = {cap_data2_sel_i, 13'd0, cap_data2_sw_i};  // CAP_DATA2
-            15'h7050: rd_data_o = 32'h00000400;  // CAP_DEPTH
-            15'h7054: rd_data_o = cap_in_pos_q;  // CAP_IN_POS
-            15'h7058: rd_data_o = cap_in_vel_q;  // CAP_IN_VEL
-            15'h705c: rd_data_o = {16'd0, cap_in_ferr_q};  // CAP_IN_FERR
-            15'h7060: rd_data_o = cap_data3_i;  // CAP_DATA3
-            15'h7064: rd_data_o = cap_data4_i;  // CAP_DATA4
-            15'h7068: rd_data_o = {16'd0, cap_data5_i};  // CAP_DATA5
+            15'h0000, 15'h0004, 15'h0008, 15'h000c, 15'h0010, 15'h0014: rd_err_o = 1'b0;
+            15'h0018, 15'h0040, 15'h0044, 15'h0048, 15'h1000, 15'h1004: rd_err_o = 1'b0;
+            15'h1008, 15'h100c, 15'h1010, 15'h1014, 15'h1018, 15'h101c: rd_err_o = 1'b0;
+            15'h1020, 15'h1024, 15'h1028, 15'h102c, 15'h1030, 15'h1034: rd_err_o = 1'b0;
+            15'h1040, 15'h1044, 15'h1048, 15'h104c, 15'h1050, 15'h1054: rd_err_o = 1'b0;
+            15'h1058, 15'h105c, 15'h1060, 15'h1064, 15'h1068, 15'h106c: rd_err_o = 1'b0;
+            15'h1070, 15'h1074, 15'h1078, 15'h107c, 15'h1080, 15'h1084: rd_err_o = 1'b0;
+            15'h1090, 15'h10a0, 15'h10a4, 15'h10a8, 15'h10ac, 15'h10b0: rd_err_o = 1'b0;
+            15'h10b4, 15'h10b8, 15'h10bc, 15'h10c0, 15'h10c4, 15'h10c8: rd_err_o = 1'b0;
+            15'h10cc, 15'h10d0, 15'h10d4, 15'h10d8, 15'h10dc, 15'h10e0: rd_err_o = 1'b0;
+            15'h10e4, 15'h10e8, 15'h2000, 15'h2004, 15'h2008, 15'h200c: rd_err_o = 1'b0;
+            15'h2010, 15'h2014, 15'h2018, 15'h201c, 15'h2020, 15'h2024: rd_err_o = 1'b0;
+            15'h2028, 15'h202c, 15'h2030, 15'h2034, 15'h2038, 15'h203c: rd_err_o = 1'b0;
+            15'h2040, 15'h2080, 15'h2084, 15'h2088, 15'h208c, 15'h2090: rd_err_o = 1'b0;
+            15'h2094, 15'h2098, 15'h209c, 15'h20a0, 15'h20a4, 15'h20a8: rd_err_o = 1'b0;
+            15'h20ac, 15'h20b0, 15'h20b4, 15'h20b8, 15'h20bc, 15'h20c0: rd_err_o = 1'b0;
+            15'h20c4, 15'h20c8, 15'h20cc, 15'h20d0, 15'h20d4, 15'h20d8: rd_err_o = 1'b0;
+            15'h20dc, 15'h20e0, 15'h20e4, 15'h20e8, 15'h2100, 15'h2104: rd_err_o = 1'b0;
+            15'h2108, 15'h210c, 15'h2110, 15'h3000, 15'h3004, 15'h3008: rd_err_o = 1'b0;
+            15'h300c, 15'h3010, 15'h3014, 15'h3018, 15'h301c, 15'h3020: rd_err_o = 1'b0;
+            15'h4000, 15'h4004, 15'h4008, 15'h400c, 15'h4010, 15'h4014: rd_err_o = 1'b0;
+            15'h4018, 15'h5000, 15'h5004, 15'h5008, 15'h500c, 15'h5010: rd_err_o = 1'b0;
+            15'h5014, 15'h6000, 15'h6004, 15'h6008, 15'h600c, 15'h7000: rd_err_o = 1'b0;
+            15'h7004, 15'h7008, 15'h700c, 15'h7010, 15'h7014, 15'h7018: rd_err_o = 1'b0;
+            15'h701c, 15'h7020, 15'h7024, 15'h7028, 15'h7030, 15'h7034: rd_err_o = 1'b0;
+            15'h7038, 15'h703c, 15'h7040, 15'h7044, 15'h7048, 15'h704c: rd_err_o = 1'b0;
+            15'h7050, 15'h7054, 15'h7058, 15'h705c, 15'h7060, 15'h7064: rd_err_o = 1'b0;
+            15'h7068: rd_err_o = 1'b0;
             default: rd_err_o = rd_i;
         endcase
     end

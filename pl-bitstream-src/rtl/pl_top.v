@@ -528,31 +528,107 @@ module pl_top #(
         cap_thr_level, cap_thr_edge, cap_sel_ch, cap_in_id, cap_in_iq, cap_in_torque, cap_in_tref,
         cap_rd_index, cap_in_pos, cap_in_vel, cap_in_ferr};
 `else
+    // capture_buf runs one clock behind its inputs: every input but the read
+    // index is registered here, the trigger channel (CAP_THR_CH over the
+    // channels, CAP_SEL's among them) selected before its register, so its
+    // trigger comparisons start at registers (one clock at 100 MHz,
+    // docs/rtl.md). A sample is taken, and a write to the page acts, one
+    // clock later; the read port follows CAP_RD_INDEX without delay.
+    reg [15:0] cap_thr_now;
+    always @(*) begin
+        case (cap_thr_ch)
+            3'd0: cap_thr_now = cap_in_id;
+            3'd1: cap_thr_now = cap_in_iq;
+            3'd2: cap_thr_now = cap_in_torque;
+            3'd3: cap_thr_now = cap_in_tref;
+            default: cap_thr_now = cap_sel_ch;
+        endcase
+    end
+    reg         cap_arm_q, cap_trig_q, cap_sample_q, cap_fault_q, cap_thr_edge_q;
+    reg  [ 1:0] cap_source_q;
+    reg  [ 9:0] cap_pre_q;
+    reg  [ 7:0] cap_decim_q;
+    reg  [15:0] cap_step_q, cap_thr_level_q, cap_thr_now_q;
+    reg         cap_thr_ge_q, cap_thr_le_q;
+    reg  [15:0] cap_id_q, cap_iq_q, cap_torque_q, cap_tref_q, cap_ch_sel_q, cap_ferr_q;
+    reg  [ 2:0] cap_sw_q;
+    reg  [31:0] cap_pos_q, cap_vel_q;
+    always @(posedge clk_i) begin
+        if (rst) begin
+            cap_arm_q       <= 1'b0;
+            cap_trig_q      <= 1'b0;
+            cap_sample_q    <= 1'b0;
+            cap_fault_q     <= 1'b0;
+            cap_thr_edge_q  <= 1'b0;
+            cap_source_q    <= 2'd0;
+            cap_pre_q       <= 10'd0;
+            cap_decim_q     <= 8'd0;
+            cap_step_q      <= 16'd0;
+            cap_thr_level_q <= 16'd0;
+            cap_thr_now_q   <= 16'd0;
+            cap_thr_ge_q    <= 1'b1;
+            cap_thr_le_q    <= 1'b1;
+            cap_id_q        <= 16'd0;
+            cap_iq_q        <= 16'd0;
+            cap_torque_q    <= 16'd0;
+            cap_tref_q      <= 16'd0;
+            cap_ch_sel_q    <= 16'd0;
+            cap_ferr_q      <= 16'd0;
+            cap_sw_q        <= 3'd0;
+            cap_pos_q       <= 32'd0;
+            cap_vel_q       <= 32'd0;
+        end else begin
+            cap_arm_q       <= cap_arm;
+            cap_trig_q      <= cap_trig;
+            cap_sample_q    <= adc_avg_valid_o;
+            cap_fault_q     <= fault_any;
+            cap_thr_edge_q  <= cap_thr_edge;
+            cap_source_q    <= cap_source;
+            cap_pre_q       <= cap_pre;
+            cap_decim_q     <= cap_decim;
+            cap_step_q      <= cap_step;
+            cap_thr_level_q <= cap_thr_level;
+            cap_thr_now_q   <= cap_thr_now;
+            cap_thr_ge_q    <= $signed(cap_thr_now) >= $signed(cap_thr_level);
+            cap_thr_le_q    <= $signed(cap_thr_now) <= $signed(cap_thr_level);
+            cap_id_q        <= cap_in_id;
+            cap_iq_q        <= cap_in_iq;
+            cap_torque_q    <= cap_in_torque;
+            cap_tref_q      <= cap_in_tref;
+            cap_ch_sel_q    <= cap_sel_ch;
+            cap_ferr_q      <= cap_in_ferr;
+            cap_sw_q        <= state_sel;
+            cap_pos_q       <= cap_in_pos;
+            cap_vel_q       <= cap_in_vel;
+        end
+    end
     capture_buf #(
         .AW(CAP_AW)
     ) u_cap (
         .clk_i       (clk_i),
         .rst_i       (rst),
-        .arm_i       (cap_arm),
-        .trig_i      (cap_trig),
-        .source_i    (cap_source),
-        .pre_i       ({6'd0, cap_pre}),
-        .decim_i     (cap_decim),
-        .step_i      (cap_step),
-        .thr_ch_i    (cap_thr_ch),
-        .thr_level_i (cap_thr_level),
-        .thr_edge_i  (cap_thr_edge),
-        .sample_i    (adc_avg_valid_o),
-        .fault_i     (fault_any),
-        .ch_id_i     (cap_in_id),
-        .ch_iq_i     (cap_in_iq),
-        .ch_torque_i (cap_in_torque),
-        .ch_tref_i   (cap_in_tref),
-        .ch_sel_i    (cap_sel_ch),
-        .ch_sw_i     (state_sel),
-        .ch_pos_i    (cap_in_pos),
-        .ch_vel_i    (cap_in_vel),
-        .ch_ferr_i   (cap_in_ferr),
+        .arm_i       (cap_arm_q),
+        .trig_i      (cap_trig_q),
+        .source_i    (cap_source_q),
+        .pre_i       ({6'd0, cap_pre_q}),
+        .decim_i     (cap_decim_q),
+        .step_i      (cap_step_q),
+        .thr_now_i   (cap_thr_now_q),
+        .thr_ge_i    (cap_thr_ge_q),
+        .thr_le_i    (cap_thr_le_q),
+        .thr_level_i (cap_thr_level_q),
+        .thr_edge_i  (cap_thr_edge_q),
+        .sample_i    (cap_sample_q),
+        .fault_i     (cap_fault_q),
+        .ch_id_i     (cap_id_q),
+        .ch_iq_i     (cap_iq_q),
+        .ch_torque_i (cap_torque_q),
+        .ch_tref_i   (cap_tref_q),
+        .ch_sel_i    (cap_ch_sel_q),
+        .ch_sw_i     (cap_sw_q),
+        .ch_pos_i    (cap_pos_q),
+        .ch_vel_i    (cap_vel_q),
+        .ch_ferr_i   (cap_ferr_q),
         .rd_index_i  ({6'd0, cap_rd_index}),
         .state_o     (cap_state),
         .count_o     (cap_count),

@@ -52,7 +52,7 @@ impl Sample {
 }
 
 /// Inputs of one cycle.
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct CapIn {
     /// `CAP_ARM` write strobe.
     pub arm: bool,
@@ -96,6 +96,10 @@ pub struct Capture {
     prev_valid: bool,
     tref_prev: u16,
     thr_prev: u16,
+    /// `CAP_STEP` of the cycle before: the step in force (the RTL keeps
+    /// `tref_prev` +- it in registers, so a write takes effect one clock
+    /// later).
+    step_prev: u32,
     /// The read port's output register (`CAP_DATA0..2`).
     pub rd: Sample,
 }
@@ -114,6 +118,7 @@ impl Default for Capture {
             prev_valid: false,
             tref_prev: 0,
             thr_prev: 0,
+            step_prev: 0,
             rd: Sample::default(),
         }
     }
@@ -145,7 +150,7 @@ impl Capture {
 
     fn trigger(&self, i: &CapIn) -> bool {
         let d = (i32::from(i.ch.tref as i16) - i32::from(self.tref_prev as i16)).unsigned_abs();
-        let step_hit = self.prev_valid && d >= i.step;
+        let step_hit = self.prev_valid && d >= self.step_prev;
         let now = i.ch.channel(i.thr_ch) as i16;
         let prev = self.thr_prev as i16;
         let lvl = i.thr_level as i16;
@@ -172,12 +177,14 @@ impl Capture {
                 rd: self.rd,
                 state: cap_state::ARMED,
                 pre,
+                step_prev: i.step,
                 ..Self::default()
             };
             return;
         }
         // The trigger sees the pending flag as it was before this cycle.
         let trigger = self.trigger(i);
+        self.step_prev = i.step;
         if i.trig && self.state == cap_state::ARMED {
             self.trig_pend = true;
         }
@@ -211,9 +218,10 @@ impl Capture {
         }
     }
 
-    /// `n` cycles without a sample strobe or a write: only the read port
-    /// settles.
-    pub fn skip(&mut self, rd_index: u32) {
+    /// `n` >= 1 cycles without a sample strobe or a write: only the read
+    /// port and the step in force (`step`, `CAP_STEP`) settle.
+    pub fn skip(&mut self, rd_index: u32, step: u32) {
         self.rd = self.mem[self.rd_ptr(rd_index)];
+        self.step_prev = step;
     }
 }

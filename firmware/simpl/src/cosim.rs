@@ -12,8 +12,8 @@
 //! one PL cycle: the host runs the PL to `guest - guest_0` cycles after the
 //! PL cycle of the first request (`guest_0` its time) before answering. The
 //! PL never runs backwards: a request stamped earlier than the PL's present
-//! cycle (two accesses closer than the two cycles an AXI access takes) is
-//! served at the present cycle.
+//! cycle (two accesses closer than the three or four cycles an AXI access
+//! takes) is served at the present cycle.
 
 /// Bytes of a request.
 pub const REQUEST_LEN: usize = 24;

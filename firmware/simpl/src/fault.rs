@@ -34,12 +34,23 @@ pub struct Fault {
     /// Latched faults (`FAULT_STATUS`).
     pub status: u8,
     oc_last: bool,
+    /// Over-current on the sample of the cycle before (`oc_hit_q`): the
+    /// comparison is registered, so over-current trips one clock after its
+    /// sample strobe.
+    oc_hit: bool,
     wdg: u32,
     /// Cycles since the last raw sample, ADC_CTRL.ENABLE change or cycle
     /// with GATE_EN = 0 (`adc_age_q`, saturating at 17 bits).
     adc_age: u32,
     /// ADC_CTRL.ENABLE of the cycle before (`adc_en_q`, reset 1).
     adc_en: bool,
+    /// The timer's trip level, ADC_PERIOD of the cycle before + the margin
+    /// (`adc_limit_q`, reset 0: a register, so a new period counts one
+    /// clock after its write).
+    adc_limit: u32,
+    /// The watchdog's comparison of the cycle before (`wdg_exp_q`: the
+    /// watchdog trips one clock after its counter reaches WDG_TIMEOUT).
+    wdg_exp: bool,
 }
 
 impl Default for Fault {
@@ -47,9 +58,12 @@ impl Default for Fault {
         Self {
             status: 0,
             oc_last: false,
+            oc_hit: false,
             wdg: 0,
             adc_age: 0,
             adc_en: true,
+            adc_limit: 0,
+            wdg_exp: false,
         }
     }
 }
@@ -82,7 +96,7 @@ impl Fault {
         i.sample.iter().any(|&s| mag(s) > i.oc_limit)
     }
 
-    /// The timer's trip level: ADC_PERIOD + the margin.
+    /// The timer's trip level after this cycle: ADC_PERIOD + the margin.
     fn adc_limit(i: &FaultIn) -> u32 {
         u32::from(i.adc_period) + ADC_MARGIN
     }
@@ -90,15 +104,15 @@ impl Fault {
     /// Live conditions of encoder loss and ADC stuck (bits 3, 4).
     fn run_cond(&self, i: &FaultIn) -> u8 {
         let enc = i.run && i.enc_illegal;
-        let adc = i.run && self.adc_age >= Self::adc_limit(i);
+        let adc = i.run && self.adc_age >= self.adc_limit;
         (u8::from(adc) << 4) | (u8::from(enc) << 3)
     }
 
     /// Fault conditions of this cycle `{adc stuck, encoder loss, watchdog,
     /// external, overcurrent}`.
     pub fn cond(&self, i: &FaultIn) -> u8 {
-        let oc = i.sample_valid && Self::oc_sample(i);
-        let wdg = self.wdg >= i.wdg_timeout;
+        let oc = self.oc_hit;
+        let wdg = self.wdg_exp;
         self.run_cond(i) | (u8::from(wdg) << 2) | (u8::from(i.ext) << 1) | u8::from(oc)
     }
 
@@ -110,7 +124,7 @@ impl Fault {
     /// `FAULT_RAW`.
     pub fn raw(&self, i: &FaultIn) -> u8 {
         self.run_cond(i)
-            | (u8::from(self.wdg >= i.wdg_timeout) << 2)
+            | (u8::from(self.wdg_exp) << 2)
             | (u8::from(i.ext) << 1)
             | u8::from(self.oc_last)
     }
@@ -123,6 +137,8 @@ impl Fault {
         if i.sample_valid {
             self.oc_last = Self::oc_sample(i);
         }
+        self.oc_hit = i.sample_valid && Self::oc_sample(i);
+        self.wdg_exp = self.wdg >= i.wdg_timeout;
         if heartbeat {
             self.wdg = 0;
         } else {
@@ -130,6 +146,7 @@ impl Fault {
         }
         let restart = !i.run || i.sample_valid || i.adc_en != self.adc_en;
         self.adc_en = i.adc_en;
+        self.adc_limit = Self::adc_limit(i);
         self.adc_age = if restart {
             0
         } else {
@@ -141,7 +158,12 @@ impl Fault {
     /// ADC result overdue (no raw sample, no encoder step, no change of the
     /// registers in them).
     pub fn quiet(&self, i: &FaultIn) -> u64 {
-        if self.status | self.cond(i) != self.status || i.adc_en != self.adc_en {
+        if self.status | self.cond(i) != self.status
+            || i.adc_en != self.adc_en
+            || self.oc_hit
+            || self.adc_limit != Self::adc_limit(i)
+            || self.wdg_exp != (self.wdg >= i.wdg_timeout)
+        {
             return 0;
         }
         let wdg = if self.wdg >= i.wdg_timeout {
@@ -149,7 +171,7 @@ impl Fault {
         } else {
             u64::from(i.wdg_timeout - self.wdg)
         };
-        let limit = Self::adc_limit(i);
+        let limit = self.adc_limit;
         let adc = if !i.run {
             // The timer holds at 0.
             if self.adc_age == 0 {

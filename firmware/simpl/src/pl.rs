@@ -212,7 +212,8 @@ impl Events {
             || (self.pwm_period && mask.pwm_period)
     }
 
-    fn merge(&mut self, o: &Self) {
+    /// Adds the events of `o` (either's).
+    pub fn merge(&mut self, o: &Self) {
         self.gates |= o.gates;
         self.adc_convert |= o.adc_convert;
         self.adc_average |= o.adc_average;
@@ -264,6 +265,9 @@ pub struct SimPl {
     core_iq_ref: i32,
     core_done: u16,
     cap: Capture,
+    /// `capture_buf`'s inputs of the cycle before: `pl_top` registers them
+    /// (all but the read index), so the buffer runs one clock behind.
+    cap_prev: CapIn,
     mpdcc: MpdccBlock,
     irq: CtrlIrq,
     cycles: u64,
@@ -300,6 +304,7 @@ impl SimPl {
             core_iq_ref: 0,
             core_done: 0,
             cap: Capture::default(),
+            cap_prev: CapIn::default(),
             mpdcc: MpdccBlock::new(),
             irq: CtrlIrq::default(),
             cycles: 0,
@@ -622,7 +627,12 @@ impl SimPl {
         if valid {
             self.core_done = self.core_done.wrapping_add(1);
         }
-        self.cap.step(&cap_in);
+        let delayed = CapIn {
+            rd_index: cap_in.rd_index,
+            ..self.cap_prev
+        };
+        self.cap.step(&delayed);
+        self.cap_prev = cap_in;
         if w(S_MPDCC_START) {
             let words = self.mpdcc_words();
             self.mpdcc.step(Some(&words));
@@ -659,6 +669,10 @@ impl SimPl {
             return 0;
         }
         if c.mp_clr && (self.core_s != 0 || self.core_iq_ref != 0) {
+            return 0;
+        }
+        // capture_buf's input registers settle in one clock.
+        if self.cap_inputs(&c, false, false) != self.cap_prev {
             return 0;
         }
         let pins = [self.pins.enc_a, self.pins.enc_b, self.pins.enc_z];
@@ -708,7 +722,7 @@ impl SimPl {
         self.mpdcc.skip(k);
         self.fe.skip(k);
         self.irq.skip(k);
-        self.cap.skip(self.r(S_CAP_RD_INDEX));
+        self.cap.skip(self.r(S_CAP_RD_INDEX), self.r(S_CAP_STEP));
         self.cycles += k;
         self.skips += 1;
     }

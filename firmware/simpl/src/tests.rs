@@ -94,8 +94,9 @@ fn pwm_period_and_dead_time_by_hand() {
 }
 
 /// HEARTBEAT written in cycle h (its strobe), WDG_TIMEOUT 1000: the counter
-/// is 0 in cycle h + 1 and reaches 1000 in cycle h + 1001, whose edge
-/// latches WATCHDOG and turns the gates off: both seen from cycle h + 1002.
+/// is 0 in cycle h + 1 and reaches 1000 in cycle h + 1001; the registered
+/// comparison holds in cycle h + 1002, whose edge latches WATCHDOG and
+/// turns the gates off: both seen from cycle h + 1003.
 #[test]
 fn watchdog_trips_after_wdg_timeout() {
     let mut pl = SimPl::new(10);
@@ -108,10 +109,10 @@ fn watchdog_trips_after_wdg_timeout() {
     w(&mut pl, &rm::TOP, &rm::HEARTBEAT, 0x1234);
     pl.run(100, &Events::default());
     assert_eq!((pl.gates().hi, pl.gates().lo), (0b100, 0b011));
-    pl.run(h + 1001 - pl.cycles(), &Events::default());
+    pl.run(h + 1002 - pl.cycles(), &Events::default());
     assert_eq!(peek(&pl, &rm::FAULT, &rm::FAULT_STATUS), 0, "not yet");
     let e = edges(&mut pl, 10);
-    assert_eq!(e, [(h + 1002, 0, 0)]);
+    assert_eq!(e, [(h + 1003, 0, 0)]);
     assert_eq!(peek(&pl, &rm::FAULT, &rm::FAULT_STATUS), 4);
     assert_eq!(peek(&pl, &rm::FAULT, &rm::FAULT_RAW), 4);
     assert_eq!(peek(&pl, &rm::PWM, &rm::GATE_CTRL), 0, "GATE_EN dropped");
@@ -123,8 +124,11 @@ fn watchdog_trips_after_wdg_timeout() {
     // W1C while the watchdog is still expired: set wins.
     w(&mut pl, &rm::FAULT, &rm::FAULT_STATUS, 4);
     assert_eq!(peek(&pl, &rm::FAULT, &rm::FAULT_STATUS), 4);
-    // Heartbeat, then the clear sticks; gates stay off until GATE_EN.
+    // Heartbeat, then the clear sticks (from the second cycle after the
+    // heartbeat: the registered comparison still holds in the first);
+    // gates stay off until GATE_EN.
     w(&mut pl, &rm::TOP, &rm::HEARTBEAT, 0);
+    pl.run_cycle_by_cycle(1);
     w(&mut pl, &rm::FAULT, &rm::FAULT_STATUS, 4);
     assert_eq!(peek(&pl, &rm::FAULT, &rm::FAULT_STATUS), 0);
     pl.run(20, &Events::default());

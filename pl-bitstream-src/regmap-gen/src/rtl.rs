@@ -171,10 +171,10 @@ fn read_expr(r: &Register) -> String {
 fn next_expr(r: &Register) -> String {
     let n = lc(r);
     if r.access == Access::W1c {
-        return "merge(32'd0, wr_data_i, wr_strb_i)".into();
+        return "merge(32'd0, wr_data_q, wr_strb_q)".into();
     }
     let old = concat(32, vec![(0, r.width, format!("{n}_q"))]);
-    let m = format!("merge({old}, wr_data_i, wr_strb_i)");
+    let m = format!("merge({old}, wr_data_q, wr_strb_q)");
     match r.invalid {
         Invalid::Clamp { min, max } => format!("clamp({m}, 32'h{min:08x}, 32'h{max:08x})"),
         _ => m,
@@ -203,12 +203,13 @@ pub fn pl_regs(blocks: &[&Block]) -> String {
          // do not edit (a test fails when this file is stale).\n\
          //\n\
          // pl_regs: the PL register file behind axil_slave. Register-bus side:\n\
-         // wr_i/rd_i are one-cycle strobes; wr_err_o/rd_err_o/rd_data_o are\n\
-         // combinational. Write rules (as the table's Register::apply_write): byte\n\
-         // strobes merge into the current value, then the 32-bit word is masked to\n\
-         // the width (all valid), clamped as a whole to the table's bounds, or\n\
-         // rejected (above the bound: the register keeps its value and\n\
-         // ERR.BAD_VALUE is set).\n\
+         // wr_i/rd_i are one-cycle strobes; a write takes effect and wr_err_o\n\
+         // answers it the cycle after wr_i; rd_err_o is combinational and\n\
+         // rd_data_o answers rd_i the next cycle. Write rules (as the table's\n\
+         // Register::apply_write): byte strobes merge into the current value,\n\
+         // then the 32-bit word is masked to the width (all valid), clamped as a\n\
+         // whole to the table's bounds, or rejected (above the bound: the\n\
+         // register keeps its value and ERR.BAD_VALUE is set).\n\
          // Unmapped offsets, and writes to RO registers, answer SLVERR and set\n\
          // ERR.BAD_ADDR. W1C flags clear on a written 1.\n\
          //\n\
@@ -281,14 +282,43 @@ pub fn pl_regs(blocks: &[&Block]) -> String {
         let _ = writeln!(s, "    reg {:>7} {}_q;", range(r.width), lc(r));
     }
 
-    s.push_str("\n    // Write decode, and the word each write leaves (merged, clamped).\n");
     let writable: Vec<&(&Block, &Register)> = regs
         .iter()
         .filter(|(_, r)| r.access != Access::Ro)
         .collect();
+    s.push_str(
+        "\n    // Write decode stage (one clock each at 100 MHz, docs/rtl.md): every\n    \
+         // register's address match is registered with the data and strobes; the\n    \
+         // write takes effect, and wr_err_o answers it, the cycle after wr_i.\n    \
+         reg        wr_q;\n    reg [31:0] wr_data_q;\n    reg [ 3:0] wr_strb_q;\n",
+    );
+    for (_, r) in &writable {
+        let _ = writeln!(s, "    reg        hit_{}_q;", lc(r));
+    }
+    s.push_str(
+        "    always @(posedge clk_i) begin\n        if (rst_i) begin\n            wr_q      <= 1'b0;\n            \
+         wr_data_q <= 32'd0;\n            wr_strb_q <= 4'd0;\n",
+    );
+    for (_, r) in &writable {
+        let _ = writeln!(s, "            hit_{}_q <= 1'b0;", lc(r));
+    }
+    s.push_str(
+        "        end else begin\n            wr_q      <= wr_i;\n            wr_data_q <= wr_data_i;\n            \
+         wr_strb_q <= wr_strb_i;\n",
+    );
     for (b, r) in &writable {
+        let _ = writeln!(
+            s,
+            "            hit_{}_q <= wr_i && wr_addr_i == {};",
+            lc(r),
+            addr(b, r)
+        );
+    }
+    s.push_str("        end\n    end\n");
+    s.push_str("\n    // Write decode, and the word each write leaves (merged, clamped).\n");
+    for (_, r) in &writable {
         let n = lc(r);
-        let _ = writeln!(s, "    wire w_{n} = wr_i && wr_addr_i == {};", addr(b, r));
+        let _ = writeln!(s, "    wire w_{n} = hit_{n}_q;");
         let _ = writeln!(s, "    wire [31:0] n_{n} = {};", next_expr(r));
         if let (Access::Rw, Invalid::Reject { max }) = (r.access, r.invalid) {
             let _ = writeln!(s, "    wire bad_{n} = n_{n} > 32'h{max:08x};");
@@ -315,8 +345,8 @@ pub fn pl_regs(blocks: &[&Block]) -> String {
     let _ = writeln!(
         s,
         "    // Access errors of this cycle (set ERR).\n    wire bad_value = {};\n    \
-         wire bad_addr = (wr_i && !w_any_ok) || (rd_i && rd_err_o);\n\n    \
-         assign wr_err_o = wr_i && !w_any_ok;",
+         wire bad_addr = (wr_q && !w_any_ok) || (rd_i && rd_err_o);\n\n    \
+         assign wr_err_o = wr_q && !w_any_ok;",
         if rejected.is_empty() {
             "1'b0".to_string()
         } else {
@@ -366,18 +396,63 @@ pub fn pl_regs(blocks: &[&Block]) -> String {
     }
     s.push_str("        end\n    end\n\n");
 
+    // Read mux in two stages, each within one clock at 100 MHz
+    // (docs/rtl.md, delay model): at the read strobe every page's registers
+    // are multiplexed into that page's word register (the other pages' words
+    // are 0), the next cycle the addressed page's word is rd_data_o.
+    let page_bits = AXI_ADDR_BITS - 12;
+    let page_reg = |b: &Block| format!("rd_{}_q", b.name.to_lowercase());
     s.push_str(
-        "    // Read mux.\n    always @(*) begin\n        rd_data_o = 32'd0;\n        \
-         rd_err_o  = 1'b0;\n        case (rd_addr_i)\n",
+        "    // Read mux, two stages (one clock each at 100 MHz, docs/rtl.md): at\n    \
+         // the read strobe each page's registers are multiplexed into that page's\n    \
+         // word (the other pages' words are 0); the next cycle rd_data_o is the\n    \
+         // addressed page's word. rd_err_o is combinational (ERR.BAD_ADDR is set\n    \
+         // at the strobe's edge).\n",
     );
+    let _ = writeln!(s, "    reg [{}:0] rd_page_q;", page_bits - 1);
+    for b in blocks {
+        let _ = writeln!(s, "    reg [31:0] {};", page_reg(b));
+    }
+    s.push_str("    always @(posedge clk_i) begin\n        if (rst_i) begin\n");
+    let _ = writeln!(s, "            rd_page_q <= {page_bits}'d0;");
+    for b in blocks {
+        let _ = writeln!(s, "            {} <= 32'd0;", page_reg(b));
+    }
+    s.push_str("        end else if (rd_i) begin\n");
+    let _ = writeln!(
+        s,
+        "            rd_page_q <= rd_addr_i[{}:12];",
+        AXI_ADDR_BITS - 1
+    );
+    for b in blocks {
+        let _ = writeln!(s, "            {} <= 32'd0;", page_reg(b));
+    }
+    s.push_str("            case (rd_addr_i)\n");
     for (b, r) in &regs {
         let _ = writeln!(
             s,
-            "            {}: rd_data_o = {};  // {}",
+            "                {}: {} <= {};  // {}",
             addr(b, r),
+            page_reg(b),
             read_expr(r),
             r.name
         );
+    }
+    s.push_str("                default: ;\n            endcase\n        end\n    end\n");
+    s.push_str("    always @(*) begin\n        case (rd_page_q)\n");
+    for b in blocks {
+        let _ = writeln!(
+            s,
+            "            {page_bits}'d{}: rd_data_o = {};",
+            b.index,
+            page_reg(b)
+        );
+    }
+    s.push_str("            default: rd_data_o = 32'd0;\n        endcase\n    end\n");
+    s.push_str("    always @(*) begin\n        case (rd_addr_i)\n");
+    let all_addr: Vec<String> = regs.iter().map(|(b, r)| addr(b, r)).collect();
+    for c in all_addr.chunks(6) {
+        let _ = writeln!(s, "            {}: rd_err_o = 1'b0;", c.join(", "));
     }
     s.push_str("            default: rd_err_o = rd_i;\n        endcase\n    end\n\n");
 

@@ -51,12 +51,13 @@ fn the_register_file_gets_storage_decode_rule_read_and_a_port() {
     for line in [
         "    output wire  [11:0] trim_o",
         "    reg  [11:0] trim_q;",
-        "    wire w_trim = wr_i && wr_addr_i == 15'h3024;",
-        "    wire [31:0] n_trim = clamp(merge({20'd0, trim_q}, wr_data_i, wr_strb_i), \
+        "            hit_trim_q <= wr_i && wr_addr_i == 15'h3024;",
+        "    wire w_trim = hit_trim_q;",
+        "    wire [31:0] n_trim = clamp(merge({20'd0, trim_q}, wr_data_q, wr_strb_q), \
          32'h0000000a, 32'h00000fa0);",
         "            trim_q <= 12'h64;",
         "            if (w_trim) trim_q <= n_trim[11:0];",
-        "            15'h3024: rd_data_o = {20'd0, trim_q};  // TRIM",
+        "                15'h3024: rd_pwm_q <= {20'd0, trim_q};  // TRIM",
         "    assign trim_o = trim_q;",
     ] {
         assert!(v.contains(line), "missing in the generated RTL: {line}");

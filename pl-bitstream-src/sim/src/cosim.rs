@@ -5,8 +5,9 @@
 //! firmware under QEMU over the bridge protocol of `simpl::cosim`.
 //!
 //! [`RtlPl`] is the Verilated `pl_top` as a [`PlModel`]: one clock cycle
-//! per simulated cycle (no closed-form skips), an AXI4-Lite access in two
-//! cycles (the register-bus strobe in the first), the converter answering
+//! per simulated cycle (no closed-form skips), an AXI4-Lite read in three
+//! cycles (the register-bus strobe in the first), a write in four (the
+//! register file's decoded write in the third), the converter answering
 //! each `adc_cnv_o` pulse `conv + 1` cycles later with the word the plant
 //! set. `pl_top` has no port for the PWM period start (the FOC's control
 //! boundary), so a shadow `SimPl` runs in lock step with the same inputs
@@ -191,7 +192,10 @@ impl PlModel for RtlPl {
         self.rtl.inp.rready = 1;
         let (_, e1, model) = self.cycle(Shadow::Read(addr));
         self.rtl.inp.arvalid = 0;
-        let (o, e2, _) = self.cycle(Shadow::Idle);
+        // the register file's second read stage, then R
+        let (_, e2, _) = self.cycle(Shadow::Idle);
+        let (o, e3, _) = self.cycle(Shadow::Idle);
+        let e2 = merge(e2, e3);
         let r = if o.rvalid != 1 {
             Err(BusError::SlaveError)
         } else if o.rresp == OKAY {
@@ -212,9 +216,15 @@ impl PlModel for RtlPl {
         self.rtl.inp.awvalid = 1;
         self.rtl.inp.wvalid = 1;
         self.rtl.inp.bready = 1;
-        let (_, e1, model) = self.cycle(Shadow::Write(addr, value));
+        // AW and W taken, the register-bus write the next cycle, the
+        // register file's decoded write (the shadow's write) the cycle
+        // after, then B
+        let (_, e0, _) = self.cycle(Shadow::Idle);
         self.rtl.inp.awvalid = 0;
         self.rtl.inp.wvalid = 0;
+        let (_, e1, _) = self.cycle(Shadow::Idle);
+        let (_, e2, model) = self.cycle(Shadow::Write(addr, value));
+        let e1 = merge(merge(e0, e1), e2);
         let (o, e2, _) = self.cycle(Shadow::Idle);
         let r = if o.bvalid == 1 && o.bresp == OKAY {
             Ok(0)

@@ -16,59 +16,12 @@ use drive::pl::top::{Mode, Top};
 use models::pmsm::metrics;
 use models::pmsm::mpdtc_fixed::FixedParams;
 use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
-use regmap::bus::BusError;
 use regmap::bus::RegisterBus;
 use regmap::{self as rm};
 use rtl_sim::cosim::RtlPl;
-use simpl::gates::GateOutputs;
-use simpl::pl::{Events, Pins, SimPl};
+use rtl_sim::rtl_timed::RtlTimedSimPl;
+use simpl::pl::SimPl;
 use simpl::{PlModel, SimConfig, SimDrive};
-
-/// The simulated PL with the bus timing of the Verilated harness: an
-/// access is the register strobe cycle plus one idle cycle, and the plant
-/// sees the events of both after the access (as `RtlPl` reports them).
-/// Only the harness's bus timing changes, not the model.
-struct TwoCycleBus(SimPl);
-
-impl PlModel for TwoCycleBus {
-    fn cycles(&self) -> u64 {
-        self.0.cycles()
-    }
-    fn gates(&self) -> GateOutputs {
-        self.0.gates()
-    }
-    fn mode(&self) -> u32 {
-        self.0.mode()
-    }
-    fn pins_mut(&mut self) -> &mut Pins {
-        &mut self.0.pins
-    }
-    fn run(&mut self, max: u64, stop: &Events) -> (u64, Events) {
-        self.0.run(max, stop)
-    }
-    fn read(&mut self, addr: usize) -> (Result<u32, BusError>, Events) {
-        let (r, e1) = self.0.read(addr);
-        let (_, e2) = self.0.run(1, &Events::ALL);
-        (r, merge(e1, e2))
-    }
-    fn write(&mut self, addr: usize, value: u32) -> (Result<(), BusError>, Events) {
-        let (r, e1) = self.0.write(addr, value);
-        let (_, e2) = self.0.run(1, &Events::ALL);
-        (r, merge(e1, e2))
-    }
-    fn work(&self) -> (u64, u64) {
-        (self.0.stepped, self.0.skips)
-    }
-}
-
-fn merge(a: Events, b: Events) -> Events {
-    Events {
-        gates: a.gates | b.gates,
-        adc_convert: a.adc_convert | b.adc_convert,
-        adc_average: a.adc_average | b.adc_average,
-        pwm_period: a.pwm_period | b.pwm_period,
-    }
-}
 
 /// One operating point: PL timing and the controller's model of it.
 #[derive(Clone, Copy)]
@@ -179,7 +132,7 @@ fn compare(r: Rate, name: &str) {
         adc_conversion_cycles: r.conv,
         ..SimConfig::default()
     };
-    let mut model = SimDrive::with_pl(&cfg, TwoCycleBus(SimPl::new(r.conv))).unwrap();
+    let mut model = SimDrive::with_pl(&cfg, RtlTimedSimPl(SimPl::new(r.conv))).unwrap();
     let rust = run(&mut model, r);
     let mut rtl = SimDrive::with_pl(&cfg, RtlPl::new(r.conv)).unwrap();
     let ver = run(&mut rtl, r);

@@ -181,7 +181,7 @@ fn stream_writes(
 }
 
 #[test]
-fn back_to_back_writes_one_per_cycle() {
+fn back_to_back_writes_one_per_three_cycles() {
     let mut sim = PlTopSim::new();
     let duties = [
         axi_addr(&regmap::PWM, &regmap::DUTY_A),
@@ -192,8 +192,9 @@ fn back_to_back_writes_one_per_cycle() {
     let items: Vec<(u16, u32)> = (0..32).map(|i| (duties[i % 4], 100 + i as u32)).collect();
     let (cycles, n) = stream_writes(&mut sim, &items, |_| true);
     assert_eq!(n, 32);
-    // One write per clock plus the one-cycle response latency.
-    assert!(cycles <= 33, "32 writes took {cycles} cycles");
+    // One write per three clocks (taken, on the register bus from
+    // registers, decoded in the register file) plus the response's cycle.
+    assert!(cycles <= 97, "32 writes took {cycles} cycles");
     for (k, a) in duties.iter().enumerate() {
         assert_eq!(sim.read_ok(*a), 100 + 28 + k as u32);
     }
@@ -254,7 +255,9 @@ fn back_to_back_and_stalled_reads() {
         assert_eq!(got, want, "stall {stall}");
         if !stall {
             assert!(
-                sim.cycles - start <= 17,
+                // one read per two clocks (the register file's two read
+                // stages) plus the response's cycle
+                sim.cycles - start <= 33,
                 "16 reads took {} cycles",
                 sim.cycles - start
             );

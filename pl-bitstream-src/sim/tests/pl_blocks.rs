@@ -209,9 +209,10 @@ fn over_current_trips_above_the_limit_only() {
         }
     }
     // The data-ready pin passes two synchroniser flops, the sample register
-    // loads at the next edge, the gates turn off at the one after: the
-    // first edge that sees the pin high plus three.
-    assert_eq!(trip_at.unwrap() - drdy_at.unwrap(), 3);
+    // loads at the next edge, the registered over-current comparison at the
+    // one after, the gates turn off at the next: the first edge that sees
+    // the pin high plus four.
+    assert_eq!(trip_at.unwrap() - drdy_at.unwrap(), 4);
     assert_eq!(r(&mut sim, &regmap::FAULT, &regmap::FAULT_STATUS), 0b001);
 }
 

@@ -146,9 +146,24 @@ fn every_module_within_8_ns() {
     assert!(over.is_empty(), "{over:#?}");
 }
 
-/// The same for `pl_top` and the MPDCC core's table.
+/// `pl_top`'s paths that end outside the MPDCC core (the line
+/// `scripts/rtl-synth pl_top` writes below its row): at most 8 ns.
 #[test]
-#[ignore = "fails: pl_top (over-current compare to the gate driver, AXI read decode, capture buffer, fault to mpdtc_seq) and mpdcc_core (explorer and common-term paths) exceed 8 ns (docs/rtl.md)"]
+#[ignore = "fails: 8.30 ns from mpdtc_seq's state through the mode's state selection into the gate legs (6 LUT levels), and 8.01 ns in mpdtc_frontend's Park product (docs/rtl.md)"]
+fn pl_top_without_the_mpdcc_core_within_8_ns() {
+    let doc = repo_file("docs/rtl-resources-pl-top.md");
+    let key = "pl_top without mpdcc_core's own paths (end points outside it): ";
+    let l = doc
+        .lines()
+        .find(|l| l.starts_with(key))
+        .expect("the line of the paths outside the MPDCC core");
+    let ns = num(l[key.len()..].split(' ').next().expect("a delay"));
+    assert!(ns > 0.0 && ns <= 8.0, "{l}");
+}
+
+/// The same for the whole `pl_top` and the MPDCC core's table.
+#[test]
+#[ignore = "fails: mpdcc_core's explorer (mpdcc_explorer.v running minimum and stage-1 position sum) exceeds 8 ns, so pl_top's row does too (docs/rtl.md)"]
 fn pl_top_and_mpdcc_within_8_ns() {
     let mut over = rows_over_8_ns("docs/rtl-resources-pl-top.md");
     over.extend(rows_over_8_ns("docs/mpdcc-rtl-table.md"));

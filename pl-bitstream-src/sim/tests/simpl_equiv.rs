@@ -8,10 +8,11 @@
 //! change at the same PL cycles to the same levels. Fails on the first
 //! mismatch and prints the seed (`SIMPL_SEED=<n>` replays one).
 //!
-//! Timing correspondence: an AXI access of the harness takes 2 cycles with
-//! the register-bus strobe in the first; a `SimPl` access is that strobe
-//! cycle, followed here by one idle cycle. The Verilated model leaves reset
-//! at cycle 4; `SimPl` counts from 0 there.
+//! Timing correspondence: an AXI read of the harness takes 3 cycles with
+//! the register-bus strobe in the first, a write 4 with the register file's
+//! decoded write in the third; a `SimPl` access is that cycle, with idle
+//! cycles around it here (as `rtl_sim::rtl_timed`). The Verilated model
+//! leaves reset at cycle 4; `SimPl` counts from 0 there.
 use drive::pl::mpdcc::Mpdcc;
 use models::mpdcc::mpdcc_fixed::{self, Coeffs, Inputs};
 use regmap::bus::{BusError, RegisterBus};
@@ -158,15 +159,18 @@ impl Pair {
         self.rtl.inp.araddr = rel;
         self.rtl.inp.arvalid = 1;
         self.rtl.inp.rready = 1;
+        // AR and the register-bus read in the first cycle, the register
+        // file's second read stage in the next, R in the third.
         let o1 = self.rtl_step();
         assert_eq!(o1.arready, 1);
         self.rtl.inp.arvalid = 0;
+        assert_eq!(self.rtl_step().rvalid, 0);
         let o2 = self.rtl_step();
         assert_eq!(o2.rvalid, 1);
         let (got, ev) = self.sim.read(BASE_ADDR + rel as usize);
         self.last_read = got;
         self.sim_event(&ev);
-        self.sim_idle(1);
+        self.sim_idle(2);
         let want = if o2.rresp == OKAY {
             Ok(o2.rdata)
         } else {
@@ -217,12 +221,18 @@ impl Pair {
         self.rtl.inp.awvalid = 1;
         self.rtl.inp.wvalid = 1;
         self.rtl.inp.bready = 1;
+        // AW and W in the first cycle, the register-bus write in the next,
+        // the register file's decoded write in the third (the simulated
+        // PL's write cycle), B in the fourth.
         let o1 = self.rtl_step();
         assert_eq!((o1.awready, o1.wready), (1, 1));
         self.rtl.inp.awvalid = 0;
         self.rtl.inp.wvalid = 0;
+        assert_eq!(self.rtl_step().bvalid, 0);
+        assert_eq!(self.rtl_step().bvalid, 0);
         let o2 = self.rtl_step();
         assert_eq!(o2.bvalid, 1);
+        self.sim_idle(2);
         let (got, ev) = self.sim.write(BASE_ADDR + rel as usize, v);
         self.sim_event(&ev);
         self.sim_idle(1);
