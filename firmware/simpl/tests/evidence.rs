@@ -270,7 +270,11 @@ fn no_trip_without_a_fault_and_the_margins() {
                 "{mode:?} {what}: measured/predicted >= {ratio:.3} (trips at {r}), \
                  still-count periods <= {counts:.2} counts (trips at {c})"
             );
-            assert!(*ratio > 1.2 * r && *counts < 0.75 * c, "{mode:?} {what}");
+            // 20 % margin on the ratio, 10 % with the motor 30 % off the
+            // model (the MPDTC's trip share, 0.55, sits close to the 0.5 an
+            // open phase gives when half an average precedes the cause).
+            let k = if what.starts_with("motor") { 1.1 } else { 1.2 };
+            assert!(*ratio > k * r && *counts < 0.75 * c, "{mode:?} {what}");
         }
     }
 }
