@@ -243,6 +243,11 @@ impl MpdtcConfig {
     /// Validates and precomputes the observer gains.
     pub fn new(model: MotorParams, params: MpdtcParams) -> Result<Self, ParamError> {
         params.validate(&model)?;
+        Ok(Self::with_checked(model, params))
+    }
+
+    /// The model's and observer's per-axis gains for checked `params`.
+    fn with_checked(model: MotorParams, params: MpdtcParams) -> Self {
         let ts = params.control_period_s;
         let gains = |l: f64| AxisGains {
             a: 1.0 - model.r_s_ohm * ts / l,
@@ -251,12 +256,12 @@ impl MpdtcConfig {
             kint_v_per_a: params.obs_kp_v_per_a * params.obs_ki_per_s * ts,
             limit_v: params.obs_limit_v,
         };
-        Ok(Self {
+        Self {
             model,
             params,
             obs_d: gains(model.l_d_h),
             obs_q: gains(model.l_q_h),
-        })
+        }
     }
 
     /// The motor model alone at period `control_period_s` (no observer, no
@@ -280,19 +285,7 @@ impl MpdtcConfig {
                 });
             }
         }
-        let gains = |l: f64| AxisGains {
-            a: 1.0 - model.r_s_ohm * control_period_s / l,
-            b_a_per_v: control_period_s / l,
-            kp_v_per_a: 0.0,
-            kint_v_per_a: 0.0,
-            limit_v: params.obs_limit_v,
-        };
-        Ok(Self {
-            model,
-            params,
-            obs_d: gains(model.l_d_h),
-            obs_q: gains(model.l_q_h),
-        })
+        Ok(Self::with_checked(model, params))
     }
 
     /// Flux of the torque equation, Wb.
