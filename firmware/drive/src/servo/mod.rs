@@ -73,6 +73,18 @@ pub const OVERRUN_PERIODS: u64 = 2;
 /// the one-period checks with the voltage of the period before that.
 const EVIDENCE_SKIP: u32 = 3;
 
+/// The one-period dead-encoder check decides only on a torque reference
+/// that has stood within this of the step before, N m, for
+/// [`REF_STEADY_STEPS`] steps: a current that follows a moving reference
+/// (a `sweep` near the current loop's bandwidth: most of its amplitude in
+/// a period) carries more `L di/dt` error than the check allows, and the
+/// window check decides there.
+const REF_STEADY_NM: f64 = 0.01;
+/// Steps of a steady reference before the one-period dead-encoder check
+/// decides: the FOC's measurement pairs with the duties of two steps
+/// before, plus the period judged.
+const REF_STEADY_STEPS: u32 = 3;
+
 /// MPDTC alignment, first step: switching state 110 (bits SaSbSc), the
 /// voltage vector at +60 electrical degrees. A rotor at its dead point
 /// (240 degrees) stays there and is 120 degrees from the second step's
@@ -320,6 +332,10 @@ pub struct Servo {
     fast_last: FastVerdict,
     /// The live encoder count at the end of the last step (gates on).
     pos_at_end: Option<u32>,
+    /// The torque reference of the last step, N m, and the steps it has
+    /// stood within [`REF_STEADY_NM`] of the one before.
+    ref_last: f64,
+    ref_steady: u32,
     /// The MPDTC's motor model at the FOC's period (the one-period checks
     /// in FOC).
     foc_model: MpdtcConfig,
@@ -444,6 +460,8 @@ impl Servo {
             fast: FastTier::default(),
             fast_last: FastVerdict::default(),
             pos_at_end: None,
+            ref_last: 0.0,
+            ref_steady: 0,
             foc_model,
             evidence_skip: EVIDENCE_SKIP,
             sensors_ok: false,
@@ -1040,6 +1058,7 @@ impl Servo {
         self.enc_dead.reset();
         self.phase_open.reset();
         self.fast.reset();
+        self.ref_steady = 0;
         self.evidence_skip = EVIDENCE_SKIP;
     }
 
@@ -1323,6 +1342,7 @@ impl Servo {
             self.enc_dead.reset();
             self.phase_open.reset();
             self.fast.reset();
+            self.ref_steady = 0;
             self.evidence_skip = EVIDENCE_SKIP;
         }
         let pl = Fault(&mut *bus).latched()?.0;
@@ -1407,6 +1427,12 @@ impl Servo {
         let v = self
             .fast
             .step(model, now, self.pos_at_end, age, self.cfg.enc_cpr, allow);
+        if libm::fabs(t_ref - self.ref_last) <= REF_STEADY_NM {
+            self.ref_steady = self.ref_steady.saturating_add(1);
+        } else {
+            self.ref_steady = 0;
+        }
+        self.ref_last = t_ref;
         self.fast_last = if skip { FastVerdict::default() } else { v };
         if skip {
             self.evidence_skip -= 1;
@@ -1415,7 +1441,7 @@ impl Servo {
         if v.open.is_some() {
             return Faults::PHASE_OPEN;
         }
-        if v.dead {
+        if v.dead && self.ref_steady >= REF_STEADY_STEPS {
             return Faults::ENCODER_DEAD;
         }
         // Voltage without any current is an open circuit, not back-EMF.
