@@ -320,8 +320,10 @@ async def axil_random_traffic_follows_the_register_table(dut):
         t2 = cocotb.utils.get_sim_time("ns")
         dut._log.info("burst %d: %d writes in %d cycles, %d reads in %d cycles",
                       burst, len(picks), (t1 - t0) // 10, len(picks), (t2 - t1) // 10)
-        # The slave sustains about one transfer per clock.
-        assert (t1 - t0) // 10 <= 2 * len(picks) + 10, (t1 - t0)
+        # The slave sustains one write per 3 clocks (the write is issued
+        # from registers, its address decode registered) and one read per
+        # 2 (the two-stage read mux): docs/rtl.md.
+        assert (t1 - t0) // 10 <= 3 * len(picks) + 10, (t1 - t0)
         assert (t2 - t1) // 10 <= 2 * len(picks) + 10, (t2 - t1)
     # Everything once more at the end.
     for a in sorted(t.regs):
