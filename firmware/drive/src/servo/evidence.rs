@@ -112,23 +112,29 @@ pub fn open_in_one_period(pred: [f64; 3], meas: [f64; 3], fraction: f64) -> Opti
     })
 }
 
-/// The back-EMF over one period of length `ts_s` and the inductive term
+/// The back-EMF over an interval of length `t_s` and the inductive term
 /// `L di/dt` of its voltage equation, V (alpha-beta vectors' magnitudes):
-/// applied voltage `u`, currents `i0` at its start and `i1` at its end
-/// (A), the motor's `r_ohm` and `l_h`.
-pub fn back_emf_one_period(
+/// mean applied voltage `u`, mean current `i_mean`, currents `i0` at its
+/// start and `i1` at its end (A), the motor's `r_ohm` and `l_h`. One
+/// period (`i_mean` the mean of its ends) or a window of them.
+pub fn back_emf(
     u: (f64, f64),
+    i_mean: (f64, f64),
     i0: (f64, f64),
     i1: (f64, f64),
     r_ohm: f64,
     l_h: f64,
-    ts_s: f64,
+    t_s: f64,
 ) -> (f64, f64) {
-    let l = |a: f64, b: f64| l_h * (b - a) / ts_s;
-    let e = |u: f64, a: f64, b: f64| u - r_ohm * 0.5 * (a + b) - l(a, b);
-    let (ea, eb) = (e(u.0, i0.0, i1.0), e(u.1, i0.1, i1.1));
-    let (la, lb) = (l(i0.0, i1.0), l(i0.1, i1.1));
-    (libm::sqrt(ea * ea + eb * eb), libm::sqrt(la * la + lb * lb))
+    let l = |a: f64, b: f64| l_h * (b - a) / t_s;
+    let (ea, eb) = (
+        u.0 - r_ohm * i_mean.0 - l(i0.0, i1.0),
+        u.1 - r_ohm * i_mean.1 - l(i0.1, i1.1),
+    );
+    (
+        libm::hypot(ea, eb),
+        libm::hypot(l(i0.0, i1.0), l(i0.1, i1.1)),
+    )
 }
 
 /// Encoder counts the rotor turns in `ts_s` at a back-EMF of `e_v`
@@ -242,7 +248,8 @@ impl FastTier {
         let mut counts = 0.0;
         if open.is_none() && flowed(&now.i_abc) && !floating {
             let (i0, i1) = (clarke(last.i_abc), clarke(now.i_abc));
-            let (e, l_term) = back_emf_one_period(u, i0, i1, mo.r_s_ohm, mo.l_d_h, ts);
+            let mean = (0.5 * (i0.0 + i1.0), 0.5 * (i0.1 + i1.1));
+            let (e, l_term) = back_emf(u, mean, i0, i1, mo.r_s_ohm, mo.l_d_h, ts);
             // Less what a model off by `MODEL_TOL` could put in it (the
             // inductive term also carries the measurement's timing).
             let ri = mo.r_s_ohm * 0.5 * libm::hypot(i0.0 + i1.0, i0.1 + i1.1);
@@ -352,15 +359,13 @@ impl EncoderDead {
             return false;
         }
         let n = f64::from(self.n);
-        let t = n * ts_s;
-        let e = |su: f64, si: f64, i1: f64, i0: f64| su / n - r_ohm * si / n - l_h * (i1 - i0) / t;
-        let ea = e(self.sum_u.0, self.sum_i.0, i.0, self.i_start.0);
-        let eb = e(self.sum_u.1, self.sum_i.1, i.1, self.i_start.1);
+        let u_mean = (self.sum_u.0 / n, self.sum_u.1 / n);
+        let i_mean = (self.sum_i.0 / n, self.sum_i.1 / n);
+        let (e, li) = back_emf(u_mean, i_mean, self.i_start, i, r_ohm, l_h, n * ts_s);
         // What a model off by `MODEL_TOL` could put in the estimate.
-        let ri = r_ohm * libm::hypot(self.sum_i.0, self.sum_i.1) / n;
-        let li = l_h * libm::hypot(i.0 - self.i_start.0, i.1 - self.i_start.1) / t;
+        let ri = r_ohm * libm::hypot(i_mean.0, i_mean.1);
         self.restart(i);
-        libm::sqrt(ea * ea + eb * eb) > EMF_MIN_V + MODEL_TOL * ri + INDUCTIVE_TOL * li
+        e > EMF_MIN_V + MODEL_TOL * ri + INDUCTIVE_TOL * li
     }
 
     fn restart(&mut self, i: (f64, f64)) {
@@ -546,7 +551,7 @@ mod tests {
     fn one_period_back_emf_and_its_counts() {
         let (r, l) = (0.555, 0.64e-3);
         let u = (0.0, r * 1.5 + l / TS + 3.0);
-        let (e, li) = back_emf_one_period(u, (0.0, 1.0), (0.0, 2.0), r, l, TS);
+        let (e, li) = back_emf(u, (0.0, 1.5), (0.0, 1.0), (0.0, 2.0), r, l, TS);
         assert!(
             (e - 3.0).abs() < 1e-9 && (li - l / TS).abs() < 1e-9,
             "{e} {li}"
