@@ -33,6 +33,12 @@ const DOC_TOLERANCE: i64 = 4;
 /// accesses take a varying number of PL cycles (`POSITION_LIMIT` in FOC
 /// measured 6105 and 6113).
 const RTL_DOC_TOLERANCE: i64 = 64;
+/// The same for `OVERCURRENT` on the co-simulated `pl_top`: its cause is
+/// the write of `OC_LIMIT`, and the trip waits for the next raw ADC sample.
+/// The bridge's varying delay puts that write anywhere in the raw sampling
+/// interval, so the cell varies by up to one `ADC_PERIOD` (391 cycles at
+/// reset; measured 141 and 69 in FOC, 88 and 77 in MPDTC).
+const RTL_OC_DOC_TOLERANCE: i64 = 391;
 
 struct Case {
     fault: &'static str,
@@ -415,23 +421,30 @@ fn every_fault_turns_the_gates_off_within_its_bound_on_both_pls() {
     assert!(
         same_table(committed, &t),
         "docs/fault-matrix.md differs from the measured table (target/fault-matrix.md) \
-         by more than {DOC_TOLERANCE} cycles in a cell or in its text; \
+         in its text or in a cell by more than its tolerance ({DOC_TOLERANCE} cycles; \
+         co-simulated: {RTL_DOC_TOLERANCE}, {RTL_OC_DOC_TOLERANCE} for OVERCURRENT); \
          FAULT_MATRIX_WRITE=1 rewrites it\n{committed}\n{t}"
     );
 }
 
 /// The two tables have the same rows and cells, the simulated PL's cells
 /// within `DOC_TOLERANCE`, the co-simulated `pl_top`'s within
-/// `RTL_DOC_TOLERANCE` (the 6th and 7th of the `|`-separated fields).
+/// `RTL_DOC_TOLERANCE` (the 6th and 7th of the `|`-separated fields), or
+/// `RTL_OC_DOC_TOLERANCE` in the `OVERCURRENT` row.
 fn same_table(a: &str, b: &str) -> bool {
     let (la, lb): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
     la.len() == lb.len()
         && la.iter().zip(&lb).all(|(x, y)| {
             let (fx, fy): (Vec<&str>, Vec<&str>) = (x.split('|').collect(), y.split('|').collect());
+            let rtl_tol = if x.starts_with("| `OVERCURRENT` |") {
+                RTL_OC_DOC_TOLERANCE
+            } else {
+                RTL_DOC_TOLERANCE
+            };
             fx.len() == fy.len()
                 && fx.iter().zip(&fy).enumerate().all(|(i, (p, q))| {
                     let tol = if i == 6 || i == 7 {
-                        RTL_DOC_TOLERANCE
+                        rtl_tol
                     } else {
                         DOC_TOLERANCE
                     };
