@@ -260,9 +260,32 @@ module pl_top #(
     wire [15:0] boundary_age;
     wire seq_run = sel_state && gate_en && !mp_manual && !mp_clr && !fault_any && !trip;
 
+    // Simulation only (rtl-sim's Verilated pl_top defines SIM_REGS_CLOCK_GATE):
+    // the register file is clocked only when one of its registers can change,
+    // so Verilator skips its write decode and 126 write merges at the other
+    // edges (about half of the model's evaluation time, docs/speed.md). Its
+    // registers change only in reset, at a write strobe (the decode stage),
+    // the edge after it (the registered write; rg_wr_q: a strobe in the
+    // previous cycle), at a read strobe (the read stage, ERR.BAD_ADDR) and
+    // when a fault clears a set GATE_CTRL; the write-data stage it also
+    // loads then holds the bus's value from one write to the next. So the
+    // outputs are the same edge for edge. The enable is sampled on the
+    // falling edge (the harness applies a cycle's inputs with the clock low),
+    // stable across the rising one.
+`ifdef SIM_REGS_CLOCK_GATE
+    reg  rg_ce_q = 1'b1, rg_wr_q = 1'b0;
+    always @(negedge clk_i) begin
+        rg_wr_q <= wr;
+        rg_ce_q <= rst || wr || rg_wr_q || rd || (fault_any && gate_en);
+    end
+    wire rg_clk = clk_i && rg_ce_q;
+`else
+    wire rg_clk = clk_i;
+`endif
+
     // The generated register file: one port per field (docs/register-map.md).
     pl_regs u_regs (
-        .clk_i                      (clk_i),
+        .clk_i                      (rg_clk),
         .rst_i                      (rst),
         .wr_i                       (wr),
         .wr_addr_i                  (wr_addr),
@@ -851,7 +874,6 @@ module pl_top #(
     // done cycle; DONE and the counters change with BUSY's fall.
     always @(posedge clk_i) begin
         if (rst) begin
-            mc_snap_q <= {MC_W{1'b0}};
             mc_go_q <= 1'b0;
             mc_busy_q <= 1'b0;
             mc_done_q <= 1'b0;
@@ -860,7 +882,6 @@ module pl_top #(
         end else begin
             mc_go_q <= 1'b0;
             if (mc_start_we && !mc_busy_q) begin
-                mc_snap_q <= mc_in;
                 mc_go_q <= 1'b1;
                 mc_busy_q <= 1'b1;
                 mc_done_q <= 1'b0;
@@ -874,7 +895,8 @@ module pl_top #(
     end
 
     // Simulation only (rtl-sim's Verilated pl_top defines SIM_MPDCC_CLOCK_GATE):
-    // the core is clocked only in reset and while MC_BUSY, so Verilator skips
+    // the core is clocked only in reset, at an MPDCC_START write and while
+    // MC_BUSY, so Verilator skips
     // its logic between decisions. Idle, the core only clears done_o (one
     // edge after done, still inside MC_BUSY) and shifts pipeline data that no
     // valid bit marks (its formal properties: nothing in flight when idle),
@@ -882,11 +904,19 @@ module pl_top #(
     // falling edge, stable across the rising one.
 `ifdef SIM_MPDCC_CLOCK_GATE
     reg  mc_ce_q = 1'b1;
-    always @(negedge clk_i) mc_ce_q <= rst || mc_busy_q;
+    always @(negedge clk_i) mc_ce_q <= rst || mc_busy_q || mc_start_we;
     wire mc_clk = clk_i && mc_ce_q;
 `else
     wire mc_clk = clk_i;
 `endif
+    // The snapshot (taken at the start's edge): in the core's clock domain,
+    // so that the simulation settles the logic it feeds only while the core
+    // can run (the gate above also opens at an MPDCC_START write, where the
+    // idle core changes nothing).
+    always @(posedge mc_clk) begin
+        if (rst) mc_snap_q <= {MC_W{1'b0}};
+        else if (mc_start_we && !mc_busy_q) mc_snap_q <= mc_in;
+    end
     mpdcc_core #(
         .N(MPDCC_N),
         .II(MPDCC_II)
