@@ -727,6 +727,14 @@ impl SimPl {
         self.skips += 1;
     }
 
+    /// Cycles from now in which nothing but counters change with the pins
+    /// as they are: no event, the gates as now ([`Self::run`] skips them in
+    /// closed form). A lock-step user (the co-simulation's shadow model) may
+    /// run them later in one `run`, as long as the pins stay.
+    pub fn quiet_cycles(&self) -> u64 {
+        self.quiet()
+    }
+
     /// Runs up to `max` cycles without bus accesses; returns after the first
     /// cycle whose events hit `stop`, or after `max` cycles: the cycles run
     /// and the events of the stepped cycles (merged).
