@@ -435,8 +435,11 @@ pub fn on_control() {
         let stalled = s.stalled();
         // Co-simulation `debug fault overrun`: steps left out.
         let skip = boundary && matches!(s.bus, Backend::Cosim(_)) && s.skip_boundaries > 0;
-        if let (true, Backend::Cosim(c)) = (boundary && s.overrun_cause_due, &s.bus) {
-            s.inject_cycle = c.last.pl_cycles - u64::from(c.last.since_boundary);
+        if let (true, Backend::Cosim(c)) = (boundary && s.overrun_cause_due, &mut s.bus) {
+            // The acknowledge may have been a posted write.
+            if let Ok(l) = c.last_exact() {
+                s.inject_cycle = l.pl_cycles - u64::from(l.since_boundary);
+            }
             s.overrun_cause_due = false;
         }
         if stalled {

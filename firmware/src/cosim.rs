@@ -11,14 +11,22 @@ use crate::ps::timer;
 use crate::semihosting::{self, HostFile};
 use models::pmsm::sim_motor::{SimMotor, SimSetError, SIM_PARAMS};
 use regmap::bus::{BusError, RegisterBus};
-use simpl::cosim::{Op, Reply, Request, Status, REPLY_LEN};
+use regmap::Access;
+use simpl::cosim::{cycle_after_write, Op, Reply, Request, Status, REPLY_LEN};
 
 /// The bridge to `pl-cosim`.
 pub struct Cosim {
     req: HostFile,
     rep: HostFile,
-    /// The last reply (PL time, boundaries).
+    /// The last reply (PL time, boundaries). After a posted write only
+    /// `pl_cycles` is brought up to date (exactly: `cycle_after_write`);
+    /// [`Self::last_exact`] asks for the rest.
     pub last: Reply,
+    /// `last` is from before a posted write.
+    stale: bool,
+    /// (guest time, PL cycle) of the first request, as the host maps time
+    /// (`None` before it: writes wait then).
+    origin: Option<(u64, u64)>,
     /// The simulated motor's parameters as the host was told them (it
     /// checks them with the same code).
     pub motor: SimMotor,
@@ -70,17 +78,32 @@ impl Cosim {
                 pl_cycles: 0,
             },
             motor: SimMotor::default(),
+            stale: false,
+            origin: None,
         };
-        c.sync().ok()?;
+        // The first request: the host's time origin, where the PL is.
+        let guest = timer::global_count();
+        let first = c.transact_at(Op::Sync, 0, 0, guest).ok()?;
+        c.origin = Some((guest, first.pl_cycles));
         Some(c)
     }
 
     fn transact(&mut self, op: Op, addr: usize, data: u32) -> Result<Reply, BusError> {
+        self.transact_at(op, addr, data, timer::global_count())
+    }
+
+    fn transact_at(
+        &mut self,
+        op: Op,
+        addr: usize,
+        data: u32,
+        guest: u64,
+    ) -> Result<Reply, BusError> {
         let r = Request {
             op,
             addr: addr as u32,
             data,
-            guest: timer::global_count(),
+            guest,
         };
         let mut b = [0u8; REPLY_LEN];
         if !(self.req.write_all(&r.encode()) && self.rep.read_exact(&mut b)) {
@@ -89,6 +112,7 @@ impl Cosim {
         }
         let reply = Reply::decode(&b).map_err(|_| BusError::Absent)?;
         self.last = reply;
+        self.stale = false;
         match reply.status {
             Status::Ok => Ok(reply),
             Status::SlaveError | Status::BadRequest => Err(BusError::SlaveError),
@@ -145,6 +169,40 @@ impl Cosim {
     pub fn sync(&mut self) -> Result<Reply, BusError> {
         self.transact(Op::Sync, 0, 0)
     }
+
+    /// The reply to the last access, also after a posted write (then the
+    /// host is asked; the PL does not run).
+    pub fn last_exact(&mut self) -> Result<Reply, BusError> {
+        if self.stale {
+            self.transact(Op::State, 0, 0)?;
+        }
+        Ok(self.last)
+    }
+
+    /// A write without waiting for the host (`Op::PostedWrite`), where its
+    /// outcome is known: a writable register of the map answers OKAY to any
+    /// value (a rejected value sets ERR.BAD_VALUE, as on the bus), in
+    /// `WRITE_CYCLES` from its stamp. `None`: not postable (waits).
+    fn post(&mut self, addr: usize, value: u32) -> Option<Result<(), BusError>> {
+        let origin = self.origin?;
+        let (_, reg) = regmap::lookup(addr)?;
+        if matches!(reg.access, Access::Ro) {
+            return None;
+        }
+        let guest = timer::global_count();
+        let r = Request {
+            op: Op::PostedWrite,
+            addr: addr as u32,
+            data: value,
+            guest,
+        };
+        if !self.req.write_all(&r.encode()) {
+            return Some(Err(BusError::Absent));
+        }
+        self.last.pl_cycles = cycle_after_write(origin, guest, self.last.pl_cycles);
+        self.stale = true;
+        Some(Ok(()))
+    }
 }
 
 impl RegisterBus for Cosim {
@@ -152,6 +210,9 @@ impl RegisterBus for Cosim {
         Ok(self.transact(Op::Read, addr, 0)?.data)
     }
     fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
+        if let Some(r) = self.post(addr, value) {
+            return r;
+        }
         self.transact(Op::Write, addr, value).map(|_| ())
     }
 }

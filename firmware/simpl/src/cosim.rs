@@ -17,6 +17,22 @@
 
 /// Bytes of a request.
 pub const REQUEST_LEN: usize = 24;
+
+/// PL cycles of a register write, AW and W to B (`rtl-sim`'s `RtlPl`).
+pub const WRITE_CYCLES: u64 = 4;
+
+/// The PL cycle a request stamped `guest` is served at: `origin` is
+/// (guest time, PL cycle) of the first request, `now` the PL's present
+/// cycle (the PL never runs backwards).
+pub fn serve_cycle(origin: (u64, u64), guest: u64, now: u64) -> u64 {
+    (origin.1 + guest.saturating_sub(origin.0)).max(now)
+}
+
+/// The PL cycle after a write stamped `guest` that finds the PL at `now`
+/// (what the guest of a posted write knows without a reply).
+pub fn cycle_after_write(origin: (u64, u64), guest: u64, now: u64) -> u64 {
+    serve_cycle(origin, guest, now) + WRITE_CYCLES
+}
 /// Bytes of a reply.
 pub const REPLY_LEN: usize = 24;
 
@@ -40,6 +56,17 @@ pub enum Op {
     /// the PL cycles since they went off (`u32::MAX`: one is on, or longer
     /// ago); the PL does not run.
     GatesOff,
+    /// A write as [`Op::Write`] (the same PL cycles), which the guest does
+    /// not wait for and the host does not answer: only to a writable
+    /// register of the map, where the PL's response is OKAY whatever the
+    /// value, so the guest knows the outcome, and the PL cycle after it
+    /// ([`cycle_after_write`]). The guest runs on while the host runs the
+    /// PL; the next request that waits sees every posted write done.
+    PostedWrite,
+    /// The reply to the last access again (PL cycle, boundaries since the
+    /// last sync, cycles since the last boundary); the PL does not run.
+    /// After a posted write: what a waiting write's reply would have said.
+    State,
 }
 
 impl Op {
@@ -51,6 +78,8 @@ impl Op {
             Op::SimSet => 4,
             Op::SimReset => 5,
             Op::GatesOff => 6,
+            Op::PostedWrite => 7,
+            Op::State => 8,
         }
     }
 }
@@ -97,6 +126,8 @@ impl Request {
             4 => Op::SimSet,
             5 => Op::SimReset,
             6 => Op::GatesOff,
+            7 => Op::PostedWrite,
+            8 => Op::State,
             x => return Err(WireError::BadOp(x)),
         };
         Ok(Self {
@@ -183,6 +214,15 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_write_is_served_at_its_stamp_never_backwards() {
+        // Origin: guest 1,000 at PL cycle 50. Stamp 1,100 is cycle 150.
+        assert_eq!(serve_cycle((1000, 50), 1100, 120), 150);
+        assert_eq!(cycle_after_write((1000, 50), 1100, 120), 154);
+        // The PL is already past the stamp: served at once.
+        assert_eq!(cycle_after_write((1000, 50), 1100, 160), 164);
+    }
+
+    #[test]
     fn records_round_trip_and_have_the_documented_layout() {
         let r = Request {
             op: Op::Write,
@@ -216,6 +256,8 @@ mod tests {
         let mut b = [0u8; REQUEST_LEN];
         b[0] = 9;
         assert_eq!(Request::decode(&b), Err(WireError::BadOp(9)));
+        b[0] = 7;
+        assert_eq!(Request::decode(&b).map(|r| r.op), Ok(Op::PostedWrite));
         let mut b = [0u8; REPLY_LEN];
         b[0] = 3;
         assert_eq!(Reply::decode(&b), Err(WireError::BadStatus(3)));

@@ -19,7 +19,7 @@ use crate::pl_top::{PlTopSim, OKAY};
 use regmap::bus::BusError;
 use regmap::BASE_ADDR;
 use simpl::adc::Converter;
-use simpl::cosim::{Op, Reply, Request, Status, REQUEST_LEN};
+use simpl::cosim::{cycle_after_write, serve_cycle, Op, Reply, Request, Status, REQUEST_LEN};
 use simpl::gates::GateOutputs;
 use simpl::pl::{Events, Pins, SimPl};
 use simpl::{PlModel, SimConfig, SimDrive};
@@ -302,6 +302,11 @@ pub struct Bridge {
     last_boundary: Option<u64>,
     /// Requests served.
     pub requests: u64,
+    /// Posted writes among them (no reply).
+    pub posted: u64,
+    /// Posted writes that did not end as the guest assumed (OKAY, at
+    /// `cycle_after_write`): 0 unless the guest posted where it must wait.
+    pub posted_errors: u64,
     /// Control-period boundaries seen in all.
     pub periods: u64,
 }
@@ -318,6 +323,8 @@ impl Bridge {
             boundaries: 0,
             last_boundary: None,
             requests: 0,
+            posted: 0,
+            posted_errors: 0,
             periods: 0,
         }
     }
@@ -349,13 +356,27 @@ impl Bridge {
         }
     }
 
-    /// Serves one request record.
-    pub fn handle(&mut self, raw: &[u8; REQUEST_LEN]) -> Reply {
+    /// Serves one request record; the reply to send (`None`: a posted
+    /// write, which gets none).
+    pub fn handle(&mut self, raw: &[u8; REQUEST_LEN]) -> Option<Reply> {
         self.requests += 1;
         let Ok(req) = Request::decode(raw) else {
-            return self.reply(Status::BadRequest, 0);
+            return Some(self.reply(Status::BadRequest, 0));
         };
-        self.serve(&req)
+        if req.op != Op::PostedWrite {
+            return Some(self.serve(&req));
+        }
+        self.posted += 1;
+        let now = self.drive.pl_cycles();
+        let origin = *self.origin.get_or_insert((req.guest, now));
+        let r = self.serve(&Request {
+            op: Op::Write,
+            ..req
+        });
+        if r.status != Status::Ok || r.pl_cycles != cycle_after_write(origin, req.guest, now) {
+            self.posted_errors += 1;
+        }
+        None
     }
 
     /// Serves one request.
@@ -385,12 +406,12 @@ impl Bridge {
                     Err(_) => self.reply(Status::SlaveError, 0),
                 };
             }
+            Op::State => return self.reply(Status::Ok, 0),
             _ => {}
         }
         let now = self.drive.pl_cycles();
-        let (g0, c0) = *self.origin.get_or_insert((req.guest, now));
-        let target = c0 + req.guest.saturating_sub(g0);
-        self.run_to(target);
+        let origin = *self.origin.get_or_insert((req.guest, now));
+        self.run_to(serve_cycle(origin, req.guest, now));
         let addr = req.addr as usize;
         match req.op {
             Op::Read => match regmap::bus::RegisterBus::read(&mut self.drive, addr) {
@@ -401,7 +422,9 @@ impl Bridge {
                 Ok(()) => self.reply(Status::Ok, 0),
                 Err(_) => self.reply(Status::SlaveError, 0),
             },
-            Op::SimSet | Op::SimReset | Op::GatesOff => self.reply(Status::BadRequest, 0),
+            Op::SimSet | Op::SimReset | Op::GatesOff | Op::State | Op::PostedWrite => {
+                self.reply(Status::BadRequest, 0)
+            }
             Op::Sync => {
                 // `run_to` above also collected the boundaries crossed
                 // during the accesses since the last sync.

@@ -6,8 +6,10 @@
 //! exit it prints one JSON line of statistics (to FILE, or stderr): requests,
 //! PL cycles, control periods, wall seconds, control periods per wall
 //! second, this process's CPU seconds (a loaded machine inflates the wall
-//! time, not these) and shadow-model mismatches. Exit status 2 on bad arguments or
-//! when the FIFOs cannot be made, 1 on a mismatch.
+//! time, not these), posted writes (answered with no reply), those that did
+//! not end as the guest assumed, and shadow-model mismatches. Exit status 2
+//! on bad arguments or when the FIFOs cannot be made, 1 on a mismatch or a
+//! posted write gone wrong.
 //!
 //! `--record FILE` also writes every request record to FILE as received;
 //! `pl-cosim --replay FILE [--stats FILE]` serves such a file's requests
@@ -78,7 +80,7 @@ fn main() -> ExitCode {
         for rec in raw.chunks_exact(simpl::cosim::REQUEST_LEN) {
             let mut buf = [0u8; simpl::cosim::REQUEST_LEN];
             buf.copy_from_slice(rec);
-            for b in bridge.handle(&buf).encode() {
+            for b in bridge.handle(&buf).map(|r| r.encode()).unwrap_or_default() {
                 digest = (digest ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
             }
         }
@@ -129,9 +131,11 @@ fn main() -> ExitCode {
         if let Some(w) = &mut record {
             let _ = w.write_all(&buf);
         }
-        let r = bridge.handle(&buf);
-        if rep.write_all(&r.encode()).is_err() {
-            break;
+        // A posted write gets no reply.
+        if let Some(r) = bridge.handle(&buf) {
+            if rep.write_all(&r.encode()).is_err() {
+                break;
+            }
         }
     }
     if let Some(w) = &mut record {
@@ -150,7 +154,8 @@ fn finish(bridge: &Bridge, t0: Instant, c0: f64, stats: Option<PathBuf>) -> Exit
     let line = format!(
         "{{\"requests\":{},\"pl_cycles\":{},\"control_periods\":{},\"wall_s\":{:.3},\
          \"control_periods_per_wall_s\":{:.1},\"pl_cycles_per_wall_s\":{:.0},\"cpu_s\":{:.3},\
-         \"pl_cycles_per_cpu_s\":{:.0},\"mismatches\":{},\"first_mismatch\":{:?}}}",
+         \"pl_cycles_per_cpu_s\":{:.0},\"posted\":{},\"posted_errors\":{},\"mismatches\":{},\
+         \"first_mismatch\":{:?}}}",
         bridge.requests,
         bridge.drive().pl_cycles(),
         bridge.periods,
@@ -159,6 +164,8 @@ fn finish(bridge: &Bridge, t0: Instant, c0: f64, stats: Option<PathBuf>) -> Exit
         bridge.drive().pl_cycles() as f64 / wall.max(1e-9),
         cpu,
         bridge.drive().pl_cycles() as f64 / cpu.max(1e-9),
+        bridge.posted,
+        bridge.posted_errors,
         pl.mismatches(),
         pl.first_mismatch().unwrap_or("")
     );
@@ -170,7 +177,7 @@ fn finish(bridge: &Bridge, t0: Instant, c0: f64, stats: Option<PathBuf>) -> Exit
         }
         None => eprintln!("{line}"),
     }
-    if pl.mismatches() > 0 {
+    if pl.mismatches() > 0 || bridge.posted_errors > 0 {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS
