@@ -36,6 +36,31 @@ pub struct Cosim {
 /// (`simpl::SimConfig`'s default).
 const SIM_CPR: u32 = 4096;
 
+/// The map's writable registers (RW and W1C), one bit per 32-bit word of
+/// the GP0 window: the posted-write check in a few instructions (the
+/// guest's time is the PL's, so a search through the map would lengthen
+/// every register write's critical section).
+const WRITABLE: [u32; regmap::BLOCKS.len() * regmap::BLOCK_SIZE / 128] = writable_words();
+
+const fn writable_words() -> [u32; regmap::BLOCKS.len() * regmap::BLOCK_SIZE / 128] {
+    let mut w = [0u32; regmap::BLOCKS.len() * regmap::BLOCK_SIZE / 128];
+    let mut b = 0;
+    while b < regmap::BLOCKS.len() {
+        let blk = regmap::BLOCKS[b];
+        let mut r = 0;
+        while r < blk.registers.len() {
+            let reg = blk.registers[r];
+            if !matches!(reg.access, Access::Ro) {
+                let word = (blk.addr(reg) - regmap::BASE_ADDR) / 4;
+                w[word / 32] |= 1 << (word % 32);
+            }
+            r += 1;
+        }
+        b += 1;
+    }
+    w
+}
+
 /// Longest `<dir>` accepted, bytes.
 const DIR_MAX: usize = 200;
 
@@ -185,8 +210,8 @@ impl Cosim {
     /// `WRITE_CYCLES` from its stamp. `None`: not postable (waits).
     fn post(&mut self, addr: usize, value: u32) -> Option<Result<(), BusError>> {
         let origin = self.origin?;
-        let (_, reg) = regmap::lookup(addr)?;
-        if matches!(reg.access, Access::Ro) {
+        let word = addr.checked_sub(regmap::BASE_ADDR)? / 4;
+        if addr % 4 != 0 || WRITABLE.get(word / 32)? & (1 << (word % 32)) == 0 {
             return None;
         }
         let guest = timer::global_count();

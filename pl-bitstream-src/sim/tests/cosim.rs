@@ -224,3 +224,61 @@ fn rtl_pl_counts_a_read_as_three_cycles() {
     let mut sim = SimDrive::with_pl(&SimConfig::default(), pl).unwrap();
     assert_eq!(sim.read(rm::TOP.addr(&rm::ID)), Ok(rm::ID_VALUE));
 }
+
+#[test]
+fn rtl_pl_counts_a_write_as_write_cycles() {
+    let mut pl = RtlPl::new(50);
+    let c0 = pl.cycles();
+    let (r, _) = pl.write(rm::TOP.addr(&rm::SCRATCH), 7);
+    assert_eq!(r, Ok(()));
+    assert_eq!(pl.cycles() - c0, simpl::cosim::WRITE_CYCLES);
+}
+
+/// A posted write is served like a waiting one (same register, same PL
+/// cycles) but answered with nothing; `Op::State` then gives the reply a
+/// waiting write would have had, at the cycle the guest computes; a posted
+/// write the PL refuses (read-only register) is counted.
+#[test]
+fn bridge_serves_posted_writes_without_a_reply() {
+    let scratch = rm::TOP.addr(&rm::SCRATCH);
+    let g0 = 1_000;
+    let mut waits = Bridge::new();
+    let mut posts = Bridge::new();
+    let first = waits.handle(&req(Op::Sync, 0, 0, g0).encode()).unwrap();
+    assert_eq!(posts.handle(&req(Op::Sync, 0, 0, g0).encode()), Some(first));
+    let origin = (g0, first.pl_cycles);
+    let w = waits
+        .handle(&req(Op::Write, scratch, 0xABCD, g0 + 500).encode())
+        .unwrap();
+    assert_eq!(
+        posts.handle(&req(Op::PostedWrite, scratch, 0xABCD, g0 + 500).encode()),
+        None
+    );
+    let s = posts
+        .handle(&req(Op::State, 0, 0, g0 + 900).encode())
+        .unwrap();
+    assert_eq!(
+        s, w,
+        "the state after the posted write is the waiting write's reply"
+    );
+    assert_eq!(
+        s.pl_cycles,
+        simpl::cosim::cycle_after_write(origin, g0 + 500, first.pl_cycles)
+    );
+    // Two posted writes closer than a write's cycles: the second is served
+    // when the first ends, as a waiting one would be.
+    posts.handle(&req(Op::PostedWrite, scratch, 1, g0 + 1000).encode());
+    posts.handle(&req(Op::PostedWrite, scratch, 2, g0 + 1001).encode());
+    let s = posts
+        .handle(&req(Op::State, 0, 0, g0 + 2000).encode())
+        .unwrap();
+    assert_eq!(s.pl_cycles, first.pl_cycles + 1000 + 2 * 4);
+    let r = posts
+        .handle(&req(Op::Read, scratch, 0, g0 + 2000).encode())
+        .unwrap();
+    assert_eq!((r.status, r.data), (Status::Ok, 2));
+    assert_eq!((posts.posted, posts.posted_errors), (3, 0));
+    posts.handle(&req(Op::PostedWrite, rm::TOP.addr(&rm::ID), 1, g0 + 3000).encode());
+    assert_eq!((posts.posted, posts.posted_errors), (4, 1));
+    assert_eq!(posts.drive().pl().mismatches(), 0);
+}
