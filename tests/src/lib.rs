@@ -2,8 +2,8 @@
 //! timeout: the session kills QEMU when dropped) and talks to its console
 //! through `drivectl`'s link, the same code users run.
 use drivectl::link::{default_elf, Final, Qemu, Reply, Session};
-use std::path::PathBuf;
-use std::time::Duration;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, SystemTime};
 
 /// Generous: QEMU boots the firmware in well under a second.
 pub const TIMEOUT: Duration = Duration::from_secs(20);
@@ -16,7 +16,83 @@ pub fn elf() -> PathBuf {
         "{} missing: build it first with `cargo fw-build` (scripts/test does)",
         e.display()
     );
+    // cargo's dep-info beside the ELF lists every file it was built from
+    // (sources, memory.x, the board file; git's HEAD and index, for the
+    // version string, left out: `git status` alone rewrites the index).
+    let deps = std::fs::read_to_string(e.with_extension("d")).unwrap_or_default();
+    let deps = deps.split_once(": ").map_or("", |(_, d)| d);
+    assert_fresh(
+        &e,
+        deps.split_whitespace()
+            .filter(|d| !d.contains("/.git/"))
+            .map(PathBuf::from),
+        "cargo fw-build",
+    );
     e
+}
+
+/// Workspace root.
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// Files under `dir` (recursively) whose name ends in one of `ext`.
+fn files(dir: &Path, ext: &[&str], out: &mut Vec<PathBuf>) {
+    for e in std::fs::read_dir(dir).into_iter().flatten().flatten() {
+        let p = e.path();
+        if p.is_dir() {
+            files(&p, ext, out);
+        } else if ext.iter().any(|x| p.to_string_lossy().ends_with(x)) {
+            out.push(p);
+        }
+    }
+}
+
+/// Fails (with the command that rebuilds it) when `artifact` is older than
+/// one of `sources` (those that exist): a test would otherwise run a stale
+/// build (`cargo test -p system-tests` builds neither the firmware nor
+/// `pl-cosim`).
+fn assert_fresh(artifact: &Path, sources: impl Iterator<Item = PathBuf>, rebuild: &str) {
+    let mtime = |p: &Path| std::fs::metadata(p).and_then(|m| m.modified()).ok();
+    let built = mtime(artifact).unwrap_or(SystemTime::UNIX_EPOCH);
+    let newer: Vec<PathBuf> = sources
+        .filter(|s| mtime(s).is_some_and(|t| t > built))
+        .collect();
+    assert!(
+        newer.is_empty(),
+        "{} is older than {} (and {} more source files): rebuild it with `{rebuild}`",
+        artifact.display(),
+        newer
+            .first()
+            .map_or(String::new(), |p| p.display().to_string()),
+        newer.len().saturating_sub(1)
+    );
+}
+
+/// `pl-cosim` (the Verilated `pl_top`, the shadow simulated PL): fails when
+/// it is older than its RTL, its Rust or C++ sources (a stale one once
+/// failed a test far from the cause). `$DRIVE_PL_COSIM` is taken as given.
+fn check_pl_cosim() {
+    if std::env::var_os("DRIVE_PL_COSIM").is_some() {
+        return;
+    }
+    let exe = drivectl::cosim::pl_cosim_exe().expect("pl-cosim");
+    let r = root();
+    let sim = r.join("pl-bitstream-src/sim");
+    let mut src = vec![sim.join("build.rs")];
+    files(&r.join("pl-bitstream-src/rtl"), &[".v", ".vh"], &mut src);
+    files(&sim.join("csrc"), &[".cpp", ".h"], &mut src);
+    files(&sim.join("src"), &[".rs"], &mut src);
+    for c in ["models", "simpl", "regmap"] {
+        files(&r.join("firmware").join(c).join("src"), &[".rs"], &mut src);
+    }
+    // The other binary of the crate is not part of pl-cosim.
+    src.retain(|p| !p.ends_with("src/bin/rtl-check.rs"));
+    assert_fresh(
+        &exe,
+        src.into_iter(),
+        "cargo build -p rtl-sim --bin pl-cosim --profile test",
+    );
 }
 
 /// A booted firmware with its console ready; `defmt_raw` captures UART0.
@@ -34,6 +110,7 @@ pub fn boot() -> Session {
 /// co-simulation bridge (`pl-cosim`, built beside the test binaries by
 /// `cargo test --workspace`, or `$DRIVE_PL_COSIM`).
 pub fn boot_rtl() -> Session {
+    check_pl_cosim();
     let mut q = Qemu::new(elf());
     q.pl_rtl = true;
     Session::spawn_qemu(&q, TIMEOUT).expect("firmware boots to its prompt with the bridge")
