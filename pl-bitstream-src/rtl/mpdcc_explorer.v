@@ -6,7 +6,8 @@
 // II = 2..7: ceil(7 / II) lanes shared by the seven outputs: the node
 // changes of a candidate are held at stage 15 and lane i searches outputs
 // i, i + L, i + 2 L, ... on successive clocks (L lanes); a running minimum
-// collects their l_j. The caller gives an explorer at most one candidate
+// per lane collects its l_j, and the lanes' minima meet where L* is formed
+// (one comparison per clock in each). The caller gives an explorer at most one candidate
 // every II clocks (mpdcc_core's scheduler does). Stage numbers below are
 // those of II = 1; with II > 3 everything from stage 30 on is II - 3
 // stages later.
