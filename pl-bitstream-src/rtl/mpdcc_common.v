@@ -14,6 +14,11 @@
 // f31 one step); mul(a, b) = sat16(rnd(a b, s)), rnd = round half up
 // ((x >>> s) + x[s-1]), as models::mpdcc::fixed::mul.
 //
+// A term that only passes from one stage to a later one is a wire, not a
+// copy register: the inputs are held and the datapath recomputes every
+// cycle, so such a term is final when its source is, never later than the
+// stage list says (the schedule and LATENCY stay upper bounds); saves the
+// flip-flops of 28 copies (about 1,200 FF).
 // Stages (at most one multiplier or one adder between registers; a
 // saturation is a compare and mux on a registered sum; a "product" is a
 // hold register loaded from a shared multiplier, see the schedule):
@@ -284,13 +289,13 @@ module mpdcc_common #(
     mpdcc_pipe #(.W(W)) u3n (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(s2_ea, 1)), .q_o(s3_he));
     mpdcc_pipe #(.W(W)) u3o (.clk_i(clk_i), .rst_i(rst_i), .d_i(s2_ri - s2_hi), .q_o(s3_ib));
     mpdcc_pipe #(.W(W)) u3p (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - s2_hi - s2_ri), .q_o(s3_ic));
-    mpdcc_pipe #(.W(W)) u3q (.clk_i(clk_i), .rst_i(rst_i), .d_i(s2_kw), .q_o(s3_kw));
-    mpdcc_pipe #(.W(W)) u3r (.clk_i(clk_i), .rst_i(rst_i), .d_i(s2_ks), .q_o(s3_ks));
-    mpdcc_pipe #(.W(W)) u3s (.clk_i(clk_i), .rst_i(rst_i), .d_i(s2_na), .q_o(s3_na));
-    mpdcc_pipe #(.W(W)) u3t (.clk_i(clk_i), .rst_i(rst_i), .d_i(s2_nb), .q_o(s3_nb));
-    mpdcc_pipe #(.W(W)) u3u (.clk_i(clk_i), .rst_i(rst_i), .d_i(s2_n1a), .q_o(s3_n1a));
-    mpdcc_pipe #(.W(W)) u3v (.clk_i(clk_i), .rst_i(rst_i), .d_i(s2_n1b), .q_o(s3_n1b));
-    mpdcc_pipe #(.W(W)) u3w (.clk_i(clk_i), .rst_i(rst_i), .d_i(s2_ea), .q_o(s3_ea));
+    assign s3_kw = s2_kw;
+    assign s3_ks = s2_ks;
+    assign s3_na = s2_na;
+    assign s3_nb = s2_nb;
+    assign s3_n1a = s2_n1a;
+    assign s3_n1b = s2_n1b;
+    assign s3_ea = s2_ea;
 
     // ------------------------------------------------------- stage 4
     wire signed [W-1:0] s4_kp, s4_tr, s4_ts, s4_k2, s4_na, s4_nb, s4_ra, s4_rb;
@@ -309,10 +314,10 @@ module mpdcc_common #(
     mpdcc_pipe #(.W(W)) u4k (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - (s3_s1rb <<< 1)), .q_o(s4_r1a));
     mpdcc_pipe #(.W(W)) u4l (.clk_i(clk_i), .rst_i(rst_i), .d_i(s3_s1ra <<< 1), .q_o(s4_r1b));
     mpdcc_pipe #(.W(W)) u4m (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(rnd(s3_pse, 14))), .q_o(s4_re));
-    mpdcc_pipe #(.W(W)) u4n (.clk_i(clk_i), .rst_i(rst_i), .d_i(s3_he), .q_o(s4_he));
-    mpdcc_pipe #(.W(W)) u4o (.clk_i(clk_i), .rst_i(rst_i), .d_i(s3_kw), .q_o(s4_kw));
-    mpdcc_pipe #(.W(W)) u4p (.clk_i(clk_i), .rst_i(rst_i), .d_i(s3_ks), .q_o(s4_ks));
-    mpdcc_pipe #(.W(W)) u4q (.clk_i(clk_i), .rst_i(rst_i), .d_i(s3_ea), .q_o(s4_ea));
+    assign s4_he = s3_he;
+    assign s4_kw = s3_kw;
+    assign s4_ks = s3_ks;
+    assign s4_ea = s3_ea;
     // i_abc = inv_clarke_q(i_ab): [i_a, sat(-h + r), sat(-h - r)]
     mpdcc_pipe #(.W(W)) u4r (.clk_i(clk_i), .rst_i(rst_i), .d_i(ia), .q_o(i_abc[0]));
     mpdcc_pipe #(.W(W)) u4s (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(s3_ib)), .q_o(i_abc[1]));
@@ -335,7 +340,7 @@ module mpdcc_common #(
     mpdcc_pipe #(.W(W)) u5l (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(rnd(s4_nb, 15))), .q_o(s5_nqb));
     mpdcc_pipe #(.W(W)) u5m (.clk_i(clk_i), .rst_i(rst_i), .d_i(s4_re - s4_he), .q_o(s5_eb));
     mpdcc_pipe #(.W(W)) u5n (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - s4_he - s4_re), .q_o(s5_ec));
-    mpdcc_pipe #(.W(W)) u5o (.clk_i(clk_i), .rst_i(rst_i), .d_i(s4_ea), .q_o(s5_ea));
+    assign s5_ea = s4_ea;
     // P_n, P_ph (f27), straight from the hold registers
     generate
         for (g = 0; g < 3; g = g + 1) begin : g_p
@@ -365,10 +370,10 @@ module mpdcc_common #(
     mpdcc_pipe #(.W(W)) u6d (.clk_i(clk_i), .rst_i(rst_i), .d_i(s5_kppb + (s5_k2rb <<< 1)), .q_o(s6_corb));
     assign s6_pda = sx32(prod_w[32 * (40) +: 32]);
     assign s6_pdb = sx32(prod_w[32 * (41) +: 32]);
-    mpdcc_pipe #(.W(W)) u6g (.clk_i(clk_i), .rst_i(rst_i), .d_i(s5_rta), .q_o(s6_rta));
-    mpdcc_pipe #(.W(W)) u6h (.clk_i(clk_i), .rst_i(rst_i), .d_i(s5_rtb), .q_o(s6_rtb));
-    mpdcc_pipe #(.W(W)) u6i (.clk_i(clk_i), .rst_i(rst_i), .d_i(s5_r1a), .q_o(s6_r1a));
-    mpdcc_pipe #(.W(W)) u6j (.clk_i(clk_i), .rst_i(rst_i), .d_i(s5_r1b), .q_o(s6_r1b));
+    assign s6_rta = s5_rta;
+    assign s6_rtb = s5_rtb;
+    assign s6_r1a = s5_r1a;
+    assign s6_r1b = s5_r1b;
 
     // ------------------------------------------------------- stage 7
     wire signed [W-1:0] s7_ka, s7_wa, s7_kb, s7_wb, s7_dca, s7_dcb, s7_cora, s7_corb;
@@ -378,13 +383,13 @@ module mpdcc_common #(
     assign s7_wb = sx32(prod_w[32 * (45) +: 32]);
     mpdcc_pipe #(.W(W)) u7e (.clk_i(clk_i), .rst_i(rst_i), .d_i((s6_pda <<< 1) - s6_cora), .q_o(s7_dca));
     mpdcc_pipe #(.W(W)) u7f (.clk_i(clk_i), .rst_i(rst_i), .d_i((s6_pdb <<< 1) - s6_corb), .q_o(s7_dcb));
-    mpdcc_pipe #(.W(W)) u7g (.clk_i(clk_i), .rst_i(rst_i), .d_i(s6_cora), .q_o(s7_cora));
-    mpdcc_pipe #(.W(W)) u7h (.clk_i(clk_i), .rst_i(rst_i), .d_i(s6_corb), .q_o(s7_corb));
+    assign s7_cora = s6_cora;
+    assign s7_corb = s6_corb;
     wire signed [W-1:0] rt9a, rt9b, r19a, r19b;
-    mpdcc_pipe #(.W(W), .N(3)) u7i (.clk_i(clk_i), .rst_i(rst_i), .d_i(s6_rta), .q_o(rt9a));
-    mpdcc_pipe #(.W(W), .N(3)) u7j (.clk_i(clk_i), .rst_i(rst_i), .d_i(s6_rtb), .q_o(rt9b));
-    mpdcc_pipe #(.W(W), .N(3)) u7k (.clk_i(clk_i), .rst_i(rst_i), .d_i(s6_r1a), .q_o(r19a));
-    mpdcc_pipe #(.W(W), .N(3)) u7l (.clk_i(clk_i), .rst_i(rst_i), .d_i(s6_r1b), .q_o(r19b));
+    assign rt9a = s6_rta;
+    assign rt9b = s6_rtb;
+    assign r19a = s6_r1a;
+    assign r19b = s6_r1b;
 
     // ------------------------------------------------------- stages 8-9
     // cub_a = 2 ks3 i*_b + kw3 psi_b; cub_b = -(2 ks3 i*_a + kw3 psi_a)
@@ -392,14 +397,14 @@ module mpdcc_common #(
     wire signed [W-1:0] s8_dca, s8_dcb, s8_cora, s8_corb;
     mpdcc_pipe #(.W(W)) u8a (.clk_i(clk_i), .rst_i(rst_i), .d_i((s7_ka <<< 1) + s7_wa), .q_o(s8_cua));
     mpdcc_pipe #(.W(W)) u8b (.clk_i(clk_i), .rst_i(rst_i), .d_i((s7_kb <<< 1) + s7_wb), .q_o(s8_tb));
-    mpdcc_pipe #(.W(W)) u8c (.clk_i(clk_i), .rst_i(rst_i), .d_i(s7_dca), .q_o(s8_dca));
-    mpdcc_pipe #(.W(W)) u8d (.clk_i(clk_i), .rst_i(rst_i), .d_i(s7_dcb), .q_o(s8_dcb));
-    mpdcc_pipe #(.W(W)) u8e (.clk_i(clk_i), .rst_i(rst_i), .d_i(s7_cora), .q_o(s8_cora));
-    mpdcc_pipe #(.W(W)) u8f (.clk_i(clk_i), .rst_i(rst_i), .d_i(s7_corb), .q_o(s8_corb));
+    assign s8_dca = s7_dca;
+    assign s8_dcb = s7_dcb;
+    assign s8_cora = s7_cora;
+    assign s8_corb = s7_corb;
     mpdcc_pipe #(.W(W)) u9a (.clk_i(clk_i), .rst_i(rst_i), .d_i(s8_cua), .q_o(s9_cua));
     mpdcc_pipe #(.W(W)) u9b (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - s8_tb), .q_o(s9_cub));
-    mpdcc_pipe #(.W(W)) u9c (.clk_i(clk_i), .rst_i(rst_i), .d_i(s8_dca), .q_o(s9_dca));
-    mpdcc_pipe #(.W(W)) u9d (.clk_i(clk_i), .rst_i(rst_i), .d_i(s8_dcb), .q_o(s9_dcb));
+    assign s9_dca = s8_dca;
+    assign s9_dcb = s8_dcb;
     mpdcc_pipe #(.W(W)) u9e (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(s8_cora <<< 3, 6)), .q_o(s9_c1a));
     mpdcc_pipe #(.W(W)) u9f (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(s8_corb <<< 3, 6)), .q_o(s9_c1b));
 
@@ -441,13 +446,13 @@ module mpdcc_common #(
             assign opb_w[16*(46+g) +: 16] = xb13[15:0];
             assign p14 = sx32(prod_w[32 * (46 + g) +: 32]);
             mpdcc_pipe #(.W(W)) ud (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(xa13, 1)), .q_o(h14));
-            mpdcc_pipe #(.W(W)) ue (.clk_i(clk_i), .rst_i(rst_i), .d_i(xa13), .q_o(xa14));
+            assign xa14 = xa13;
             mpdcc_pipe #(.W(W)) uf (.clk_i(clk_i), .rst_i(rst_i), .d_i(sat(rnd(p14, 14))), .q_o(r15));
-            mpdcc_pipe #(.W(W)) ug (.clk_i(clk_i), .rst_i(rst_i), .d_i(h14), .q_o(h15));
-            mpdcc_pipe #(.W(W)) uh (.clk_i(clk_i), .rst_i(rst_i), .d_i(xa14), .q_o(xa15));
+            assign h15 = h14;
+            assign xa15 = xa14;
             mpdcc_pipe #(.W(W)) ui (.clk_i(clk_i), .rst_i(rst_i), .d_i(r15 - h15), .q_o(b16));
             mpdcc_pipe #(.W(W)) uj (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - h15 - r15), .q_o(c16));
-            mpdcc_pipe #(.W(W)) uk (.clk_i(clk_i), .rst_i(rst_i), .d_i(xa15), .q_o(xa16));
+            assign xa16 = xa15;
             wire signed [W-1:0] ob = sat(b16), oc = sat(c16);
             if (g < 4) begin : g_dn
                 assign dn_o[16*(3*g+0) +: 16] = xa16[15:0];

@@ -6,7 +6,8 @@
 // II = 2..7: ceil(7 / II) lanes shared by the seven outputs: the node
 // changes of a candidate are held at stage 15 and lane i searches outputs
 // i, i + L, i + 2 L, ... on successive clocks (L lanes); a running minimum
-// collects their l_j. The caller gives an explorer at most one candidate
+// per lane collects its l_j, and the lanes' minima meet where L* is formed
+// (one comparison per clock in each). The caller gives an explorer at most one candidate
 // every II clocks (mpdcc_core's scheduler does). Stage numbers below are
 // those of II = 1; with II > 3 everything from stage 30 on is II - 3
 // stages later.
@@ -150,11 +151,14 @@ module mpdcc_explorer #(
     generate
         for (gi = 0; gi < 3; gi = gi + 1) begin : g_pos
             wire [2:0] sp = s_i[3*gi +: 3];
-            wire signed [W-1:0] vph = sx16(v_ph_i[16*gi +: 16]);
-            wire signed [W-1:0] vdc = sx16(vdc_half_i);
-            wire signed [W-1:0] vn = sx16(v_n_i);
-            wire signed [W-1:0] pph = sx32(pph_i[32*gi +: 32]);
-            reg signed [W-1:0] x, y;
+            // 16-bit operands: the sum and difference are exact in 17 bits,
+            // -P_ph in 33 (a short carry chain; the registers hold only
+            // those bits and are sign-extended to W where read)
+            wire signed [16:0] vph = {v_ph_i[16*gi+15], v_ph_i[16*gi +: 16]};
+            wire signed [16:0] vdc = {vdc_half_i[15], vdc_half_i};
+            wire signed [16:0] vn = {v_n_i[15], v_n_i};
+            wire signed [32:0] pph = {pph_i[32*gi+31], pph_i[32*gi +: 32]};
+            reg signed [16:0] x, y;
             reg sub;
             reg signed [1:0] phc, phcur;
             reg n;
@@ -171,23 +175,29 @@ module mpdcc_explorer #(
                 endcase
             end
             // -ph_current P_ph: 0 - P_ph, +P_ph or 0 (one add/sub).
-            wire signed [W-1:0] ip = (phcur == 2'sd1) ? (0 - pph) : (phcur == -2'sd1) ? pph : 0;
+            wire signed [32:0] ip = (phcur == 2'sd1) ? (33'sd0 - pph) : (phcur == -2'sd1) ? pph : 33'sd0;
             wire [2:0] dd = s_prev_i[3*gi +: 3] ^ sp;
             assign pt[gi] = {1'b0, dd[2], 1'b0} + {2'b0, dd[1]} + {2'b0, dd[0]};
-            mpdcc_pipe #(.W(W), .N(1)) u_v0 (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(sub ? x - y : x + y), .q_o(v0_d[gi]));
-            mpdcc_pipe #(.W(W), .N(1)) u_ip (.clk_i(clk_i), .rst_i(rst_i), .d_i(ip), .q_o(invp_d[gi]));
+            wire signed [16:0] v0n;
+            wire signed [32:0] ipn;
+            mpdcc_pipe #(.W(17), .N(1)) u_v0 (.clk_i(clk_i), .rst_i(rst_i),
+                .d_i(sub ? x - y : x + y), .q_o(v0n));
+            mpdcc_pipe #(.W(33), .N(1)) u_ip (.clk_i(clk_i), .rst_i(rst_i), .d_i(ip), .q_o(ipn));
+            assign v0_d[gi] = {{(W - 17) {v0n[16]}}, v0n};
+            assign invp_d[gi] = {{(W - 33) {ipn[32]}}, ipn};
             mpdcc_pipe #(.W(1), .N(1)) u_n (.clk_i(clk_i), .rst_i(rst_i), .d_i(n), .q_o(ncoef_d[gi]));
             mpdcc_pipe #(.W(2), .N(1)) u_phc (.clk_i(clk_i), .rst_i(rst_i), .d_i(phc), .q_o(phc_d[gi]));
         end
     endgenerate
-    wire signed [W-1:0] pn0 = sx32(pn_i[31:0]);
-    wire signed [W-1:0] pn1 = sx32(pn_i[63:32]);
     wire signed [W-1:0] pn2 = sx32(pn_i[95:64]);
     wire [3:0] fs1 = {1'b0, pt[0]} + {1'b0, pt[1]} + {1'b0, pt[2]};
-    wire signed [W-1:0] ia01_q;
-    mpdcc_pipe #(.W(W), .N(1)) u_ia01 (.clk_i(clk_i), .rst_i(rst_i),
-        .d_i((g_pos[0].n ? pn0 : 0) + (g_pos[1].n ? pn1 : 0)), .q_o(ia01_q));
+    // two 32-bit terms: exact in 33 bits
+    wire signed [32:0] pn0n = {pn_i[31], pn_i[31:0]};
+    wire signed [32:0] pn1n = {pn_i[63], pn_i[63:32]};
+    wire signed [32:0] ia01n;
+    mpdcc_pipe #(.W(33), .N(1)) u_ia01 (.clk_i(clk_i), .rst_i(rst_i),
+        .d_i((g_pos[0].n ? pn0n : 33'sd0) + (g_pos[1].n ? pn1n : 33'sd0)), .q_o(ia01n));
+    wire signed [W-1:0] ia01_q = {{(W - 33) {ia01n[32]}}, ia01n};
     wire [8:0] s_out;
     mpdcc_pipe #(.W(9), .N(LAT)) u_s (.clk_i(clk_i), .rst_i(rst_i), .d_i(s_i), .q_o(s_out));
     wire [3:0] fs1_q;
@@ -199,7 +209,8 @@ module mpdcc_explorer #(
         .d_i(ia01_q + (ncoef_d[2] ? pn2 : 0)), .q_o(inv0_2));
     wire signed [W-1:0] s01_2;
     mpdcc_pipe #(.W(W), .N(1)) u_s01 (.clk_i(clk_i), .rst_i(rst_i), .d_i(v0_d[0] + v0_d[1]), .q_o(s01_2));
-    wire signed [W-1:0] v0_2 [0:2];
+    wire signed [W-1:0] v0c_2;  // v0 of phase c at stage 2 (the sum)
+    mpdcc_pipe #(.W(W), .N(1)) u_v0c (.clk_i(clk_i), .rst_i(rst_i), .d_i(v0_d[2]), .q_o(v0c_2));
     wire signed [W-1:0] v0x3_2 [0:2];
     wire signed [W-1:0] invp_2 [0:2];
     wire signed [W-1:0] ninvp_2 [0:2];
@@ -207,7 +218,6 @@ module mpdcc_explorer #(
     wire signed [1:0]   phc_2 [0:2];
     generate
         for (gi = 0; gi < 3; gi = gi + 1) begin : g_s2
-            mpdcc_pipe #(.W(W), .N(1)) u_a (.clk_i(clk_i), .rst_i(rst_i), .d_i(v0_d[gi]), .q_o(v0_2[gi]));
             mpdcc_pipe #(.W(W), .N(1)) u_b (.clk_i(clk_i), .rst_i(rst_i),
                 .d_i(v0_d[gi] + (v0_d[gi] <<< 1)), .q_o(v0x3_2[gi]));
             mpdcc_pipe #(.W(W), .N(1)) u_c (.clk_i(clk_i), .rst_i(rst_i), .d_i(invp_d[gi]), .q_o(invp_2[gi]));
@@ -223,9 +233,8 @@ module mpdcc_explorer #(
     // t = n inv_n + ph_coef inv_ph (dv = -t); inverter rows of the nodes and
     // of the one step: inv (f27) to Q4.13 (rnd 14 - i) and to Q2.13 (rnd 17).
     wire signed [W-1:0] s0_3;
-    mpdcc_pipe #(.W(W), .N(1)) u_s0 (.clk_i(clk_i), .rst_i(rst_i), .d_i(s01_2 + v0_2[2]), .q_o(s0_3));
+    mpdcc_pipe #(.W(W), .N(1)) u_s0 (.clk_i(clk_i), .rst_i(rst_i), .d_i(s01_2 + v0c_2), .q_o(s0_3));
     wire signed [W-1:0] t_3 [0:2];
-    wire signed [W-1:0] v0_3 [0:2];
     wire signed [W-1:0] v0x3_3 [0:2];
     // inverter rows: j = 0 (v_n), 1..3 (v_ph); value inv_j
     wire signed [W-1:0] invj_2 [0:3];
@@ -240,7 +249,6 @@ module mpdcc_explorer #(
             wire signed [W-1:0] b = (phc_2[gi] == 2'sd1) ? invp_2[gi] :
                                     (phc_2[gi] == -2'sd1) ? ninvp_2[gi] : 0;
             mpdcc_pipe #(.W(W), .N(1)) u_t (.clk_i(clk_i), .rst_i(rst_i), .d_i(a + b), .q_o(t_3[gi]));
-            mpdcc_pipe #(.W(W), .N(1)) u_v (.clk_i(clk_i), .rst_i(rst_i), .d_i(v0_2[gi]), .q_o(v0_3[gi]));
             mpdcc_pipe #(.W(W), .N(1)) u_x (.clk_i(clk_i), .rst_i(rst_i), .d_i(v0x3_2[gi]), .q_o(v0x3_3[gi]));
         end
         for (gi = 0; gi < 4; gi = gi + 1) begin : g_inv
@@ -257,7 +265,6 @@ module mpdcc_explorer #(
     // --------------------------------------------------------------- stage 4
     wire signed [W-1:0] dv_4 [0:2];
     wire signed [W-1:0] u0_4 [0:2];
-    wire signed [W-1:0] v0_4 [0:2];
     // inverter rows, clamped / saturated, delayed to stage 14
     wire [17:0] invn_14 [0:3][0:3];
     wire [15:0] inv1_15 [0:3];
@@ -265,7 +272,6 @@ module mpdcc_explorer #(
         for (gi = 0; gi < 3; gi = gi + 1) begin : g_s4
             mpdcc_pipe #(.W(W), .N(1)) u_dv (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - t_3[gi]), .q_o(dv_4[gi]));
             mpdcc_pipe #(.W(W), .N(1)) u_u0 (.clk_i(clk_i), .rst_i(rst_i), .d_i(v0x3_3[gi] - s0_3), .q_o(u0_4[gi]));
-            mpdcc_pipe #(.W(W), .N(1)) u_v (.clk_i(clk_i), .rst_i(rst_i), .d_i(v0_3[gi]), .q_o(v0_4[gi]));
         end
         for (gi = 0; gi < 4; gi = gi + 1) begin : g_invc
             genvar m;
@@ -292,7 +298,11 @@ module mpdcc_explorer #(
         for (gi = 0; gi < 3; gi = gi + 1) begin : g_s5
             mpdcc_pipe #(.W(W), .N(1)) u_a (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(dv_4[gi], 15)), .q_o(vh_5[gi]));
             mpdcc_pipe #(.W(W), .N(1)) u_b (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(dv_4[gi], 18)), .q_o(v1r_5[gi]));
-            mpdcc_pipe #(.W(W), .N(1)) u_e (.clk_i(clk_i), .rst_i(rst_i), .d_i(v0_4[gi]), .q_o(v0_5[gi]));
+            // v0 from stage 1 to 5 in a delay line (an SRL: no reset, see
+            // mpdcc_pipe), 17 bits
+            wire signed [16:0] v0n_5;
+            mpdcc_pipe #(.W(17), .N(4)) u_e (.clk_i(clk_i), .rst_i(rst_i), .d_i(v0_d[gi][16:0]), .q_o(v0n_5));
+            assign v0_5[gi] = {{(W - 17) {v0n_5[16]}}, v0n_5};
         end
         for (gi = 0; gi < 2; gi = gi + 1) begin : g_s5m
             wire signed [24:0] u0n = u0_4[gi][24:0];
@@ -308,13 +318,15 @@ module mpdcc_explorer #(
     // ----------------------------------------------------------- stages 6-8
     // uh_a = (vh_a - vh_b) + (vh_a - vh_c), uh_b = (vh_b - vh_c) - (vh_a -
     // vh_b) (= 3 vh - sum vh), two adders deep; likewise u1 one stage later.
-    wire signed [W-1:0] xh_6, yh_6, zh_6, ps_6, nrc_6;
+    wire signed [W-1:0] xh_6, yh_6, zh_6, ps_6;
     mpdcc_pipe #(.W(W), .N(1)) u_xh (.clk_i(clk_i), .rst_i(rst_i), .d_i(vh_5[0] - vh_5[1]), .q_o(xh_6));
     mpdcc_pipe #(.W(W), .N(1)) u_yh (.clk_i(clk_i), .rst_i(rst_i), .d_i(vh_5[0] - vh_5[2]), .q_o(yh_6));
     mpdcc_pipe #(.W(W), .N(1)) u_zh (.clk_i(clk_i), .rst_i(rst_i), .d_i(vh_5[1] - vh_5[2]), .q_o(zh_6));
     mpdcc_pipe #(.W(W), .N(1)) u_ps (.clk_i(clk_i), .rst_i(rst_i), .d_i(p0_5[0] + p0_5[1]), .q_o(ps_6));
     // -gd u0_c = gd u0_a + gd u0_b
-    mpdcc_pipe #(.W(W), .N(1)) u_nrc (.clk_i(clk_i), .rst_i(rst_i), .d_i(r_5[0] + r_5[1]), .q_o(nrc_6));
+    // (from stage 6 to 8 in one delay line: lines of 3 or more map to SRLs,
+    // shorter ones stay flip-flops)
+    mpdcc_pipe #(.W(W), .N(3)) u_nrc (.clk_i(clk_i), .rst_i(rst_i), .d_i(r_5[0] + r_5[1]), .q_o(nrc_8));
     wire signed [W-1:0] v1_6 [0:2];
     generate
         for (gi = 0; gi < 3; gi = gi + 1) begin : g_s6
@@ -329,8 +341,8 @@ module mpdcc_explorer #(
     mpdcc_pipe #(.W(W), .N(1)) u_x1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(v1_6[0] - v1_6[1]), .q_o(x1_7));
     mpdcc_pipe #(.W(W), .N(1)) u_y1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(v1_6[0] - v1_6[2]), .q_o(y1_7));
     mpdcc_pipe #(.W(W), .N(1)) u_z1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(v1_6[1] - v1_6[2]), .q_o(z1_7));
-    wire signed [W-1:0] p0_8 [0:2];
     wire signed [W-1:0] r_9 [0:1];
+    wire signed [W-1:0] p0_10 [0:2];
     wire signed [W-1:0] g_8 [0:1];
     wire signed [W-1:0] u1_8 [0:1];
     wire signed [W-1:0] nrc_8;
@@ -340,12 +352,11 @@ module mpdcc_explorer #(
             wire signed [40:0] gg = g3_i * uhn;
             mpdcc_pipe #(.W(W), .N(1)) u_g (.clk_i(clk_i), .rst_i(rst_i),
                 .d_i({{(W - 41) {gg[40]}}, gg}), .q_o(g_8[gi]));
-            mpdcc_pipe #(.W(W), .N(3)) u_p (.clk_i(clk_i), .rst_i(rst_i), .d_i(p0_5[gi]), .q_o(p0_8[gi]));
+            mpdcc_pipe #(.W(W), .N(5)) u_p (.clk_i(clk_i), .rst_i(rst_i), .d_i(p0_5[gi]), .q_o(p0_10[gi]));
             mpdcc_pipe #(.W(W), .N(4)) u_r (.clk_i(clk_i), .rst_i(rst_i), .d_i(r_5[gi]), .q_o(r_9[gi]));
         end
     endgenerate
-    mpdcc_pipe #(.W(W), .N(1)) u_p0c8 (.clk_i(clk_i), .rst_i(rst_i), .d_i(p0c_7), .q_o(p0_8[2]));
-    mpdcc_pipe #(.W(W), .N(2)) u_nrc8 (.clk_i(clk_i), .rst_i(rst_i), .d_i(nrc_6), .q_o(nrc_8));
+    mpdcc_pipe #(.W(W), .N(3)) u_p0c8 (.clk_i(clk_i), .rst_i(rst_i), .d_i(p0c_7), .q_o(p0_10[2]));
     mpdcc_pipe #(.W(W), .N(1)) u_u1a (.clk_i(clk_i), .rst_i(rst_i), .d_i(x1_7 + y1_7), .q_o(u1_8[0]));
     mpdcc_pipe #(.W(W), .N(1)) u_u1b (.clk_i(clk_i), .rst_i(rst_i), .d_i(z1_7 - x1_7), .q_o(u1_8[1]));
 
@@ -376,10 +387,8 @@ module mpdcc_explorer #(
     mpdcc_pipe #(.W(W), .N(1)) u_g1c (.clk_i(clk_i), .rst_i(rst_i), .d_i(0 - g1s_10), .q_o(g1_11[2]));
     wire [17:0] nodes_14 [0:3][0:6];  // [node][output]
     wire [15:0] d1_15 [0:6];
-    wire signed [W-1:0] p0_10 [0:2];
     generate
         for (gi = 0; gi < 3; gi = gi + 1) begin : g_s10
-            mpdcc_pipe #(.W(W), .N(2)) u_p (.clk_i(clk_i), .rst_i(rst_i), .d_i(p0_8[gi]), .q_o(p0_10[gi]));
             // stage 12
             wire signed [W-1:0] r1_12;
             mpdcc_pipe #(.W(W), .N(1)) u_r1 (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(g1_11[gi], 17)), .q_o(r1_12));
@@ -398,9 +407,19 @@ module mpdcc_explorer #(
                 wire signed [W-1:0] g_11, rg_12, nd_13;
                 mpdcc_pipe #(.W(W), .N(1)) u_g (.clk_i(clk_i), .rst_i(rst_i),
                     .d_i((p0_10[gi] <<< m) + (q_10[gi] <<< (2 * m))), .q_o(g_11));
-                mpdcc_pipe #(.W(W), .N(1)) u_rg (.clk_i(clk_i), .rst_i(rst_i), .d_i(rnd(g_11, 14)), .q_o(rg_12));
-                mpdcc_pipe #(.W(W), .N(1)) u_nd (.clk_i(clk_i), .rst_i(rst_i),
-                    .d_i(sx16(dn_i[16*(3*m+gi) +: 16]) - rg_12), .q_o(nd_13));
+                // rnd(g, 14) of a W-bit g: |.| < 2^33 + 1, 35 bits; the
+                // difference with a 16-bit dn: 36 bits (registers only as
+                // wide, sign-extended where read)
+                wire signed [34:0] rgn_12;
+                wire signed [35:0] ndn_13;
+                /* verilator lint_off UNUSEDSIGNAL */
+                wire signed [W-1:0] rg_d = rnd(g_11, 14);
+                mpdcc_pipe #(.W(35), .N(1)) u_rg (.clk_i(clk_i), .rst_i(rst_i), .d_i(rg_d[34:0]), .q_o(rgn_12));
+                assign rg_12 = {{(W - 35) {rgn_12[34]}}, rgn_12};
+                wire signed [W-1:0] nd_d = sx16(dn_i[16*(3*m+gi) +: 16]) - rg_12;
+                /* verilator lint_on UNUSEDSIGNAL */
+                mpdcc_pipe #(.W(36), .N(1)) u_nd (.clk_i(clk_i), .rst_i(rst_i), .d_i(nd_d[35:0]), .q_o(ndn_13));
+                assign nd_13 = {{(W - 36) {ndn_13[35]}}, ndn_13};
                 mpdcc_pipe #(.W(18), .N(1)) u_c (.clk_i(clk_i), .rst_i(rst_i),
                     .d_i(clamp18(nd_13)), .q_o(nodes_14[m][gi]));
             end
@@ -440,18 +459,31 @@ module mpdcc_explorer #(
             mpdcc_pipe #(.W(8), .N(1)) u_n5 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(n27[2], n27[3])), .q_o(n28[1]));
             mpdcc_pipe #(.W(8), .N(1)) u_n6 (.clk_i(clk_i), .rst_i(rst_i), .d_i(umin(n28[0], n28[1])), .q_o(lmin_29));
         end else begin : g_shared
-            // The node changes and e0, bnd of output j: {bnd, e0, n3..n0}.
-            localparam integer CW = 15 + 16 + 4 * 18;
+            // The node changes of output j: {n3..n0}, from stage 14 on: held
+            // for the clocks t = 1, 2 after stage 14 (FF), in a delay line
+            // of t clocks for t >= 3 (an SRL); e0 and bnd are inputs held
+            // through the decision, read directly.
+            localparam integer CW = 4 * 18;
             wire [7*CW-1:0] col;
             for (gi = 0; gi < 7; gi = gi + 1) begin : g_col
-                assign col[CW*gi +: CW] = {bnd_i[16*gi +: 15], e0_i[16*gi +: 16],
-                    nodes_14[3][gi], nodes_14[2][gi], nodes_14[1][gi], nodes_14[0][gi]};
+                assign col[CW*gi +: CW] = {nodes_14[3][gi], nodes_14[2][gi], nodes_14[1][gi], nodes_14[0][gi]};
             end
-            // held from stage 15 on for the clocks t = 1 .. II - 1
-            reg [7*CW-1:0] hold_q;
-            always @(posedge clk_i) begin
-                if (rst_i) hold_q <= {(7 * CW) {1'b0}};
-                else if (v[14]) hold_q <= col;
+            // the node changes of output j at the clock t = j / NL that reads it
+            wire [7*CW-1:0] late;
+            for (gi = 0; gi < 7; gi = gi + 1) begin : g_late
+                if (gi / NL >= 3) begin : g_srl
+                    mpdcc_pipe #(.W(CW), .N(gi / NL)) u_d (.clk_i(clk_i), .rst_i(rst_i),
+                        .d_i(col[CW*gi +: CW]), .q_o(late[CW*gi +: CW]));
+                end else if (gi / NL >= 1) begin : g_hold
+                    reg [CW-1:0] hold_q;
+                    always @(posedge clk_i) begin
+                        if (rst_i) hold_q <= {CW{1'b0}};
+                        else if (v[14]) hold_q <= col[CW*gi +: CW];
+                    end
+                    assign late[CW*gi +: CW] = hold_q;
+                end else begin : g_now
+                    assign late[CW*gi +: CW] = col[CW*gi +: CW];
+                end
             end
             // lane i at the clock t after stage 14 (v[14 + t]): output i + NL t
             wire [7:0] lj [0:NL-1];
@@ -459,42 +491,65 @@ module mpdcc_explorer #(
             wire lane_in = |v[14 +: II];
             for (gi = 0; gi < NL; gi = gi + 1) begin : g_lane
                 reg [CW-1:0] c;
+                reg [3:0] o;  // the output
                 integer t;
+                /* verilator lint_off UNUSEDSIGNAL */
+                integer oj;
+                /* verilator lint_on UNUSEDSIGNAL */
                 always @(*) begin
                     c = col[CW*gi +: CW];
+                    oj = gi;
+                    o = oj[3:0];
                     for (t = 1; t < II; t = t + 1)
                         // (the index is kept in range where the output does not exist)
-                        if (v[14+t] && gi + NL * t < 7) c = hold_q[CW*((gi+NL*t) % 7) +: CW];
+                        if (v[14+t] && gi + NL * t < 7) begin
+                            c = late[CW*((gi+NL*t) % 7) +: CW];
+                            oj = (gi + NL * t) % 7;
+                            o = oj[3:0];
+                        end
                 end
                 mpdcc_lane u_lane (
                     .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(lane_in),
-                    .e0_i(c[72 +: 16]),
+                    .e0_i(e0_i[16*o +: 16]),
                     .n0_i(c[0 +: 18]), .n1_i(c[18 +: 18]),
                     .n2_i(c[36 +: 18]), .n3_i(c[54 +: 18]),
-                    .bnd_i(c[88 +: 15]),
+                    .bnd_i(bnd_i[16*o +: 15]),
                     .out_valid_o(lv[gi]), .lj_o(lj[gi]));
             end
-            // Running minimum over the II clocks: the lanes' results of
-            // clock t (v[26 + t]) for the outputs that exist (i + NL t < 7).
-            reg [7:0] m;
-            integer t, q;
-            always @(*) begin
-                m = 8'hFF;
-                for (q = 0; q < NL; q = q + 1)
+            // Running minimum over the II clocks, one per lane: lane q
+            // folds its l_j of clock t (v[26 + t]) when its output exists
+            // (q + NL t < 7); the lanes' minima meet only where L* reads
+            // them. (One comparison per clock: a minimum over the lanes
+            // before the running one put two in series, 9.43 ns est.)
+            wire [NL*8-1:0] acc_w;
+            for (gi = 0; gi < NL; gi = gi + 1) begin : g_acc
+                reg use_l;
+                integer t;
+                always @(*) begin
+                    use_l = 1'b0;
                     for (t = 0; t < II; t = t + 1)
-                        if (v[26+t] && q + NL * t < 7) m = umin(m, lj[q]);
+                        if (gi + NL * t < 7) use_l = use_l | v[26+t];
+                end
+                reg [7:0] acc_q;
+                always @(posedge clk_i) begin
+                    if (rst_i) acc_q <= 8'd0;
+                    else if (v[26]) acc_q <= lj[gi];
+                    else if (use_l) acc_q <= umin(acc_q, lj[gi]);
+                end
+                assign acc_w[8*gi +: 8] = acc_q;
             end
-            reg [7:0] acc_q;
-            always @(posedge clk_i) begin
-                if (rst_i) acc_q <= 8'd0;
-                else acc_q <= v[26] ? m : umin(acc_q, m);
+            reg [7:0] lmin_w;
+            integer q;
+            always @(*) begin
+                lmin_w = acc_w[7:0];
+                for (q = 1; q < NL; q = q + 1) lmin_w = umin(lmin_w, acc_w[8*q +: 8]);
             end
             // the minimum is complete at stage 26 + II; L* reads it at 29 + EXTRA
             if (3 + EXTRA - II > 0) begin : g_pad
                 mpdcc_pipe #(.W(8), .N(3 + EXTRA - II)) u_pad (.clk_i(clk_i), .rst_i(rst_i),
-                    .d_i(acc_q), .q_o(lmin_29));
+                    .d_i(lmin_w), .q_o(lmin_29));
             end else begin : g_nopad
-                assign lmin_29 = acc_q;
+                assign lmin_29 = lmin_w;
             end
         end
     endgenerate
@@ -511,15 +566,18 @@ module mpdcc_explorer #(
         for (gi = 0; gi < 7; gi = gi + 1) begin : g_jdl
             wire signed [JW-1:0] e0w = jx16(e0_i[16*gi +: 16]);
             wire signed [JW-1:0] bw = jx16(bnd_i[16*gi +: 16]);
-            wire signed [JW-1:0] e1_16, a_17, ae0_15;
+            wire signed [JW-1:0] e1_16, a_17;
             mpdcc_pipe #(.W(JW), .N(1)) u_e1 (.clk_i(clk_i), .rst_i(rst_i),
                 .d_i(e0w + jx16(d1_15[gi])), .q_o(e1_16));
             mpdcc_pipe #(.W(JW), .N(1)) u_a (.clk_i(clk_i), .rst_i(rst_i),
                 .d_i(e1_16[JW-1] ? {JW{1'b0}} - e1_16 : e1_16), .q_o(a_17));
             mpdcc_pipe #(.W(JW), .N(1)) u_x (.clk_i(clk_i), .rst_i(rst_i), .d_i(a_17 - bw), .q_o(x_18[gi]));
-            mpdcc_pipe #(.W(JW), .N(1)) u_ae0 (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(e0w[JW-1] ? {JW{1'b0}} - e0w : e0w), .q_o(ae0_15));
-            mpdcc_pipe #(.W(1), .N(1)) u_ok (.clk_i(clk_i), .rst_i(rst_i), .d_i(ae0_15 <= bw), .q_o(ok_16[gi]));
+            // |e0| <= bnd as -bnd <= e0 <= bnd: two sums in parallel, no
+            // |e0| register (e0 and bnd are held through the decision)
+            wire signed [JW-1:0] lo_w = e0w + bw;
+            wire signed [JW-1:0] hi_w = bw - e0w;
+            mpdcc_pipe #(.W(1), .N(1)) u_ok (.clk_i(clk_i), .rst_i(rst_i),
+                .d_i(!lo_w[JW-1] && !hi_w[JW-1]), .q_o(ok_16[gi]));
         end
     endgenerate
     function automatic signed [JW-1:0] smax(input signed [JW-1:0] a, input signed [JW-1:0] b);
