@@ -155,6 +155,18 @@ module mpdtc_frontend (
     wire signed [41:0] po[0:2];
     wire signed [48:0] spdp_w = spdp;
     /* verilator lint_on UNUSEDSIGNAL */
+    // ADC - offset times gain at its exact width (17 x 18 bits: |p| <= 2^33,
+    // + 8 still inside 35 bits), sign-extended explicitly: written as a
+    // 48-bit product, the saturation tested all 24 bits above the result
+    // behind the DSP48E1 (8.0 ns estimated in pl_top), now the 7 that can
+    // differ from the sign.
+    wire signed [34:0] gp[0:2];
+    wire signed [34:0] gr[0:2];
+    genvar gk;
+    for (gk = 0; gk < 3; gk = gk + 1) begin : g_gain
+        assign gp[gk] = adiff[gk] * gain[gk];
+        assign gr[gk] = gp[gk] + 35'sd8;
+    end
     assign po[0] = dphi24 * age[0];
     assign po[1] = dphi24 * age[1];
     assign po[2] = dphi24 * age[2];
@@ -167,7 +179,7 @@ module mpdtc_frontend (
         // 2
         cnt  <= (d1 < 0) ? {d1[16], d1} + $signed({2'b00, cpr}) : {d1[16], d1};
         dphi <= spdp_w[39:8];
-        for (k = 0; k < 3; k = k + 1) cur[k] <= sat25((adiff[k] * gain[k] + 48'sd8) >>> 4);
+        for (k = 0; k < 3; k = k + 1) cur[k] <= sat25({{17{gr[k][34]}}, gr[k][34:4]});
         // 3
         phi  <= pw[31:0];
         for (k = 0; k < 3; k = k + 1) offs[k] <= po[k][39:8];
