@@ -15,12 +15,14 @@
 //   1  pos - align; speed x spd_scale; ADC - offset
 //   2  count (+ cpr if negative); dphi = product >> 8; (ADC - off) x gain
 //   3  phi = count x ang_scale (low 32 bits); (dphi >> 8) x age[j];
-//      (dphi >> 8) x 2 pi 2^14; Clarke sums
-//   4  the three instants' angles (phi + offset); i_alpha, i_beta
-//      (x 1/3, x 1/sqrt 3); that product + 2^21; table read 0: sin and
-//      cos at phi
+//      (dphi >> 8) x 2 pi 2^14; Clarke: b + c, b - c
+//   4  the three instants' angles (phi + offset); Clarke: 2 a - (b + c)
+//      (one adder per register: the three-operand sum with its
+//      saturation was 8.0 ns estimated in pl_top); i_beta (x 1/sqrt 3);
+//      that product + 2^21; table read 0: sin and cos at phi
 //   5  value 0 = T[i] + round(D[i] f / 2^16) (T[i] << 16 in the addend);
-//      table read 1 (instant 0); w Ts = sat18(that sum >> 22)
+//      table read 1 (instant 0); w Ts = sat18(that sum >> 22); i_alpha
+//      (x 1/3; the Park products read it from cycle 6 on)
 //   6  value 1; read 2          7  value 2; read 3
 //   8  value 3; Park: i_d = R(c i_alpha + s i_beta), i_q = R(c i_beta - s i_alpha)
 //      (products and sums in free-running registers from cycle 6 on, the
@@ -143,6 +145,7 @@ module mpdtc_frontend (
     reg signed [17:0] w_ts;
     reg signed [47:0] wtp, wtr;
     reg signed [24:0] csa, csb;
+    reg signed [25:0] bc;  // b + c, exact
     reg        [31:0] ang[1:3];
     reg signed [24:0] i_al, i_be;
     reg signed [48:0] spdp;
@@ -155,6 +158,18 @@ module mpdtc_frontend (
     wire signed [41:0] po[0:2];
     wire signed [48:0] spdp_w = spdp;
     /* verilator lint_on UNUSEDSIGNAL */
+    // ADC - offset times gain at its exact width (17 x 18 bits: |p| <= 2^33,
+    // + 8 still inside 35 bits), sign-extended explicitly: written as a
+    // 48-bit product, the saturation tested all 24 bits above the result
+    // behind the DSP48E1 (8.0 ns estimated in pl_top), now the 7 that can
+    // differ from the sign.
+    wire signed [34:0] gp[0:2];
+    wire signed [34:0] gr[0:2];
+    genvar gk;
+    for (gk = 0; gk < 3; gk = gk + 1) begin : g_gain
+        assign gp[gk] = adiff[gk] * gain[gk];
+        assign gr[gk] = gp[gk] + 35'sd8;
+    end
     assign po[0] = dphi24 * age[0];
     assign po[1] = dphi24 * age[1];
     assign po[2] = dphi24 * age[2];
@@ -167,21 +182,21 @@ module mpdtc_frontend (
         // 2
         cnt  <= (d1 < 0) ? {d1[16], d1} + $signed({2'b00, cpr}) : {d1[16], d1};
         dphi <= spdp_w[39:8];
-        for (k = 0; k < 3; k = k + 1) cur[k] <= sat25((adiff[k] * gain[k] + 48'sd8) >>> 4);
+        for (k = 0; k < 3; k = k + 1) cur[k] <= sat25({{17{gr[k][34]}}, gr[k][34:4]});
         // 3
         phi  <= pw[31:0];
         for (k = 0; k < 3; k = k + 1) offs[k] <= po[k][39:8];
         wtp  <= dphi24 * TWO_PI_Q14;  // exact, 42 bits
-        csa  <= sat25({{23{cur[0][24]}}, cur[0]} + {{23{cur[0][24]}}, cur[0]}
-                      - {{23{cur[1][24]}}, cur[1]} - {{23{cur[2][24]}}, cur[2]});
+        bc   <= {cur[1][24], cur[1]} + {cur[2][24], cur[2]};
         csb  <= sat25({{23{cur[1][24]}}, cur[1]} - {{23{cur[2][24]}}, cur[2]});
         // 4
         for (k = 0; k < 3; k = k + 1) ang[k+1] <= phi + offs[k];
-        i_al <= sat25((ONE_THIRD * csa + 48'sd32768) >>> 16);
+        csa  <= sat25({{22{cur[0][24]}}, cur[0], 1'b0} - {{22{bc[25]}}, bc});
         i_be <= sat25((INV_SQRT3 * csb + 48'sd32768) >>> 16);
         wtr  <= wtp + 48'sd2097152;
         // 5
         w_ts <= sat18(wtr >>> 22);
+        i_al <= sat25((ONE_THIRD * csa + 48'sd32768) >>> 16);
     end
 
     // ------------------------------------------------------------ stages 5-8

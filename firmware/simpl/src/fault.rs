@@ -45,8 +45,8 @@ pub struct Fault {
     /// ADC_CTRL.ENABLE of the cycle before (`adc_en_q`, reset 1).
     adc_en: bool,
     /// The timer's trip level, ADC_PERIOD of the cycle before + the margin
-    /// (`adc_limit_q`, reset 0: a register, so a new period counts one
-    /// clock after its write).
+    /// (reset 0: a register, so a new period counts one clock after its
+    /// write; the RTL compares with it a clock ahead, in `adc_early_q`).
     adc_limit: u32,
     /// The watchdog's comparison of the cycle before (`wdg_exp_q`: the
     /// watchdog trips one clock after its counter reaches WDG_TIMEOUT).

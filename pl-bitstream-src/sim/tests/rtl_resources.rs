@@ -149,7 +149,6 @@ fn every_module_within_8_ns() {
 /// `pl_top`'s paths that end outside the MPDCC core (the line
 /// `scripts/rtl-synth pl_top` writes below its row): at most 8 ns.
 #[test]
-#[ignore = "fails: 8.30 ns from mpdtc_seq's state through the mode's state selection into the gate legs (6 LUT levels), and 8.01 ns in mpdtc_frontend's Park product (docs/rtl.md)"]
 fn pl_top_without_the_mpdcc_core_within_8_ns() {
     let doc = repo_file("docs/rtl-resources-pl-top.md");
     let key = "pl_top without mpdcc_core's own paths (end points outside it): ";
