@@ -8,11 +8,12 @@
 // every signal is settled for the inputs it saw (the clock-driven regions
 // re-settle the logic that depends on both inputs and registers), so with
 // the inputs unchanged a second run of that region computes nothing new,
-// except what reads the clock input itself. In pl_top those are three
-// wires, the simulation-only clock gates of the MPDCC and MPDTC cores and
-// the register file (SIM_MPDCC_CLOCK_GATE, SIM_MPDTC_CLOCK_GATE,
-// SIM_REGS_CLOCK_GATE): mc_clk = clk_i && mc_ce_q, mt_clk = clk_i && mt_ce_q
-// and rg_clk = clk_i && rg_ce_q, recomputed here. build.rs checks that the
+// except what reads the clock input itself. In pl_top those are four
+// wires, the simulation-only clock gates of the MPDCC and MPDTC cores, the
+// register file and the MPDTC front end (SIM_MPDCC_CLOCK_GATE,
+// SIM_MPDTC_CLOCK_GATE, SIM_REGS_CLOCK_GATE, SIM_FE_CLOCK_GATE):
+// mc_clk = clk_i && mc_ce_q, mt_clk = clk_i && mt_ce_q, rg_clk = clk_i &&
+// rg_ce_q and fe_clk = clk_i && fe_ce_q, recomputed here. build.rs checks that the
 // region reads clk_i nowhere else (and fails the build otherwise).
 //
 // clock() then runs Verilator's own trigger / active / NBA loop, the same
@@ -37,6 +38,7 @@ static inline void clock(Vpl_top* t, uint8_t level) {
     r->pl_top__DOT__mc_clk = level & r->pl_top__DOT__mc_ce_q;
     r->pl_top__DOT__mt_clk = level & r->pl_top__DOT__mt_ce_q;
     r->pl_top__DOT__rg_clk = level & r->pl_top__DOT__rg_ce_q;
+    r->pl_top__DOT__fe_clk = level & r->pl_top__DOT__fe_ce_q;
     // Up to 100 rounds each, as Verilator's loop (a design that does not
     // settle is a fatal error there too).
     for (int nba = 0;; nba++) {
