@@ -20,6 +20,10 @@
 // loop as the generated Vpl_top___024root___eval after its input region.
 #pragma once
 
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
 #include "Vpl_top.h"
 #include "Vpl_top___024root.h"
 #include "verilated.h"
@@ -29,6 +33,22 @@ void Vpl_top___024root___eval_act(Vpl_top___024root* vlSelf);
 void Vpl_top___024root___eval_nba(Vpl_top___024root* vlSelf);
 
 namespace pl_top_clock {
+
+// A trigger vector's flags as one word (Verilator 5.006's VlTriggerVec is
+// a std::array<bool, N> and nothing else): its clear / any / set loops ran
+// flag by flag, about 270 instructions a PL cycle (docs/speed.md).
+template <typename V>
+static inline uint64_t flags(const V& v) {
+    static_assert(sizeof(V) <= sizeof(uint64_t), "trigger vector wider than a word");
+    static_assert(std::is_trivially_copyable<V>::value, "trigger vector not plain flags");
+    uint64_t w = 0;
+    std::memcpy(&w, &v, sizeof(V));
+    return w;
+}
+template <typename V>
+static inline void set_flags(V& v, uint64_t w) {
+    std::memcpy(&v, &w, sizeof(V));
+}
 
 // Sets clk_i to `level` and evaluates, the other inputs as they were at
 // the last full eval().
@@ -42,15 +62,17 @@ static inline void clock(Vpl_top* t, uint8_t level) {
     // Up to 100 rounds each, as Verilator's loop (a design that does not
     // settle is a fatal error there too).
     for (int nba = 0;; nba++) {
-        r->__VnbaTriggered.clear();
+        uint64_t nba_w = 0;
         for (int act = 0;; act++) {
             Vpl_top___024root___eval_triggers__act(r);
-            if (!r->__VactTriggered.any()) break;
+            const uint64_t act_w = flags(r->__VactTriggered);
+            if (!act_w) break;
             if (VL_UNLIKELY(act > 100)) VL_FATAL_MT(__FILE__, __LINE__, "", "pl_top: active region did not converge");
-            r->__VnbaTriggered.set(r->__VactTriggered);
+            nba_w |= act_w;
+            set_flags(r->__VnbaTriggered, nba_w);
             Vpl_top___024root___eval_act(r);
         }
-        if (!r->__VnbaTriggered.any()) break;
+        if (!nba_w) break;
         if (VL_UNLIKELY(nba > 100)) VL_FATAL_MT(__FILE__, __LINE__, "", "pl_top: NBA region did not converge");
         Vpl_top___024root___eval_nba(r);
     }
