@@ -710,8 +710,34 @@ module pl_top #(
         else if (fe_busy_q != 4'd0) fe_busy_q <= fe_busy_q - 4'd1;
     end
 
+    // Simulation only (rtl-sim's Verilated pl_top defines SIM_FE_CLOCK_GATE):
+    // the front end is clocked only in reset, at a start and for FE_SETTLE
+    // edges after either, so Verilator skips its stages (about half of the
+    // model's remaining clock-edge code, docs/speed.md) for the other 1,500
+    // or so cycles of a control period. Its registers are the captured
+    // inputs (loaded only at a start), the valid pipeline (all zero 9 edges
+    // after a start) and stages that recompute from those (the deepest, the
+    // Park sums, 10 edges after the start; the table reads once the valid
+    // pipeline is zero): 16 edges after a start or a reset every register's
+    // next value is its present one, so a skipped edge changes nothing and
+    // the outputs are the same edge for edge. The enable is sampled on the
+    // falling edge (the harness applies a cycle's inputs with the clock low),
+    // stable across the rising one.
+`ifdef SIM_FE_CLOCK_GATE
+    localparam [4:0] FE_SETTLE = 5'd16;
+    reg  fe_ce_q = 1'b1;
+    reg  [4:0] fe_settle_q = FE_SETTLE;
+    always @(negedge clk_i) begin
+        fe_settle_q <= (rst || fe_start) ? FE_SETTLE
+                     : (fe_settle_q != 5'd0) ? fe_settle_q - 5'd1 : 5'd0;
+        fe_ce_q     <= rst || fe_start || fe_settle_q != 5'd0;
+    end
+    wire fe_clk = clk_i && fe_ce_q;
+`else
+    wire fe_clk = clk_i;
+`endif
     mpdtc_frontend u_fe (
-        .clk_i      (clk_i),
+        .clk_i      (fe_clk),
         .rst_i      (rst),
         .in_valid_i (fe_start),
         .pos_i      (enc_pos),

@@ -164,13 +164,16 @@ fn opt_fast(top: &str) -> &'static str {
 /// of `pl_top`'s evaluation time, docs/speed.md); `SIM_MPDTC_CLOCK_GATE`,
 /// the same for the MPDTC core (busy 39 of about 1,564 cycles a period);
 /// `SIM_REGS_CLOCK_GATE`, the register file clocked only around its bus
-/// accesses (about 20 of 1,564 cycles a period in the co-simulation).
+/// accesses (about 20 of 1,564 cycles a period in the co-simulation);
+/// `SIM_FE_CLOCK_GATE`, the MPDTC front end clocked only in reset and for
+/// 17 edges from a start (one start a period).
 fn defines(top: &str) -> &'static [&'static str] {
     if top == "pl_top" {
         &[
             "+define+SIM_MPDCC_CLOCK_GATE",
             "+define+SIM_MPDTC_CLOCK_GATE",
             "+define+SIM_REGS_CLOCK_GATE",
+            "+define+SIM_FE_CLOCK_GATE",
         ]
     } else {
         &[]
@@ -271,7 +274,7 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
 /// `csrc/pl_top_clock.h` gives `pl_top` clock edges without Verilator's
 /// input-driven ("ico") region, recomputing only the wires of that region
 /// that read `clk_i`: the simulation-only clock gates (MPDCC, MPDTC, register
-/// file). Fails the build
+/// file, MPDTC front end). Fails the build
 /// when the generated region reads `clk_i` anywhere else (a new clock-driven
 /// wire would go stale there).
 fn check_input_region(mdir: &Path) {
@@ -279,6 +282,7 @@ fn check_input_region(mdir: &Path) {
         "pl_top__DOT__mc_clk = ((IData)(vlSelf->clk_i)",
         "pl_top__DOT__mt_clk = ((IData)(vlSelf->clk_i)",
         "pl_top__DOT__rg_clk = ((IData)(vlSelf->clk_i)",
+        "pl_top__DOT__fe_clk = ((IData)(vlSelf->clk_i)",
     ];
     let (mut reads, mut gates) = (0, 0);
     for entry in std::fs::read_dir(mdir).expect("read the pl_top model directory") {
@@ -453,6 +457,12 @@ fn main() {
         .include(&vinc)
         .include(vinc.join("vltstd"))
         .flag_if_supported("-Wno-unused-parameter");
+    // `pl_top`'s shim runs Verilator's trigger loop twice a PL cycle in the
+    // co-simulation (`csrc/pl_top_clock.h`): at -O2 its small trigger-vector
+    // methods are inlined (at -O1 they were calls, about a fifth of
+    // `pl-cosim`'s instructions, docs/speed.md).
+    let mut pl_top_shim = shim.clone();
+    pl_top_shim.opt_level(2);
     let mut models = Vec::new();
     for (top, files, shim_src) in TOPS {
         for f in *files {
@@ -478,10 +488,16 @@ fn main() {
         if models.is_empty() {
             runtime(&out, &mdir, top);
         }
-        shim.include(&mdir).file(src);
+        shim.include(&mdir);
+        if *top == "pl_top" {
+            pl_top_shim.include(&mdir).file(src);
+        } else {
+            shim.file(src);
+        }
         models.push(*top);
     }
     shim.compile("rtl_shims");
+    pl_top_shim.compile("rtl_shim_pl_top");
     // Static link order: shims, then models, then the Verilator runtime.
     println!("cargo:rustc-link-search=native={}", out.display());
     for top in models {
