@@ -163,7 +163,6 @@ fn pl_top_without_the_mpdcc_core_within_8_ns() {
 /// The MPDCC core's table (`scripts/mpdcc-table`): every synthesised row
 /// within 8 ns.
 #[test]
-#[ignore = "fails: 8.29 ns in mpdcc_common.v, the shared multipliers' operand selection (slot counter through a 7-LUT priority chain into the DSP48E1 operand register); the explorer's 9.43 ns path is fixed (docs/mpdcc-fpga.md)"]
 fn mpdcc_within_8_ns() {
     let over = rows_over_8_ns("docs/mpdcc-rtl-table.md");
     assert!(over.is_empty(), "{over:#?}");
