@@ -171,7 +171,6 @@ fn mpdcc_within_8_ns() {
 /// The same for the whole `pl_top` (composed with the MPDCC core's
 /// netlist: `scripts/rtl-synth pl_top` after `scripts/mpdcc-table 4:1`).
 #[test]
-#[ignore = "fails: 8.29 ns, mpdcc_core's own operand selection (see above); the paths that end outside mpdcc_core are 7.89 ns"]
 fn pl_top_within_8_ns() {
     let over = rows_over_8_ns("docs/rtl-resources-pl-top.md");
     assert!(over.is_empty(), "{over:#?}");
