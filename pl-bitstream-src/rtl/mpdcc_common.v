@@ -170,6 +170,22 @@ module mpdcc_common #(
         else if (t_q == LAST[6:0]) t_q <= 7'd0;
         else if (t_q != 7'd0) t_q <= t_q + 7'd1;
     end
+    // Slot decode one clock ahead: hot_q[p] == (t_q == slot_of(p)) in every
+    // cycle (t_q's next value is 1 after the start strobe, else t_q + 1 for
+    // 1 <= t_q < LAST; slots are >= 1, so slot s >= 2 follows t_q = s - 1).
+    // A multiplier's operands are then an AND-OR of its products' operands
+    // (a slot issues at most one product per multiplier, so the hot bits of
+    // one multiplier are one-hot): two LUT levels into the DSP48E1 operand
+    // register instead of a compare of the counter and a priority chain.
+    reg [NP-1:0] hot_q;
+    integer hp;
+    always @(posedge clk_i) begin
+        for (hp = 0; hp < NP; hp = hp + 1) begin
+            if (rst_i) hot_q[hp] <= 1'b0;
+            else if (start_i) hot_q[hp] <= slot_of(hp) == 1;
+            else hot_q[hp] <= slot_of(hp) >= 2 && {25'd0, t_q} == slot_of(hp) - 1;
+        end
+    end
     genvar g;
     generate
         for (g = 0; g < MULS; g = g + 1) begin : g_mul
@@ -183,11 +199,11 @@ module mpdcc_common #(
             always @(*) begin
                 a_d = 16'd0; b_d = 16'd0; tag_d = 6'd0; hit_d = 1'b0;
                 for (p = 0; p < NP; p = p + 1) begin
-                    if (mul_of(p) == g && {25'd0, t_q} == slot_of(p)) begin
-                        a_d = opa_w[16*p +: 16];
-                        b_d = opb_w[16*p +: 16];
-                        tag_d = p[5:0];
-                        hit_d = 1'b1;
+                    if (mul_of(p) == g) begin
+                        a_d = a_d | ({16{hot_q[p]}} & opa_w[16*p +: 16]);
+                        b_d = b_d | ({16{hot_q[p]}} & opb_w[16*p +: 16]);
+                        tag_d = tag_d | ({6{hot_q[p]}} & p[5:0]);
+                        hit_d = hit_d | hot_q[p];
                     end
                 end
             end

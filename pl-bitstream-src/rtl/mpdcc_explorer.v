@@ -158,20 +158,25 @@ module mpdcc_explorer #(
             wire signed [16:0] vdc = {vdc_half_i[15], vdc_half_i};
             wire signed [16:0] vn = {v_n_i[15], v_n_i};
             wire signed [32:0] pph = {pph_i[32*gi+31], pph_i[32*gi +: 32]};
-            reg signed [16:0] x, y;
-            reg sub;
+            // The seven positions from the held inputs, every one in
+            // parallel: the candidate only selects one (a LUT multiplexer),
+            // so no carry chain follows the candidate's decode (8.04 ns
+            // when the candidate chose the operands of one add/sub).
+            wire signed [16:0] p0 = 17'sd0 - vdc, p1 = vph - vdc, p2 = vn - vph;
+            wire signed [16:0] p5 = vn + vph, p6 = vdc - vph;
+            reg signed [16:0] pos;
             reg signed [1:0] phc, phcur;
             reg n;
             always @(*) begin
                 case (sp)
-                    3'd0: begin x = 0;   y = vdc; sub = 1'b1; n = 1'b0; phc = 2'sd0;  phcur = 2'sd0;  end
-                    3'd1: begin x = vph; y = vdc; sub = 1'b1; n = 1'b0; phc = 2'sd1;  phcur = -2'sd1; end
-                    3'd2: begin x = vn;  y = vph; sub = 1'b1; n = 1'b1; phc = -2'sd1; phcur = 2'sd1;  end
-                    3'd3: begin x = vn;  y = 0;   sub = 1'b0; n = 1'b1; phc = 2'sd0;  phcur = 2'sd0;  end
-                    3'd4: begin x = vn;  y = 0;   sub = 1'b0; n = 1'b1; phc = 2'sd0;  phcur = 2'sd0;  end
-                    3'd5: begin x = vn;  y = vph; sub = 1'b0; n = 1'b1; phc = 2'sd1;  phcur = -2'sd1; end
-                    3'd6: begin x = vdc; y = vph; sub = 1'b1; n = 1'b0; phc = -2'sd1; phcur = 2'sd1;  end
-                    default: begin x = vdc; y = 0; sub = 1'b0; n = 1'b0; phc = 2'sd0; phcur = 2'sd0; end
+                    3'd0: begin pos = p0;  n = 1'b0; phc = 2'sd0;  phcur = 2'sd0;  end
+                    3'd1: begin pos = p1;  n = 1'b0; phc = 2'sd1;  phcur = -2'sd1; end
+                    3'd2: begin pos = p2;  n = 1'b1; phc = -2'sd1; phcur = 2'sd1;  end
+                    3'd3: begin pos = vn;  n = 1'b1; phc = 2'sd0;  phcur = 2'sd0;  end
+                    3'd4: begin pos = vn;  n = 1'b1; phc = 2'sd0;  phcur = 2'sd0;  end
+                    3'd5: begin pos = p5;  n = 1'b1; phc = 2'sd1;  phcur = -2'sd1; end
+                    3'd6: begin pos = p6;  n = 1'b0; phc = -2'sd1; phcur = 2'sd1;  end
+                    default: begin pos = vdc; n = 1'b0; phc = 2'sd0; phcur = 2'sd0; end
                 endcase
             end
             // -ph_current P_ph: 0 - P_ph, +P_ph or 0 (one add/sub).
@@ -181,7 +186,7 @@ module mpdcc_explorer #(
             wire signed [16:0] v0n;
             wire signed [32:0] ipn;
             mpdcc_pipe #(.W(17), .N(1)) u_v0 (.clk_i(clk_i), .rst_i(rst_i),
-                .d_i(sub ? x - y : x + y), .q_o(v0n));
+                .d_i(pos), .q_o(v0n));
             mpdcc_pipe #(.W(33), .N(1)) u_ip (.clk_i(clk_i), .rst_i(rst_i), .d_i(ip), .q_o(ipn));
             assign v0_d[gi] = {{(W - 17) {v0n[16]}}, v0n};
             assign invp_d[gi] = {{(W - 33) {ipn[32]}}, ipn};

@@ -81,6 +81,7 @@ const TOPS: &[(&str, &[&str], &str)] = &[
         "mpdcc_core",
         &[
             "mpdcc_core.v",
+            "mpdcc_common.v",
             "mpdcc_explorer.v",
             "mpdcc_lane.v",
             "mpdcc_piece.v",
@@ -94,6 +95,7 @@ const TOPS: &[(&str, &[&str], &str)] = &[
         MPDCC_CORE_SHARED,
         &[
             "mpdcc_core.v",
+            "mpdcc_common.v",
             "mpdcc_explorer.v",
             "mpdcc_lane.v",
             "mpdcc_piece.v",

@@ -163,7 +163,6 @@ fn pl_top_without_the_mpdcc_core_within_8_ns() {
 /// The MPDCC core's table (`scripts/mpdcc-table`): every synthesised row
 /// within 8 ns.
 #[test]
-#[ignore = "fails: 8.29 ns in mpdcc_common.v, the shared multipliers' operand selection (slot counter through a 7-LUT priority chain into the DSP48E1 operand register); the explorer's 9.43 ns path is fixed (docs/mpdcc-fpga.md)"]
 fn mpdcc_within_8_ns() {
     let over = rows_over_8_ns("docs/mpdcc-rtl-table.md");
     assert!(over.is_empty(), "{over:#?}");
@@ -172,7 +171,6 @@ fn mpdcc_within_8_ns() {
 /// The same for the whole `pl_top` (composed with the MPDCC core's
 /// netlist: `scripts/rtl-synth pl_top` after `scripts/mpdcc-table 4:1`).
 #[test]
-#[ignore = "fails: 8.29 ns, mpdcc_core's own operand selection (see above); the paths that end outside mpdcc_core are 7.89 ns"]
 fn pl_top_within_8_ns() {
     let over = rows_over_8_ns("docs/rtl-resources-pl-top.md");
     assert!(over.is_empty(), "{over:#?}");
