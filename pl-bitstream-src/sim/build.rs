@@ -430,6 +430,32 @@ fn runtime_objs(mdir: &Path, top: &str) {
         .args(objs));
 }
 
+/// Models Verilated at a time by `prebuild`.
+const PARALLEL_MODELS: usize = 2;
+
+/// Verilates the models into the cache `PARALLEL_MODELS` at a time before
+/// the loop of `main` takes them from it: Verilator's front end runs on
+/// one core and a model's last large file compiles alone, so one model at
+/// a time left a core idle for much of a fresh clone's first build.
+/// Nothing to do without a cache (then `main` builds them one by one).
+fn prebuild(rtl: &Path, out: &Path) {
+    if cache_root(out).is_none() {
+        return;
+    }
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    std::thread::scope(|s| {
+        for _ in 0..PARALLEL_MODELS {
+            s.spawn(|| {
+                while let Some((top, files, _)) =
+                    TOPS.get(next.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
+                {
+                    verilate(rtl, out, top, files);
+                }
+            });
+        }
+    });
+}
+
 fn main() {
     let manifest = PathBuf::from(env::var("CARGO_MANIFEST_DIR").unwrap());
     let rtl = manifest.join("../rtl");
@@ -465,6 +491,7 @@ fn main() {
     // `pl-cosim`'s instructions, docs/speed.md).
     let mut pl_top_shim = shim.clone();
     pl_top_shim.opt_level(2);
+    prebuild(&rtl, &out);
     let mut models = Vec::new();
     for (top, files, shim_src) in TOPS {
         for f in *files {
