@@ -466,4 +466,30 @@ mod tests {
     fn config_push_seeds_and_mutants() {
         run("config_push", config_push);
     }
+
+    /// The `[profile.test...]` sections from `[profile.test]` to the end of
+    /// a manifest, without comments and blank lines.
+    fn test_profile(manifest: &str) -> Vec<String> {
+        let text = std::fs::read_to_string(manifest).unwrap();
+        let from = text.find("\n[profile.test]").expect("no [profile.test]");
+        text[from..]
+            .lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty() && !l.starts_with('#'))
+            .map(String::from)
+            .collect()
+    }
+
+    /// This crate's test profile is the main workspace's, so `cargo test`
+    /// here with `--target-dir target` reuses its builds: a profile that
+    /// differs rebuilds every dependency (about 110 s on a fresh clone).
+    #[test]
+    fn fuzz_profile_is_the_workspace_s() {
+        let dir = env!("CARGO_MANIFEST_DIR");
+        assert_eq!(
+            test_profile(&format!("{dir}/Cargo.toml")),
+            test_profile(&format!("{dir}/../Cargo.toml")),
+            "fuzz/Cargo.toml's test profile differs from Cargo.toml's"
+        );
+    }
 }
