@@ -318,16 +318,19 @@ fn check_input_region(mdir: &Path) {
 /// Marks a complete model directory in the cache.
 const DONE: &str = "complete";
 
-/// `<target>/verilated`: `OUT_DIR` is `<target>/<profile>/build/<pkg>/out`
-/// (`None` if that is not so: then nothing is cached).
+/// `<target>/verilated`: `OUT_DIR` is `<target>/<profile>/build/<pkg>/out`,
+/// recognised by the profile directory's `.fingerprint` (`None` if that is
+/// not so: then nothing is cached). Not by `<target>/CACHEDIR.TAG`: cargo
+/// writes that only into a target directory it creates itself, and
+/// `scripts/setup` creates `target/` first (its venvs), so on a fresh clone
+/// every profile and the gate-level build Verilated every model again.
 fn cache_root(out: &Path) -> Option<PathBuf> {
     if let Ok(dir) = env::var(CACHE_ENV) {
         return Some(PathBuf::from(dir));
     }
-    let target = out.ancestors().nth(4)?;
-    target
-        .join("CACHEDIR.TAG")
-        .exists()
+    let mut up = out.ancestors().skip(2);
+    let (build, profile, target) = (up.next()?, up.next()?, up.next()?);
+    (build.file_name() == Some("build".as_ref()) && profile.join(".fingerprint").is_dir())
         .then(|| target.join("verilated"))
 }
 
