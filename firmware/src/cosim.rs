@@ -20,8 +20,11 @@ use simpl::cosim::{cycle_after_write, Op, Reply, Request, Status, REPLY_LEN, REQ
 /// and the host serves the records in order whenever they arrive, at
 /// their own stamps, so holding them changes no reply (the request stream
 /// is the same, record for record). 16 records (384 bytes) stay below the
-/// 4,096 bytes a FIFO writes at once.
+/// 4,096 bytes a FIFO writes at once, with the reads sent with them.
 const HELD_MAX: usize = 16;
+
+/// Reads sent in one round trip by `read_many` at most.
+const READ_MANY_MAX: usize = 8;
 
 /// The bridge to `pl-cosim`.
 pub struct Cosim {
@@ -41,7 +44,7 @@ pub struct Cosim {
     pub motor: SimMotor,
     /// Request records not yet sent: posted writes, then the request that
     /// sends them.
-    out: [u8; (HELD_MAX + 1) * REQUEST_LEN],
+    out: [u8; (HELD_MAX + READ_MANY_MAX) * REQUEST_LEN],
     /// Bytes of `out` in use.
     held: usize,
 }
@@ -119,7 +122,7 @@ impl Cosim {
             motor: SimMotor::default(),
             stale: false,
             origin: None,
-            out: [0; (HELD_MAX + 1) * REQUEST_LEN],
+            out: [0; (HELD_MAX + READ_MANY_MAX) * REQUEST_LEN],
             held: 0,
         };
         // The first request: the host's time origin, where the PL is.
@@ -167,8 +170,8 @@ impl Cosim {
         Reply::decode(&b).map_err(|_| BusError::Absent)
     }
 
-    /// Appends a record to the ones to send (room for one more than
-    /// `HELD_MAX` posted writes is always left).
+    /// Appends a record to the ones to send (room for `READ_MANY_MAX`
+    /// more than `HELD_MAX` posted writes is always left).
     fn hold(&mut self, r: &Request) {
         self.out[self.held..self.held + REQUEST_LEN].copy_from_slice(&r.encode());
         self.held += REQUEST_LEN;
@@ -266,6 +269,48 @@ impl Cosim {
 impl RegisterBus for Cosim {
     fn read(&mut self, addr: usize) -> Result<u32, BusError> {
         Ok(self.transact(Op::Read, addr, 0)?.data)
+    }
+    /// Reads sent together (with the held posted writes) under one stamp:
+    /// the host serves them back to back from that cycle, each an ordinary
+    /// `Op::Read` with its own reply, and sends the replies together. One
+    /// round trip instead of one per register.
+    fn read_many(&mut self, addrs: &[usize], out: &mut [u32]) -> Result<(), BusError> {
+        let n = addrs.len().min(out.len()).min(READ_MANY_MAX);
+        let guest = timer::global_count();
+        for a in &addrs[..n] {
+            self.hold(&Request {
+                op: Op::Read,
+                addr: *a as u32,
+                data: 0,
+                guest,
+            });
+        }
+        let mut b = [0u8; READ_MANY_MAX * REPLY_LEN];
+        if !(self.flush() && self.rep.read_exact(&mut b[..n * REPLY_LEN])) {
+            return Err(BusError::Absent);
+        }
+        let mut first = Ok(());
+        for (rec, o) in b[..n * REPLY_LEN]
+            .chunks_exact(REPLY_LEN)
+            .zip(out.iter_mut())
+        {
+            let mut r = [0u8; REPLY_LEN];
+            r.copy_from_slice(rec);
+            let reply = Reply::decode(&r).map_err(|_| BusError::Absent)?;
+            self.last = reply;
+            self.stale = false;
+            *o = reply.data;
+            if reply.status != Status::Ok {
+                *o = 0;
+                first = first.and(Err(BusError::SlaveError));
+            }
+        }
+        // Longer lists than one round trip carries: the rest in another.
+        if n < addrs.len().min(out.len()) {
+            let rest = self.read_many(&addrs[n..], &mut out[n..]);
+            first = first.and(rest);
+        }
+        first
     }
     fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
         if let Some(r) = self.post(addr, value) {
