@@ -1555,7 +1555,7 @@ fn foc_measurement_lag_s(cfg: &ServoConfig) -> f64 {
 
 /// FOC: the share of the period before's voltage in the change of current
 /// between two steps' measurements, periods. Measured on the simulated PL
-/// (`cargo test -p simpl --test evidence`): after a current step from zero
+/// (`cargo test -p simpl --test host evidence::`): after a current step from zero
 /// the measured current was 0.69 of the one-period prediction with the
 /// last period's duties alone, 0.82 with the measurement's lag (0.156
 /// periods), 1.00 with 0.31.
