@@ -619,7 +619,8 @@ module mpdcc_core #(
     endfunction
     generate
         for (gi = 1; gi <= F_AM; gi = gi + 1) begin : g_rvd
-            localparam [8:0] F_J = F_LAT + gi;
+            localparam integer F_JI = F_LAT + gi;
+            localparam [8:0] F_J = F_JI[8:0];
             localparam integer K = LEAVES >> gi;
             integer x;
             always @(*) begin
@@ -627,10 +628,11 @@ module mpdcc_core #(
                     assert (f_rvd[N*(gi-1) +: N] == ((f_cyc <= F_J) ? {N{1'b0}}
                             : f_issued_at(f_cyc - F_J, f_first, f_lastclk, f_full, f_restv)));
                 for (x = 0; x < K; x = x + 1) begin
-                    if (x << gi < N)
+                    if (x << gi < N) begin
                         assert (g_lvl[gi-1].r_q[RW*x+F_N +: 4] == f_cnt_of(f_rvd[N*(gi-1) +: N], x << gi, 1 << gi));
-                    else
+                    end else begin
                         assert (g_lvl[gi-1].r_q[RW*x +: RW] == {RW{1'b0}});
+                    end
                 end
             end
         end
