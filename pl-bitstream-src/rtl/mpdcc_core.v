@@ -604,6 +604,39 @@ module mpdcc_core #(
             end
         end
     endgenerate
+    // Through the arg-min tree, stage by stage: f_rvd stage j holds the
+    // results of clock f_cyc - F_LAT - j, and the record counts of tree
+    // level j - 1 are their popcounts (records past the N leaves hold
+    // nothing). Implied by the assertions above from reset on; stated so
+    // that the induction needs one step instead of four (the tree and f_rvd
+    // are otherwise free in the induction's first states).
+    function automatic [3:0] f_cnt_of(input [N-1:0] v, input integer lo, input integer w);
+        integer q;
+        begin
+            f_cnt_of = 4'd0;
+            for (q = 0; q < N; q = q + 1) if (q >= lo && q < lo + w) f_cnt_of = f_cnt_of + {3'd0, v[q]};
+        end
+    endfunction
+    generate
+        for (gi = 1; gi <= F_AM; gi = gi + 1) begin : g_rvd
+            localparam integer F_JI = F_LAT + gi;
+            localparam [8:0] F_J = F_JI[8:0];
+            localparam integer K = LEAVES >> gi;
+            integer x;
+            always @(*) begin
+                if (f_busy)
+                    assert (f_rvd[N*(gi-1) +: N] == ((f_cyc <= F_J) ? {N{1'b0}}
+                            : f_issued_at(f_cyc - F_J, f_first, f_lastclk, f_full, f_restv)));
+                for (x = 0; x < K; x = x + 1) begin
+                    if (x << gi < N) begin
+                        assert (g_lvl[gi-1].r_q[RW*x+F_N +: 4] == f_cnt_of(f_rvd[N*(gi-1) +: N], x << gi, 1 << gi));
+                    end else begin
+                        assert (g_lvl[gi-1].r_q[RW*x +: RW] == {RW{1'b0}});
+                    end
+                end
+            end
+        end
+    endgenerate
 
     // -- reset: the clock after a reset is idle, without done_o, with the
     //    counters cleared (a decision in flight is dropped: no done_o for
