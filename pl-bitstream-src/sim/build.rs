@@ -171,8 +171,8 @@ fn opt_fast(top: &str) -> &'static str {
 /// the same for the MPDTC core (busy 39 of about 1,564 cycles a period);
 /// `SIM_REGS_CLOCK_GATE`, the register file clocked only around its bus
 /// accesses (about 20 of 1,564 cycles a period in the co-simulation);
-/// `SIM_FE_CLOCK_GATE`, the MPDTC front end clocked only in reset and for
-/// 17 edges from a start (one start a period).
+/// `SIM_FE_CLOCK_GATE`, the MPDTC front end clocked only in reset, at a
+/// start and for 16 edges after either (one start a period).
 fn defines(top: &str) -> &'static [&'static str] {
     if top == "pl_top" {
         &[
