@@ -248,7 +248,10 @@ fn verilate(rtl: &Path, out: &Path, top: &str, files: &[&str]) -> PathBuf {
         cmd.arg(format!("-GII={MPDCC_CORE_SHARED_II}"));
     }
     if let Some((n, cells)) = &netlist {
+        // the cell models too: their contents are in the model's key, but
+        // without this a changed cells_sim.v kept the old model
         println!("cargo:rerun-if-changed={}", n.display());
+        println!("cargo:rerun-if-changed={}", cells.display());
         println!(
             "cargo:warning={top}: simulating the gate-level netlist {}",
             n.display()
