@@ -1244,10 +1244,9 @@ impl Servo {
         // The result count first: a late step can run past the next
         // boundary, and a count read after it would make the step that
         // serves that boundary see no new result.
-        let adc_count = Adc(&mut *bus).count()?;
+        let (adc_count, i_abc) = Adc(&mut *bus).count_and_currents_a(&self.cfg.adc)?;
         // The autonomous loop: the PL computes the core's inputs itself.
         let auto = self.mode == Mode::Mpdtc && !self.cfg.mpdtc_ps_fed;
-        let i_abc = Adc(&mut *bus).currents_a(&self.cfg.adc)?;
         // The position of the boundary's instant, as the currents: a live
         // read would move with how long the step took to get here.
         let enc = Encoder(&mut *bus).read_sampled()?;
