@@ -5,6 +5,17 @@ use regmap::regs::enc::{
     EncCpr, EncCprValue, EncPos, EncPosSample, EncPosSampleValue, EncPosValue, EncSpeed,
     EncSpeedValue, EncWindow, EncWindowValue,
 };
+use regmap::regs::top::{BoundaryAge, BoundaryAgeValue, IrqStatus, IrqStatusValue};
+
+/// The live count read late in a control period ([`Encoder::live_pos_in_period`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LivePos {
+    /// `ENC_POS`, counts in `0..cpr`.
+    pub pos: u32,
+    /// `BOUNDARY_AGE` read just after it: PL cycles since the boundary,
+    /// at least the count's own age.
+    pub age: u32,
+}
 
 /// Encoder readings.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -56,6 +67,21 @@ impl<B: RegisterBus> Encoder<B> {
     /// The live position `ENC_POS` alone, counts.
     pub fn live_pos(&mut self) -> Result<u32, BusError> {
         Ok(EncPos::read(&mut self.0)?.value())
+    }
+    /// The live position `ENC_POS` with its age after the last boundary,
+    /// if it was read before the next boundary: `BOUNDARY_AGE` and
+    /// `IRQ_STATUS` read after it (in one group) show no boundary since the
+    /// control step acknowledged its own. `None`: the step ran past the
+    /// boundary, so its reads may already be of the next period.
+    pub fn live_pos_in_period(&mut self) -> Result<Option<LivePos>, BusError> {
+        let mut w = [0; 3];
+        let a = [EncPos::ADDR, BoundaryAge::ADDR, IrqStatus::ADDR];
+        self.0.read_many(&a, &mut w)?;
+        let crossed = IrqStatusValue::from_bits(w[2]).boundary();
+        Ok((!crossed).then_some(LivePos {
+            pos: EncPosValue::from_bits(w[0]).value(),
+            age: BoundaryAgeValue::from_bits(w[1]).bits(),
+        }))
     }
     /// The position register at `pos_addr` (decoded by `pos`), then the
     /// rest, back to back.

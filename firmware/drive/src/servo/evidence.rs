@@ -169,13 +169,24 @@ pub struct FastVerdict {
     /// Smallest `|measured| / |predicted|` of a phase predicted at
     /// [`FAST_PRED_MIN_A`] or more (`INFINITY`: none), for the margins.
     pub open_ratio: f64,
-    /// Counts the back-EMF says the rotor turned in the period (0 when
-    /// not judged).
+    /// Counts the back-EMF says the rotor turned while the count was seen
+    /// still in the period (0 when not judged).
     pub counts: f64,
     /// The count stood still over the period.
     pub still: bool,
     /// The predicted phase currents, A.
     pub pred_abc: [f64; 3],
+}
+
+/// The live count the last step read late in its period, and the share of
+/// the period still to come after that read (0..=1): the count stood still
+/// from there if this step's sample is the same.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Since {
+    /// Counts.
+    pub pos: u32,
+    /// Share of the control period after the read.
+    pub share: f64,
 }
 
 /// The fast tier's state: the period before.
@@ -195,13 +206,15 @@ impl FastTier {
     /// average stands that far before the step: the change of current
     /// between two steps follows the voltage of the period before by that
     /// share) and the encoder's `cpr`. The count stands still when `now`'s
-    /// equals `since`, the last count read in the period before (the live
-    /// count at the end of the last step; `None`: that step's sample).
+    /// equals the last count read in the period before: `since`, the live
+    /// count at the end of the last step, if it moved after that step's
+    /// sample (then the still interval is the share of the period after
+    /// it), else that step's sample (the whole period).
     pub fn step(
         &mut self,
         model: &MpdtcConfig,
         now: Period,
-        since: Option<u32>,
+        since: Option<Since>,
         age: f64,
         cpr: u32,
         allow: Allowance,
@@ -256,7 +269,14 @@ impl FastTier {
             let proven = e - MODEL_TOL * ri - allow.inductive * l_term;
             counts = counts_in_period(proven.max(0.0), mo.psi_pm_wb, mo.pole_pairs, cpr, ts);
         }
-        let still = now.pos == since.unwrap_or(last.pos);
+        // Only the interval the count was seen still over proves anything:
+        // the period's counts in its share of the period.
+        let (from, share) = match since {
+            Some(s) if s.pos != last.pos => (s.pos, s.share),
+            _ => (last.pos, 1.0),
+        };
+        let still = now.pos == from;
+        counts *= share;
         FastVerdict {
             open,
             dead: still && counts >= FAST_DEAD_COUNTS,

@@ -17,7 +17,7 @@
 //!   ADC results.
 use crate::pl::adc::{Adc, AdcScale};
 use crate::pl::capture::{CapState, Capture};
-use crate::pl::enc::Encoder;
+use crate::pl::enc::{Encoder, LivePos};
 use crate::pl::fault::{Fault, Faults};
 use crate::pl::mpdtc::{frontend_params, torque_ref_word, FrontendSetup, Mpdtc};
 use crate::pl::pwm::{duty_cycles, Pwm};
@@ -330,8 +330,9 @@ pub struct Servo {
     /// The one-period checks of both, and their last verdict.
     fast: FastTier,
     fast_last: FastVerdict,
-    /// The live encoder count at the end of the last step (gates on).
-    pos_at_end: Option<u32>,
+    /// The live encoder count at the end of the last step (gates on), if
+    /// read before the next boundary.
+    pos_at_end: Option<LivePos>,
     /// The torque reference of the last step, N m, and the steps it has
     /// stood within [`REF_STEADY_NM`] of the one before.
     ref_last: f64,
@@ -1384,11 +1385,17 @@ impl Servo {
         // The last count the PS sees in this period: a dead encoder's
         // still count is judged from here (a cause after this step may
         // follow an edge since the boundary's sample).
-        self.pos_at_end = if gates && running {
-            Some(Encoder(&mut *bus).live_pos()?)
-        } else {
-            None
-        };
+        self.pos_at_end = None;
+        if gates && running {
+            match Encoder(&mut *bus).live_pos_in_period()? {
+                Some(p) => self.pos_at_end = Some(p),
+                // The step ran past the next boundary (it started late):
+                // any of its reads may have found the next period's sample,
+                // which the next step then finds again, a still count of a
+                // moving rotor. The one-period checks start afresh there.
+                None => self.fast.reset(),
+            }
+        }
         Ok(())
     }
 
@@ -1423,9 +1430,16 @@ impl Servo {
         };
         // The first steps of a run carry the start's voltage: no verdict.
         let skip = self.evidence_skip > 0;
+        // The still interval from the end of the last step's read: the
+        // share of the period after it (its age is at least the count's).
+        let period_cycles = ts * f64::from(regmap::PL_CLOCK_HZ);
+        let since = self.pos_at_end.map(|l| evidence::Since {
+            pos: l.pos,
+            share: (1.0 - f64::from(l.age) / period_cycles).clamp(0.0, 1.0),
+        });
         let v = self
             .fast
-            .step(model, now, self.pos_at_end, age, self.cfg.enc_cpr, allow);
+            .step(model, now, since, age, self.cfg.enc_cpr, allow);
         if libm::fabs(t_ref - self.ref_last) <= REF_STEADY_NM {
             self.ref_steady = self.ref_steady.saturating_add(1);
         } else {
