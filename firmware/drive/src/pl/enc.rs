@@ -5,9 +5,9 @@ use regmap::regs::enc::{
     EncCpr, EncCprValue, EncPos, EncPosSample, EncPosSampleValue, EncPosValue, EncSpeed,
     EncSpeedValue, EncWindow, EncWindowValue,
 };
-use regmap::regs::top::{BoundaryAge, BoundaryAgeValue, IrqStatus, IrqStatusValue};
+use regmap::regs::top::{BoundaryAge, BoundaryAgeValue};
 
-/// The live count read late in a control period ([`Encoder::live_pos_in_period`]).
+/// The live count read late in a control period ([`Encoder::live_pos_aged`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct LivePos {
     /// `ENC_POS`, counts in `0..cpr`.
@@ -68,20 +68,17 @@ impl<B: RegisterBus> Encoder<B> {
     pub fn live_pos(&mut self) -> Result<u32, BusError> {
         Ok(EncPos::read(&mut self.0)?.value())
     }
-    /// The live position `ENC_POS` with its age after the last boundary,
-    /// if it was read before the next boundary: `BOUNDARY_AGE` and
-    /// `IRQ_STATUS` read after it (in one group) show no boundary since the
-    /// control step acknowledged its own. `None`: the step ran past the
-    /// boundary, so its reads may already be of the next period.
-    pub fn live_pos_in_period(&mut self) -> Result<Option<LivePos>, BusError> {
-        let mut w = [0; 3];
-        let a = [EncPos::ADDR, BoundaryAge::ADDR, IrqStatus::ADDR];
-        self.0.read_many(&a, &mut w)?;
-        let crossed = IrqStatusValue::from_bits(w[2]).boundary();
-        Ok((!crossed).then_some(LivePos {
+    /// The live position `ENC_POS` and, read just after it (in one
+    /// group), `BOUNDARY_AGE`: the count's age after the last boundary is
+    /// at most that.
+    pub fn live_pos_aged(&mut self) -> Result<LivePos, BusError> {
+        let mut w = [0; 2];
+        self.0
+            .read_many(&[EncPos::ADDR, BoundaryAge::ADDR], &mut w)?;
+        Ok(LivePos {
             pos: EncPosValue::from_bits(w[0]).value(),
             age: BoundaryAgeValue::from_bits(w[1]).bits(),
-        }))
+        })
     }
     /// The position register at `pos_addr` (decoded by `pos`), then the
     /// rest, back to back.

@@ -32,6 +32,7 @@ use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
 use models::pmsm::params::MotorParams;
 use models::validate::ParamError;
 use regmap::bus::{BusError, RegisterBus};
+use regmap::regs::top::BoundaryAge;
 use regmap::{self, seq_state};
 
 pub mod align;
@@ -988,6 +989,12 @@ impl Servo {
     /// end); the PS's checks start afresh.
     pub fn clear_faults<B: RegisterBus>(&mut self, bus: &mut B) -> Result<Faults, ServoError> {
         self.gates_off(bus)?;
+        // The step's start after the boundary: the interrupt handler's
+        // reading, else read here (a step that is not the interrupt's).
+        let start_age = match self.step_age {
+            Some(a) => a,
+            None => BoundaryAge::read(&mut *bus)?.bits(),
+        };
         self.beat = self.beat.wrapping_add(1);
         Top(&mut *bus).heartbeat(self.beat)?;
         Adc(&mut *bus).set_enabled(true)?;
@@ -1239,6 +1246,12 @@ impl Servo {
             Adc(&mut *bus).restart()?;
             self.adc_synced = true;
         }
+        // The step's start after the boundary: the interrupt handler's
+        // reading, else read here (a step that is not the interrupt's).
+        let start_age = match self.step_age {
+            Some(a) => a,
+            None => BoundaryAge::read(&mut *bus)?.bits(),
+        };
         self.beat = self.beat.wrapping_add(1);
         Top(&mut *bus).heartbeat(self.beat)?;
         self.periods += 1;
@@ -1387,13 +1400,16 @@ impl Servo {
         // follow an edge since the boundary's sample).
         self.pos_at_end = None;
         if gates && running {
-            match Encoder(&mut *bus).live_pos_in_period()? {
-                Some(p) => self.pos_at_end = Some(p),
-                // The step ran past the next boundary (it started late):
-                // any of its reads may have found the next period's sample,
-                // which the next step then finds again, a still count of a
-                // moving rotor. The one-period checks start afresh there.
-                None => self.fast.reset(),
+            let l = Encoder(&mut *bus).live_pos_aged()?;
+            if l.age >= start_age {
+                self.pos_at_end = Some(l);
+            } else {
+                // The age restarted: the step ran past the next boundary
+                // (it started late), and any of its reads may have found
+                // the next period's sample, which the next step then finds
+                // again, a still count of a moving rotor. The one-period
+                // checks start afresh there.
+                self.fast.reset();
             }
         }
         Ok(())
