@@ -989,12 +989,6 @@ impl Servo {
     /// end); the PS's checks start afresh.
     pub fn clear_faults<B: RegisterBus>(&mut self, bus: &mut B) -> Result<Faults, ServoError> {
         self.gates_off(bus)?;
-        // The step's start after the boundary: the interrupt handler's
-        // reading, else read here (a step that is not the interrupt's).
-        let start_age = match self.step_age {
-            Some(a) => a,
-            None => BoundaryAge::read(&mut *bus)?.bits(),
-        };
         self.beat = self.beat.wrapping_add(1);
         Top(&mut *bus).heartbeat(self.beat)?;
         Adc(&mut *bus).set_enabled(true)?;
