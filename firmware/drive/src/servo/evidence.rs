@@ -28,10 +28,10 @@
 //! finds the age restarted) may have read the next period's sample, which
 //! the next step finds again: the fast tier starts afresh there. A rotor
 //! that turns one count moves the count, so the estimate may be off by a
-//! factor of two in FOC and 1.5 in MPDTC before a healthy encoder trips.
+//! factor of two in FOC and 1.25 in MPDTC before a healthy encoder trips.
 //! The speed this needs over a whole period: two counts of 4096 per
-//! period, 343 rad/s electrical (7.8 rev/s) in FOC (62.56 us), and 1.5
-//! counts, 1029 rad/s (23 rev/s), in MPDTC (15.64 us), with the paper's
+//! period, 343 rad/s electrical (7.8 rev/s) in FOC (62.56 us), and 1.25
+//! counts, 858 rad/s (19.5 rev/s), in MPDTC (15.64 us), with the paper's
 //! motor (7 pole pairs, 9.3 mWb), and more while the tolerance's share is
 //! large (high current, a current step) or the interval short; the host
 //! tests trip at 1.5 times these speeds at 0.5 N m.
@@ -121,9 +121,9 @@ pub const FLOAT_PRED_MIN_A: f64 = 0.2;
 pub const FAST_DEAD_COUNTS: f64 = 2.0;
 /// The same in MPDTC, whose short period leaves a still interval of
 /// little more than a third of it after a slow step's last read (under
-/// co-simulation the step's guest time reaches 0.6 periods): 1.5 counts
-/// are 2.2 times the most a healthy run came to.
-pub const MPDTC_DEAD_COUNTS: f64 = 1.5;
+/// co-simulation the step's guest time reaches 0.6 to 0.7 periods): 1.25
+/// counts are 2.4 times the most a healthy run came to.
+pub const MPDTC_DEAD_COUNTS: f64 = 1.25;
 
 /// The open phase (0 = a), if any, from one period's predicted and
 /// measured phase currents, A, and the `fraction` of its prediction a
@@ -652,7 +652,7 @@ mod tests {
         };
         let v = f.step(&m, now, since(6, 0.1), 0.0, 4096, FOC_ALLOWANCE);
         assert!(v.still && (v.counts - 0.1 * whole).abs() < 1e-9, "{v:?}");
-        // Below the threshold at a share of 1.5 counts' worth.
+        // Just below the threshold.
         let mut f = FastTier::default();
         f.step(&m, p(i, emf), None, 0.0, 4096, FOC_ALLOWANCE);
         let share = 0.99 * FOC_ALLOWANCE.dead_counts / whole;
