@@ -84,6 +84,13 @@ impl RegisterBus for Backend {
             Backend::Cosim(b) => b.write(addr, value),
         }
     }
+    fn read_many(&mut self, addrs: &[usize], out: &mut [u32]) -> Result<(), BusError> {
+        match self {
+            Backend::Gp0(b) => b.read_many(addrs, out),
+            Backend::Sim(b) => b.read_many(addrs, out),
+            Backend::Cosim(b) => b.read_many(addrs, out),
+        }
+    }
 }
 
 impl PlTime for Backend {

@@ -12,7 +12,19 @@ use crate::semihosting::{self, HostFile};
 use models::pmsm::sim_motor::{SimMotor, SimSetError, SIM_PARAMS};
 use regmap::bus::{BusError, RegisterBus};
 use regmap::Access;
-use simpl::cosim::{cycle_after_write, Op, Reply, Request, Status, REPLY_LEN};
+use simpl::cosim::{cycle_after_write, Op, Reply, Request, Status, REPLY_LEN, REQUEST_LEN};
+
+/// Posted writes held back at most (then sent on their own). They go out
+/// with the next request that waits, in the same `SYS_WRITE`: each
+/// semihosting call costs QEMU more than a control step's instructions,
+/// and the host serves the records in order whenever they arrive, at
+/// their own stamps, so holding them changes no reply (the request stream
+/// is the same, record for record). 16 records (384 bytes) stay below the
+/// 4,096 bytes a FIFO writes at once, with the reads sent with them.
+const HELD_MAX: usize = 16;
+
+/// Reads sent in one round trip by `read_many` at most.
+const READ_MANY_MAX: usize = 8;
 
 /// The bridge to `pl-cosim`.
 pub struct Cosim {
@@ -30,6 +42,11 @@ pub struct Cosim {
     /// The simulated motor's parameters as the host was told them (it
     /// checks them with the same code).
     pub motor: SimMotor,
+    /// Request records not yet sent: posted writes, then the request that
+    /// sends them.
+    out: [u8; (HELD_MAX + READ_MANY_MAX) * REQUEST_LEN],
+    /// Bytes of `out` in use.
+    held: usize,
 }
 
 /// Counts per revolution of the bridge's simulated encoder
@@ -105,6 +122,8 @@ impl Cosim {
             motor: SimMotor::default(),
             stale: false,
             origin: None,
+            out: [0; (HELD_MAX + READ_MANY_MAX) * REQUEST_LEN],
+            held: 0,
         };
         // The first request: the host's time origin, where the PL is.
         let guest = timer::global_count();
@@ -130,18 +149,38 @@ impl Cosim {
             data,
             guest,
         };
-        let mut b = [0u8; REPLY_LEN];
-        if !(self.req.write_all(&r.encode()) && self.rep.read_exact(&mut b)) {
-            // The host went away: no PL answers any more.
-            return Err(BusError::Absent);
-        }
-        let reply = Reply::decode(&b).map_err(|_| BusError::Absent)?;
+        let reply = self.round_trip(&r)?;
         self.last = reply;
         self.stale = false;
         match reply.status {
             Status::Ok => Ok(reply),
             Status::SlaveError | Status::BadRequest => Err(BusError::SlaveError),
         }
+    }
+
+    /// Sends the held posted writes and `r` in one host write, then waits
+    /// for `r`'s reply.
+    fn round_trip(&mut self, r: &Request) -> Result<Reply, BusError> {
+        self.hold(r);
+        let mut b = [0u8; REPLY_LEN];
+        if !(self.flush() && self.rep.read_exact(&mut b)) {
+            // The host went away: no PL answers any more.
+            return Err(BusError::Absent);
+        }
+        Reply::decode(&b).map_err(|_| BusError::Absent)
+    }
+
+    /// Appends a record to the ones to send (room for `READ_MANY_MAX`
+    /// more than `HELD_MAX` posted writes is always left).
+    fn hold(&mut self, r: &Request) {
+        self.out[self.held..self.held + REQUEST_LEN].copy_from_slice(&r.encode());
+        self.held += REQUEST_LEN;
+    }
+
+    /// Sends the held records; false if the host could not take them.
+    fn flush(&mut self) -> bool {
+        let n = core::mem::take(&mut self.held);
+        n == 0 || self.req.write_all(&self.out[..n])
     }
 
     /// `sim set`: checked here, then on the host; nothing changes when
@@ -178,11 +217,7 @@ impl Cosim {
             data: 0,
             guest: bits,
         };
-        let mut b = [0u8; REPLY_LEN];
-        if !(self.req.write_all(&r.encode()) && self.rep.read_exact(&mut b)) {
-            return Err(BusError::Absent);
-        }
-        let reply = Reply::decode(&b).map_err(|_| BusError::Absent)?;
+        let reply = self.round_trip(&r)?;
         match reply.status {
             Status::Ok => Ok(reply),
             Status::SlaveError | Status::BadRequest => Err(BusError::SlaveError),
@@ -204,8 +239,8 @@ impl Cosim {
         Ok(self.last)
     }
 
-    /// A write without waiting for the host (`Op::PostedWrite`), where its
-    /// outcome is known: a writable register of the map answers OKAY to any
+    /// A write without waiting for the host (`Op::PostedWrite`, held and
+    /// sent with the next request that waits), where its outcome is known: a writable register of the map answers OKAY to any
     /// value (a rejected value sets ERR.BAD_VALUE, as on the bus), in
     /// `WRITE_CYCLES` from its stamp. `None`: not postable (waits).
     fn post(&mut self, addr: usize, value: u32) -> Option<Result<(), BusError>> {
@@ -221,7 +256,8 @@ impl Cosim {
             data: value,
             guest,
         };
-        if !self.req.write_all(&r.encode()) {
+        self.hold(&r);
+        if self.held >= HELD_MAX * REQUEST_LEN && !self.flush() {
             return Some(Err(BusError::Absent));
         }
         self.last.pl_cycles = cycle_after_write(origin, guest, self.last.pl_cycles);
@@ -233,6 +269,48 @@ impl Cosim {
 impl RegisterBus for Cosim {
     fn read(&mut self, addr: usize) -> Result<u32, BusError> {
         Ok(self.transact(Op::Read, addr, 0)?.data)
+    }
+    /// Reads sent together (with the held posted writes) under one stamp:
+    /// the host serves them back to back from that cycle, each an ordinary
+    /// `Op::Read` with its own reply, and sends the replies together. One
+    /// round trip instead of one per register.
+    fn read_many(&mut self, addrs: &[usize], out: &mut [u32]) -> Result<(), BusError> {
+        let n = addrs.len().min(out.len()).min(READ_MANY_MAX);
+        let guest = timer::global_count();
+        for a in &addrs[..n] {
+            self.hold(&Request {
+                op: Op::Read,
+                addr: *a as u32,
+                data: 0,
+                guest,
+            });
+        }
+        let mut b = [0u8; READ_MANY_MAX * REPLY_LEN];
+        if !(self.flush() && self.rep.read_exact(&mut b[..n * REPLY_LEN])) {
+            return Err(BusError::Absent);
+        }
+        let mut first = Ok(());
+        for (rec, o) in b[..n * REPLY_LEN]
+            .chunks_exact(REPLY_LEN)
+            .zip(out.iter_mut())
+        {
+            let mut r = [0u8; REPLY_LEN];
+            r.copy_from_slice(rec);
+            let reply = Reply::decode(&r).map_err(|_| BusError::Absent)?;
+            self.last = reply;
+            self.stale = false;
+            *o = reply.data;
+            if reply.status != Status::Ok {
+                *o = 0;
+                first = first.and(Err(BusError::SlaveError));
+            }
+        }
+        // Longer lists than one round trip carries: the rest in another.
+        if n < addrs.len().min(out.len()) {
+            let rest = self.read_many(&addrs[n..], &mut out[n..]);
+            first = first.and(rest);
+        }
+        first
     }
     fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
         if let Some(r) = self.post(addr, value) {

@@ -30,9 +30,11 @@ const PERIOD: [(&str, u64); 2] = [("foc", 6256), ("mpdtc", 1564)];
 /// two (`OVERCURRENT` in MPDTC: 364 or 366 from run to run).
 const DOC_TOLERANCE: i64 = 4;
 /// The same for the co-simulated `pl_top`'s columns: the bridge's bus
-/// accesses take a varying number of PL cycles (`POSITION_LIMIT` in FOC
-/// measured 6105 and 6113).
-const RTL_DOC_TOLERANCE: i64 = 64;
+/// accesses take a varying number of PL cycles, and a console command's
+/// register accesses (the test's `status` polls, served as they arrive in
+/// wall time) may delay the step that trips (`PHASE_OPEN` in MPDTC
+/// measured 1430, 1443 and 1513 in three runs).
+const RTL_DOC_TOLERANCE: i64 = 128;
 /// The same for `OVERCURRENT` on the co-simulated `pl_top`: its cause is
 /// the write of `OC_LIMIT`, and the trip waits for the next raw ADC sample.
 /// The bridge's varying delay puts that write anywhere in the raw sampling
@@ -505,7 +507,8 @@ fn tables_compare_within_the_tolerance_only() {
     let row = |s: i64, r: i64| {
         format!("| `X` | 1 | c | {s} (6256) | 3 (1564) | {r} (6256) | 3 (1564) |\n")
     };
-    assert!(same_table(&row(100, 200), &row(104, 264)));
+    let r = 200 + RTL_DOC_TOLERANCE;
+    assert!(same_table(&row(100, 200), &row(104, r)));
     assert!(!same_table(&row(100, 200), &row(105, 200)));
-    assert!(!same_table(&row(100, 200), &row(100, 265)));
+    assert!(!same_table(&row(100, 200), &row(100, r + 1)));
 }

@@ -27,6 +27,24 @@ pub trait RegisterBus {
     /// Writes `value` to the register at the absolute address `addr`, all
     /// four byte strobes set.
     fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError>;
+    /// Reads the registers at `addrs`, in this order, back to back into
+    /// `out` (one word each; `out` at least as long as `addrs`). Every read
+    /// is made; the result is the first one's error, if any. A bus that
+    /// sends requests (the co-simulation bridge) sends them together and
+    /// waits once.
+    fn read_many(&mut self, addrs: &[usize], out: &mut [u32]) -> Result<(), BusError> {
+        let mut first = Ok(());
+        for (a, o) in addrs.iter().zip(out.iter_mut()) {
+            match self.read(*a) {
+                Ok(v) => *o = v,
+                Err(e) => {
+                    *o = 0;
+                    first = first.and(Err(e));
+                }
+            }
+        }
+        first
+    }
 }
 
 impl<B: RegisterBus + ?Sized> RegisterBus for &mut B {
@@ -35,6 +53,9 @@ impl<B: RegisterBus + ?Sized> RegisterBus for &mut B {
     }
     fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
         (**self).write(addr, value)
+    }
+    fn read_many(&mut self, addrs: &[usize], out: &mut [u32]) -> Result<(), BusError> {
+        (**self).read_many(addrs, out)
     }
 }
 
@@ -66,6 +87,49 @@ mod tests {
 
     fn poke<B: RegisterBus>(mut bus: B, addr: usize, v: u32) -> Result<(), BusError> {
         bus.write(addr, v)
+    }
+
+    fn many<B: RegisterBus>(mut bus: B, a: &[usize], out: &mut [u32]) -> Result<(), BusError> {
+        bus.read_many(a, out)
+    }
+
+    #[test]
+    fn read_many_reads_every_address_in_order_and_reports_the_first_error() {
+        let mut bus = Four([(0x10, 1), (0x14, 2), (0x18, 3), (0x1C, 4)]);
+        let mut out = [9u32; 4];
+        // Through `&mut B`'s forwarding, as the drivers call it.
+        assert_eq!(many(&mut bus, &[0x1C, 0x10, 0x18], &mut out), Ok(()));
+        assert_eq!(out, [4, 1, 3, 9]);
+        // An unmapped address in the middle: the reads after it still made.
+        assert_eq!(
+            bus.read_many(&[0x14, 0x20, 0x18], &mut out),
+            Err(BusError::SlaveError)
+        );
+        assert_eq!(out, [2, 0, 3, 9]);
+    }
+
+    /// A bus that answers groups itself (as the co-simulation bridge does).
+    struct Grouped(Four, u32);
+
+    impl RegisterBus for Grouped {
+        fn read(&mut self, addr: usize) -> Result<u32, BusError> {
+            self.0.read(addr)
+        }
+        fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
+            self.0.write(addr, value)
+        }
+        fn read_many(&mut self, addrs: &[usize], out: &mut [u32]) -> Result<(), BusError> {
+            self.1 += 1;
+            self.0.read_many(addrs, out)
+        }
+    }
+
+    #[test]
+    fn a_mutable_reference_forwards_groups_to_the_bus() {
+        let mut bus = Grouped(Four([(0x10, 5), (0x14, 6), (0x18, 0), (0x1C, 0)]), 0);
+        let mut out = [0u32; 2];
+        assert_eq!(many(&mut bus, &[0x14, 0x10], &mut out), Ok(()));
+        assert_eq!((out, bus.1), ([6, 5], 1));
     }
 
     #[test]

@@ -81,6 +81,15 @@ fn steps_to_gates_off(s: &mut Servo, sim: &mut SimDrive, period: u64) -> (u32, u
     (j, s.faults(sim).unwrap().0)
 }
 
+/// The fast tier's allowances in `mode`.
+fn allowance(mode: Mode) -> evidence::Allowance {
+    if mode == Mode::Foc {
+        evidence::FOC_ALLOWANCE
+    } else {
+        evidence::MPDTC_ALLOWANCE
+    }
+}
+
 /// Electrical speed from which the fast tier sees a dead encoder: its
 /// count threshold per control period, rad/s.
 fn fast_speed(s: &Servo) -> f64 {
@@ -89,7 +98,7 @@ fn fast_speed(s: &Servo) -> f64 {
         SimConfig::default().adc_amps_per_count,
     );
     let ts = 1.0 / s.control_rate_hz();
-    evidence::FAST_DEAD_COUNTS * 2.0 * core::f64::consts::PI / f64::from(c.enc_cpr) / ts
+    allowance(s.mode()).dead_counts * 2.0 * core::f64::consts::PI / f64::from(c.enc_cpr) / ts
         * f64::from(c.motor.pole_pairs)
 }
 
@@ -198,17 +207,13 @@ fn margins(
 
 #[test]
 fn no_trip_without_a_fault_and_the_margins() {
-    let c = evidence::FAST_DEAD_COUNTS;
     for mode in [Mode::Foc, Mode::Mpdtc] {
+        let c = allowance(mode).dead_counts;
         // Steps at the torque limit (1 N m); the MPDTC's reversal of 2 N m
         // on a locked rotor overshoots into OVERCURRENT (13.4 A): 0.8 N m.
         let amp = if mode == Mode::Foc { 1.0 } else { 0.8 };
         let mut report = Vec::new();
-        let r = if mode == Mode::Foc {
-            evidence::FOC_ALLOWANCE.open_fraction
-        } else {
-            evidence::MPDTC_ALLOWANCE.open_fraction
-        };
+        let r = allowance(mode).open_fraction;
         // A locked rotor at 0.5 N m for 20 ms.
         let (mut s, mut sim, p) = running(mode, 0.5, true, |_, k| k > 10);
         let n = (2_000_000 / p) as u32;

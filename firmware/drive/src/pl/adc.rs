@@ -5,8 +5,18 @@
 //! board's current sensing, not of the register map: [`AdcScale`].
 use regmap::bus::{BusError, RegisterBus};
 use regmap::regs::adc::{
-    AdcCount, AdcCtrl, AdcCtrlValue, AdcIa, AdcIb, AdcIc, AdcPeriod, AdcPeriodValue,
+    AdcCount, AdcCountValue, AdcCtrl, AdcCtrlValue, AdcIa, AdcIaValue, AdcIb, AdcIbValue, AdcIc,
+    AdcIcValue, AdcPeriod, AdcPeriodValue,
 };
+
+/// `ADC_IA..IC` words to signed counts.
+fn counts(w: &[u32; 3]) -> [i32; 3] {
+    [
+        AdcIaValue::from_bits(w[0]).value_i32(),
+        AdcIbValue::from_bits(w[1]).value_i32(),
+        AdcIcValue::from_bits(w[2]).value_i32(),
+    ]
+}
 
 /// Current sensing gain: amperes per ADC count.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -28,16 +38,26 @@ pub struct Adc<B>(pub B);
 impl<B: RegisterBus> Adc<B> {
     /// Latest averaged phase currents a, b, c, counts.
     pub fn currents_counts(&mut self) -> Result<[i32; 3], BusError> {
-        Ok([
-            AdcIa::read(&mut self.0)?.value_i32(),
-            AdcIb::read(&mut self.0)?.value_i32(),
-            AdcIc::read(&mut self.0)?.value_i32(),
-        ])
+        let mut w = [0; 3];
+        self.0
+            .read_many(&[AdcIa::ADDR, AdcIb::ADDR, AdcIc::ADDR], &mut w)?;
+        Ok(counts(&w))
     }
     /// Latest averaged phase currents a, b, c, A.
     pub fn currents_a(&mut self, scale: &AdcScale) -> Result<[f64; 3], BusError> {
         let c = self.currents_counts()?;
         Ok(c.map(|x| scale.amps(x)))
+    }
+    /// [`Adc::count`], then [`Adc::currents_a`], read back to back.
+    pub fn count_and_currents_a(&mut self, scale: &AdcScale) -> Result<(u32, [f64; 3]), BusError> {
+        let a = [AdcCount::ADDR, AdcIa::ADDR, AdcIb::ADDR, AdcIc::ADDR];
+        let mut w = [0; 4];
+        self.0.read_many(&a, &mut w)?;
+        let c = counts(&[w[1], w[2], w[3]]);
+        Ok((
+            AdcCountValue::from_bits(w[0]).value(),
+            c.map(|x| scale.amps(x)),
+        ))
     }
     /// Averaged results since reset (wraps).
     pub fn count(&mut self) -> Result<u32, BusError> {

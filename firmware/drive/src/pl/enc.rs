@@ -1,7 +1,21 @@
 //! Encoder block: position and speed, and their electrical equivalents.
 use core::f64::consts::TAU;
 use regmap::bus::{BusError, RegisterBus};
-use regmap::regs::enc::{EncCpr, EncPos, EncPosSample, EncSpeed, EncWindow};
+use regmap::regs::enc::{
+    EncCpr, EncCprValue, EncPos, EncPosSample, EncPosSampleValue, EncPosValue, EncSpeed,
+    EncSpeedValue, EncWindow, EncWindowValue,
+};
+use regmap::regs::top::{BoundaryAge, BoundaryAgeValue};
+
+/// The live count read late in a control period ([`Encoder::live_pos_aged`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LivePos {
+    /// `ENC_POS`, counts in `0..cpr`.
+    pub pos: u32,
+    /// `BOUNDARY_AGE` read just after it: PL cycles since the boundary,
+    /// at least the count's own age.
+    pub age: u32,
+}
 
 /// Encoder readings.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -40,26 +54,43 @@ pub struct Encoder<B>(pub B);
 impl<B: RegisterBus> Encoder<B> {
     /// Live position, resolution, speed and window in one go.
     pub fn read(&mut self) -> Result<EncReading, BusError> {
-        let pos = EncPos::read(&mut self.0)?.value();
-        self.read_with(pos)
+        self.read_with(EncPos::ADDR, |w| EncPosValue::from_bits(w).value())
     }
     /// As [`Encoder::read`], with the position latched at the last
     /// control-period boundary: the control step's position, of the same
     /// instant as its sample whenever in the period the step reads it.
     pub fn read_sampled(&mut self) -> Result<EncReading, BusError> {
-        let pos = EncPosSample::read(&mut self.0)?.value();
-        self.read_with(pos)
+        self.read_with(EncPosSample::ADDR, |w| {
+            EncPosSampleValue::from_bits(w).value()
+        })
     }
     /// The live position `ENC_POS` alone, counts.
     pub fn live_pos(&mut self) -> Result<u32, BusError> {
         Ok(EncPos::read(&mut self.0)?.value())
     }
-    fn read_with(&mut self, pos: u32) -> Result<EncReading, BusError> {
+    /// The live position `ENC_POS` and, read just after it (in one
+    /// group), `BOUNDARY_AGE`: the count's age after the last boundary is
+    /// at most that.
+    pub fn live_pos_aged(&mut self) -> Result<LivePos, BusError> {
+        let mut w = [0; 2];
+        self.0
+            .read_many(&[EncPos::ADDR, BoundaryAge::ADDR], &mut w)?;
+        Ok(LivePos {
+            pos: EncPosValue::from_bits(w[0]).value(),
+            age: BoundaryAgeValue::from_bits(w[1]).bits(),
+        })
+    }
+    /// The position register at `pos_addr` (decoded by `pos`), then the
+    /// rest, back to back.
+    fn read_with(&mut self, pos_addr: usize, pos: fn(u32) -> u32) -> Result<EncReading, BusError> {
+        let a = [pos_addr, EncCpr::ADDR, EncSpeed::ADDR, EncWindow::ADDR];
+        let mut w = [0; 4];
+        self.0.read_many(&a, &mut w)?;
         Ok(EncReading {
-            pos,
-            cpr: EncCpr::read(&mut self.0)?.value(),
-            speed: EncSpeed::read(&mut self.0)?.value_i32(),
-            window: EncWindow::read(&mut self.0)?.value(),
+            pos: pos(w[0]),
+            cpr: EncCprValue::from_bits(w[1]).value(),
+            speed: EncSpeedValue::from_bits(w[2]).value_i32(),
+            window: EncWindowValue::from_bits(w[3]).value(),
         })
     }
     /// Counts per mechanical revolution (the PL clamps to 4..=65535).

@@ -23,8 +23,9 @@ pub struct Taken {
 /// Reads the flags and the age, then acknowledges the flags read (the
 /// line drops; a boundary in the same cycle still sets its flag).
 pub fn take<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<Taken, BusError> {
-    let age = BoundaryAge::read(bus)?.bits();
-    let status = IrqStatus::read(bus)?;
+    let mut w = [0; 2];
+    bus.read_many(&[BoundaryAge::ADDR, IrqStatus::ADDR], &mut w)?;
+    let (age, status) = (w[0], IrqStatusValue::from_bits(w[1]));
     if status.bits() != 0 {
         IrqStatus::write(bus, status)?;
     }

@@ -17,15 +17,23 @@
 //! Fast, dead encoder: the back-EMF over one period, `e = u - R (i_0 +
 //! i_1) / 2 - L (i_1 - i_0) / T` (alpha-beta, angle-free), less what a
 //! model off by [`MODEL_TOL`] (`R`) and [`INDUCTIVE_TOL`] (`L`) could put
-//! in it, says the rotor turned by at least [`FAST_DEAD_COUNTS`] encoder
-//! counts in the period while the count stood still (from the live count
-//! at the end of the last step to this step's sample). A healthy encoder
-//! counts in every period from one count per period on: the estimate may
-//! be off by a factor of two before a healthy encoder trips. The speed
-//! this needs: two counts of 4096 per period, 343 rad/s electrical (7.8
-//! rev/s) in FOC (62.56 us), 1372 rad/s (31 rev/s) in MPDTC (15.64 us),
-//! with the paper's motor (7 pole pairs, 9.3 mWb), and more while the
-//! tolerance's share is large (high current, a current step); the host
+//! in it, gives the counts the rotor turned in the period; their share
+//! over the interval the count was seen still must reach the mode's
+//! threshold ([`FAST_DEAD_COUNTS`] in FOC, [`MPDTC_DEAD_COUNTS`]). The
+//! interval: from the live count at the end of the last step to this
+//! step's sample, if that count moved after the last sample (a cause
+//! right after a step may follow an edge since that sample), else the
+//! whole period; the end read's `BOUNDARY_AGE` gives the share of the
+//! period after it. A step that ran past the next boundary (its end read
+//! finds the age restarted) may have read the next period's sample, which
+//! the next step finds again: the fast tier starts afresh there. A rotor
+//! that turns one count moves the count, so the estimate may be off by a
+//! factor of two in FOC and 1.25 in MPDTC before a healthy encoder trips.
+//! The speed this needs over a whole period: two counts of 4096 per
+//! period, 343 rad/s electrical (7.8 rev/s) in FOC (62.56 us), and 1.25
+//! counts, 858 rad/s (19.5 rev/s), in MPDTC (15.64 us), with the paper's
+//! motor (7 pole pairs, 9.3 mWb), and more while the tolerance's share is
+//! large (high current, a current step) or the interval short; the host
 //! tests trip at 1.5 times these speeds at 0.5 N m.
 //!
 //! The window tier: checks that need a window of evidence, not one sample: a dead encoder
@@ -76,31 +84,46 @@ pub struct Allowance {
     /// The share of `L di/dt` a dead-encoder estimate may carry (the
     /// model's 30 % and the measurement's timing).
     pub inductive: f64,
+    /// Encoder counts the back-EMF must prove while the count stood still.
+    pub dead_counts: f64,
 }
 
 /// FOC: the average's 4 samples lie after a step's end (the last 0.19
 /// periods); a current step shows up to 16 % of `L di/dt` in the axis the
 /// voltage did not drive. Healthy runs came to 0.437 of the prediction.
+/// A still count needs [`FAST_DEAD_COUNTS`]: a healthy slow run came to
+/// 1.12 counts (quantisation against an estimate over the measurement's
+/// lagging average).
 pub const FOC_ALLOWANCE: Allowance = Allowance {
     open_fraction: 0.3,
     inductive: INDUCTIVE_TOL,
+    dead_counts: FAST_DEAD_COUNTS,
 };
 /// MPDTC: the average spans the whole period, so a cause after a step
 /// that ends in its second quarter leaves two of four samples (0.5) in
 /// the next step's average; the model holds the measurement's timing (the
 /// ratio was 0.995 to 1.0 over a current step): the model's 30 % alone.
-/// Healthy runs came to 0.666 of the prediction.
+/// Healthy runs came to 0.666 of the prediction. A still count needs
+/// [`MPDTC_DEAD_COUNTS`]: healthy runs came to 0.52 counts.
 pub const MPDTC_ALLOWANCE: Allowance = Allowance {
     open_fraction: 0.55,
     inductive: MODEL_TOL,
+    dead_counts: MPDTC_DEAD_COUNTS,
 };
 /// A phase at zero against a prediction of this much floats: no
 /// back-EMF estimate in that period, A (the estimate's error from a
 /// floating terminal reaches the dead-encoder threshold at about 0.3 A of
 /// prediction in both modes: `T / L` times its voltage).
 pub const FLOAT_PRED_MIN_A: f64 = 0.2;
-/// Encoder counts in one period that the back-EMF must prove.
+/// Encoder counts the back-EMF must prove while the count stood still
+/// (FOC): a rotor that turns one count moves the count, so the estimate
+/// may be off by a factor of two.
 pub const FAST_DEAD_COUNTS: f64 = 2.0;
+/// The same in MPDTC, whose short period leaves a still interval of
+/// little more than a third of it after a slow step's last read (under
+/// co-simulation the step's guest time reaches 0.6 to 0.7 periods): 1.25
+/// counts are 2.4 times the most a healthy run came to.
+pub const MPDTC_DEAD_COUNTS: f64 = 1.25;
 
 /// The open phase (0 = a), if any, from one period's predicted and
 /// measured phase currents, A, and the `fraction` of its prediction a
@@ -169,13 +192,24 @@ pub struct FastVerdict {
     /// Smallest `|measured| / |predicted|` of a phase predicted at
     /// [`FAST_PRED_MIN_A`] or more (`INFINITY`: none), for the margins.
     pub open_ratio: f64,
-    /// Counts the back-EMF says the rotor turned in the period (0 when
-    /// not judged).
+    /// Counts the back-EMF says the rotor turned while the count was seen
+    /// still in the period (0 when not judged).
     pub counts: f64,
     /// The count stood still over the period.
     pub still: bool,
     /// The predicted phase currents, A.
     pub pred_abc: [f64; 3],
+}
+
+/// The live count the last step read late in its period, and the share of
+/// the period still to come after that read (0..=1): the count stood still
+/// from there if this step's sample is the same.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Since {
+    /// Counts.
+    pub pos: u32,
+    /// Share of the control period after the read.
+    pub share: f64,
 }
 
 /// The fast tier's state: the period before.
@@ -195,13 +229,15 @@ impl FastTier {
     /// average stands that far before the step: the change of current
     /// between two steps follows the voltage of the period before by that
     /// share) and the encoder's `cpr`. The count stands still when `now`'s
-    /// equals `since`, the last count read in the period before (the live
-    /// count at the end of the last step; `None`: that step's sample).
+    /// equals the last count read in the period before: `since`, the live
+    /// count at the end of the last step, if it moved after that step's
+    /// sample (then the still interval is the share of the period after
+    /// it), else that step's sample (the whole period).
     pub fn step(
         &mut self,
         model: &MpdtcConfig,
         now: Period,
-        since: Option<u32>,
+        since: Option<Since>,
         age: f64,
         cpr: u32,
         allow: Allowance,
@@ -256,10 +292,17 @@ impl FastTier {
             let proven = e - MODEL_TOL * ri - allow.inductive * l_term;
             counts = counts_in_period(proven.max(0.0), mo.psi_pm_wb, mo.pole_pairs, cpr, ts);
         }
-        let still = now.pos == since.unwrap_or(last.pos);
+        // Only the interval the count was seen still over proves anything:
+        // the period's counts in its share of the period.
+        let (from, share) = match since {
+            Some(s) if s.pos != last.pos => (s.pos, s.share),
+            _ => (last.pos, 1.0),
+        };
+        let still = now.pos == from;
+        counts *= share;
         FastVerdict {
             open,
-            dead: still && counts >= FAST_DEAD_COUNTS,
+            dead: still && counts >= allow.dead_counts,
             open_ratio,
             counts,
             still,
@@ -591,10 +634,29 @@ mod tests {
         let mut f = FastTier::default();
         let emf = (held.0, held.1 + 40.0);
         f.step(&m, p(i, emf), None, 0.0, 4096, FOC_ALLOWANCE);
-        let v = f.step(&m, p(i, emf), Some(5), 0.0, 4096, FOC_ALLOWANCE);
+        let since = |pos, share| Some(Since { pos, share });
+        let v = f.step(&m, p(i, emf), since(5, 0.5), 0.0, 4096, FOC_ALLOWANCE);
         assert!(v.dead && v.counts > 20.0, "{v:?}");
+        let whole = v.counts;
         // The same with the count moved since the last step's end.
-        let v = f.step(&m, p(i, emf), Some(6), 0.0, 4096, FOC_ALLOWANCE);
+        let v = f.step(&m, p(i, emf), since(6, 0.5), 0.0, 4096, FOC_ALLOWANCE);
         assert!(!v.dead, "{v:?}");
+        // The count moved after the last sample (5) and stood still from
+        // the end read on: only the share of the period after the read
+        // counts (a tenth of the whole period's counts).
+        let mut f = FastTier::default();
+        f.step(&m, p(i, emf), None, 0.0, 4096, FOC_ALLOWANCE);
+        let now = Period {
+            pos: 6,
+            ..p(i, emf)
+        };
+        let v = f.step(&m, now, since(6, 0.1), 0.0, 4096, FOC_ALLOWANCE);
+        assert!(v.still && (v.counts - 0.1 * whole).abs() < 1e-9, "{v:?}");
+        // Just below the threshold.
+        let mut f = FastTier::default();
+        f.step(&m, p(i, emf), None, 0.0, 4096, FOC_ALLOWANCE);
+        let share = 0.99 * FOC_ALLOWANCE.dead_counts / whole;
+        let v = f.step(&m, now, since(6, share), 0.0, 4096, FOC_ALLOWANCE);
+        assert!(v.still && !v.dead, "{v:?}");
     }
 }

@@ -17,7 +17,7 @@
 //!   ADC results.
 use crate::pl::adc::{Adc, AdcScale};
 use crate::pl::capture::{CapState, Capture};
-use crate::pl::enc::Encoder;
+use crate::pl::enc::{Encoder, LivePos};
 use crate::pl::fault::{Fault, Faults};
 use crate::pl::mpdtc::{frontend_params, torque_ref_word, FrontendSetup, Mpdtc};
 use crate::pl::pwm::{duty_cycles, Pwm};
@@ -32,6 +32,7 @@ use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
 use models::pmsm::params::MotorParams;
 use models::validate::ParamError;
 use regmap::bus::{BusError, RegisterBus};
+use regmap::regs::top::BoundaryAge;
 use regmap::{self, seq_state};
 
 pub mod align;
@@ -330,8 +331,9 @@ pub struct Servo {
     /// The one-period checks of both, and their last verdict.
     fast: FastTier,
     fast_last: FastVerdict,
-    /// The live encoder count at the end of the last step (gates on).
-    pos_at_end: Option<u32>,
+    /// The live encoder count at the end of the last step (gates on), if
+    /// read before the next boundary.
+    pos_at_end: Option<LivePos>,
     /// The torque reference of the last step, N m, and the steps it has
     /// stood within [`REF_STEADY_NM`] of the one before.
     ref_last: f64,
@@ -1238,16 +1240,21 @@ impl Servo {
             Adc(&mut *bus).restart()?;
             self.adc_synced = true;
         }
+        // The step's start after the boundary: the interrupt handler's
+        // reading, else read here (a step that is not the interrupt's).
+        let start_age = match self.step_age {
+            Some(a) => a,
+            None => BoundaryAge::read(&mut *bus)?.bits(),
+        };
         self.beat = self.beat.wrapping_add(1);
         Top(&mut *bus).heartbeat(self.beat)?;
         self.periods += 1;
         // The result count first: a late step can run past the next
         // boundary, and a count read after it would make the step that
         // serves that boundary see no new result.
-        let adc_count = Adc(&mut *bus).count()?;
+        let (adc_count, i_abc) = Adc(&mut *bus).count_and_currents_a(&self.cfg.adc)?;
         // The autonomous loop: the PL computes the core's inputs itself.
         let auto = self.mode == Mode::Mpdtc && !self.cfg.mpdtc_ps_fed;
-        let i_abc = Adc(&mut *bus).currents_a(&self.cfg.adc)?;
         // The position of the boundary's instant, as the currents: a live
         // read would move with how long the step took to get here.
         let enc = Encoder(&mut *bus).read_sampled()?;
@@ -1385,11 +1392,20 @@ impl Servo {
         // The last count the PS sees in this period: a dead encoder's
         // still count is judged from here (a cause after this step may
         // follow an edge since the boundary's sample).
-        self.pos_at_end = if gates && running {
-            Some(Encoder(&mut *bus).live_pos()?)
-        } else {
-            None
-        };
+        self.pos_at_end = None;
+        if gates && running {
+            let l = Encoder(&mut *bus).live_pos_aged()?;
+            if l.age >= start_age {
+                self.pos_at_end = Some(l);
+            } else {
+                // The age restarted: the step ran past the next boundary
+                // (it started late), and any of its reads may have found
+                // the next period's sample, which the next step then finds
+                // again, a still count of a moving rotor. The one-period
+                // checks start afresh there.
+                self.fast.reset();
+            }
+        }
         Ok(())
     }
 
@@ -1424,9 +1440,16 @@ impl Servo {
         };
         // The first steps of a run carry the start's voltage: no verdict.
         let skip = self.evidence_skip > 0;
+        // The still interval from the end of the last step's read: the
+        // share of the period after it (its age is at least the count's).
+        let period_cycles = ts * f64::from(regmap::PL_CLOCK_HZ);
+        let since = self.pos_at_end.map(|l| evidence::Since {
+            pos: l.pos,
+            share: (1.0 - f64::from(l.age) / period_cycles).clamp(0.0, 1.0),
+        });
         let v = self
             .fast
-            .step(model, now, self.pos_at_end, age, self.cfg.enc_cpr, allow);
+            .step(model, now, since, age, self.cfg.enc_cpr, allow);
         if libm::fabs(t_ref - self.ref_last) <= REF_STEADY_NM {
             self.ref_steady = self.ref_steady.saturating_add(1);
         } else {

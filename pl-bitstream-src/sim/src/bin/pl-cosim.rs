@@ -107,7 +107,7 @@ fn main() -> ExitCode {
     println!("ready");
     let _ = std::io::stdout().flush();
     // The guest opens `req` first, then `rep`: the same order here.
-    let (mut req, mut rep) = match (
+    let (req, rep) = match (
         OpenOptions::new().read(true).open(&req_p),
         OpenOptions::new().write(true).open(&rep_p),
     ) {
@@ -119,7 +119,16 @@ fn main() -> ExitCode {
     };
     let (t0, c0) = (Instant::now(), rtl_sim::thread_cpu_s());
     let mut buf = [0u8; simpl::cosim::REQUEST_LEN];
+    // The guest sends its posted writes together with the next request that
+    // waits: one system call takes them all.
+    let mut req = std::io::BufReader::with_capacity(4096, req);
+    // Replies go out when no request is left to serve: the replies to reads
+    // sent together (`RegisterBus::read_many`) in one system call.
+    let mut rep = std::io::BufWriter::with_capacity(4096, rep);
     loop {
+        if req.buffer().is_empty() && rep.flush().is_err() {
+            break;
+        }
         match req.read_exact(&mut buf) {
             Ok(()) => {}
             Err(e) if e.kind() == ErrorKind::UnexpectedEof => break,
