@@ -64,10 +64,6 @@ impl<B: RegisterBus> Encoder<B> {
             EncPosSampleValue::from_bits(w).value()
         })
     }
-    /// The live position `ENC_POS` alone, counts.
-    pub fn live_pos(&mut self) -> Result<u32, BusError> {
-        Ok(EncPos::read(&mut self.0)?.value())
-    }
     /// The live position `ENC_POS` and, read just after it (in one
     /// group), `BOUNDARY_AGE`: the count's age after the last boundary is
     /// at most that.
