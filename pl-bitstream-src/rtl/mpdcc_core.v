@@ -114,7 +114,13 @@ module mpdcc_core #(
 
     reg  [5:0] lo_q;         // {c, b} (a starts at its lo and stops at hi)
     reg  [8:0] hi_q;         // {c, b, a}
-    reg  [8:0] cur_q;
+    // Candidate counters, one per explorer, {a[3], c, b, a[2:0]}: counter
+    // j holds the (issued + j)-th candidate of S; a (the outer digit) has
+    // a fourth bit so that a counter past the set's last candidate reads
+    // a > hi_a instead of wrapping. Each steps by n_use on its own, so no
+    // path runs through another explorer's candidate (a chain of N
+    // increments from one counter grows with N and missed 8 ns at N >= 2).
+    reg  [9:0] ctr_q [0:N-1];
     reg        gen_q;        // enumerating
     reg  [5:0] pre_q;        // cycles left until the common terms are valid
     reg        busy_q;
@@ -126,61 +132,63 @@ module mpdcc_core #(
     wire slot = (II == 1) ? 1'b1 : (ph_q == 3'd0);
     assign busy_o = busy_q;
 
-    // next candidate in ascending code order within the ranges
-    // (a never passes its hi: the caller stops at the set's last candidate)
-    function automatic [8:0] inc(input [8:0] x, input [5:0] lo, input [5:0] hi);
-        reg [2:0] a, b, c;
+    // The k-th successor (k = 0..6) of a candidate in ascending code order
+    // within the ranges (c inner, b, a outer), as three digits of a mixed
+    // radix number: each range holds 3, 5 or 6 positions, so adding k <= 6
+    // to c carries at most 2 into b, and b carries at most 1 into a.
+    function automatic [9:0] step(input [9:0] x, input [5:0] lo, input [5:0] hi, input [2:0] k);
+        reg [3:0] a, t, n;
+        reg [2:0] b, c;
+        reg [1:0] cy;
         begin
-            a = x[2:0];
+            a = {x[9], x[2:0]};
             b = x[5:3];
             c = x[8:6];
-            if (c != hi[5:3]) c = c + 3'd1;
-            else begin
-                c = lo[5:3];
-                if (b != hi[2:0]) b = b + 3'd1;
-                else begin
-                    b = lo[2:0];
-                    a = a + 3'd1;
-                end
+            n = {1'b0, hi[5:3] - lo[5:3]} + 4'd1;
+            t = {1'b0, c - lo[5:3]} + {1'b0, k};
+            if (t >= (n << 1)) begin
+                t = t - (n << 1); cy = 2'd2;
+            end else if (t >= n) begin
+                t = t - n; cy = 2'd1;
+            end else cy = 2'd0;
+            c = lo[5:3] + t[2:0];
+            n = {1'b0, hi[2:0] - lo[2:0]} + 4'd1;
+            t = {1'b0, b - lo[2:0]} + {2'd0, cy};
+            if (t >= n) begin
+                t = t - n; a = a + 4'd1;
             end
-            inc = {c, b, a};
+            b = lo[2:0] + t[2:0];
+            step = {a[3], c, b, a[2:0]};
         end
     endfunction
 
-    // this clock's candidates: successive increments from cur_q
-    reg [8:0]   cand [0:N-1];
-    reg [N-1:0] cv;
-    integer j;
-    always @(*) begin
-        cand[0] = cur_q;
-        cv[0] = gen_q && slot;
-        for (j = 1; j < N; j = j + 1) begin
-            cand[j] = inc(cand[j-1], lo_q, hi_q[8:3]);
-            cv[j] = cv[j-1] && (cand[j-1] != hi_q) && (j < {29'd0, nuse_q});
-        end
-    end
-    genvar gi;
-    // the last candidate of the set is issued this clock
+    // this clock's candidates: counter j is valid while it has not passed
+    // the set's last candidate (a <= hi_a), up to n_use of them
+    wire [8:0]  cand [0:N-1];
+    wire [N-1:0] cv;
     wire [N-1:0] is_last;
+    genvar gi;
     generate
-        for (gi = 0; gi < N; gi = gi + 1) begin : g_last
-            assign is_last[gi] = (cand[gi] == hi_q);
+        for (gi = 0; gi < N; gi = gi + 1) begin : g_cand
+            assign cand[gi] = ctr_q[gi][8:0];
+            assign cv[gi] = gen_q && slot && (gi < {29'd0, nuse_q})
+                            && ({ctr_q[gi][9], ctr_q[gi][2:0]} <= {1'b0, hi_q[2:0]});
+            // the last candidate of the set is issued this clock
+            assign is_last[gi] = ({ctr_q[gi][9], ctr_q[gi][8:0]} == {1'b0, hi_q});
         end
     endgenerate
     wire last_now = |(cv & is_last);
-    reg [8:0] nxt;
     reg [7:0] nissue;
     integer i;
     always @(*) begin
-        nxt = cur_q;
         nissue = 8'd0;
-        for (i = 0; i < N; i = i + 1) begin
-            if (cv[i]) begin
-                nxt = inc(cand[i], lo_q, hi_q[8:3]);
-                nissue = nissue + 8'd1;
-            end
-        end
+        for (i = 0; i < N; i = i + 1) nissue = nissue + {7'd0, cv[i]};
     end
+    integer ki;
+    // the set's first candidate from s(k-1)
+    wire [8:0] set_first = {lo_of(s_prev_i[8:6]), lo_of(s_prev_i[5:3]), lo_of(s_prev_i[2:0])};
+    wire [5:0] set_lo = set_first[8:3];
+    wire [5:0] set_hi = {hi_of(s_prev_i[8:6]), hi_of(s_prev_i[5:3])};
 
     // ---------------------------------------------------- common terms
     wire [111:0] e0_w;
@@ -298,7 +306,8 @@ module mpdcc_core #(
                   && (nrecv != 8'd0);
     always @(posedge clk_i) begin
         if (rst_i) begin
-            lo_q <= 6'd0; hi_q <= 9'd0; cur_q <= 9'd0;
+            lo_q <= 6'd0; hi_q <= 9'd0;
+            for (ki = 0; ki < N; ki = ki + 1) ctr_q[ki] <= 10'd0;
             gen_q <= 1'b0; busy_q <= 1'b0; nuse_q <= 3'd1; pre_q <= 6'd0;
             cyc_q <= 16'd0; issued_q <= 8'd0; received_q <= 8'd0; ph_q <= 3'd0;
             hb_q <= 1'b0; hd_q <= 1'b0; lazy_q <= 1'b0;
@@ -309,9 +318,10 @@ module mpdcc_core #(
         end else begin
             done_o <= 1'b0;
             if (start_i && !busy_q) begin
-                lo_q <= {lo_of(s_prev_i[8:6]), lo_of(s_prev_i[5:3])};
-                hi_q <= {hi_of(s_prev_i[8:6]), hi_of(s_prev_i[5:3]), hi_of(s_prev_i[2:0])};
-                cur_q <= {lo_of(s_prev_i[8:6]), lo_of(s_prev_i[5:3]), lo_of(s_prev_i[2:0])};
+                lo_q <= set_lo;
+                hi_q <= {set_hi, hi_of(s_prev_i[2:0])};
+                for (ki = 0; ki < N; ki = ki + 1)
+                    ctr_q[ki] <= step({1'b0, set_first}, set_lo, set_hi, ki[2:0]);
                 nuse_q <= (n_use_i == 3'd0) ? 3'd1 : (n_use_i > N[2:0]) ? N[2:0] : n_use_i;
                 gen_q <= 1'b0;
                 pre_q <= COMMON_LATENCY[5:0];
@@ -329,7 +339,9 @@ module mpdcc_core #(
                 end
                 if (gen_q) begin
                     ph_q <= (ph_q == II[2:0] - 3'd1) ? 3'd0 : ph_q + 3'd1;
-                    cur_q <= nxt;
+                    if (slot)
+                        for (ki = 0; ki < N; ki = ki + 1)
+                            ctr_q[ki] <= step(ctr_q[ki], lo_q, hi_q[8:3], nuse_q);
                     issued_q <= issued_q + nissue;
                     if (last_now) gen_q <= 1'b0;
                 end
@@ -455,6 +467,19 @@ module mpdcc_core #(
                          + {6'd0, x[5:3] - f_min(f[5:3])}, f_cnt(f[8:6]))
                  + {6'd0, x[8:6] - f_min(f[8:6])};
     endfunction
+    // The same position for a counter {a[3], c, b, a[2:0]} whose a may be
+    // past its range (a counter past the set's end: rank >= |S|), and
+    // whether its digits are ones the enumeration can reach (b and c in
+    // their ranges, a not below its lo).
+    function automatic [8:0] f_rank10(input [9:0] x, input [8:0] f);
+        f_rank10 = f_times(f_times({5'd0, {x[9], x[2:0]} - {1'b0, f_min(f[2:0])}}, f_cnt(f[5:3]))
+                           + {6'd0, x[5:3] - f_min(f[5:3])}, f_cnt(f[8:6]))
+                   + {6'd0, x[8:6] - f_min(f[8:6])};
+    endfunction
+    function automatic f_reach(input [9:0] x, input [8:0] f);
+        f_reach = f_adm(x[8:6], f[8:6]) && f_adm(x[5:3], f[5:3])
+                  && {x[9], x[2:0]} >= {1'b0, f_min(f[2:0])} && {x[9], x[2:0]} <= 4'd8;
+    endfunction
     function automatic [N-1:0] f_ones(input [8:0] n);  // n low bits set
         integer q;
         begin
@@ -537,7 +562,7 @@ module mpdcc_core #(
                       : (f_lastclk != 9'd0 && f_back_by > f_lastclk) ? f_size
                       : f_times(f_back_by - f_first, f_nu);
 
-    wire [8:0] f_lo = {f_min(f_sp[8:6]), f_min(f_sp[5:3]), f_min(f_sp[2:0])};
+    wire [5:0] f_lo = {f_min(f_sp[8:6]), f_min(f_sp[5:3])};  // {c, b}
     wire [8:0] f_hi = {f_max(f_sp[8:6]), f_max(f_sp[5:3]), f_max(f_sp[2:0])};
     wire [8:0] f_g = f_cyc - F_CL[8:0] - F_LAT[8:0] - F_AM[8:0] - 9'd1;  // issue clocks, at done
 
@@ -578,12 +603,13 @@ module mpdcc_core #(
             assert (cyc_q == {7'd0, f_cyc} && f_cyc >= 9'd1);
             assert (pre_q == ((f_cyc < f_first) ? f_first[5:0] - f_cyc[5:0] : 6'd0));
             assert (gen_q == f_gen);
-            assert (lo_q == f_lo[8:3] && hi_q == f_hi);
-            if (f_cyc < f_first) assert (cur_q == f_lo && f_iss == 9'd0);
-            if (f_gen) begin
-                assert (f_in_set(cur_q, f_sp) && f_rank(cur_q, f_sp) == f_iss);
-                assert (f_iss == f_times(f_cyc - f_first, f_nu) && f_iss < f_size);
-            end
+            assert (lo_q == f_lo && hi_q == f_hi);
+            // counter k (k < n_use) holds the (issued + k)-th candidate
+            for (f_k = 0; f_k < N; f_k = f_k + 1)
+                if ((f_cyc < f_first || f_gen) && f_k < {29'd0, f_nu})
+                    assert (f_reach(ctr_q[f_k], f_sp) && f_rank10(ctr_q[f_k], f_sp) == f_iss + f_k[8:0]);
+            if (f_cyc < f_first) assert (f_iss == 9'd0);
+            if (f_gen) assert (f_iss == f_times(f_cyc - f_first, f_nu) && f_iss < f_size);
             if (f_lastclk != 9'd0) begin
                 assert (f_lastclk >= f_first && f_cyc > f_lastclk && f_cyc <= f_lastclk + F_LAT[8:0] + F_AM[8:0]);
                 assert (f_iss == f_size && f_restv != {N{1'b0}}
@@ -592,6 +618,19 @@ module mpdcc_core #(
                         && f_times(f_lastclk - f_first, f_nu) < f_size);
             end
         end
+    end
+    // The step for every k up to 6 (the proof's N = 2 steps by 1 or 2
+    // only): from any reachable counter of any set, the k-th successor is
+    // reachable and k positions further. f_x, f_xk are undriven: free
+    // values at every step of the proof.
+    /* verilator lint_off UNDRIVEN */
+    wire [9:0] f_x;
+    wire [2:0] f_xk;
+    /* verilator lint_on UNDRIVEN */
+    wire [9:0] f_xs = step(f_x, f_lo, f_hi[8:3], f_xk);
+    always @(*) begin
+        if (f_reach(f_x, f_sp) && f_rank10(f_x, f_sp) < f_size && f_xk <= 3'd6)
+            assert (f_reach(f_xs, f_sp) && f_rank10(f_xs, f_sp) == f_rank10(f_x, f_sp) + {6'd0, f_xk});
     end
     // In flight, stage by stage: stage j holds what clock f_cyc - j issued.
     generate
