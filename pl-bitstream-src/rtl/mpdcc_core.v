@@ -191,6 +191,16 @@ module mpdcc_core #(
                 if (idx == e[8:0]) rom_at = rom[8 * e +: 5];
         end
     endfunction
+    // entry {f, x, d} of a table for a constant x: a loop over f and d only
+    function automatic [4:0] rom_at_x(input [8*512-1:0] rom, input [2:0] f, input [2:0] x,
+                                      input [2:0] d);
+        integer e;
+        begin
+            rom_at_x = 5'd0;
+            for (e = 0; e < 64; e = e + 1)
+                if ({f, d} == e[5:0]) rom_at_x = rom[8 * (64 * (e / 8) + 8 * x + e % 8) +: 5];
+        end
+    endfunction
     function automatic [4:0] first_at(input [8*64-1:0] rom, input [5:0] idx);
         integer e;
         begin
@@ -233,9 +243,9 @@ module mpdcc_core #(
     generate
         for (gx = 0; gx < 8; gx = gx + 1) begin : g_tab
             localparam [2:0] X = gx;
-            assign tc_ld[5 * gx +: 5] = rom_at(STEP_C, {s_prev_i[8:6], X, nuse_set});
-            assign tb1_ld[5 * gx +: 5] = rom_at(STEP_B, {s_prev_i[5:3], X, 3'd1});
-            assign tb2_ld[5 * gx +: 5] = rom_at(STEP_B, {s_prev_i[5:3], X, 3'd2});
+            assign tc_ld[5 * gx +: 5] = rom_at_x(STEP_C, s_prev_i[8:6], X, nuse_set);
+            assign tb1_ld[5 * gx +: 5] = rom_at_x(STEP_B, s_prev_i[5:3], X, 3'd1);
+            assign tb2_ld[5 * gx +: 5] = rom_at_x(STEP_B, s_prev_i[5:3], X, 3'd2);
         end
     endgenerate
 
