@@ -180,18 +180,10 @@ module mpdcc_core #(
     endfunction
     localparam [8*64-1:0] FIRST_C = first_rom(STEP_C);
     localparam [8*64-1:0] FIRST_B = first_rom(STEP_B);
-    // Entry idx of a table: a loop of comparisons, not an indexed part
-    // select (a 4,096-bit shifter per look-up in a proof's SAT problem); in
-    // synthesis each output bit is a function of the index's variable bits.
-    function automatic [4:0] rom_at(input [8*512-1:0] rom, input [8:0] idx);
-        integer e;
-        begin
-            rom_at = 5'd0;
-            for (e = 0; e < 512; e = e + 1)
-                if (idx == e[8:0]) rom_at = rom[8 * e +: 5];
-        end
-    endfunction
-    // entry {f, x, d} of a table for a constant x: a loop over f and d only
+    // Entry {f, x, d} of a table for a constant x. A loop of comparisons
+    // over f and d, not an indexed part select: that is a 4,096-bit shifter
+    // per look-up in a proof's SAT problem. In synthesis each output bit is
+    // a function of the six bits of f and d: one LUT6.
     function automatic [4:0] rom_at_x(input [8*512-1:0] rom, input [2:0] f, input [2:0] x,
                                       input [2:0] d);
         integer e;
@@ -716,6 +708,15 @@ module mpdcc_core #(
             end
         end
     end
+    // Entry idx of a table, any index (a loop of comparisons, as rom_at_x).
+    function automatic [4:0] rom_at(input [8*512-1:0] rom, input [8:0] idx);
+        integer e;
+        begin
+            rom_at = 5'd0;
+            for (e = 0; e < 512; e = e + 1)
+                if (idx == e[8:0]) rom_at = rom[8 * e +: 5];
+        end
+    endfunction
     // A step through the elaboration tables (digit_rom), for any k <= 6.
     function automatic [9:0] f_step(input [9:0] x, input [2:0] fc, input [2:0] fb, input [2:0] k);
         reg [4:0] ec;
