@@ -180,17 +180,18 @@ module mpdcc_core #(
     endfunction
     localparam [8*64-1:0] FIRST_C = first_rom(STEP_C);
     localparam [8*64-1:0] FIRST_B = first_rom(STEP_B);
-    // Entry {f, x, d} of a table for a constant x. A loop of comparisons
-    // over f and d, not an indexed part select: that is a 4,096-bit shifter
-    // per look-up in a proof's SAT problem. In synthesis each output bit is
-    // a function of the six bits of f and d: one LUT6.
-    function automatic [4:0] rom_at_x(input [8*512-1:0] rom, input [2:0] f, input [2:0] x,
-                                      input [2:0] d);
+    // Entry idx of a table: a loop of comparisons, not an indexed part
+    // select (that is a 4,096-bit shifter per look-up in a proof's SAT
+    // problem, and a part select at a variable offset of the 4,096-bit
+    // constant crashed the Verilated model). In synthesis each output bit
+    // is a function of the index's variable bits (the loads: s(k-1)'s
+    // digit and the addend, six bits, one LUT6).
+    function automatic [4:0] rom_at(input [8*512-1:0] rom, input [8:0] idx);
         integer e;
         begin
-            rom_at_x = 5'd0;
-            for (e = 0; e < 64; e = e + 1)
-                if ({f, d} == e[5:0]) rom_at_x = rom[8 * (64 * (e / 8) + 8 * x + e % 8) +: 5];
+            rom_at = 5'd0;
+            for (e = 0; e < 512; e = e + 1)
+                if (idx == e[8:0]) rom_at = rom[8 * e +: 5];
         end
     endfunction
     function automatic [4:0] first_at(input [8*64-1:0] rom, input [5:0] idx);
@@ -235,9 +236,9 @@ module mpdcc_core #(
     generate
         for (gx = 0; gx < 8; gx = gx + 1) begin : g_tab
             localparam [2:0] X = gx;
-            assign tc_ld[5 * gx +: 5] = rom_at_x(STEP_C, s_prev_i[8:6], X, nuse_set);
-            assign tb1_ld[5 * gx +: 5] = rom_at_x(STEP_B, s_prev_i[5:3], X, 3'd1);
-            assign tb2_ld[5 * gx +: 5] = rom_at_x(STEP_B, s_prev_i[5:3], X, 3'd2);
+            assign tc_ld[5 * gx +: 5] = rom_at(STEP_C, {s_prev_i[8:6], X, nuse_set});
+            assign tb1_ld[5 * gx +: 5] = rom_at(STEP_B, {s_prev_i[5:3], X, 3'd1});
+            assign tb2_ld[5 * gx +: 5] = rom_at(STEP_B, {s_prev_i[5:3], X, 3'd2});
         end
     endgenerate
 
@@ -708,15 +709,6 @@ module mpdcc_core #(
             end
         end
     end
-    // Entry idx of a table, any index (a loop of comparisons, as rom_at_x).
-    function automatic [4:0] rom_at(input [8*512-1:0] rom, input [8:0] idx);
-        integer e;
-        begin
-            rom_at = 5'd0;
-            for (e = 0; e < 512; e = e + 1)
-                if (idx == e[8:0]) rom_at = rom[8 * e +: 5];
-        end
-    endfunction
     // A step through the elaboration tables (digit_rom), for any k <= 6.
     function automatic [9:0] f_step(input [9:0] x, input [2:0] fc, input [2:0] fb, input [2:0] k);
         reg [4:0] ec;
