@@ -171,7 +171,13 @@ fn pl_top_without_the_mpdcc_core_within_8_ns() {
 /// at N = 2..6).
 #[test]
 fn mpdcc_within_8_ns() {
-    const FITS: [&str; 5] = ["| 1 | 1 |", "| 1 | 2 |", "| 4 | 1 |", "| 4 | 2 |", "| 4 | 3 |"];
+    const FITS: [&str; 5] = [
+        "| 1 | 1 |",
+        "| 1 | 2 |",
+        "| 4 | 1 |",
+        "| 4 | 2 |",
+        "| 4 | 3 |",
+    ];
     let d = repo_file("docs/mpdcc-rtl-table.md");
     let rows = table_rows(&d);
     let delay = |r: &str| -> Option<f64> {
