@@ -163,7 +163,7 @@ fn pl_top_without_the_mpdcc_core_within_8_ns() {
 /// The MPDCC core's table (`scripts/mpdcc-table`): the configurations that
 /// fit the xc7z020 with the rest of `pl_top` (II = 4 up to three explorers,
 /// II = 1 up to two: docs/mpdcc-fpga.md) synthesised and within 8 ns; every
-/// other synthesised row within 8.2 ns (8.09 to 8.18 ns: the issue count
+/// other synthesised row within 8.2 ns (8.09 to 8.18 ns: a counter's valid bit
 /// at II = 1, N = 3 and `mpdcc_common`'s rounding and saturation at N = 5
 /// and 6, whose nets grow with the fan-out to the explorers). Before the
 /// candidate counters stepped through tables, each explorer added one
