@@ -183,15 +183,26 @@ module mpdcc_core #(
     // Entry idx of a table: a loop of comparisons, not an indexed part
     // select (that is a 4,096-bit shifter per look-up in a proof's SAT
     // problem, and a part select at a variable offset of the 4,096-bit
-    // constant crashed the Verilated model). In synthesis each output bit
-    // is a function of the index's variable bits (the loads: s(k-1)'s
-    // digit and the addend, six bits, one LUT6).
-    function automatic [4:0] rom_at(input [8*512-1:0] rom, input [8:0] idx);
+    // constant crashed the Verilated model). One function per table that
+    // reads its constant directly: with the table as a 4,096-bit function
+    // argument, the Verilated pl_top (Verilator 5.006) corrupted the state
+    // of other blocks (the fault trip, the MPDTC closed loop). In synthesis
+    // each output bit is a function of the index's variable bits (the
+    // loads: s(k-1)'s digit and the addend, six bits, one LUT6).
+    function automatic [4:0] rom_c_at(input [8:0] idx);
         integer e;
         begin
-            rom_at = 5'd0;
+            rom_c_at = 5'd0;
             for (e = 0; e < 512; e = e + 1)
-                if (idx == e[8:0]) rom_at = rom[8 * e +: 5];
+                if (idx == e[8:0]) rom_c_at = STEP_C[8 * e +: 5];
+        end
+    endfunction
+    function automatic [4:0] rom_b_at(input [8:0] idx);
+        integer e;
+        begin
+            rom_b_at = 5'd0;
+            for (e = 0; e < 512; e = e + 1)
+                if (idx == e[8:0]) rom_b_at = STEP_B[8 * e +: 5];
         end
     endfunction
     function automatic [4:0] first_at(input [8*64-1:0] rom, input [5:0] idx);
@@ -236,9 +247,9 @@ module mpdcc_core #(
     generate
         for (gx = 0; gx < 8; gx = gx + 1) begin : g_tab
             localparam [2:0] X = gx;
-            assign tc_ld[5 * gx +: 5] = rom_at(STEP_C, {s_prev_i[8:6], X, nuse_set});
-            assign tb1_ld[5 * gx +: 5] = rom_at(STEP_B, {s_prev_i[5:3], X, 3'd1});
-            assign tb2_ld[5 * gx +: 5] = rom_at(STEP_B, {s_prev_i[5:3], X, 3'd2});
+            assign tc_ld[5 * gx +: 5] = rom_c_at({s_prev_i[8:6], X, nuse_set});
+            assign tb1_ld[5 * gx +: 5] = rom_b_at({s_prev_i[5:3], X, 3'd1});
+            assign tb2_ld[5 * gx +: 5] = rom_b_at({s_prev_i[5:3], X, 3'd2});
         end
     endgenerate
 
@@ -717,8 +728,8 @@ module mpdcc_core #(
         /* verilator lint_on UNUSEDSIGNAL */
         reg [3:0] a;
         begin
-            ec = rom_at(STEP_C, {fc, x[8:6], k});
-            eb = rom_at(STEP_B, {fb, x[5:3], 1'b0, ec[4:3]});
+            ec = rom_c_at({fc, x[8:6], k});
+            eb = rom_b_at({fb, x[5:3], 1'b0, ec[4:3]});
             a = a_plus({x[9], x[2:0]}, eb[3]);
             f_step = {a[3], ec[2:0], eb[2:0], a[2:0]};
         end
