@@ -112,9 +112,15 @@ module mpdcc_core #(
         endcase
     endfunction
 
-    reg  [5:0] lo_q;         // {c, b} (a starts at its lo and stops at hi)
-    reg  [8:0] hi_q;         // {c, b, a}
-    reg  [8:0] cur_q;
+    reg  [8:0] hi_q;         // {c, b, a}: the set's last candidate
+    reg  [3:0] aend_q;       // hi_a + 1: a counter's a once past the set
+    // Candidate counters, one per explorer, {a[3], c, b, a[2:0]}: counter
+    // j holds the (issued + j)-th candidate of S; a (the outer digit) has
+    // a fourth bit so that a counter past the set's last candidate reads
+    // hi_a + 1 instead of wrapping. Each steps by n_use on its own, so no
+    // path runs through another explorer's candidate (a chain of N
+    // increments from one counter grows with N and missed 8 ns at N >= 2).
+    reg  [9:0] ctr_q [0:N-1];
     reg        gen_q;        // enumerating
     reg  [5:0] pre_q;        // cycles left until the common terms are valid
     reg        busy_q;
@@ -126,61 +132,158 @@ module mpdcc_core #(
     wire slot = (II == 1) ? 1'b1 : (ph_q == 3'd0);
     assign busy_o = busy_q;
 
-    // next candidate in ascending code order within the ranges
-    // (a never passes its hi: the caller stops at the set's last candidate)
-    function automatic [8:0] inc(input [8:0] x, input [5:0] lo, input [5:0] hi);
-        reg [2:0] a, b, c;
+    // The k-th successor (k = 0..6) of a candidate in ascending code order
+    // within the ranges (c inner, b, a outer) is a mixed-radix addition:
+    // each range holds 3, 5 or 6 positions, so adding k <= 6 to c carries
+    // at most 2 into b, and b carries at most 1 into a. Written as
+    // arithmetic, its subtractions and comparisons became four carry chains
+    // in series (11.7 ns at N = 2); here the digit steps are tables: built
+    // at elaboration (indexed by s(k-1)'s digit, which gives the range, the
+    // digit and the addend), from which the start loads the decision's own
+    // small tables into registers (c plus n_use, b plus 1 and plus 2), so a
+    // step is a register multiplexer and a select.
+    // digit_rom entry {f, x, d} (byte f * 64 + x * 8 + d): {carry, x'} of
+    // x + d in f's range: carry = (x - lo + d) / n in bits 4:3, x' = lo +
+    // (x - lo + d) mod n in bits 2:0; entries of an x outside the range or
+    // d > max_d are never read and hold 0.
+    function automatic [8*512-1:0] digit_rom(input integer max_d);
+        integer f, x, d, lo, hi, t;
+        /* verilator lint_off UNUSEDSIGNAL */
+        integer e;  // integer arithmetic; its low byte is the entry
+        /* verilator lint_on UNUSEDSIGNAL */
         begin
-            a = x[2:0];
-            b = x[5:3];
-            c = x[8:6];
-            if (c != hi[5:3]) c = c + 3'd1;
-            else begin
-                c = lo[5:3];
-                if (b != hi[2:0]) b = b + 3'd1;
-                else begin
-                    b = lo[2:0];
-                    a = a + 3'd1;
-                end
+            digit_rom = {8 * 512{1'b0}};
+            for (f = 0; f < 8; f = f + 1) begin
+                lo = {29'd0, lo_of(f[2:0])};
+                hi = {29'd0, hi_of(f[2:0])};
+                for (x = lo; x <= hi; x = x + 1)
+                    for (d = 0; d <= max_d; d = d + 1) begin
+                        t = x - lo + d;
+                        e = ((t / (hi - lo + 1)) << 3) + lo + t % (hi - lo + 1);
+                        digit_rom[8 * (64 * f + 8 * x + d) +: 8] = e[7:0];
+                    end
             end
-            inc = {c, b, a};
         end
     endfunction
-
-    // this clock's candidates: successive increments from cur_q
-    reg [8:0]   cand [0:N-1];
-    reg [N-1:0] cv;
-    integer j;
-    always @(*) begin
-        cand[0] = cur_q;
-        cv[0] = gen_q && slot;
-        for (j = 1; j < N; j = j + 1) begin
-            cand[j] = inc(cand[j-1], lo_q, hi_q[8:3]);
-            cv[j] = cv[j-1] && (cand[j-1] != hi_q) && (j < {29'd0, nuse_q});
+    localparam [8*512-1:0] STEP_C = digit_rom(6);  // d = k
+    localparam [8*512-1:0] STEP_B = digit_rom(2);  // d = the carry from c
+    // The entries of a range's first position: byte f * 8 + d = digit_rom's
+    // {f, lo(f), d} (the set's first candidate plus d, at the start).
+    function automatic [8*64-1:0] first_rom(input [8*512-1:0] rom);
+        integer f, d;
+        begin
+            first_rom = {8 * 64{1'b0}};
+            for (f = 0; f < 8; f = f + 1)
+                for (d = 0; d < 8; d = d + 1)
+                    first_rom[8 * (8 * f + d) +: 8] = rom[8 * (64 * f + 8 * lo_of(f[2:0]) + d) +: 8];
         end
-    end
-    genvar gi;
-    // the last candidate of the set is issued this clock
-    wire [N-1:0] is_last;
+    endfunction
+    localparam [8*64-1:0] FIRST_C = first_rom(STEP_C);
+    localparam [8*64-1:0] FIRST_B = first_rom(STEP_B);
+    // Entry idx of a table: a loop of comparisons, not an indexed part
+    // select (that is a 4,096-bit shifter per look-up in a proof's SAT
+    // problem, and a part select at a variable offset of the 4,096-bit
+    // constant crashed the Verilated model). One function per table that
+    // reads its constant directly: with the table as a 4,096-bit function
+    // argument, the Verilated pl_top (Verilator 5.006) corrupted the state
+    // of other blocks (the fault trip, the MPDTC closed loop). In synthesis
+    // each output bit is a function of the index's variable bits (the
+    // loads: s(k-1)'s digit and the addend, six bits, one LUT6).
+    function automatic [4:0] rom_c_at(input [8:0] idx);
+        integer e;
+        begin
+            rom_c_at = 5'd0;
+            for (e = 0; e < 512; e = e + 1)
+                if (idx == e[8:0]) rom_c_at = STEP_C[8 * e +: 5];
+        end
+    endfunction
+    function automatic [4:0] rom_b_at(input [8:0] idx);
+        integer e;
+        begin
+            rom_b_at = 5'd0;
+            for (e = 0; e < 512; e = e + 1)
+                if (idx == e[8:0]) rom_b_at = STEP_B[8 * e +: 5];
+        end
+    endfunction
+    function automatic [4:0] first_at(input [8*64-1:0] rom, input [5:0] idx);
+        integer e;
+        begin
+            first_at = 5'd0;
+            for (e = 0; e < 64; e = e + 1)
+                if (idx == e[5:0]) first_at = rom[8 * e +: 5];
+        end
+    endfunction
+    // a + cy for the 4-bit a as logic (a carry chain of its own otherwise)
+    function automatic [3:0] a_plus(input [3:0] a, input cy);
+        a_plus = a ^ {cy & a[2] & a[1] & a[0], cy & a[1] & a[0], cy & a[0], cy};
+    endfunction
+    // the set's j-th candidate (j <= 6) from s(k-1): its first plus j
+    function automatic [9:0] first_plus(input [8:0] sp, input [2:0] j);
+        reg [4:0] ec;
+        /* verilator lint_off UNUSEDSIGNAL */
+        reg [4:0] eb;  // b carries at most 1: bit 4 is 0
+        /* verilator lint_on UNUSEDSIGNAL */
+        reg [3:0] a;
+        begin
+            ec = first_at(FIRST_C, {sp[8:6], j});
+            eb = first_at(FIRST_B, {sp[5:3], 1'b0, ec[4:3]});
+            a = a_plus({1'b0, lo_of(sp[2:0])}, eb[3]);
+            first_plus = {a[3], ec[2:0], eb[2:0], a[2:0]};
+        end
+    endfunction
+    // this decision's digit tables, entry x (a nibble or a bit pair, so an
+    // index is a shift, not a sum): tc_q c' and tcy_q the carry of c = x
+    // plus n_use; tb1_q / tb2_q {carry, b'} of b = x plus 1 / plus 2
+    reg  [31:0] tc_q;
+    reg  [15:0] tcy_q;
+    reg  [31:0] tb1_q, tb2_q;
+    wire [2:0]  nuse_set = (n_use_i == 3'd0) ? 3'd1 : (n_use_i > N[2:0]) ? N[2:0] : n_use_i;
+    // the tables a start loads, from s(k-1) and the clamped n_use
+    wire [39:0] tc_ld;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [39:0] tb1_ld, tb2_ld;  // b carries at most 1: bit 4 of an entry is 0
+    /* verilator lint_on UNUSEDSIGNAL */
+    genvar gx;
     generate
-        for (gi = 0; gi < N; gi = gi + 1) begin : g_last
-            assign is_last[gi] = (cand[gi] == hi_q);
+        for (gx = 0; gx < 8; gx = gx + 1) begin : g_tab
+            localparam [2:0] X = gx;
+            assign tc_ld[5 * gx +: 5] = rom_c_at({s_prev_i[8:6], X, nuse_set});
+            assign tb1_ld[5 * gx +: 5] = rom_b_at({s_prev_i[5:3], X, 3'd1});
+            assign tb2_ld[5 * gx +: 5] = rom_b_at({s_prev_i[5:3], X, 3'd2});
+        end
+    endgenerate
+
+    // this clock's candidates: counter j is valid until it has passed the
+    // set's last candidate (its a = hi_a + 1), up to n_use of them
+    wire [8:0]  cand [0:N-1];
+    wire [N-1:0] cv;
+    wire [N-1:0] is_last;
+    wire [9:0]  ctr_next [0:N-1];
+    genvar gi;
+    generate
+        for (gi = 0; gi < N; gi = gi + 1) begin : g_cand
+            assign cand[gi] = ctr_q[gi][8:0];
+            assign cv[gi] = gen_q && slot && (gi < {29'd0, nuse_q})
+                            && ({ctr_q[gi][9], ctr_q[gi][2:0]} != aend_q);
+            // the last candidate of the set is issued this clock
+            assign is_last[gi] = ({ctr_q[gi][9], ctr_q[gi][8:0]} == {1'b0, hi_q});
+            // the counter plus n_use, from the decision's tables
+            wire [4:0] ec = {tcy_q[{ctr_q[gi][8:6], 1'b0} +: 2], tc_q[{ctr_q[gi][8:6], 2'd0} +: 3]};
+            wire [3:0] eb = (ec[4:3] == 2'd0) ? {1'b0, ctr_q[gi][5:3]}
+                          : (ec[4:3] == 2'd1) ? tb1_q[{ctr_q[gi][5:3], 2'd0} +: 4]
+                          : tb2_q[{ctr_q[gi][5:3], 2'd0} +: 4];
+            wire [3:0] an = a_plus({ctr_q[gi][9], ctr_q[gi][2:0]}, eb[3]);
+            assign ctr_next[gi] = {an[3], ec[2:0], eb[2:0], an[2:0]};
         end
     endgenerate
     wire last_now = |(cv & is_last);
-    reg [8:0] nxt;
     reg [7:0] nissue;
     integer i;
     always @(*) begin
-        nxt = cur_q;
         nissue = 8'd0;
-        for (i = 0; i < N; i = i + 1) begin
-            if (cv[i]) begin
-                nxt = inc(cand[i], lo_q, hi_q[8:3]);
-                nissue = nissue + 8'd1;
-            end
-        end
+        for (i = 0; i < N; i = i + 1) nissue = nissue + {7'd0, cv[i]};
     end
+    integer ki;
 
     // ---------------------------------------------------- common terms
     wire [111:0] e0_w;
@@ -298,7 +401,9 @@ module mpdcc_core #(
                   && (nrecv != 8'd0);
     always @(posedge clk_i) begin
         if (rst_i) begin
-            lo_q <= 6'd0; hi_q <= 9'd0; cur_q <= 9'd0;
+            hi_q <= 9'd0; aend_q <= 4'd0;
+            tc_q <= 32'd0; tcy_q <= 16'd0; tb1_q <= 32'd0; tb2_q <= 32'd0;
+            for (ki = 0; ki < N; ki = ki + 1) ctr_q[ki] <= 10'd0;
             gen_q <= 1'b0; busy_q <= 1'b0; nuse_q <= 3'd1; pre_q <= 6'd0;
             cyc_q <= 16'd0; issued_q <= 8'd0; received_q <= 8'd0; ph_q <= 3'd0;
             hb_q <= 1'b0; hd_q <= 1'b0; lazy_q <= 1'b0;
@@ -309,10 +414,17 @@ module mpdcc_core #(
         end else begin
             done_o <= 1'b0;
             if (start_i && !busy_q) begin
-                lo_q <= {lo_of(s_prev_i[8:6]), lo_of(s_prev_i[5:3])};
                 hi_q <= {hi_of(s_prev_i[8:6]), hi_of(s_prev_i[5:3]), hi_of(s_prev_i[2:0])};
-                cur_q <= {lo_of(s_prev_i[8:6]), lo_of(s_prev_i[5:3]), lo_of(s_prev_i[2:0])};
-                nuse_q <= (n_use_i == 3'd0) ? 3'd1 : (n_use_i > N[2:0]) ? N[2:0] : n_use_i;
+                aend_q <= {1'b0, hi_of(s_prev_i[2:0])} + 4'd1;
+                for (ki = 0; ki < N; ki = ki + 1)
+                    ctr_q[ki] <= first_plus(s_prev_i, ki[2:0]);
+                for (ki = 0; ki < 8; ki = ki + 1) begin
+                    tc_q[4 * ki +: 4] <= {1'b0, tc_ld[5 * ki +: 3]};
+                    tcy_q[2 * ki +: 2] <= tc_ld[5 * ki + 3 +: 2];
+                    tb1_q[4 * ki +: 4] <= tb1_ld[5 * ki +: 4];
+                    tb2_q[4 * ki +: 4] <= tb2_ld[5 * ki +: 4];
+                end
+                nuse_q <= nuse_set;
                 gen_q <= 1'b0;
                 pre_q <= COMMON_LATENCY[5:0];
                 busy_q <= 1'b1;
@@ -329,7 +441,9 @@ module mpdcc_core #(
                 end
                 if (gen_q) begin
                     ph_q <= (ph_q == II[2:0] - 3'd1) ? 3'd0 : ph_q + 3'd1;
-                    cur_q <= nxt;
+                    if (slot)
+                        for (ki = 0; ki < N; ki = ki + 1)
+                            ctr_q[ki] <= ctr_next[ki];
                     issued_q <= issued_q + nissue;
                     if (last_now) gen_q <= 1'b0;
                 end
@@ -455,6 +569,19 @@ module mpdcc_core #(
                          + {6'd0, x[5:3] - f_min(f[5:3])}, f_cnt(f[8:6]))
                  + {6'd0, x[8:6] - f_min(f[8:6])};
     endfunction
+    // The same position for a counter {a[3], c, b, a[2:0]} whose a may be
+    // past its range (a counter past the set's end: rank >= |S|), and
+    // whether its digits are ones the enumeration can reach (b and c in
+    // their ranges, a not below its lo).
+    function automatic [8:0] f_rank10(input [9:0] x, input [8:0] f);
+        f_rank10 = f_times(f_times({5'd0, {x[9], x[2:0]} - {1'b0, f_min(f[2:0])}}, f_cnt(f[5:3]))
+                           + {6'd0, x[5:3] - f_min(f[5:3])}, f_cnt(f[8:6]))
+                   + {6'd0, x[8:6] - f_min(f[8:6])};
+    endfunction
+    function automatic f_reach(input [9:0] x, input [8:0] f);
+        f_reach = f_adm(x[8:6], f[8:6]) && f_adm(x[5:3], f[5:3])
+                  && {x[9], x[2:0]} >= {1'b0, f_min(f[2:0])} && {x[9], x[2:0]} <= 4'd8;
+    endfunction
     function automatic [N-1:0] f_ones(input [8:0] n);  // n low bits set
         integer q;
         begin
@@ -537,7 +664,6 @@ module mpdcc_core #(
                       : (f_lastclk != 9'd0 && f_back_by > f_lastclk) ? f_size
                       : f_times(f_back_by - f_first, f_nu);
 
-    wire [8:0] f_lo = {f_min(f_sp[8:6]), f_min(f_sp[5:3]), f_min(f_sp[2:0])};
     wire [8:0] f_hi = {f_max(f_sp[8:6]), f_max(f_sp[5:3]), f_max(f_sp[2:0])};
     wire [8:0] f_g = f_cyc - F_CL[8:0] - F_LAT[8:0] - F_AM[8:0] - 9'd1;  // issue clocks, at done
 
@@ -578,12 +704,13 @@ module mpdcc_core #(
             assert (cyc_q == {7'd0, f_cyc} && f_cyc >= 9'd1);
             assert (pre_q == ((f_cyc < f_first) ? f_first[5:0] - f_cyc[5:0] : 6'd0));
             assert (gen_q == f_gen);
-            assert (lo_q == f_lo[8:3] && hi_q == f_hi);
-            if (f_cyc < f_first) assert (cur_q == f_lo && f_iss == 9'd0);
-            if (f_gen) begin
-                assert (f_in_set(cur_q, f_sp) && f_rank(cur_q, f_sp) == f_iss);
-                assert (f_iss == f_times(f_cyc - f_first, f_nu) && f_iss < f_size);
-            end
+            assert (hi_q == f_hi && aend_q == {1'b0, f_hi[2:0]} + 4'd1);
+            // counter k (k < n_use) holds the (issued + k)-th candidate
+            for (f_k = 0; f_k < N; f_k = f_k + 1)
+                if ((f_cyc < f_first || f_gen) && f_k < {29'd0, f_nu})
+                    assert (f_reach(ctr_q[f_k], f_sp) && f_rank10(ctr_q[f_k], f_sp) == f_iss + f_k[8:0]);
+            if (f_cyc < f_first) assert (f_iss == 9'd0);
+            if (f_gen) assert (f_iss == f_times(f_cyc - f_first, f_nu) && f_iss < f_size);
             if (f_lastclk != 9'd0) begin
                 assert (f_lastclk >= f_first && f_cyc > f_lastclk && f_cyc <= f_lastclk + F_LAT[8:0] + F_AM[8:0]);
                 assert (f_iss == f_size && f_restv != {N{1'b0}}
@@ -592,6 +719,52 @@ module mpdcc_core #(
                         && f_times(f_lastclk - f_first, f_nu) < f_size);
             end
         end
+    end
+    // A step through the elaboration tables (digit_rom), for any k <= 6.
+    function automatic [9:0] f_step(input [9:0] x, input [2:0] fc, input [2:0] fb, input [2:0] k);
+        reg [4:0] ec;
+        /* verilator lint_off UNUSEDSIGNAL */
+        reg [4:0] eb;  // b carries at most 1: bit 4 is 0
+        /* verilator lint_on UNUSEDSIGNAL */
+        reg [3:0] a;
+        begin
+            ec = rom_c_at({fc, x[8:6], k});
+            eb = rom_b_at({fb, x[5:3], 1'b0, ec[4:3]});
+            a = a_plus({x[9], x[2:0]}, eb[3]);
+            f_step = {a[3], ec[2:0], eb[2:0], a[2:0]};
+        end
+    endfunction
+    // The decision's tables: entry x of a digit's range is x plus the
+    // addend in that range, with the carry times the range's size.
+    function automatic f_digit_ok(input [2:0] x, input [2:0] xn, input [1:0] cy, input [2:0] f,
+                                  input [2:0] d);
+        f_digit_ok = f_adm(xn, f) && f_times({7'd0, cy}, f_cnt(f)) + {6'd0, xn - f_min(f)}
+                                     == {6'd0, x - f_min(f)} + {6'd0, d};
+    endfunction
+    integer f_e;
+    always @(*) begin
+        if (f_busy)
+            for (f_e = 0; f_e < 8; f_e = f_e + 1) begin
+                if (f_adm(f_e[2:0], f_sp[8:6]))
+                    assert (f_digit_ok(f_e[2:0], tc_q[4 * f_e +: 3], tcy_q[2 * f_e +: 2], f_sp[8:6], f_nu));
+                if (f_adm(f_e[2:0], f_sp[5:3])) begin
+                    assert (f_digit_ok(f_e[2:0], tb1_q[4 * f_e +: 3], {1'b0, tb1_q[4 * f_e + 3]}, f_sp[5:3], 3'd1));
+                    assert (f_digit_ok(f_e[2:0], tb2_q[4 * f_e +: 3], {1'b0, tb2_q[4 * f_e + 3]}, f_sp[5:3], 3'd2));
+                end
+            end
+    end
+    // The step for every k up to 6 (the proof's N = 2 steps by 1 or 2
+    // only): from any reachable counter of any set, the k-th successor is
+    // reachable and k positions further. f_x, f_xk are undriven: free
+    // values at every step of the proof.
+    /* verilator lint_off UNDRIVEN */
+    wire [9:0] f_x;
+    wire [2:0] f_xk;
+    /* verilator lint_on UNDRIVEN */
+    wire [9:0] f_xs = f_step(f_x, f_sp[8:6], f_sp[5:3], f_xk);
+    always @(*) begin
+        if (f_reach(f_x, f_sp) && f_rank10(f_x, f_sp) < f_size && f_xk <= 3'd6)
+            assert (f_reach(f_xs, f_sp) && f_rank10(f_xs, f_sp) == f_rank10(f_x, f_sp) + {6'd0, f_xk});
     end
     // In flight, stage by stage: stage j holds what clock f_cyc - j issued.
     generate
@@ -642,7 +815,7 @@ module mpdcc_core #(
     //    counters cleared (a decision in flight is dropped: no done_o for
     //    it, its results are cleared in the explorers by the same reset).
     //    A start while busy is ignored: the monitor takes no start while
-    //    busy, and lo_q, hi_q, nuse_q, cyc_q and the counters are asserted
+    //    busy, and hi_q, nuse_q, cyc_q and the counters are asserted
     //    equal to it above.
     reg f_rst_q = 1'b0;
     always @(posedge clk_i) f_rst_q <= rst_i;
