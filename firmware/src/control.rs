@@ -968,12 +968,13 @@ impl DriveOps for FwDrive {
         // The controllers are built with the control interrupt enabled (in
         // co-simulation, one instruction per ns, that arithmetic alone
         // spans several control periods); only their installation holds
-        // it off. The PL registers follow one access per critical section,
-        // as the MPDCC loop's (the ADC period's restart in one): the gates
-        // are off and stay off meanwhile.
+        // it off, with the ADC period's restart (`Servo::adopt`: a step
+        // between the two would wait for the new period's boundary on the
+        // old one). The other PL registers follow one access per critical
+        // section, as the MPDCC loop's: the gates are off and stay off
+        // meanwhile.
         let next = Servo::rebuild(cfg).map_err(|e| DriveError::from(ServoError::BadConfig(e)))?;
-        if let Some(pl) = run(|s| s.servo.adopt(next))? {
-            run(|s| Ok(pl.write_adc(&mut s.bus)?))?;
+        if let Some(pl) = run(|s| s.servo.adopt(&mut s.bus, next))? {
             pl.write_rest(&mut Locked)
                 .map_err(|e| DriveError::from(ServoError::Bus(e)))?;
         }

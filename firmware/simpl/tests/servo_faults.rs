@@ -140,6 +140,57 @@ fn mode_changes_on_the_simulated_pl_raise_no_fault() {
     assert_eq!(s.fault_history().total, 0);
 }
 
+/// An ADC period changed with the gates off, in the modes its results pace
+/// (MPDTC and off: four results a control period), at any instant of the
+/// old period: the installation of the configuration writes the period
+/// too, so the PL's next boundary comes within two control periods of the
+/// new configuration (what the firmware's PL tick waits for before it
+/// counts a period without one, the PS's `ADC_STUCK`), and the steps after
+/// it see a new result each. Shortened (1,500 to 391 cycles) and
+/// lengthened.
+#[test]
+fn an_adc_period_change_keeps_the_boundaries_of_the_new_period() {
+    for mode in [Mode::Mpdtc, Mode::Off] {
+        for (from, to) in [(1500, 391), (391, 1500)] {
+            for offset in (0..4 * u64::from(from)).step_by(397) {
+                let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+                let mut cfg =
+                    ServoConfig::for_plant(sim.config().motor, sim.config().adc_amps_per_count);
+                cfg.foc_half_period_cycles = 6256;
+                cfg.adc_period_cycles = from;
+                let mut s = Servo::new(&cfg).unwrap();
+                s.init(&mut sim).unwrap();
+                s.set_mode(&mut sim, mode).unwrap();
+                for _ in 0..5 {
+                    assert_eq!(sim.advance_to_boundary(20_000).control_periods, 1);
+                    s.control_step(&mut sim).unwrap();
+                }
+                let _ = sim.advance(offset);
+                cfg.adc_period_cycles = to;
+                let next = Servo::rebuild(&cfg).unwrap();
+                let rest = s.adopt(&mut sim, next).unwrap().expect("gates off");
+                let period =
+                    libm::round(f64::from(regmap::PL_CLOCK_HZ) / s.control_rate_hz()) as u64;
+                assert_eq!(period, 4 * u64::from(to));
+                let a = sim.advance_to_boundary(2 * period);
+                assert!(
+                    a.control_periods >= 1,
+                    "{mode:?} {from} -> {to} at +{offset}: no boundary in {} cycles",
+                    2 * period
+                );
+                s.control_step(&mut sim).unwrap();
+                rest.write_rest(&mut sim).unwrap();
+                for _ in 0..20 {
+                    assert!(sim.advance_to_boundary(2 * period).control_periods >= 1);
+                    s.control_step(&mut sim).unwrap();
+                }
+                let f = s.faults(&mut sim).unwrap();
+                assert!(f.none(), "{mode:?} {from} -> {to} at +{offset}: {f:?}");
+            }
+        }
+    }
+}
+
 /// The snapshot of a PL fault holds the torque reference the drive was
 /// following, not the 0 N m the fault's gates-off sets afterwards: the
 /// last sample's reference matches its measured torque.

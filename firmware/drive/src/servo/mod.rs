@@ -555,20 +555,31 @@ impl Servo {
         cfg: &ServoConfig,
     ) -> Result<(), ServoError> {
         let next = Servo::rebuild(cfg).map_err(ServoError::BadConfig)?;
-        if let Some(pl) = self.adopt(next)? {
-            pl.write(bus)?;
+        if let Some(pl) = self.adopt(bus, next)? {
+            pl.write_rest(bus)?;
         }
         Ok(())
     }
 
     /// Installs a configuration [`Servo::rebuild`] built: no arithmetic
-    /// beyond copies, so a caller may hold the control loop off around it.
-    /// Returns the PL registers still to write when the gates are off
-    /// (`None` with them on: only the torque limit changed). The writes may
-    /// be interleaved with control steps: the gates stay off until the
-    /// console enables them, and the steps of a drive with the gates off
-    /// only measure. On an error nothing changed.
-    pub fn adopt(&mut self, next: Rebuilt) -> Result<Option<PlConfig>, ServoError> {
+    /// beyond copies and the ADC period's accesses
+    /// ([`PlConfig::write_adc`]), so a caller may hold the control loop off
+    /// around it. The ADC period goes with the installation: the MPDTC's
+    /// and mode off's control period is four ADC results, and a control
+    /// step or PL tick between the two would wait for a boundary of the new
+    /// period on the PL's old one (a period shortened from 1,500 to 391
+    /// cycles: no result within two new periods, the PS's `ADC_STUCK`).
+    /// Returns the PL registers still to write ([`PlConfig::write_rest`])
+    /// when the gates are off (`None` with them on: only the torque limit
+    /// changed). Those writes may be interleaved with control steps: the
+    /// gates stay off until the console enables them, and the steps of a
+    /// drive with the gates off only measure. On a configuration error
+    /// nothing changed.
+    pub fn adopt<B: RegisterBus>(
+        &mut self,
+        bus: &mut B,
+        next: Rebuilt,
+    ) -> Result<Option<PlConfig>, ServoError> {
         let cfg = &next.cfg;
         if libm::fabs(self.torque_ref_nm) > cfg.torque_limit_nm {
             return Err(ServoError::TorqueOutOfRange(self.torque_ref_nm));
@@ -601,7 +612,9 @@ impl Servo {
         self.foc_model = next.foc_model;
         // The writes below include MPDTC_ALIGN_TIME.
         self.align_time_cut = false;
-        Ok(Some(self.pl_config()))
+        let pl = self.pl_config();
+        pl.write_adc(bus)?;
+        Ok(Some(pl))
     }
 
     /// The configuration.
