@@ -120,7 +120,14 @@ module mpdcc_core #(
     // hi_a + 1 instead of wrapping. Each steps by n_use on its own, so no
     // path runs through another explorer's candidate (a chain of N
     // increments from one counter grows with N and missed 8 ns at N >= 2).
+    // The step runs one position ahead: nxt_q[j] holds the candidate n_use
+    // further, stepped from itself, and ctr_q[j] takes it. ctr_q drives its
+    // explorer (81 LUT inputs at II = 1), so stepping it in place put that
+    // fan-out on the step's path (8.09 ns at II = 1, N = 3); nxt_q drives
+    // only the step and ctr_q. The start loads nxt_q with the set's j-th
+    // candidate, and the last clock before the issue takes the first step.
     reg  [9:0] ctr_q [0:N-1];
+    reg  [9:0] nxt_q [0:N-1];
     reg        gen_q;        // enumerating
     reg  [5:0] pre_q;        // cycles left until the common terms are valid
     reg        busy_q;
@@ -258,7 +265,7 @@ module mpdcc_core #(
     wire [8:0]  cand [0:N-1];
     wire [N-1:0] cv;
     wire [N-1:0] is_last;
-    wire [9:0]  ctr_next [0:N-1];
+    wire [9:0]  nxt_next [0:N-1];
     genvar gi;
     generate
         for (gi = 0; gi < N; gi = gi + 1) begin : g_cand
@@ -267,13 +274,13 @@ module mpdcc_core #(
                             && ({ctr_q[gi][9], ctr_q[gi][2:0]} != aend_q);
             // the last candidate of the set is issued this clock
             assign is_last[gi] = ({ctr_q[gi][9], ctr_q[gi][8:0]} == {1'b0, hi_q});
-            // the counter plus n_use, from the decision's tables
-            wire [4:0] ec = {tcy_q[{ctr_q[gi][8:6], 1'b0} +: 2], tc_q[{ctr_q[gi][8:6], 2'd0} +: 3]};
-            wire [3:0] eb = (ec[4:3] == 2'd0) ? {1'b0, ctr_q[gi][5:3]}
-                          : (ec[4:3] == 2'd1) ? tb1_q[{ctr_q[gi][5:3], 2'd0} +: 4]
-                          : tb2_q[{ctr_q[gi][5:3], 2'd0} +: 4];
-            wire [3:0] an = a_plus({ctr_q[gi][9], ctr_q[gi][2:0]}, eb[3]);
-            assign ctr_next[gi] = {an[3], ec[2:0], eb[2:0], an[2:0]};
+            // the look-ahead plus n_use, from the decision's tables
+            wire [4:0] ec = {tcy_q[{nxt_q[gi][8:6], 1'b0} +: 2], tc_q[{nxt_q[gi][8:6], 2'd0} +: 3]};
+            wire [3:0] eb = (ec[4:3] == 2'd0) ? {1'b0, nxt_q[gi][5:3]}
+                          : (ec[4:3] == 2'd1) ? tb1_q[{nxt_q[gi][5:3], 2'd0} +: 4]
+                          : tb2_q[{nxt_q[gi][5:3], 2'd0} +: 4];
+            wire [3:0] an = a_plus({nxt_q[gi][9], nxt_q[gi][2:0]}, eb[3]);
+            assign nxt_next[gi] = {an[3], ec[2:0], eb[2:0], an[2:0]};
         end
     endgenerate
     wire last_now = |(cv & is_last);
@@ -403,7 +410,10 @@ module mpdcc_core #(
         if (rst_i) begin
             hi_q <= 9'd0; aend_q <= 4'd0;
             tc_q <= 32'd0; tcy_q <= 16'd0; tb1_q <= 32'd0; tb2_q <= 32'd0;
-            for (ki = 0; ki < N; ki = ki + 1) ctr_q[ki] <= 10'd0;
+            for (ki = 0; ki < N; ki = ki + 1) begin
+                ctr_q[ki] <= 10'd0;
+                nxt_q[ki] <= 10'd0;
+            end
             gen_q <= 1'b0; busy_q <= 1'b0; nuse_q <= 3'd1; pre_q <= 6'd0;
             cyc_q <= 16'd0; issued_q <= 8'd0; received_q <= 8'd0; ph_q <= 3'd0;
             hb_q <= 1'b0; hd_q <= 1'b0; lazy_q <= 1'b0;
@@ -417,7 +427,7 @@ module mpdcc_core #(
                 hi_q <= {hi_of(s_prev_i[8:6]), hi_of(s_prev_i[5:3]), hi_of(s_prev_i[2:0])};
                 aend_q <= {1'b0, hi_of(s_prev_i[2:0])} + 4'd1;
                 for (ki = 0; ki < N; ki = ki + 1)
-                    ctr_q[ki] <= first_plus(s_prev_i, ki[2:0]);
+                    nxt_q[ki] <= first_plus(s_prev_i, ki[2:0]);
                 for (ki = 0; ki < 8; ki = ki + 1) begin
                     tc_q[4 * ki +: 4] <= {1'b0, tc_ld[5 * ki +: 3]};
                     tcy_q[2 * ki +: 2] <= tc_ld[5 * ki + 3 +: 2];
@@ -439,11 +449,15 @@ module mpdcc_core #(
                     pre_q <= pre_q - 6'd1;
                     if (pre_q == 6'd1) gen_q <= 1'b1;
                 end
+                // the counters step: once on the clock before the issue (the
+                // look-ahead's first step), then on every issue clock
+                if (pre_q == 6'd1 || (gen_q && slot))
+                    for (ki = 0; ki < N; ki = ki + 1) begin
+                        ctr_q[ki] <= nxt_q[ki];
+                        nxt_q[ki] <= nxt_next[ki];
+                    end
                 if (gen_q) begin
                     ph_q <= (ph_q == II[2:0] - 3'd1) ? 3'd0 : ph_q + 3'd1;
-                    if (slot)
-                        for (ki = 0; ki < N; ki = ki + 1)
-                            ctr_q[ki] <= ctr_next[ki];
                     issued_q <= issued_q + nissue;
                     if (last_now) gen_q <= 1'b0;
                 end
@@ -706,9 +720,19 @@ module mpdcc_core #(
             assert (gen_q == f_gen);
             assert (hi_q == f_hi && aend_q == {1'b0, f_hi[2:0]} + 4'd1);
             // counter k (k < n_use) holds the (issued + k)-th candidate
+            // while issuing; its look-ahead the k-th before the issue, then
+            // n_use further than the counter but on the last issue clock
+            // (whose step is never used)
             for (f_k = 0; f_k < N; f_k = f_k + 1)
-                if ((f_cyc < f_first || f_gen) && f_k < {29'd0, f_nu})
-                    assert (f_reach(ctr_q[f_k], f_sp) && f_rank10(ctr_q[f_k], f_sp) == f_iss + f_k[8:0]);
+                if (f_k < {29'd0, f_nu}) begin
+                    if (f_gen)
+                        assert (f_reach(ctr_q[f_k], f_sp) && f_rank10(ctr_q[f_k], f_sp) == f_iss + f_k[8:0]);
+                    if (f_cyc < f_first)
+                        assert (f_reach(nxt_q[f_k], f_sp) && f_rank10(nxt_q[f_k], f_sp) == f_k[8:0]);
+                    if (f_gen && f_left > {6'd0, f_nu})
+                        assert (f_reach(nxt_q[f_k], f_sp)
+                                && f_rank10(nxt_q[f_k], f_sp) == f_iss + f_k[8:0] + {6'd0, f_nu});
+                end
             if (f_cyc < f_first) assert (f_iss == 9'd0);
             if (f_gen) assert (f_iss == f_times(f_cyc - f_first, f_nu) && f_iss < f_size);
             if (f_lastclk != 9'd0) begin
