@@ -11,7 +11,6 @@ use crate::ps::timer;
 use crate::semihosting::{self, HostFile};
 use models::pmsm::sim_motor::{SimMotor, SimSetError, SIM_PARAMS};
 use regmap::bus::{BusError, RegisterBus};
-use regmap::Access;
 use simpl::cosim::{cycle_after_write, Op, Reply, Request, Status, REPLY_LEN, REQUEST_LEN};
 
 /// Posted writes held back at most (then sent on their own). They go out
@@ -61,19 +60,11 @@ const WRITABLE: [u32; regmap::BLOCKS.len() * regmap::BLOCK_SIZE / 128] = writabl
 
 const fn writable_words() -> [u32; regmap::BLOCKS.len() * regmap::BLOCK_SIZE / 128] {
     let mut w = [0u32; regmap::BLOCKS.len() * regmap::BLOCK_SIZE / 128];
-    let mut b = 0;
-    while b < regmap::BLOCKS.len() {
-        let blk = regmap::BLOCKS[b];
-        let mut r = 0;
-        while r < blk.registers.len() {
-            let reg = blk.registers[r];
-            if !matches!(reg.access, Access::Ro) {
-                let word = (blk.addr(reg) - regmap::BASE_ADDR) / 4;
-                w[word / 32] |= 1 << (word % 32);
-            }
-            r += 1;
-        }
-        b += 1;
+    let mut i = 0;
+    while i < regmap::WRITABLE_COUNT {
+        let word = (regmap::WRITABLE_ADDRS[i] - regmap::BASE_ADDR) / 4;
+        w[word / 32] |= 1 << (word % 32);
+        i += 1;
     }
     w
 }

@@ -2113,9 +2113,64 @@ pub fn lookup(addr: usize) -> Option<(&'static Block, &'static Register)> {
         .map(|r| (block, *r))
 }
 
+/// Stores the absolute addresses of the software-writable registers (RW
+/// and W1C), in map order (block by block, each in its table's order), in
+/// `out` as far as it reaches; returns how many there are.
+const fn writable_into(out: &mut [usize]) -> usize {
+    let mut n = 0;
+    let mut b = 0;
+    while b < BLOCKS.len() {
+        let blk = BLOCKS[b];
+        let mut r = 0;
+        while r < blk.registers.len() {
+            let reg = blk.registers[r];
+            if !matches!(reg.access, Access::Ro) {
+                if n < out.len() {
+                    out[n] = blk.addr(reg);
+                }
+                n += 1;
+            }
+            r += 1;
+        }
+        b += 1;
+    }
+    n
+}
+
+/// Number of software-writable registers (RW and W1C).
+pub const WRITABLE_COUNT: usize = writable_into(&mut []);
+
+/// Absolute addresses of the software-writable registers (RW and W1C), in
+/// map order: the simulated PL's storage slots and the co-simulation's
+/// posted-write check are taken from it.
+pub const WRITABLE_ADDRS: [usize; WRITABLE_COUNT] = {
+    let mut a = [0; WRITABLE_COUNT];
+    writable_into(&mut a);
+    a
+};
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn writable_addresses_are_the_rw_and_w1c_registers_in_map_order() {
+        let want: Vec<usize> = BLOCKS
+            .iter()
+            .flat_map(|b| {
+                b.registers
+                    .iter()
+                    .filter(|r| r.access != Access::Ro)
+                    .map(move |r| b.addr(r))
+            })
+            .collect();
+        assert_eq!(WRITABLE_ADDRS.to_vec(), want);
+        assert!(!want.is_empty());
+        for a in WRITABLE_ADDRS {
+            let (_, r) = lookup(a).expect("a register of the map");
+            assert_ne!(r.access, Access::Ro);
+        }
+    }
 
     #[test]
     fn fixed_addresses() {

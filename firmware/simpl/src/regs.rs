@@ -5,46 +5,19 @@
 
 use regmap::{self, Access, Block, RegError, Register};
 
-/// Number of software-writable (RW and W1C) registers in the map.
-const fn count_stored() -> usize {
-    let mut n = 0;
-    let mut b = 0;
-    while b < regmap::BLOCKS.len() {
-        let regs = regmap::BLOCKS[b].registers;
-        let mut r = 0;
-        while r < regs.len() {
-            if !matches!(regs[r].access, Access::Ro) {
-                n += 1;
-            }
-            r += 1;
-        }
-        b += 1;
-    }
-    n
-}
-
-/// Stored registers.
-pub const STORED: usize = count_stored();
+/// Stored registers: the map's software-writable ones (RW and W1C), one
+/// slot each, in the order of [`regmap::WRITABLE_ADDRS`].
+pub const STORED: usize = regmap::WRITABLE_COUNT;
 
 /// Storage slot of a writable register at absolute address `addr`
 /// (`None`: unmapped or read-only).
 pub const fn slot(addr: usize) -> Option<usize> {
-    let mut n = 0;
-    let mut b = 0;
-    while b < regmap::BLOCKS.len() {
-        let blk = regmap::BLOCKS[b];
-        let mut r = 0;
-        while r < blk.registers.len() {
-            let reg = blk.registers[r];
-            if !matches!(reg.access, Access::Ro) {
-                if blk.addr(reg) == addr {
-                    return Some(n);
-                }
-                n += 1;
-            }
-            r += 1;
+    let mut i = 0;
+    while i < STORED {
+        if regmap::WRITABLE_ADDRS[i] == addr {
+            return Some(i);
         }
-        b += 1;
+        i += 1;
     }
     None
 }
@@ -90,13 +63,10 @@ pub struct Regs {
 impl Default for Regs {
     fn default() -> Self {
         let mut v = [0; STORED];
-        let mut n = 0;
-        for blk in regmap::BLOCKS {
-            for reg in blk.registers {
-                if reg.access != Access::Ro {
-                    v[n] = reg.reset;
-                    n += 1;
-                }
+        for (x, &addr) in v.iter_mut().zip(regmap::WRITABLE_ADDRS.iter()) {
+            // every address is a register of the map (regmap's tests)
+            if let Some((_, reg)) = regmap::lookup(addr) {
+                *x = reg.reset;
             }
         }
         Self { v }
