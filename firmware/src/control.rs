@@ -148,6 +148,18 @@ struct State {
     control_irq: u64,
     /// The control step's start latency after the boundary.
     latency: Latency,
+    /// Co-simulation: boundaries that the last control step's read of
+    /// `IRQ_STATUS` found crossed since the last sync (a step that started
+    /// after the next boundary serves it as well, as the acknowledge
+    /// clears its flag): the next sync's count less these is what is new.
+    absorbed: u32,
+    /// Co-simulation: the boundary reported by the last sync is one of the
+    /// present timing, so the next one is a period after it. A console
+    /// section that wrote registers may have moved the boundaries (a mode
+    /// change turns the PWM period start into the boundary, a new ADC
+    /// period or restart moves the averages): until a sync reports a
+    /// boundary after it, the ticks poll (`COSIM_POLL_DIV`).
+    phase_known: bool,
 }
 
 /// The drive state, touched only with IRQs masked (one core).
@@ -170,7 +182,7 @@ fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
         let mut st = STATE.0.try_borrow_mut().ok()?;
         let s = st.as_mut()?;
         let before = match &s.bus {
-            Backend::Cosim(c) => Some(c.last.pl_cycles),
+            Backend::Cosim(c) => Some((c.last.pl_cycles, c.writes)),
             _ => None,
         };
         let r = f(s);
@@ -187,8 +199,11 @@ fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
                 raise = s.serve(n) && line;
             }
         }
-        if let (Some(before), Backend::Cosim(c)) = (before, &s.bus) {
+        if let (Some((before, writes)), Backend::Cosim(c)) = (before, &s.bus) {
             if c.last.pl_cycles != before {
+                if c.writes != writes {
+                    s.phase_known = false;
+                }
                 let n = s.cosim_sync(timer::global_count());
                 raise = s.serve(n);
                 if !raise {
@@ -280,10 +295,6 @@ pub fn init() -> Boot {
     if let Some(mut bus) = bus {
         let mut servo = Servo::new(&cfg).expect("servo configuration");
         if servo.init(&mut bus).is_ok() && ctrl_irq::enable(&mut bus).is_ok() {
-            if let Backend::Cosim(c) = &mut bus {
-                // The boundaries crossed during the set-up are no overruns.
-                let _ = c.sync();
-            }
             crate::irq::free(|| {
                 *STATE.0.borrow_mut() = Some(State {
                     servo,
@@ -303,6 +314,8 @@ pub fn init() -> Boot {
                     mpdcc_last: None,
                     control_irq: 0,
                     latency: Latency::default(),
+                    absorbed: 0,
+                    phase_known: false,
                     store,
                 });
             });
@@ -314,7 +327,9 @@ pub fn init() -> Boot {
             if !matches!(pl_kind, PlKind::Bitstream(_)) {
                 // The PL model's time under QEMU.
                 gic::enable(gic::IRQ_GLOBAL_TIMER);
-                timer::set_compare(timer::global_count() + 1000);
+                let first = with(|s| s.first_tick(timer::global_count()))
+                    .unwrap_or(timer::global_count() + 1000);
+                timer::set_compare(first);
             }
         }
     }
@@ -417,6 +432,14 @@ pub fn on_pl_tick() {
 /// after the strobe; a little margin keeps the tick after it).
 const COSIM_TICK_LAG: u64 = 4;
 
+/// Co-simulation: while the boundaries' phase is not known (after a
+/// console section's register writes), a PL tick every `1 / COSIM_POLL_DIV`
+/// of the period looks for the first boundary: the first step after a
+/// mode change starts at most that late (MPDTC 195, FOC 782 PL cycles)
+/// instead of up to a period, as when the next tick was planned from a
+/// boundary of the old timing.
+const COSIM_POLL_DIV: u64 = 8;
+
 /// The control interrupt.
 pub fn on_control() {
     with(|s| {
@@ -425,6 +448,14 @@ pub fn on_control() {
         // Latency first: the age counts on while the step runs.
         let boundary = match ctrl_irq::take(&mut s.bus) {
             Ok(t) if t.status.boundary() => {
+                if let Backend::Cosim(c) = &s.bus {
+                    // Boundaries past the one the step was raised for:
+                    // this step serves them too (one acknowledge), they
+                    // are steps lost, and the next sync must not raise
+                    // the interrupt for them again.
+                    s.absorbed = c.last.boundaries;
+                    s.servo.note_overruns(u64::from(s.absorbed));
+                }
                 s.latency.add(t.age);
                 s.servo.note_step_age(t.age);
                 if t.status.missed() {
@@ -490,6 +521,23 @@ pub fn on_control() {
 }
 
 impl State {
+    /// Global-timer count of the first PL tick. Co-simulation: the PL ran
+    /// through the set-up with the interrupts masked, so the boundaries it
+    /// crossed are no control steps owed: their flags are cleared, the
+    /// bridge's count restarts, and the first tick comes just after the
+    /// next boundary, which the first step serves with the loop's own
+    /// latency (ticking at a fixed offset from the set-up instead served
+    /// a boundary of the set-up up to a period late, or the next one
+    /// twice).
+    fn first_tick(&mut self, now: u64) -> u64 {
+        if !matches!(self.bus, Backend::Cosim(_)) {
+            return now + 1000;
+        }
+        let _ = ctrl_irq::clear(&mut self.bus);
+        self.cosim_sync(timer::global_count());
+        self.next_tick
+    }
+
     /// The sensor check held the control loop off for milliseconds of PL
     /// time with the gates off: the boundaries it crossed are no overruns.
     fn after_sensor_check(&mut self) {
@@ -511,12 +559,13 @@ impl State {
             Ok(r) => (r.boundaries, u64::from(r.since_boundary)),
             Err(_) => (0, u64::MAX),
         };
-        if self.next_tick == 0 {
-            // The first tick (IRQs were off during the boot): no control
-            // step was due before it.
-            n = n.min(1);
-        }
-        self.next_tick = if since < period {
+        // Those the last control step has served already.
+        n = n.saturating_sub(core::mem::take(&mut self.absorbed));
+        // A boundary after the last register writes fixes the phase.
+        self.phase_known |= n > 0;
+        self.next_tick = if !self.phase_known {
+            now + period / COSIM_POLL_DIV
+        } else if since < period {
             now - since + period + COSIM_TICK_LAG
         } else {
             now + period

@@ -46,6 +46,9 @@ pub struct Cosim {
     out: [u8; (HELD_MAX + READ_MANY_MAX) * REQUEST_LEN],
     /// Bytes of `out` in use.
     held: usize,
+    /// Register writes sent (posted or not), wrapping: a write may move
+    /// the control-period boundaries (mode, ADC and PWM timing).
+    pub writes: u32,
 }
 
 /// Counts per revolution of the bridge's simulated encoder
@@ -115,6 +118,7 @@ impl Cosim {
             origin: None,
             out: [0; (HELD_MAX + READ_MANY_MAX) * REQUEST_LEN],
             held: 0,
+            writes: 0,
         };
         // The first request: the host's time origin, where the PL is.
         let guest = timer::global_count();
@@ -304,6 +308,7 @@ impl RegisterBus for Cosim {
         first
     }
     fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
+        self.writes = self.writes.wrapping_add(1);
         if let Some(r) = self.post(addr, value) {
             return r;
         }

@@ -7,8 +7,14 @@ use regmap::regs::top::{BoundaryAge, IrqEn, IrqEnValue, IrqStatus, IrqStatusValu
 
 /// Enables the boundary interrupt and clears stale flags.
 pub fn enable<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<(), BusError> {
-    IrqStatus::write(bus, IrqStatusValue::from_bits(0b111))?;
+    clear(bus)?;
     IrqEn::write(bus, IrqEnValue::from_bits(0).with_boundary(true))
+}
+
+/// Clears every flag (W1C): boundaries crossed before the control loop
+/// starts are no steps it owes.
+pub fn clear<B: RegisterBus + ?Sized>(bus: &mut B) -> Result<(), BusError> {
+    IrqStatus::write(bus, IrqStatusValue::from_bits(0b111))
 }
 
 /// What the handler found when it took the interrupt.
