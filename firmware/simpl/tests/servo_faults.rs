@@ -232,3 +232,31 @@ fn a_pl_fault_snapshot_keeps_the_reference_before_the_gates_went_off() {
     // The drive itself is back at 0 N m for the next run.
     assert_eq!(s.torque_ref_nm(), 0.0);
 }
+
+/// The capture driver's arm and restart return once the block has taken
+/// them: `pl_top` registers the buffer's inputs, and the simulated PL runs
+/// only on accesses between its ticks, so a status read right after an arm
+/// must already see the new record (it answered `idle`, and a `capture
+/// status` right after `capture arm` on QEMU failed when no PL tick came
+/// in between).
+#[test]
+fn a_capture_status_right_after_the_arm_shows_the_new_record() {
+    use drive::pl::capture::{CapState, Capture, Trigger};
+    let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+    sim.advance(10_000);
+    // A finished record first: a stale `done` must not show either.
+    Capture(&mut sim).arm(Trigger::Manual, 0, 0).unwrap();
+    Capture(&mut sim).trigger().unwrap();
+    sim.advance(2_000_000);
+    assert_eq!(Capture(&mut sim).status().unwrap().state, CapState::Done);
+    for trigger in [Trigger::Manual, Trigger::RefStep(0.1), Trigger::Fault] {
+        Capture(&mut sim).arm(trigger, 8, 0).unwrap();
+        let st = Capture(&mut sim).status().unwrap();
+        assert_eq!(st.state, CapState::Armed, "{trigger:?}");
+        assert_eq!(st.count, 0, "{trigger:?}");
+    }
+    sim.advance(100_000);
+    assert!(Capture(&mut sim).status().unwrap().count > 0);
+    Capture(&mut sim).restart().unwrap();
+    assert_eq!(Capture(&mut sim).status().unwrap().count, 0);
+}

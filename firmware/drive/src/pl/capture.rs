@@ -239,13 +239,26 @@ impl<B: RegisterBus> Capture<B> {
         CapSource::write(b, CapSourceValue::ZERO.with_value(source))?;
         CapPre::write(b, CapPreValue::ZERO.with_value(pre.min(DEPTH - 1)))?;
         CapDecim::write(b, CapDecimValue::ZERO.with_value(u32::from(decim)))?;
-        CapArm::write(b, CapArmValue::ZERO.with_value(true))
+        CapArm::write(b, CapArmValue::ZERO.with_value(true))?;
+        self.taken()
     }
 
     /// Starts the armed record again with the latched settings (a
     /// `CAP_ARM` write: the ring empties, `CAP_PRE` is latched again).
     pub fn restart(&mut self) -> Result<(), BusError> {
-        CapArm::write(&mut self.0, CapArmValue::ZERO.with_value(true))
+        CapArm::write(&mut self.0, CapArmValue::ZERO.with_value(true))?;
+        self.taken()
+    }
+
+    /// `pl_top` registers the buffer's inputs, so an arm takes effect one
+    /// clock after its write, and `CAP_STATUS` read in that clock still
+    /// shows the record before it. One read after the write spends that
+    /// clock: a later read sees the new record. A bus whose PL runs only
+    /// while it is accessed (the simulated PL between two PL ticks) needs
+    /// it, else a `capture status` right after `capture arm` answered
+    /// `idle`; on GP0 the next access is later than that anyway.
+    fn taken(&mut self) -> Result<(), BusError> {
+        r::CapStatus::read(&mut self.0).map(|_| ())
     }
 
     /// Manual trigger (taken at the next sample while armed).
