@@ -9,9 +9,13 @@ use system_tests::{assert_ok, boot_with_flash, cmd, field, fresh_flash};
 
 /// QEMU writes the flash image asynchronously (the n25q128 model's page
 /// and sector writes are queued to its block layer): a kill right after
-/// the reply may still lose the save. Where a test needs the save on disk,
-/// it waits this long before the kill.
-const IMAGE_WRITE: std::time::Duration = std::time::Duration::from_millis(300);
+/// the reply may still lose the save (a fixed wait before the kill is a
+/// bound host load can break). Where a test needs the save on disk, QEMU
+/// exits cleanly (`Session::quit`), which drains the block layer.
+fn quit(s: Session) {
+    s.quit(std::time::Duration::from_secs(60))
+        .expect("QEMU exits on SIGTERM");
+}
 
 fn t_tol(s: &mut Session) -> f64 {
     let r = cmd(s, "config get mpdtc_t_tol");
@@ -52,8 +56,7 @@ fn saved_configuration_survives_a_reboot() {
     assert_eq!(r.lines, ["config: saved to slot1"], "{r:?}");
     // Unsaved: gone after the reboot.
     assert_ok(&cmd(&mut s, "config set mpdtc_t_tol 0.07"));
-    std::thread::sleep(IMAGE_WRITE);
-    drop(s);
+    quit(s);
     let mut s = boot_with_flash(&img);
     assert_eq!(
         flash_status(&mut s),
@@ -78,8 +81,7 @@ fn bad_records_are_ignored_and_reported() {
     assert_ok(&cmd(&mut s, "config save"));
     assert_ok(&cmd(&mut s, "config set mpdtc_t_tol 0.06"));
     assert_ok(&cmd(&mut s, "config save"));
-    std::thread::sleep(IMAGE_WRITE);
-    drop(s);
+    quit(s);
     let slot = |k: u32| (SLOT0_ADDR + k * SECTOR_BYTES) as usize;
     let mut mem = std::fs::read(&img).unwrap();
     // A flipped bit in slot 1's values: CRC fails.
@@ -107,8 +109,7 @@ fn bad_records_are_ignored_and_reported() {
     // The next save overwrites a bad slot and loads at the next boot.
     assert_ok(&cmd(&mut s, "config set mpdtc_t_tol 0.04"));
     assert_ok(&cmd(&mut s, "config save"));
-    std::thread::sleep(IMAGE_WRITE);
-    drop(s);
+    quit(s);
     let mut s = boot_with_flash(&img);
     assert_eq!(t_tol(&mut s), 0.04);
 }
@@ -188,8 +189,7 @@ fn saves_cut_by_a_power_cut_leave_the_old_or_the_new_configuration() {
     let t0 = Instant::now();
     assert_ok(&cmd(&mut s, "config save"));
     let save = t0.elapsed();
-    std::thread::sleep(IMAGE_WRITE);
-    drop(s);
+    quit(s);
     let mut old = 0.001;
     let mut rng = models::testrng::Rng(0x2545_F491_4F6C_DD1D);
     let (mut kept_old, mut got_new) = (0, 0);

@@ -384,6 +384,36 @@ impl Session {
     }
 }
 
+impl Session {
+    /// Ends the QEMU this session started as its window closing would:
+    /// SIGTERM, then waiting (at most `t`, then SIGKILL) for it to exit.
+    /// QEMU's clean exit drains its block layer, so every flash write the
+    /// firmware finished is in the image file afterwards; a plain kill
+    /// (`drop`) may lose the last ones, as a power cut may. Does nothing
+    /// for a session without a child process (a serial port).
+    pub fn quit(mut self, t: Duration) -> Result<()> {
+        let Some(mut c) = self.child.take() else {
+            return Ok(());
+        };
+        let pid = libc::pid_t::try_from(c.id()).context("QEMU's process id")?;
+        // SAFETY: kill(2) on the child this session spawned and still owns
+        // (not yet waited for, so the id cannot have been reused).
+        unsafe { libc::kill(pid, libc::SIGTERM) };
+        let end = Instant::now() + t;
+        loop {
+            if c.try_wait()?.is_some() {
+                return Ok(());
+            }
+            if Instant::now() >= end {
+                let _ = c.kill();
+                let _ = c.wait();
+                bail!("QEMU did not exit within {t:?} of SIGTERM: killed");
+            }
+            std::thread::sleep(Duration::from_millis(5));
+        }
+    }
+}
+
 impl Drop for Session {
     fn drop(&mut self) {
         if let Some(c) = &mut self.child {
