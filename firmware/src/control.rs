@@ -436,8 +436,8 @@ const COSIM_TICK_LAG: u64 = 4;
 /// console section's register writes), a PL tick every `1 / COSIM_POLL_DIV`
 /// of the period looks for the first boundary: the first step after a
 /// mode change starts at most that late (MPDTC 195, FOC 782 PL cycles)
-/// instead of up to a period, as when the next tick was planned from a
-/// boundary of the old timing.
+/// plus the handler's entry, instead of up to a period, as when the next
+/// tick was planned from a boundary of the old timing.
 const COSIM_POLL_DIV: u64 = 8;
 
 /// The control interrupt.
