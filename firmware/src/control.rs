@@ -584,6 +584,34 @@ impl State {
         self.control_pending = true;
         true
     }
+    /// `status`'s figures, with the faults and gates read as one report.
+    fn status(&self, mpdcc: Option<PacedStatus>, faults: Faults, gates_on: bool) -> DriveStatus {
+        DriveStatus {
+            mpdcc,
+            mode: self.servo.mode(),
+            mpdtc_autonomous: !self.servo.config().mpdtc_ps_fed,
+            gates_on,
+            faults,
+            measured: self.servo.measured(),
+            torque_ref_nm: self.servo.torque_ref_nm(),
+            control_rate_hz: self.servo.control_rate_hz(),
+            periods: self.servo.periods(),
+            overruns: self.servo.overruns(),
+            control_irq: self.control_irq,
+            control_latency: self.latency,
+            pl: self.pl,
+            sim_time_scale: match &self.bus {
+                Backend::Sim(sim) => {
+                    let guest_s = (timer::uptime_us() - self.sim_start_us) as f64 * 1e-6;
+                    Some(sim.sim_time_scale(guest_s))
+                }
+                Backend::Gp0(_) | Backend::Cosim(_) => None,
+            },
+            store: Some(self.store),
+            motion: self.servo.motion_status(),
+        }
+    }
+
     /// PL time now: cycles of the simulated PL, or uptime in us.
     fn pl_now(&self) -> u64 {
         match &self.bus {
@@ -758,6 +786,30 @@ fn inject_now(s: &mut State, f: Injection) -> Result<(), ServoError> {
 }
 
 /// Sleeps until an interrupt.
+/// After a `debug fault` of a PS check (decided at the step after the
+/// cause): the answer waits until the control loop has recorded the fault,
+/// at most 2 ms of PL time. The wait reads the drive's state only (no
+/// register access, a few instructions with the interrupts masked), so
+/// the steps that decide run on time; a console that polled `status`
+/// instead held a deciding step off by its register reads (in
+/// co-simulation a few hundred PL cycles), enough to take the gates-off
+/// time past its one-period bound.
+fn wait_recorded(f: Injection) {
+    let bit = match f {
+        Injection::EncoderDead => Faults::ENCODER_DEAD,
+        Injection::PhaseOpen => Faults::PHASE_OPEN,
+        Injection::PositionLimit => Faults::POSITION_LIMIT,
+        Injection::Overspeed => Faults::OVERSPEED,
+        _ => return,
+    };
+    let Some(until) = with(|s| s.pl_after_ms(2)) else {
+        return;
+    };
+    while with(|s| s.servo.faults_recorded().0 & bit == 0 && s.pl_now() < until).unwrap_or(false) {
+        wait();
+    }
+}
+
 fn wait() {
     // SAFETY: WFI has no memory effects.
     unsafe { core::arch::asm!("wfi", options(nomem, nostack)) };
@@ -879,29 +931,9 @@ impl DriveOps for FwDrive {
     }
     fn status(&mut self) -> DriveStatus {
         let mpdcc = self.mpdcc_live();
-        console(|s| DriveStatus {
-            mpdcc,
-            mode: s.servo.mode(),
-            mpdtc_autonomous: !s.servo.config().mpdtc_ps_fed,
-            gates_on: s.servo.gates_on(&mut s.bus).unwrap_or(false),
-            faults: s.servo.faults(&mut s.bus).unwrap_or_default(),
-            measured: s.servo.measured(),
-            torque_ref_nm: s.servo.torque_ref_nm(),
-            control_rate_hz: s.servo.control_rate_hz(),
-            periods: s.servo.periods(),
-            overruns: s.servo.overruns(),
-            control_irq: s.control_irq,
-            control_latency: s.latency,
-            pl: s.pl,
-            sim_time_scale: match &s.bus {
-                Backend::Sim(sim) => {
-                    let guest_s = (timer::uptime_us() - s.sim_start_us) as f64 * 1e-6;
-                    Some(sim.sim_time_scale(guest_s))
-                }
-                Backend::Gp0(_) | Backend::Cosim(_) => None,
-            },
-            store: Some(s.store),
-            motion: s.servo.motion_status(),
+        console(|s| {
+            let (faults, gates_on) = s.servo.faults_then_gates(&mut s.bus).unwrap_or_default();
+            s.status(mpdcc, faults, gates_on)
         })
         .unwrap_or(DriveStatus::absent(mpdcc))
     }
@@ -951,7 +983,7 @@ impl DriveOps for FwDrive {
                     // The MPDTC's alignment first (0.2 s of PL time; the simulated
                     // PL may run 150 times slower than real time).
                     let deadline = timer::uptime_us() + 60_000_000;
-                    loop {
+                    let r = loop {
                         if let Some(r) = console(|s| s.injection_result.take()).flatten() {
                             break r.map_err(DriveError::Servo);
                         }
@@ -960,7 +992,11 @@ impl DriveOps for FwDrive {
                             break Err(DriveError::Timeout);
                         }
                         wait();
+                    };
+                    if r.is_ok() {
+                        wait_recorded(f);
                     }
+                    r
                 }
             }
         };

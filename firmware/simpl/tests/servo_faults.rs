@@ -260,3 +260,39 @@ fn a_capture_status_right_after_the_arm_shows_the_new_record() {
     Capture(&mut sim).restart().unwrap();
     assert_eq!(Capture(&mut sim).status().unwrap().count, 0);
 }
+
+/// A report of the latched faults and the gates never shows a latched PL
+/// fault with the gates on, whatever the cycle the fault latches in (the PL
+/// holds `GATE_EN` at 0 from the latch on): `status` reads the faults
+/// first. The simulated PL runs only on accesses between its ticks, so
+/// the two reads of a `status` right after `debug fault encoder-loss` are
+/// the cycles the latch falls in; read gates first, one offset below
+/// showed `ENCODER_LOSS` with the gates on.
+#[test]
+fn a_latched_fault_is_never_reported_with_the_gates_on() {
+    let mut seen = 0;
+    for offset in 0..8 {
+        let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+        let mut s = Servo::new(&ServoConfig::for_plant(
+            sim.config().motor,
+            sim.config().adc_amps_per_count,
+        ))
+        .unwrap();
+        s.init(&mut sim).unwrap();
+        s.set_mode(&mut sim, Mode::Foc).unwrap();
+        s.enable(&mut sim).unwrap();
+        for _ in 0..20 {
+            sim.advance_to_boundary(20_000);
+            s.control_step(&mut sim).unwrap();
+        }
+        assert!(s.gates_on(&mut sim).unwrap());
+        sim.sim_set("enc_invert", 1.0).unwrap();
+        sim.advance(offset);
+        let (faults, gates) = s.faults_then_gates(&mut sim).unwrap();
+        let loss = faults.0 & Faults::ENCODER_LOSS != 0;
+        assert!(!(loss && gates), "+{offset}: {faults:?} with the gates on");
+        seen += u32::from(loss);
+    }
+    // The latch fell inside the offsets tried: some reports show it.
+    assert!((1..8).contains(&seen), "{seen}");
+}

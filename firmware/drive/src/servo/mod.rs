@@ -873,6 +873,27 @@ impl Servo {
         Pwm(bus).gates_enabled()
     }
 
+    /// The faults the control loop has recorded while they are latched (no
+    /// register read: the last step's view).
+    pub fn faults_recorded(&self) -> Faults {
+        Faults(self.seen)
+    }
+
+    /// The latched faults and then `GATE_EN`, for a report that never
+    /// shows a latched PL fault with the gates on: the PL holds `GATE_EN`
+    /// at 0 from the latch on, so a fault read first is seen off by the
+    /// gate read after it. (Gates first, a fault that latched between the
+    /// two reads showed as `fault: ENCODER_LOSS` with `gates: on`; on the
+    /// simulated PL, which runs only on accesses between its ticks, that
+    /// was a `status` right after `debug fault encoder-loss`.)
+    pub fn faults_then_gates<B: RegisterBus>(
+        &mut self,
+        bus: &mut B,
+    ) -> Result<(Faults, bool), BusError> {
+        let faults = self.faults(bus)?;
+        Ok((faults, self.gates_on(bus)?))
+    }
+
     /// The controller runs: the gates are on and, in MPDTC, the rotor
     /// alignment is over (the checks over a window run only then).
     pub fn controlling(&self) -> bool {
