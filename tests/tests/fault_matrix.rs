@@ -54,6 +54,8 @@ struct Case {
     warm: u64,
     /// Electrical speed to reach before the injection, rad/s.
     min_speed: f64,
+    /// Control periods the gates-off time may take (see [`bound`]).
+    periods: u64,
     how: &'static str,
 }
 
@@ -66,6 +68,7 @@ const CASES: [Case; 10] = [
         torque: 0.2,
         warm: 10,
         min_speed: 0.0,
+        periods: 1,
         how: "`OC_LIMIT` set to 0 counts: the next raw sample is over it (PL)",
     },
     Case {
@@ -76,6 +79,7 @@ const CASES: [Case; 10] = [
         torque: 0.2,
         warm: 10,
         min_speed: 0.0,
+        periods: 1,
         how: "external fault input asserted for 10 us (PL)",
     },
     Case {
@@ -86,6 +90,7 @@ const CASES: [Case; 10] = [
         torque: 0.2,
         warm: 10,
         min_speed: 0.0,
+        periods: 1,
         how: "control loop and heartbeat stopped; cause = last heartbeat + `WDG_TIMEOUT` (PL)",
     },
     Case {
@@ -96,6 +101,7 @@ const CASES: [Case; 10] = [
         torque: 0.2,
         warm: 10,
         min_speed: 0.0,
+        periods: 1,
         how: "an illegal quadrature transition on the encoder lines",
     },
     Case {
@@ -106,6 +112,7 @@ const CASES: [Case; 10] = [
         torque: 0.2,
         warm: 10,
         min_speed: 0.0,
+        periods: 1,
         how: "`ADC_CTRL.ENABLE` = 0: no new sample; the PL's result timer latches at `ADC_PERIOD` + 16 cycles",
     },
     Case {
@@ -116,6 +123,7 @@ const CASES: [Case; 10] = [
         torque: 0.2,
         warm: 10,
         min_speed: 0.0,
+        periods: 1,
         how: "two boundaries without a step; cause = the end of the second such period (PS)",
     },
     Case {
@@ -126,6 +134,7 @@ const CASES: [Case; 10] = [
         torque: 0.2,
         warm: 10,
         min_speed: 0.0,
+        periods: 1,
         how: "a soft limit moved to one count behind the present position (PS)",
     },
     Case {
@@ -136,6 +145,7 @@ const CASES: [Case; 10] = [
         torque: 0.2,
         warm: 10,
         min_speed: 0.0,
+        periods: 1,
         how: "phase b disconnected, locked rotor (PS: the current the motor model predicts for the period is missing)",
     },
     Case {
@@ -146,6 +156,7 @@ const CASES: [Case; 10] = [
         torque: 0.5,
         warm: 64,
         min_speed: 150.0,
+        periods: 1,
         how: "free rotor at 0.5 N m above 150 rad/s, `vel_limit` lowered to half its speed over the margin (PS)",
     },
     Case {
@@ -159,6 +170,14 @@ const CASES: [Case; 10] = [
         // MPDTC's ripple of current (`L di/dt` in the estimate's model
         // tolerance) takes a share of one period's back-EMF.
         min_speed: 3000.0,
+        // One period's evidence decides unless a phase current is near
+        // zero in that period (a floating terminal voids the voltage
+        // equation) or the still interval after the last step's read is
+        // short; the next period then sees the whole period still. Two
+        // such periods in a row were seen (FOC on `pl_top`: 18,536
+        // cycles), so three; a one-period bound failed 4 of 15 runs
+        // beside a busy loop per core (3,036 and 3,120 cycles in MPDTC).
+        periods: 3,
         how: "free rotor at 0.5 N m above 3000 rad/s, the encoder's lines freeze (PS: one period's back-EMF against a still count)",
     },
 ];
@@ -284,9 +303,10 @@ fn cell(s: &mut Session, m: usize, c: &Case) -> i64 {
     lat
 }
 
-/// Every cell's bound: one control period of its mode.
-fn bound(mode: usize) -> u64 {
-    PERIOD[mode].1
+/// A cell's bound: one control period of its mode, three for the dead
+/// encoder (its `periods`).
+fn bound(c: &Case, mode: usize) -> u64 {
+    PERIOD[mode].1 * c.periods
 }
 
 /// The cells of one PL.
@@ -339,7 +359,7 @@ fn table(lat: &[[i64; 4]]) -> String {
     for (c, cells) in CASES.iter().zip(lat) {
         let mut row = format!("| `{}` | {} | {} |", c.fault, c.code, c.how);
         for (col, &l) in cells.iter().enumerate() {
-            let b = bound(col % 2);
+            let b = bound(c, col % 2);
             // A cell over its bound shows no number: those vary from run
             // to run (target/fault-matrix.csv has them).
             let cell = if l >= 0 && l as u64 <= b {
@@ -392,7 +412,7 @@ fn every_fault_turns_the_gates_off_within_its_bound_on_both_pls() {
         for (col, &l) in cells.iter().enumerate() {
             let m = col % 2;
             assert!(
-                l >= 0 && l as u64 <= bound(m),
+                l >= 0 && l as u64 <= bound(c, m),
                 "{} in {} ({}): {l} cycles, bound {}\n{t}",
                 c.fault,
                 PERIOD[m].0,
@@ -401,7 +421,7 @@ fn every_fault_turns_the_gates_off_within_its_bound_on_both_pls() {
                 } else {
                     "simulated PL"
                 },
-                bound(m)
+                bound(c, m)
             );
         }
     }
@@ -443,9 +463,13 @@ fn same_table(a: &str, b: &str) -> bool {
             } else {
                 RTL_DOC_TOLERANCE
             };
+            // The dead encoder's cells take one to three periods.
+            let dead = x.starts_with("| `ENCODER_DEAD` |");
             fx.len() == fy.len()
                 && fx.iter().zip(&fy).enumerate().all(|(i, (p, q))| {
-                    let tol = if i == 6 || i == 7 {
+                    let tol = if dead && (4..=7).contains(&i) {
+                        2 * PERIOD[i % 2].1 as i64
+                    } else if i == 6 || i == 7 {
                         rtl_tol
                     } else {
                         DOC_TOLERANCE
