@@ -13,15 +13,7 @@ use simpl::{SimConfig, SimDrive};
 #[test]
 fn gates_go_off_within_one_control_period_on_the_simulated_pl() {
     fn setup(mode: Mode) -> (Servo, SimDrive, u64) {
-        let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
-        let mut s = Servo::new(&ServoConfig::for_plant(
-            sim.config().motor,
-            sim.config().adc_amps_per_count,
-        ))
-        .unwrap();
-        s.init(&mut sim).unwrap();
-        s.set_mode(&mut sim, mode).unwrap();
-        s.enable(&mut sim).unwrap();
+        let (mut s, mut sim) = enabled(mode);
         s.set_torque_ref(0.3).unwrap();
         // Past the MPDTC's alignment, then 200 periods.
         while !s.controlling() {
@@ -91,6 +83,21 @@ fn gates_go_off_within_one_control_period_on_the_simulated_pl() {
             "{mode:?}"
         );
     }
+}
+
+/// The servo on a fresh simulated PL with the paper's motor, in `mode`,
+/// gates on.
+fn enabled(mode: Mode) -> (Servo, SimDrive) {
+    let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+    let mut s = Servo::new(&ServoConfig::for_plant(
+        sim.config().motor,
+        sim.config().adc_amps_per_count,
+    ))
+    .unwrap();
+    s.init(&mut sim).unwrap();
+    s.set_mode(&mut sim, mode).unwrap();
+    s.enable(&mut sim).unwrap();
+    (s, sim)
 }
 
 /// Runs `cause` (at the present cycle), then the PL cycle by cycle until
@@ -196,15 +203,7 @@ fn an_adc_period_change_keeps_the_boundaries_of_the_new_period() {
 /// last sample's reference matches its measured torque.
 #[test]
 fn a_pl_fault_snapshot_keeps_the_reference_before_the_gates_went_off() {
-    let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
-    let mut s = Servo::new(&ServoConfig::for_plant(
-        sim.config().motor,
-        sim.config().adc_amps_per_count,
-    ))
-    .unwrap();
-    s.init(&mut sim).unwrap();
-    s.set_mode(&mut sim, Mode::Mpdtc).unwrap();
-    s.enable(&mut sim).unwrap();
+    let (mut s, mut sim) = enabled(Mode::Mpdtc);
     s.set_torque_ref(0.4).unwrap();
     // Past the MPDTC's alignment and the torque's rise.
     while !s.controlling() {
@@ -272,15 +271,7 @@ fn a_capture_status_right_after_the_arm_shows_the_new_record() {
 fn a_latched_fault_is_never_reported_with_the_gates_on() {
     let mut seen = 0;
     for offset in 0..8 {
-        let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
-        let mut s = Servo::new(&ServoConfig::for_plant(
-            sim.config().motor,
-            sim.config().adc_amps_per_count,
-        ))
-        .unwrap();
-        s.init(&mut sim).unwrap();
-        s.set_mode(&mut sim, Mode::Foc).unwrap();
-        s.enable(&mut sim).unwrap();
+        let (mut s, mut sim) = enabled(Mode::Foc);
         for _ in 0..20 {
             sim.advance_to_boundary(20_000);
             s.control_step(&mut sim).unwrap();
