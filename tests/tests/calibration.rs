@@ -48,10 +48,18 @@ fn gates_on_is_refused_and_changes_nothing() {
     assert_err(&cmd(&mut s, "calibrate nothing"), "bad-args");
 }
 
+/// A locked rotor: `calibrate all` measures R and L, refuses the phases
+/// that need motion and, ending in `ERR`, applies nothing (the wrong R and
+/// L configured before it stay); the phases it names as fitted well, run
+/// alone, apply the paper's motor (0.555 ohm, 0.64 mH).
 #[test]
 fn a_locked_rotor_gets_r_and_l_and_refuses_the_rest() {
     let mut s = boot();
-    // The default simulated motor is held (`locked 1`).
+    // The default simulated motor is held (`locked 1`); the configured
+    // model off the true one, so an applied result would show.
+    assert_ok(&cmd(&mut s, "config set motor_r_s 0.7"));
+    assert_ok(&cmd(&mut s, "config set motor_l 0.0008"));
+    let before = cmd(&mut s, "config list");
     let r = calibrate(&mut s, "calibrate all");
     assert_err(&r, "calibration");
     for phase in ["encoder", "resistance", "inductance", "flux", "mechanics"] {
@@ -70,7 +78,25 @@ fn a_locked_rotor_gets_r_and_l_and_refuses_the_rest() {
             "{refused}: {r:?}"
         );
     }
-    // The paper's motor: 0.555 ohm, 0.64 mH.
+    // `ERR calibration <phase>: <why>; configuration unchanged (...)`:
+    // the phase first (not the command's name again), then what to rerun.
+    match &r.fin {
+        Final::Err { message, .. } => {
+            assert!(message.starts_with("encoder: rotor locked"), "{r:?}");
+            assert!(
+                message.ends_with(
+                    "; configuration unchanged (fitted well, applied when run alone: \
+                     calibrate resistance, calibrate inductance)"
+                ),
+                "{r:?}"
+            );
+        }
+        Final::Ok => unreachable!(),
+    }
+    assert_eq!(cmd(&mut s, "config list").lines, before.lines);
+    assert_eq!(config(&mut s, "motor_r_s"), 0.7);
+    assert_ok(&calibrate(&mut s, "calibrate resistance"));
+    assert_ok(&calibrate(&mut s, "calibrate inductance"));
     let r_s = config(&mut s, "motor_r_s");
     let l = config(&mut s, "motor_l");
     assert!((r_s / 0.555 - 1.0).abs() < 0.03, "{r_s}");
@@ -190,10 +216,12 @@ fn one_draw(draw: usize, &(m, off, dir): &([f64; 7], i32, i32)) {
         assert_ok(&r);
         assert_eq!(config(&mut s, "enc_zero"), zero);
         assert_eq!(config(&mut s, "motor_pole_pairs"), p);
+        assert!(rel(config(&mut s, "motor_r_s"), r_s) < 0.03);
     } else {
-        // An encoder counting backwards is reported, not applied.
+        // An encoder counting backwards is reported and the run applies
+        // nothing (the configured R stays the default, 0.555 ohm).
         assert_err(&r, "calibration");
         assert_eq!(config(&mut s, "enc_zero"), 0.0);
+        assert_eq!(config(&mut s, "motor_r_s"), 0.555);
     }
-    assert!(rel(config(&mut s, "motor_r_s"), r_s) < 0.03);
 }

@@ -18,8 +18,9 @@ pub const CALIBRATE: Spec = Spec {
     help: "measures the motor (gates off, no fault; within calibration_current [A] and \
            calibration_voltage [V]): encoder direction, zero and pole pairs, R, L, flux \
            linkage, inertia and friction; a progress line per phase, then `<param> = <value> \
-           <unit> (was <old>, +-<uncertainty>)`; good fits go into the running configuration \
-           (`config save` keeps them), poor ones answer `ERR calibration`; Ctrl-C stops it",
+           <unit> (was <old>, +-<uncertainty>)`; when every phase fits well they go into the running \
+           configuration (`config save` keeps them), else `ERR calibration` and nothing is \
+           applied; Ctrl-C stops it",
 };
 
 /// Parses the arguments of `calibrate`.
@@ -37,15 +38,25 @@ pub fn parse<'a>(args: &[&'a str]) -> Result<Phases, ParseError<'a>> {
     }
 }
 
-/// The first problem of the run, for the final `ERR calibration` line.
+/// The first problem of the run, for the final `ERR calibration` line,
+/// and the phases that fitted well (named in it: a run that ends in `ERR`
+/// applies nothing, so the user reruns those alone to apply them).
 struct Problems {
     first: Option<(&'static str, &'static str)>,
+    good: [&'static str; Phase::ALL.len()],
+    n_good: usize,
 }
 
 impl Problems {
     fn note(&mut self, what: &'static str, why: &'static str) {
         if self.first.is_none() {
             self.first = Some((what, why));
+        }
+    }
+    fn fitted(&mut self, what: &'static str) {
+        if self.n_good < self.good.len() {
+            self.good[self.n_good] = what;
+            self.n_good += 1;
         }
     }
 }
@@ -128,8 +139,11 @@ fn write_points<W: Write>(out: &mut W, rep: &CalReport) -> fmt::Result {
     Ok(())
 }
 
-/// Prints the results, sets the good ones through `Config::set` and
-/// reconfigures the drive once.
+/// Prints the results, checks the good ones through `Config::set` and,
+/// when every phase run fitted well, reconfigures the drive once. A run
+/// with a poor fit, a refused phase or a refused value applies nothing
+/// (the configuration is the one the command found) and says which
+/// phases fitted well.
 fn apply<W: Write>(
     rep: &CalReport,
     before: &ServoConfig,
@@ -138,11 +152,18 @@ fn apply<W: Write>(
 ) -> Result<Outcome, fmt::Error> {
     let r = &rep.results;
     let mut cfg = Config::from_servo(before);
-    let mut bad = Problems { first: None };
+    let mut bad = Problems {
+        first: None,
+        good: [""; Phase::ALL.len()],
+        n_good: 0,
+    };
+    // Whether the configuration's checks took the value.
     let set = |cfg: &mut Config, name: &'static str, v: f64, bad: &mut Problems| {
-        if cfg.set(before, name, v).is_err() {
-            bad.note(name, "refused by the configuration's checks (not applied)");
+        let ok = cfg.set(before, name, v).is_ok();
+        if !ok {
+            bad.note(name, "refused by the configuration's checks");
         }
+        ok
     };
     let old = |name: &str| Config::from_servo(before).get(name).unwrap_or(f64::NAN);
     match r.encoder {
@@ -175,13 +196,15 @@ fn apply<W: Write>(
                     "counts backwards with the field (swap two motor phases or the encoder's A and B)",
                 );
             } else {
-                set(
+                let pairs = set(
                     &mut cfg,
                     "motor_pole_pairs",
                     f64::from(e.pole_pairs),
                     &mut bad,
                 );
-                set(&mut cfg, "enc_zero", f64::from(e.zero_counts), &mut bad);
+                if set(&mut cfg, "enc_zero", f64::from(e.zero_counts), &mut bad) && pairs {
+                    bad.fitted("encoder");
+                }
             }
         }
         Fit::Refused(why) => {
@@ -200,11 +223,13 @@ fn apply<W: Write>(
         match fit {
             Fit::Done(e) => {
                 line(out, name, e.value, old(name), e.sigma)?;
-                set(cfg, name, e.value, bad);
+                if set(cfg, name, e.value, bad) {
+                    bad.fitted(what);
+                }
             }
             Fit::Poor(e, why) => {
                 line(out, name, e.value, old(name), e.sigma)?;
-                write!(out, "calibrate: {what}: poor fit, not applied: {why}\r\n")?;
+                write!(out, "calibrate: {what}: poor fit: {why}\r\n")?;
                 bad.note(what, why);
             }
             Fit::Refused(why) => {
@@ -262,19 +287,33 @@ fn apply<W: Write>(
         "duration: {:.1} ms (PL time)\r\n",
         rep.cycles as f64 * 1e3 / f64::from(regmap::PL_CLOCK_HZ)
     )?;
-    if cfg != Config::from_servo(before) {
-        try_drive!(out, "calibrate", drv.reconfigure(&cfg.apply(before)));
-    }
     match bad.first {
         Some((what, why)) => {
-            write_err(
+            write!(
                 out,
-                ErrorCode::Calibration,
-                format_args!("calibrate: {what}: {why}"),
+                "ERR {} {what}: {why}; configuration unchanged",
+                ErrorCode::Calibration.as_str()
             )?;
+            for (k, g) in bad.good[..bad.n_good].iter().enumerate() {
+                let sep = if k == 0 {
+                    " (fitted well, applied when run alone: calibrate "
+                } else {
+                    ", calibrate "
+                };
+                write!(out, "{sep}{g}")?;
+            }
+            if bad.n_good > 0 {
+                out.write_str(")")?;
+            }
+            out.write_str("\r\n")?;
             Ok(Outcome::Final)
         }
-        None => Ok(Outcome::Ok),
+        None => {
+            if cfg != Config::from_servo(before) {
+                try_drive!(out, "calibrate", drv.reconfigure(&cfg.apply(before)));
+            }
+            Ok(Outcome::Ok)
+        }
     }
 }
 
