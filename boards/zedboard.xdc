@@ -96,12 +96,16 @@ set_property PULLDOWN true [get_ports {adc_data_i[1]}]
 set_property PULLDOWN true [get_ports {adc_data_i[0]}]
 
 # Timing.
-# Asynchronous inputs: each passes a two-flop synchroniser (sync2); the ADC's
-# data-ready among them (the converter sees no PL clock).
-set_false_path -from [get_ports {adc_drdy_i enc_a_i enc_b_i enc_z_i fault_ext_ni}]
+# Asynchronous inputs: each passes a two-flop synchroniser (sync2).
+set_false_path -from [get_ports {enc_a_i enc_b_i enc_z_i fault_ext_ni}]
 # Outputs leave PL registers; their ns-scale skew is small against the dead
 # time (DEAD_TIME, 500 ns from reset) and the ADC period (3.9 us).
 set_false_path -to [get_ports {gate_hi_o[*] gate_lo_o[*] gate_en_o adc_cnv_o led_o[*]}]
+# The strobe of the captured inputs (the ADC's data-ready) is asynchronous too
+# (sync2; the converter sees no PL clock), but its pin-to-flop delay decides
+# when the data is captured: 2 to 3 periods plus this delay after the pin's
+# edge, inside the converter's data-valid window (timing.strobe_max_delay_ns).
+set_max_delay -datapath_only -from [get_ports {adc_drdy_i}] 5.0
 # Inputs captured at the clock edge after the synchronised data-ready rose
 # (adc_frontend: 2 to 3 periods after the pin's edge). Their pin-to-register
 # delay only has to be shorter than that (timing.strobed_max_delay_ns).

@@ -79,6 +79,15 @@ pub struct Timing {
     /// (`set_max_delay -datapath_only`): shorter than the strobe's
     /// synchroniser delay, so the data has settled when it is captured.
     pub strobed_max_delay_ns: String,
+    /// The asynchronous strobe of the strobed inputs (the ADC's data-ready):
+    /// still asynchronous (a two-flop synchroniser), but its pin-to-flop
+    /// delay sets when the data is captured, so it is bounded
+    /// (`set_max_delay -datapath_only`), not a false path.
+    pub strobe: String,
+    /// Largest pin-to-first-flop delay of `strobe`, ns: the capture edge is
+    /// 2 to 3 clock periods plus this after the pin's edge, which must stay
+    /// inside the converter's data-valid window.
+    pub strobe_max_delay_ns: String,
 }
 
 #[derive(Debug, Clone, Deserialize)]

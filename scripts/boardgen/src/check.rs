@@ -90,6 +90,17 @@ pub fn port_problems(board: &Board, ports: &[Port]) -> Vec<String> {
             )),
         }
     }
+    match by_name.get(board.timing.strobe.as_str()) {
+        Some(p) if p.dir == Dir::Input && p.range.is_none() => {}
+        Some(_) => problems.push(format!(
+            "timing.strobe: `{}` is not a one-bit input",
+            board.timing.strobe
+        )),
+        None => problems.push(format!(
+            "timing.strobe: board_top has no port `{}`",
+            board.timing.strobe
+        )),
+    }
     problems
 }
 
@@ -160,6 +171,11 @@ mod tests {
         assert_eq!(
             problems(&board, TOP),
             ["timing.strobed_inputs: `adc_cnv_o` is not an input"]
+        );
+        let board = ZEDBOARD.replace("strobe = \"adc_drdy_i\"", "strobe = \"adc_data_i\"");
+        assert_eq!(
+            problems(&board, TOP),
+            ["timing.strobe: `adc_data_i` is not a one-bit input"]
         );
     }
 }

@@ -58,9 +58,10 @@ pub fn xdc(b: &Board, ports: &[Port]) -> String {
         None => p.name.clone(),
     };
     let is_sync = |p: &Port| b.timing.strobed_inputs.contains(&p.name);
+    let is_strobe = |p: &Port| b.timing.strobe == p.name;
     let async_in: Vec<String> = pl
         .iter()
-        .filter(|p| p.dir == Dir::Input && !is_sync(p))
+        .filter(|p| p.dir == Dir::Input && !is_sync(p) && !is_strobe(p))
         .map(|p| pattern(p))
         .collect();
     let sync_in: Vec<String> = pl
@@ -75,10 +76,7 @@ pub fn xdc(b: &Board, ports: &[Port]) -> String {
         .collect();
     s.push_str("\n# Timing.\n");
     if !async_in.is_empty() {
-        s.push_str(
-            "# Asynchronous inputs: each passes a two-flop synchroniser (sync2); the ADC's\n\
-             # data-ready among them (the converter sees no PL clock).\n",
-        );
+        s.push_str("# Asynchronous inputs: each passes a two-flop synchroniser (sync2).\n");
         let _ = writeln!(
             s,
             "set_false_path -from [get_ports {{{}}}]",
@@ -91,6 +89,19 @@ pub fn xdc(b: &Board, ports: &[Port]) -> String {
              # time (DEAD_TIME, 500 ns from reset) and the ADC period (3.9 us).\n",
         );
         let _ = writeln!(s, "set_false_path -to [get_ports {{{}}}]", outs.join(" "));
+    }
+    if pl.iter().any(|p| p.dir == Dir::Input && is_strobe(p)) {
+        s.push_str(
+            "# The strobe of the captured inputs (the ADC's data-ready) is asynchronous too\n\
+             # (sync2; the converter sees no PL clock), but its pin-to-flop delay decides\n\
+             # when the data is captured: 2 to 3 periods plus this delay after the pin's\n\
+             # edge, inside the converter's data-valid window (timing.strobe_max_delay_ns).\n",
+        );
+        let _ = writeln!(
+            s,
+            "set_max_delay -datapath_only -from [get_ports {{{}}}] {}",
+            b.timing.strobe, b.timing.strobe_max_delay_ns
+        );
     }
     if !sync_in.is_empty() {
         s.push_str(
@@ -265,9 +276,14 @@ mod tests {
         assert!(x.contains("set_property PULLUP true [get_ports {fault_ext_ni}]"));
         assert!(x.contains("set_property PULLDOWN true [get_ports {adc_drdy_i}]"));
         assert!(x.contains("set_property PULLDOWN true [get_ports {adc_data_i[35]}]"));
-        assert!(x.contains(
-            "set_false_path -from [get_ports {adc_drdy_i enc_a_i enc_b_i enc_z_i fault_ext_ni}]"
-        ));
+        assert!(
+            x.contains("set_false_path -from [get_ports {enc_a_i enc_b_i enc_z_i fault_ext_ni}]")
+        );
+        // The data-ready's delay is bounded: the capture time depends on it.
+        assert!(x.contains("set_max_delay -datapath_only -from [get_ports {adc_drdy_i}] 5.0"));
+        assert!(!x
+            .lines()
+            .any(|l| l.starts_with("set_false_path") && l.contains("adc_drdy_i")));
         assert!(x.contains(
             "set_false_path -to [get_ports {gate_hi_o[*] gate_lo_o[*] gate_en_o adc_cnv_o led_o[*]}]"
         ));
