@@ -609,6 +609,7 @@ impl State {
             },
             store: Some(self.store),
             motion: self.servo.motion_status(),
+            aligning_left_s: self.servo.aligning_left_s(),
         }
     }
 

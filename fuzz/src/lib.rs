@@ -115,6 +115,7 @@ impl DriveOps for FuzzDrive {
             store: None,
             mpdcc: None,
             motion: self.servo.motion_status(),
+            aligning_left_s: self.servo.aligning_left_s(),
         }
     }
     fn bench(&mut self) -> Result<Bench, DriveError> {

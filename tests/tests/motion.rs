@@ -302,3 +302,36 @@ fn move_one_revolution_on_the_rtl_matches_the_simulated_pl() {
         .expect("its statistics");
     assert!(stats.contains("\"mismatches\":0"), "{stats}");
 }
+
+/// `pos zero` right after `enable` in MPDTC (one write: the firmware takes
+/// it within the alignment, however busy the host) answers `ERR aligning`
+/// and zeroes nothing; once `status` no longer shows the alignment it is
+/// taken.
+#[test]
+fn pos_zero_during_the_mpdtc_alignment_is_refused_until_it_ends() {
+    let mut s = boot();
+    s.send(b"sim set locked 0\rmode mpdtc\renable\rpos zero\r")
+        .unwrap();
+    let mut replies = Vec::new();
+    for _ in 0..4 {
+        let text = s
+            .read_until(drivectl::link::PROMPT.as_bytes(), SLOW)
+            .unwrap_or_else(|e| panic!("{e:#}: {}", String::from_utf8_lossy(&s.transcript)));
+        replies.push(drivectl::link::parse_reply(&String::from_utf8_lossy(&text)).unwrap());
+    }
+    for r in &replies[..3] {
+        assert_ok(r);
+    }
+    assert_err(&replies[3], "aligning");
+    let end = Instant::now() + SLOW;
+    loop {
+        let st = cmd(&mut s, "status");
+        if !st.lines.iter().any(|l| l.starts_with("alignment: running")) {
+            break;
+        }
+        assert!(Instant::now() < end, "{st:?}");
+    }
+    assert_ok(&cmd(&mut s, "pos zero"));
+    let st = cmd(&mut s, "status");
+    assert!(num(&st, "position").abs() <= 1.0 / 4096.0, "{st:?}");
+}

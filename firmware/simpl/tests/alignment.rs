@@ -208,3 +208,73 @@ fn the_former_2_ms_one_step_alignment_misses_the_d_axis() {
     println!("one step of 2 ms from 90 deg: latched zero {err:+.3} deg");
     assert!(err.abs() > 45.0, "{err}");
 }
+
+/// `pos zero`, `pos`, `vel` and `imp` during the alignment, which still
+/// turns the rotor (a free rotor 120 electrical degrees off the d axis):
+/// refused with the time left (at most the configured 0.2 s), nothing
+/// changed; after it, `pos zero` takes the aligned rotor as 0 and the
+/// position then follows the rotor (the true angle, not the servo's).
+#[test]
+fn position_commands_wait_for_the_alignment_that_turns_the_rotor() {
+    use drive::servo::ServoError;
+    use models::motion::law::Impedance;
+    let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+    let cfg = ServoConfig::for_plant(sim.config().motor, sim.config().adc_amps_per_count);
+    let mut s = Servo::new(&cfg).unwrap();
+    s.init(&mut sim).unwrap();
+    sim.sim_set("locked", 0.0).unwrap();
+    s.set_mode(&mut sim, Mode::Mpdtc).unwrap();
+    s.enable(&mut sim).unwrap();
+    let mut left_before = f64::MAX;
+    for _ in 0..200 {
+        sim.advance_to_boundary(4000);
+        s.control_step(&mut sim).unwrap();
+        let Some(left) = s.aligning_left_s() else {
+            panic!("the alignment ended in 200 periods")
+        };
+        assert!(
+            left > 0.0 && left <= ALIGN_MAX_S && left < left_before,
+            "{left}"
+        );
+        left_before = left;
+        let before = s.motion_status();
+        for r in [
+            s.zero_position(),
+            s.set_position(&mut sim, 0.5),
+            s.set_velocity(&mut sim, 1.0),
+            s.set_impedance(
+                &mut sim,
+                &Impedance {
+                    kp: 1.0,
+                    ..Impedance::default()
+                },
+            ),
+        ] {
+            assert_eq!(r, Err(ServoError::Aligning(left)));
+        }
+        assert_eq!(s.motion_status(), before);
+    }
+    let mut k = 0;
+    while !s.controlling() {
+        sim.advance_to_boundary(4000);
+        s.control_step(&mut sim).unwrap();
+        k += 1;
+        assert!(k < 20_000, "no alignment");
+    }
+    assert_eq!(s.aligning_left_s(), None);
+    s.zero_position().unwrap();
+    let theta0 = sim.truth().theta_m_rad;
+    s.set_velocity(&mut sim, 1.0).unwrap();
+    for _ in 0..(0.2 * s.control_rate_hz()) as u32 {
+        sim.advance_to_boundary(4000);
+        s.control_step(&mut sim).unwrap();
+    }
+    // The rotor's own travel since the zero, rev.
+    let travel = (sim.truth().theta_m_rad - theta0) / (2.0 * PI);
+    let p = s.motion_status().position_rev;
+    assert!(travel > 0.05, "{travel} rev");
+    assert!(
+        (p - travel).abs() < 2.0 / 4096.0,
+        "{p} rev, rotor {travel} rev"
+    );
+}

@@ -7,7 +7,7 @@ use crate::pl::capture::{CapSample, CapStatus, Trigger};
 use crate::pl::fault::Faults;
 use crate::pl::top::Mode;
 use crate::servo::faults::FaultRecord;
-use crate::servo::motion::{MotionStatus, MoveResult};
+use crate::servo::motion::{MotionError, MotionStatus, MoveResult};
 use crate::servo::{Measured, ServoConfig, ServoError, StepResult, SweepPoint};
 use core::fmt::{self, Write};
 use models::motion::law::Impedance;
@@ -101,6 +101,9 @@ pub struct DriveStatus {
     pub mpdcc: Option<PacedStatus>,
     /// Position, velocity and the outer loop.
     pub motion: MotionStatus,
+    /// The MPDTC's rotor alignment runs: the longest it can still take, s
+    /// (position, velocity and impedance commands wait for its end).
+    pub aligning_left_s: Option<f64>,
 }
 
 impl DriveStatus {
@@ -123,6 +126,7 @@ impl DriveStatus {
             store: None,
             mpdcc,
             motion: Default::default(),
+            aligning_left_s: None,
         }
     }
 }
@@ -484,9 +488,22 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
             ErrorCode::SensorCheck,
             format_args!("{cmd}: {f}; gates off"),
         ),
+        // A state of the drive, not the arguments: retry once it changed.
+        DriveError::Servo(ServoError::Motion(e @ MotionError::Holding)) => {
+            write_err(out, ErrorCode::Holding, format_args!("{cmd}: {e}"))
+        }
         DriveError::Servo(ServoError::Motion(e)) => {
             write_err(out, ErrorCode::BadArgs, format_args!("{cmd}: {e}"))
         }
+        DriveError::Servo(ServoError::Aligning(left_s)) => write_err(
+            out,
+            ErrorCode::Aligning,
+            format_args!(
+                "{cmd}: the MPDTC's rotor alignment still turns the rotor (at most {:.0} ms \
+                 left, less once it is still); nothing changed, retry after it",
+                libm::ceil(left_s * 1e3)
+            ),
+        ),
         DriveError::Servo(ServoError::Bus(b)) => write_err(
             out,
             ErrorCode::BusError,

@@ -66,6 +66,11 @@ pub enum ErrorCode {
     Calibration,
     /// A long command stopped by Ctrl-C.
     Interrupted,
+    /// A position, velocity or impedance command during the MPDTC's rotor
+    /// alignment.
+    Aligning,
+    /// `pos zero` while a loop holds a position.
+    Holding,
 }
 
 impl ErrorCode {
@@ -90,6 +95,8 @@ impl ErrorCode {
             ErrorCode::SensorCheck => "sensor-check",
             ErrorCode::Calibration => "calibration",
             ErrorCode::Interrupted => "interrupted",
+            ErrorCode::Aligning => "aligning",
+            ErrorCode::Holding => "holding",
         }
     }
 }

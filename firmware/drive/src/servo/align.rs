@@ -25,7 +25,7 @@ pub enum AlignAction {
 }
 
 /// The alignment's progress, one [`AlignSteps::next`] per control period.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AlignSteps {
     /// 0: first step, 1: second step, 2: ended (waiting for the PL).
     step: u8,
@@ -39,6 +39,13 @@ pub struct AlignSteps {
     settle: u64,
     /// Periods after which the first step ends whatever the encoder does.
     first_max: u64,
+    /// Periods since the alignment began.
+    total: u64,
+    /// When the PL's timer ends the alignment whatever the encoder does
+    /// (`MPDTC_ALIGN_TIME`), s.
+    align_s: f64,
+    /// The control period, s.
+    period_s: f64,
 }
 
 impl AlignSteps {
@@ -52,7 +59,20 @@ impl AlignSteps {
             anchor: None,
             settle: libm::ceil(ALIGN_SETTLE_S * clock_hz / period_cycles) as u64,
             first_max: libm::ceil(f64::from(align_cycles / 2) / period_cycles) as u64,
+            total: 0,
+            align_s: f64::from(align_cycles) / clock_hz,
+            period_s: period_cycles / clock_hz,
         }
+    }
+
+    /// The longest the alignment can still take, s: until the PL's timer
+    /// ends it (it ends sooner once the rotor is still). 0 once its last
+    /// step is over (the PL latches the zero at the next period).
+    pub fn left_s(&self) -> f64 {
+        if self.step >= 2 {
+            return 0.0;
+        }
+        (self.align_s - self.total as f64 * self.period_s).max(0.0)
     }
 
     /// One control period with the sampled encoder count `pos` of `cpr`
@@ -62,6 +82,7 @@ impl AlignSteps {
             return AlignAction::Hold;
         }
         self.elapsed += 1;
+        self.total += 1;
         let moved = match self.anchor {
             Some(a) => {
                 let d = pos.wrapping_sub(a) % cpr.max(1);
@@ -143,6 +164,18 @@ mod tests {
                 AlignAction::End
             );
         }
+    }
+
+    #[test]
+    fn the_time_left_counts_down_from_the_configured_time_to_zero_at_the_end() {
+        // 200 ms in 10 us periods: 20,000 periods.
+        let mut a = steps(20_000_000);
+        assert_eq!(a.left_s(), 0.2);
+        periods_until(&mut a, AlignAction::SecondStep, |_| 7);
+        // 2000 periods of 10 us gone.
+        assert!((a.left_s() - 0.18).abs() < 1e-12, "{}", a.left_s());
+        periods_until(&mut a, AlignAction::End, |_| 7);
+        assert_eq!(a.left_s(), 0.0);
     }
 
     #[test]

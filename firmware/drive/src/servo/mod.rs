@@ -238,6 +238,10 @@ pub enum ServoError {
     SensorCheck(SensorFault),
     /// An outer-loop command refused.
     Motion(MotionError),
+    /// A position, velocity or impedance command (or `pos zero`) during the
+    /// MPDTC's rotor alignment, which still turns the rotor: at most this
+    /// long left, s.
+    Aligning(f64),
 }
 
 impl From<MotionError> for ServoError {
@@ -925,29 +929,52 @@ impl Servo {
         }
     }
 
-    /// `vel <rev/s>`: the velocity loop (gates on).
+    /// The MPDTC's rotor alignment runs (gates on, zero not latched yet):
+    /// the longest it can still take, s.
+    pub fn aligning_left_s(&self) -> Option<f64> {
+        if self.gates && self.mode == Mode::Mpdtc && self.align_zero.is_none() {
+            Some(self.align.as_ref().map_or(0.0, AlignSteps::left_s))
+        } else {
+            None
+        }
+    }
+
+    /// Refuses a command that needs the rotor's position while the
+    /// alignment still turns it: a zero taken then, or a loop closed on
+    /// the position, would be off by the alignment's motion.
+    fn not_aligning(&self) -> Result<(), ServoError> {
+        match self.aligning_left_s() {
+            Some(left) => Err(ServoError::Aligning(left)),
+            None => Ok(()),
+        }
+    }
+
+    /// `vel <rev/s>`: the velocity loop (gates on, alignment over).
     pub fn set_velocity<B: RegisterBus>(&mut self, bus: &mut B, v: f64) -> Result<(), ServoError> {
         self.need_gates(bus)?;
+        self.not_aligning()?;
         Ok(self.motion.set_velocity(&self.cfg.motion, v)?)
     }
 
-    /// `pos <rev>`: a trajectory to `target` (gates on).
+    /// `pos <rev>`: a trajectory to `target` (gates on, alignment over).
     pub fn set_position<B: RegisterBus>(
         &mut self,
         bus: &mut B,
         target: f64,
     ) -> Result<(), ServoError> {
         self.need_gates(bus)?;
+        self.not_aligning()?;
         Ok(self.motion.set_position(&self.cfg.motion, target)?)
     }
 
-    /// `imp ...`: the impedance law (gates on).
+    /// `imp ...`: the impedance law (gates on, alignment over).
     pub fn set_impedance<B: RegisterBus>(
         &mut self,
         bus: &mut B,
         imp: &Impedance,
     ) -> Result<(), ServoError> {
         self.need_gates(bus)?;
+        self.not_aligning()?;
         let lim = self.cfg.torque_limit_nm;
         Ok(self.motion.set_impedance(&self.cfg.motion, imp, lim)?)
     }
@@ -987,8 +1014,9 @@ impl Servo {
         Ok(())
     }
 
-    /// `pos zero`.
+    /// `pos zero` (refused during the MPDTC's alignment).
     pub fn zero_position(&mut self) -> Result<(), ServoError> {
+        self.not_aligning()?;
         Ok(self.motion.zero()?)
     }
 

@@ -158,6 +158,13 @@ pub fn write_status<W: Write>(out: &mut W, s: &DriveStatus) -> fmt::Result {
     write!(out, "position_counts: {} counts\r\n", mo.counts)?;
     write!(out, "velocity: {:.4} rev/s\r\n", mo.velocity_rev_s)?;
     write!(out, "loop: {}\r\n", mo.kind.name())?;
+    if let Some(left) = s.aligning_left_s {
+        write!(
+            out,
+            "alignment: running, at most {:.0} ms left (pos, vel, imp wait for its end)\r\n",
+            libm::ceil(left * 1e3)
+        )?;
+    }
     if mo.kind != crate::servo::motion::LoopKind::Torque {
         write!(out, "position_ref: {:.6} rev\r\n", mo.position_ref_rev)?;
         write!(out, "velocity_ref: {:.4} rev/s\r\n", mo.velocity_ref_rev_s)?;

@@ -322,6 +322,7 @@ impl DriveOps for TestDrive {
             store: None,
             mpdcc: self.hil,
             motion: self.servo.motion_status(),
+            aligning_left_s: self.servo.aligning_left_s(),
         }
     }
     fn bench(&mut self) -> Result<Bench, DriveError> {
@@ -434,8 +435,10 @@ fn outer_loop_commands_check_their_arguments_and_change_nothing() {
         assert!(st.contains(l), "{l}: {st}");
     }
     assert!(reply_on(&mut d, "pos 0.5").starts_with("loop: position\r\n"));
-    assert!(reply_on(&mut d, "pos zero")
-        .starts_with("ERR bad-args pos: the position or impedance loop"));
+    // A state of the drive, not a bad argument.
+    assert!(
+        reply_on(&mut d, "pos zero").starts_with("ERR holding pos: the position or impedance loop")
+    );
     assert!(reply_on(&mut d, "torque 0").ends_with("OK\r\n"));
     assert!(reply_on(&mut d, "status").contains("loop: torque\r\n"));
     assert_eq!(
@@ -923,4 +926,39 @@ fn board_without_bitstream_says_pl_absent_and_refuses_drive_commands() {
         assert!(out.starts_with("ERR pl-absent "), "{line}: {out:?}");
         assert!(out.contains("bitstream"), "{line}: the hint: {out:?}");
     }
+}
+
+#[test]
+fn position_commands_during_the_mpdtc_alignment_answer_aligning_and_change_nothing() {
+    let mut d = TestDrive::new();
+    reply_on(&mut d, "mode mpdtc");
+    assert!(reply_on(&mut d, "enable").ends_with("OK\r\n"));
+    let st = reply_on(&mut d, "status");
+    // The configured 0.2 s, none of it gone yet.
+    assert!(
+        st.contains("alignment: running, at most 200 ms left (pos, vel, imp wait for its end)\r\n"),
+        "{st}"
+    );
+    for (line, cmd) in [
+        ("pos zero", "pos"),
+        ("pos 0.5", "pos"),
+        ("vel 1", "vel"),
+        ("imp 0 0 1 0.01 0", "imp"),
+    ] {
+        let r = reply_on(&mut d, line);
+        assert_eq!(
+            r,
+            std::format!(
+                "ERR aligning {cmd}: the MPDTC's rotor alignment still turns the rotor (at most \
+                 200 ms left, less once it is still); nothing changed, retry after it\r\n"
+            ),
+            "{line}"
+        );
+        assert_eq!(reply_on(&mut d, "status"), st, "{line}");
+    }
+    // FOC has no alignment.
+    reply_on(&mut d, "mode foc");
+    reply_on(&mut d, "enable");
+    assert!(!reply_on(&mut d, "status").contains("alignment:"));
+    assert!(reply_on(&mut d, "pos zero").ends_with("OK\r\n"));
 }
