@@ -196,6 +196,7 @@ fn irq_handler() {
             gic::IRQ_PRIVATE_TIMER => {
                 timer::ack_private();
                 TICKS.fetch_add(1, Ordering::Relaxed);
+                control::on_tick();
             }
             gic::IRQ_GLOBAL_TIMER => control::on_pl_tick(),
             control::IRQ_CONTROL => control::on_control(),

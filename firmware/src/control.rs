@@ -135,6 +135,8 @@ struct State {
     inject_cycle: u64,
     /// PL time at the start of the last control step.
     last_step_cycle: u64,
+    /// PL time of the last heartbeat without a control step (`keep_alive`).
+    last_beat: u64,
     /// Co-simulation: the next control step's boundary is the cause of a
     /// `debug fault overrun` (the second period without a step ends).
     overrun_cause_due: bool,
@@ -308,6 +310,7 @@ pub fn init() -> Boot {
                     skip_boundaries: 0,
                     inject_cycle: 0,
                     last_step_cycle: 0,
+                    last_beat: 0,
                     overrun_cause_due: false,
                     pending_injection: None,
                     injection_result: None,
@@ -350,6 +353,19 @@ fn guest_counts(cycles: u64) -> u64 {
     cycles * u64::from(timer::PERIPHCLK_HZ / 1_000_000) / 100
 }
 
+/// The firmware's periodic tick (private timer, `app::TICK_HZ`): with our
+/// bitstream, the watchdog's heartbeat while the gates are off and no
+/// control-period boundary comes (`State::keep_alive`). Under QEMU the PL
+/// tick does it (the private timer runs at 0.3x there, too slow for the
+/// 2 ms watchdog).
+pub fn on_tick() {
+    let _ = with(|s| {
+        if matches!(s.bus, Backend::Gp0(_)) {
+            s.keep_alive();
+        }
+    });
+}
+
 /// The PL tick (global-timer comparator interrupt).
 pub fn on_pl_tick() {
     timer::ack_compare();
@@ -390,6 +406,7 @@ pub fn on_pl_tick() {
                     let _ = s.servo.note_pl_faults(sim);
                     // No result from the ADC that paces the period.
                     let _ = s.servo.note_no_boundary(sim, 2);
+                    s.keep_alive();
                 }
                 n
             }
@@ -403,6 +420,7 @@ pub fn on_pl_tick() {
                     // No step to see the PL's faults (a stuck ADC stops
                     // the MPDTC's boundaries).
                     let _ = s.servo.note_pl_faults(&mut s.bus);
+                    s.keep_alive();
                 }
                 n
             }
@@ -632,6 +650,26 @@ impl State {
     /// Inside a `debug stall`.
     fn stalled(&self) -> bool {
         self.pl_now() < self.stall_until
+    }
+    /// The watchdog while the gates are off and no control step feeds it
+    /// (`Servo::keep_alive`): a heartbeat once a quarter of its timeout
+    /// has passed in PL time since the last step or heartbeat (so the PL
+    /// tick's polls and a running loop add no register access). Not
+    /// during `debug stall`, which stands for a hung control loop.
+    fn keep_alive(&mut self) {
+        let wdg = u64::from(self.servo.config().watchdog_cycles) / 4;
+        let quarter = match &self.bus {
+            Backend::Sim(_) | Backend::Cosim(_) => wdg,
+            Backend::Gp0(_) => wdg * 1_000_000 / u64::from(regmap::PL_CLOCK_HZ),
+        };
+        let now = self.pl_now();
+        let last = self.last_beat.max(self.last_step_cycle);
+        if self.stalled() || now.saturating_sub(last) < quarter {
+            return;
+        }
+        if let Ok(true) = self.servo.keep_alive(&mut self.bus) {
+            self.last_beat = self.pl_now();
+        }
     }
 }
 

@@ -181,3 +181,59 @@ fn history_keeps_the_last_16() {
         .collect();
     assert!(times.windows(2).all(|w| w[0] < w[1]), "{times:?}");
 }
+
+/// PL time now, s: guest uptime over `sim_time_scale` (the simulated PL's
+/// clock; the offset of its start cancels in a difference).
+fn pl_time_s(st: &Reply) -> f64 {
+    system_tests::num(st, "uptime") / system_tests::num(st, "sim_time_scale")
+}
+
+/// A board without its ADC card (`sim set adc_card 0`: data-ready held
+/// low, no ADC result, so no control-period boundary in mode off): with
+/// the gates off the firmware's tick feeds the 2 ms watchdog, so no
+/// WATCHDOG latches over 25 of its timeouts, after boot or after `fault
+/// clear`; the first `enable` then names the ADC (the sensor check's
+/// ADC_STUCK), and with the card fitted it works.
+#[test]
+fn without_the_adc_card_the_watchdog_stays_quiet_and_enable_names_the_adc() {
+    let mut s = boot();
+    assert_ok(&cmd(&mut s, "sim set adc_card 0"));
+    let quiet_for_50_ms = |s: &mut Session| {
+        let first = cmd(s, "status");
+        let t0 = pl_time_s(&first);
+        let end = Instant::now() + Duration::from_secs(60);
+        loop {
+            let st = cmd(s, "status");
+            assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+            // No boundary: no control step ran.
+            assert_eq!(field(&st, "periods"), field(&first, "periods"), "{st:?}");
+            if pl_time_s(&st) - t0 >= 0.05 {
+                break;
+            }
+            assert!(
+                Instant::now() < end,
+                "50 ms of PL time did not pass: {st:?}"
+            );
+            std::thread::sleep(Duration::from_millis(20));
+        }
+    };
+    quiet_for_50_ms(&mut s);
+    assert_ok(&cmd(&mut s, "mode foc"));
+    let r = cmd(&mut s, "enable");
+    assert_err(&r, "sensor-check");
+    match &r.fin {
+        drivectl::link::Final::Err { message, .. } => {
+            assert!(message.contains("ADC_STUCK"), "{r:?}");
+            assert!(message.contains("converter card"), "{r:?}");
+        }
+        drivectl::link::Final::Ok => unreachable!(),
+    }
+    assert_ok(&cmd(&mut s, "mode off"));
+    assert_ok(&cmd(&mut s, "fault clear"));
+    quiet_for_50_ms(&mut s);
+    assert_ok(&cmd(&mut s, "sim set adc_card 1"));
+    assert_ok(&cmd(&mut s, "mode foc"));
+    assert_ok(&cmd(&mut s, "enable"));
+    let st = cmd(&mut s, "status");
+    assert_eq!(field(&st, "gates"), Some("on"), "{st:?}");
+}

@@ -34,6 +34,9 @@ pub struct Converter {
     since: Option<u32>,
     delay: u32,
     width: u32,
+    /// No converter on the bus (no card fitted): no conversion starts and
+    /// data-ready stays low (the board's pull-down).
+    absent: bool,
 }
 
 impl Converter {
@@ -55,7 +58,23 @@ impl Converter {
             since: None,
             delay: 0,
             width: 0,
+            absent: false,
         }
+    }
+
+    /// Fits (`true`) or removes the converter. Removed, a conversion under
+    /// way is lost and data-ready goes low from this cycle on; fitted
+    /// again, it converts from the next convert pulse.
+    pub fn set_fitted(&mut self, fitted: bool) {
+        self.absent = !fitted;
+        if self.absent {
+            self.since = None;
+        }
+    }
+
+    /// Whether a converter is fitted.
+    pub fn fitted(&self) -> bool {
+        !self.absent
     }
 
     fn draw(&mut self, n: u32) -> u32 {
@@ -81,7 +100,7 @@ impl Converter {
             Some(s) if s + 1 < self.delay + self.width => Some(s + 1),
             _ => None,
         };
-        if cnv {
+        if cnv && !self.absent {
             self.delay = self.conv + self.draw(self.jitter.saturating_add(1));
             self.width = 1 + self.draw(self.width_max);
             self.since = Some(0);

@@ -314,6 +314,11 @@ impl SimPl {
         }
     }
 
+    /// Fits or removes the ADC card's converter (from the next cycle on).
+    pub fn set_adc_fitted(&mut self, fitted: bool) {
+        self.adc.conv.set_fitted(fitted);
+    }
+
     /// PL cycles simulated since reset.
     pub fn cycles(&self) -> u64 {
         self.cycles

@@ -226,6 +226,9 @@ pub trait PlModel {
     fn mode(&self) -> u32;
     /// Pin levels and converter data driven into the PL.
     fn pins_mut(&mut self) -> &mut Pins;
+    /// Fits or removes the ADC card ([`crate::adc::Converter::set_fitted`]),
+    /// from the next cycle on.
+    fn set_adc_fitted(&mut self, fitted: bool);
     /// Runs up to `max` cycles without bus accesses, stopping after the
     /// first cycle whose events hit `stop`: (cycles run, merged events).
     fn run(&mut self, max: u64, stop: &Events) -> (u64, Events);
@@ -249,6 +252,9 @@ impl PlModel for SimPl {
     }
     fn pins_mut(&mut self) -> &mut Pins {
         &mut self.pins
+    }
+    fn set_adc_fitted(&mut self, fitted: bool) {
+        SimPl::set_adc_fitted(self, fitted);
     }
     fn run(&mut self, max: u64, stop: &Events) -> (u64, Events) {
         SimPl::run(self, max, stop)
@@ -296,6 +302,8 @@ pub struct SimDrive<P = SimPl> {
     fault_ext: bool,
     /// The encoder's A and B lines are inverted (`sim set enc_invert`).
     enc_invert: bool,
+    /// The ADC card is fitted (`sim set adc_card`).
+    adc_card: bool,
     /// PL cycle from which all six gate outputs have been off (`None`
     /// while one is on).
     gates_off_since: Option<u64>,
@@ -338,6 +346,7 @@ impl<P: PlModel> SimDrive<P> {
             phase_open: 0,
             fault_ext: false,
             enc_invert: false,
+            adc_card: true,
             gates_off_since: Some(0),
         };
         s.update_encoder_pins();
@@ -409,6 +418,7 @@ impl<P: PlModel> SimDrive<P> {
             phase_open: self.phase_open,
             fault_ext: self.fault_ext,
             enc_invert: self.enc_invert,
+            adc_card: self.adc_card,
         }
     }
 
@@ -447,6 +457,8 @@ impl<P: PlModel> SimDrive<P> {
         self.phase_open = m.phase_open.min(3);
         self.set_external_fault(m.fault_ext);
         self.enc_invert = m.enc_invert;
+        self.adc_card = m.adc_card;
+        self.pl.set_adc_fitted(m.adc_card);
         self.update_encoder_pins();
         Ok(())
     }

@@ -210,6 +210,15 @@ impl PlModel for RtlPl {
     fn pins_mut(&mut self) -> &mut Pins {
         &mut self.pins
     }
+    fn set_adc_fitted(&mut self, fitted: bool) {
+        // The shadow's owed cycles ran with the converter as it was.
+        self.shadow_flush();
+        self.shadow_quiet = None;
+        PlModel::set_adc_fitted(&mut self.shadow, fitted);
+        if let Some(c) = &mut self.rtl.adc {
+            c.set_fitted(fitted);
+        }
+    }
     fn run(&mut self, max: u64, stop: &Events) -> (u64, Events) {
         let mut all = Events::default();
         let mut n = 0;

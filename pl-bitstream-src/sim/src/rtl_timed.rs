@@ -36,6 +36,9 @@ impl PlModel for RtlTimedSimPl {
     fn pins_mut(&mut self) -> &mut Pins {
         &mut self.0.pins
     }
+    fn set_adc_fitted(&mut self, fitted: bool) {
+        self.0.set_adc_fitted(fitted);
+    }
     fn run(&mut self, max: u64, stop: &Events) -> (u64, Events) {
         self.0.run(max, stop)
     }

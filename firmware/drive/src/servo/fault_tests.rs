@@ -2,7 +2,7 @@
 //! fault on the simulated PL is a test of the `simpl` crate).
 use super::*;
 use crate::pl::fake::FakePl;
-use regmap::{ENC, FAULT_STATUS_ADDR, GATE_CTRL_ADDR};
+use regmap::{ENC, FAULT_STATUS_ADDR, GATE_CTRL_ADDR, HEARTBEAT_ADDR};
 
 fn running(mode: Mode) -> (Servo, FakePl) {
     let mut s = Servo::new(&ServoConfig::default()).unwrap();
@@ -127,6 +127,23 @@ fn no_boundary_in_mpdtc_is_a_stuck_adc() {
     let (mut s, mut pl) = running(Mode::Foc);
     s.note_no_boundary(&mut pl, 4).unwrap();
     assert!(s.faults(&mut pl).unwrap().none());
+    // With the gates off (mode off: no ADC card) nothing runs to protect.
+    let (mut s, mut pl) = running(Mode::Mpdtc);
+    s.disable(&mut pl).unwrap();
+    s.note_no_boundary(&mut pl, 4).unwrap();
+    assert!(s.faults(&mut pl).unwrap().none());
+}
+
+/// The heartbeat without a control step only with the gates off.
+#[test]
+fn keep_alive_writes_the_heartbeat_only_with_the_gates_off() {
+    let (mut s, mut pl) = running(Mode::Foc);
+    let beat = pl.get(HEARTBEAT_ADDR);
+    assert!(!s.keep_alive(&mut pl).unwrap());
+    assert_eq!(pl.get(HEARTBEAT_ADDR), beat);
+    s.disable(&mut pl).unwrap();
+    assert!(s.keep_alive(&mut pl).unwrap());
+    assert_ne!(pl.get(HEARTBEAT_ADDR), beat);
 }
 
 /// `debug fault position-limit`: the next step latches `POSITION_LIMIT`;

@@ -1014,6 +1014,24 @@ impl Servo {
         Ok(())
     }
 
+    /// The watchdog's heartbeat without a control step, written only while
+    /// the gates are off; returns whether it wrote. The firmware calls it
+    /// when no control step has fed the watchdog for a quarter of its
+    /// timeout: in mode off only the ADC's averages raise control-period
+    /// boundaries, so a board without its ADC card has none, and WATCHDOG
+    /// would latch with nothing to protect, hiding the real problem from
+    /// the next `enable` (the sensor check's `ADC_STUCK`). With the gates
+    /// on only the control step feeds it: a control loop that stops still
+    /// trips it.
+    pub fn keep_alive<B: RegisterBus>(&mut self, bus: &mut B) -> Result<bool, BusError> {
+        if self.gates {
+            return Ok(false);
+        }
+        self.beat = self.beat.wrapping_add(1);
+        Top(&mut *bus).heartbeat(self.beat)?;
+        Ok(true)
+    }
+
     /// `pos zero` (refused during the MPDTC's alignment).
     pub fn zero_position(&mut self) -> Result<(), ServoError> {
         self.not_aligning()?;
@@ -1128,14 +1146,16 @@ impl Servo {
 
     /// The PL gave no control-period boundary for `periods` control periods
     /// (the MPDTC period and mode off are paced by the ADC's results): after
-    /// [`ADC_STALE_STEPS`] of them the ADC is stuck.
+    /// [`ADC_STALE_STEPS`] of them with the gates on the ADC is stuck. With
+    /// the gates off (mode off, a board without its ADC card) it is judged
+    /// as the PL's own ADC result timer judges it: only once the drive runs.
     pub fn note_no_boundary<B: RegisterBus>(
         &mut self,
         bus: &mut B,
         periods: u32,
     ) -> Result<(), BusError> {
         self.time_s += f64::from(periods) * self.control_period_s();
-        if self.mode == Mode::Foc {
+        if self.mode == Mode::Foc || !self.gates {
             return Ok(());
         }
         self.adc_stale += periods;
@@ -1206,7 +1226,12 @@ impl Servo {
     /// they found.
     fn ps_checks(&mut self, adc_count: u32, pos: u32, cpr: u32) -> u32 {
         let mut f = 0;
-        if self.last_adc_count == Some(adc_count) {
+        // A stuck ADC is judged while the drive runs, as the PL's own ADC
+        // result timer judges it: with the gates off there is nothing to
+        // protect, and a board without its ADC card in FOC would latch
+        // ADC_STUCK again after every `fault clear`, before the sensor
+        // check of `enable` could name it.
+        if self.last_adc_count == Some(adc_count) && self.gates {
             self.adc_stale += 1;
         } else {
             self.adc_stale = 0;

@@ -115,7 +115,11 @@ impl fmt::Display for SensorFault {
             ),
             SensorFault::Fault(faults) => {
                 f.write_str("fault latched during the check: ")?;
-                faults.write_names(f)
+                faults.write_names(f)?;
+                if faults.0 & Faults::ADC_STUCK != 0 {
+                    f.write_str(" (no ADC result: is the converter card fitted and powered?)")?;
+                }
+                Ok(())
             }
         }
     }

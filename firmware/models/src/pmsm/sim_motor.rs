@@ -49,7 +49,7 @@ const fn p(
 }
 
 /// Every parameter of the simulated motor, in `sim list` order.
-pub const SIM_PARAMS: [SimParam; 16] = [
+pub const SIM_PARAMS: [SimParam; 17] = [
     p("r_s", "ohm", 1e-3, 100.0, false, "stator resistance per phase (star equivalent)"),
     p("l", "H", 1e-6, 0.1, false, "stator inductance L_d = L_q"),
     p("psi_pm", "Wb", 1e-4, 1.0, false, "permanent-magnet flux linkage amplitude"),
@@ -66,6 +66,7 @@ pub const SIM_PARAMS: [SimParam; 16] = [
     p("phase_open", "1", 0.0, 3.0, true, "1, 2, 3: phase a, b or c disconnected (its current is 0), 0: all connected"),
     p("fault_ext", "1", 0.0, 1.0, true, "1: the PL's external fault input asserted, 0: released"),
     p("enc_invert", "1", 0.0, 1.0, true, "1: the encoder's A and B lines both inverted (two counts off), 0: not; a change moves A and B in the same instant, an illegal quadrature step (the PL's ENCODER_LOSS)"),
+    p("adc_card", "1", 0.0, 1.0, true, "1: the ADC card is fitted, 0: absent (data-ready held low by the board's pull-down: no ADC result, no control-period boundary in mode off, ADC_STUCK with the gates on)"),
 ];
 
 /// Why `sim set` refused a value.
@@ -98,6 +99,8 @@ pub struct SimMotor {
     pub fault_ext: bool,
     /// The encoder's A and B lines are both inverted.
     pub enc_invert: bool,
+    /// The ADC card is fitted (its converter answers the convert pulses).
+    pub adc_card: bool,
 }
 
 impl Default for SimMotor {
@@ -113,6 +116,7 @@ impl Default for SimMotor {
             phase_open: 0,
             fault_ext: false,
             enc_invert: false,
+            adc_card: true,
         }
     }
 }
@@ -146,6 +150,7 @@ impl SimMotor {
             13 => f64::from(self.phase_open),
             14 => f64::from(u8::from(self.fault_ext)),
             15 => f64::from(u8::from(self.enc_invert)),
+            16 => f64::from(u8::from(self.adc_card)),
             _ => f64::NAN,
         }
     }
@@ -197,7 +202,8 @@ impl SimMotor {
             12 => next.enc_dead = value == 1.0,
             13 => next.phase_open = value as u8,
             14 => next.fault_ext = value == 1.0,
-            _ => next.enc_invert = value == 1.0,
+            15 => next.enc_invert = value == 1.0,
+            _ => next.adc_card = value == 1.0,
         }
         next.motor.validate().map_err(SimSetError::Bad)?;
         next.mech.validate().map_err(SimSetError::Bad)?;
