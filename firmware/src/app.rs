@@ -51,13 +51,17 @@ fn set_vbar() {
 
 #[cortex_a_rt::entry]
 fn main() -> ! {
-    pl::gates_safe();
+    // The vectors before any GP0 access: an FSBL's handlers would hang on
+    // a bus error of a design that is not ours.
     set_vbar();
-    mmu::enable();
     // Asynchronous (imprecise) aborts, e.g. a bus error on a GP0 store,
-    // are taken, not left pending: the abort handler turns the gates off.
+    // are taken, not left pending: during the boot probe the handler
+    // resumes, afterwards it turns the gates off and halts.
     // SAFETY: the vector table is in place (VBAR above).
     unsafe { core::arch::asm!("cpsie a", options(nomem, nostack)) };
+    // Gates off first: the probe's store (GP0 unused after a bus error).
+    let gp0_bus_error = pl::boot_probe();
+    mmu::enable();
     // The divisors are a compile-time fact of the board: a failure here is
     // a build error in disguise, caught by the host test of the same call.
     let div = drive::zynq::uart_divisors(UART_REF_CLK_HZ, BAUD).expect("baud divisors");
@@ -79,12 +83,15 @@ fn main() -> ! {
         env!("CARGO_PKG_VERSION"),
         env!("FW_GIT_HASH")
     );
+    if gp0_bus_error {
+        defmt::warn!("boot: GP0 answered GATE_CTRL with a bus error: not our design, GP0 unused");
+    }
     let mut con = CONSOLE;
-    banner(&mut con, &boot);
+    banner(&mut con, &boot, gp0_bus_error);
     run_console(&mut con)
 }
 
-fn banner(con: &mut Uart, boot: &control::Boot) {
+fn banner(con: &mut Uart, boot: &control::Boot, gp0_bus_error: bool) {
     use core::fmt::Write;
     let _ = write!(
         con,
@@ -99,6 +106,13 @@ fn banner(con: &mut Uart, boot: &control::Boot) {
          console on UART1 at {} 8N1; defmt log on UART0 at {} 8N1; type `help`\r\n{}",
         boot.pl, boot.devcfg_int_sts, boot.pss_idcode, BAUD, LOG_BAUD, PROMPT
     );
+    if gp0_bus_error {
+        let _ = write!(
+            con,
+            "\r\ngp0: the PL answered the boot's GATE_CTRL write with a bus error \
+             (a design that is not ours); GP0 is not touched again\r\n{PROMPT}"
+        );
+    }
 }
 
 fn run_console(con: &mut Uart) -> ! {

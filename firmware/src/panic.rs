@@ -102,10 +102,17 @@ fn prefetch_abort(addr: usize) -> ! {
     halt(&mut con)
 }
 
+/// A bus error during the boot's GP0 probe (`pl::boot_probe`) resumes (a
+/// configured PL that is not ours: `pl: absent`); every other data abort
+/// halts with the gates off.
 #[cortex_a_rt::exception(DataAbort)]
-fn data_abort(addr: usize) -> ! {
-    let mut con = exception_entry();
+unsafe fn data_abort(addr: usize) -> usize {
     let [dfsr, dfar, ..] = fault_registers();
+    if let Some(resume) = drive::zynq::probe_resume(pl::probing(), dfsr, addr) {
+        pl::note_probe_fault();
+        return resume;
+    }
+    let mut con = exception_entry();
     let _ = write!(
         con,
         "\r\nDATA ABORT at 0x{addr:08x}: DFSR 0x{dfsr:08x} ({}, {}), DFAR 0x{dfar:08x}\r\n",

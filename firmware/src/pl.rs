@@ -5,7 +5,16 @@
 //! on a real Zynq an access to an unconfigured PL (or with the level
 //! shifters off, or the PL in reset) hangs the bus. The one exception is
 //! [`gates_safe`], which writes `GATE_CTRL` = 0 whenever the GP0 guard
-//! passes, also before detection (first thing at boot).
+//! passes, also before detection (first thing at boot, once the vector
+//! table is in place).
+//!
+//! A configured PL that is not ours may answer GP0 with a bus error
+//! (DECERR/SLVERR: a data abort, asynchronous for a store). The boot's
+//! accesses before detection run as a *probe* ([`boot_probe`]): the data
+//! abort handler resumes after a bus error taken during it
+//! (`drive::zynq::probe_resume`), GP0 is then never touched again
+//! ([`GP0_BROKEN`]) and the drive reports `pl: absent`. A bus error outside
+//! a probe halts with the gates off (`panic.rs`).
 use core::sync::atomic::{AtomicBool, Ordering};
 use drive::pl::presence::{self, Guard, Presence};
 use regmap::bus::{BusError, RegisterBus};
@@ -14,6 +23,48 @@ use volatile_register::RW;
 
 /// Set once presence detection found our bitstream behind GP0.
 static GP0_OK: AtomicBool = AtomicBool::new(false);
+/// Set while [`boot_probe`] runs: a data abort then is a bus error of the
+/// probe, survived.
+static PROBING: AtomicBool = AtomicBool::new(false);
+/// Set by the data abort handler for a bus error during a probe.
+static PROBE_FAULT: AtomicBool = AtomicBool::new(false);
+/// GP0 answered a probe with a bus error: never touched again.
+static GP0_BROKEN: AtomicBool = AtomicBool::new(false);
+
+/// Whether a probe runs (for the data abort handler).
+pub fn probing() -> bool {
+    PROBING.load(Ordering::SeqCst)
+}
+
+/// The data abort handler took a bus error during the probe.
+pub fn note_probe_fault() {
+    PROBE_FAULT.store(true, Ordering::SeqCst);
+}
+
+/// Runs `f`'s GP0 accesses as a probe; returns its result and whether a
+/// bus error was taken. A store's response arrives by the `dsb`, and an
+/// asynchronous abort it raised is taken at the `isb` (aborts unmasked),
+/// inside the window.
+fn probe<T>(f: impl FnOnce() -> T) -> (T, bool) {
+    PROBE_FAULT.store(false, Ordering::SeqCst);
+    PROBING.store(true, Ordering::SeqCst);
+    let r = f();
+    // SAFETY: barriers only.
+    unsafe { core::arch::asm!("dsb", "isb", options(nostack)) };
+    PROBING.store(false, Ordering::SeqCst);
+    let fault = PROBE_FAULT.load(Ordering::SeqCst);
+    if fault {
+        GP0_BROKEN.store(true, Ordering::SeqCst);
+    }
+    (r, fault)
+}
+
+/// The boot's first GP0 access, `GATE_CTRL` = 0 ([`gates_safe`]), as a
+/// probe: returns whether GP0 answered it with a bus error. Call with the
+/// vector table in place and asynchronous aborts unmasked.
+pub fn boot_probe() -> bool {
+    probe(gates_safe).1
+}
 
 fn reg(addr: usize) -> &'static RW<u32> {
     // SAFETY: callers pass the address of a 32-bit device register.
@@ -44,7 +95,16 @@ pub fn guard() -> Guard {
 /// Decides what is in the PL; GP0 is read only when the guard passes.
 /// Remembers whether GP0 may be used from now on.
 pub fn detect() -> Presence {
-    let p = presence::detect(&guard(), &mut Gp0);
+    if GP0_BROKEN.load(Ordering::SeqCst) {
+        // The boot probe's bus error: a design that is not ours.
+        return Presence::Foreign { id: 0 };
+    }
+    let (p, fault) = probe(|| presence::detect(&guard(), &mut Gp0));
+    let p = if fault {
+        Presence::Foreign { id: 0 }
+    } else {
+        p
+    };
     GP0_OK.store(p.usable(), Ordering::Release);
     p
 }
@@ -76,6 +136,10 @@ impl RegisterBus for Gp0 {
 /// so that the store cannot hang the bus. A foreign design may see a 0
 /// written at `GATE_CTRL`'s offset: the price of not waiting for `ID`.
 pub fn gates_safe() {
+    if GP0_BROKEN.load(Ordering::SeqCst) {
+        // A bus error there already: a store now would abort again.
+        return;
+    }
     if GP0_OK.load(Ordering::Acquire) || guard().check().is_ok() {
         // Only GATE_EN is writable in GATE_CTRL: all gates off.
         let _ = GateCtrl::write(&mut Gp0, GateCtrlValue::ZERO.with_gate_en(false));

@@ -75,6 +75,25 @@ pub fn fault_status_name(fsr: u32) -> &'static str {
     }
 }
 
+/// Where a data abort taken during the boot's GP0 probe resumes, or `None`
+/// (halt) for any other abort. Only an external abort (a bus error: a
+/// design answering DECERR or SLVERR) is the probe's to survive: a
+/// synchronous one (a load) resumes after the aborted instruction (A32:
+/// `addr` + 4, its result discarded), an asynchronous one (a store,
+/// reported later) at `addr`, the instruction it interrupted, not yet
+/// executed. `addr` is the handler's address (the exception's return
+/// address less 8).
+pub fn probe_resume(probing: bool, dfsr: u32, addr: usize) -> Option<usize> {
+    if !probing {
+        return None;
+    }
+    match ((dfsr >> 6) & 0x10) | (dfsr & 0xF) {
+        0b01000 => Some(addr + 4),
+        0b10110 => Some(addr),
+        _ => None,
+    }
+}
+
 /// DFSR.WnR (bit 11): the aborted access was a write.
 pub fn fault_was_write(dfsr: u32) -> bool {
     dfsr & (1 << 11) != 0
@@ -94,6 +113,18 @@ pub const QSPI_CONFIG: u32 = 1 | (0b010 << 3) | (0b11 << 6) | (1 << 14) | QSPI_H
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn only_a_bus_error_during_the_probe_resumes() {
+        // DFSR FS: synchronous external abort 0b01000, asynchronous
+        // 0b10110 (bit 10 set), translation fault 0b00101.
+        let (sync_ext, async_ext, translation) = (0x008, 0x406 | (1 << 11), 0x005);
+        assert_eq!(probe_resume(true, sync_ext, 0x1000), Some(0x1004));
+        assert_eq!(probe_resume(true, async_ext, 0x1000), Some(0x1000));
+        assert_eq!(probe_resume(true, translation, 0x1000), None);
+        assert_eq!(probe_resume(false, sync_ext, 0x1000), None);
+        assert_eq!(probe_resume(false, async_ext, 0x1000), None);
+    }
 
     #[test]
     fn divisors_for_115200_from_50_and_100_mhz() {
