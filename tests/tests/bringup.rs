@@ -22,6 +22,8 @@ fn caches_on_and_the_drivers_regions_have_their_memory_types() {
     let sctlr =
         u32::from_str_radix(field(&r, "sctlr").unwrap().trim_start_matches("0x"), 16).unwrap();
     assert_eq!(sctlr & 0x1805, 0x1805, "{sctlr:#x}");
+    // Written whole (drive::mmu::SCTLR_BOOT), not ORed into.
+    assert_eq!(sctlr, drive::mmu::SCTLR_BOOT, "{sctlr:#x}");
     // On: the board's PL310; absent: QEMU 7.2 has none (CACHE_ID reads 0).
     // Never off.
     let l2 = field(&r, "l2").unwrap();

@@ -146,6 +146,15 @@ pub const SCTLR_Z: u32 = 1 << 11;
 pub const SCTLR_I: u32 = 1 << 12;
 /// All four.
 pub const SCTLR_ON: u32 = SCTLR_M | SCTLR_C | SCTLR_Z | SCTLR_I;
+/// SCTLR's reset value on the Cortex-A9 (TRM r4p1, 4.3.9: 0x00C5_0078, the
+/// RES1 bits with everything else off: little-endian exceptions, low
+/// vectors, no alignment check, no TEX remap or access flag).
+pub const SCTLR_RESET: u32 = 0x00C5_0078;
+/// SCTLR as the firmware writes it, whole: the reset value plus
+/// [`SCTLR_ON`]. Not ORed into what it finds: after a warm restart (a
+/// debugger's download and run without a core reset) SCTLR may hold the
+/// previous image's bits (high vectors, alignment checks).
+pub const SCTLR_BOOT: u32 = SCTLR_RESET | SCTLR_ON;
 
 /// The regions the drivers use, for `debug mmu`: name and an address in it.
 pub const USED: &[(&str, u32)] = &[
@@ -162,6 +171,18 @@ pub const USED: &[(&str, u32)] = &[
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn sctlr_is_written_whole_with_low_vectors_and_no_alignment_check() {
+        // M, C, Z, I on; V (13, high vectors), A (1, alignment), TRE (28),
+        // AFE (29), TE (30) and EE (25) off whatever a last run left.
+        assert_eq!(SCTLR_BOOT, 0x00C5_187D);
+        for off in [1, 13, 25, 28, 29, 30] {
+            assert_eq!(SCTLR_BOOT & (1 << off), 0, "bit {off}");
+        }
+        assert_eq!(SCTLR_BOOT & SCTLR_ON, SCTLR_ON);
+    }
+
     use super::*;
 
     #[test]

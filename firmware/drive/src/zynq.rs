@@ -94,6 +94,14 @@ pub fn probe_resume(probing: bool, dfsr: u32, addr: usize) -> Option<usize> {
     }
 }
 
+/// `ICDICFR` (two bits per interrupt, sixteen a register) with interrupt
+/// `id`'s field set to level-sensitive, 1-N model (0b01: bit 1 clear =
+/// level, bit 0 set as the reset value has it), the others as `old`.
+pub fn icdicfr_level_high(old: u32, id: u32) -> u32 {
+    let shift = 2 * (id % 16);
+    (old & !(0b11 << shift)) | (0b01 << shift)
+}
+
 /// DFSR.WnR (bit 11): the aborted access was a write.
 pub fn fault_was_write(dfsr: u32) -> bool {
     dfsr & (1 << 11) != 0
@@ -113,6 +121,15 @@ pub const QSPI_CONFIG: u32 = 1 | (0b010 << 3) | (0b11 << 6) | (1 << 14) | QSPI_H
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn icdicfr_sets_one_field_to_level() {
+        // IRQ_F2P[0] = 61: register 3 (IDs 48..63), bits 27:26.
+        assert_eq!(icdicfr_level_high(0xFFFF_FFFF, 61), 0xF7FF_FFFF);
+        assert_eq!(icdicfr_level_high(0, 61), 0x0400_0000);
+        // UART1 = 82: register 5, bits 5:4; an edge setting is undone.
+        assert_eq!(icdicfr_level_high(0b10 << 4, 82), 0b01 << 4);
+    }
 
     #[test]
     fn only_a_bus_error_during_the_probe_resumes() {

@@ -6,10 +6,15 @@ const CPU: usize = 0xF8F0_0100;
 
 // Distributor offsets.
 const ICDDCR: usize = 0x000;
+const ICDICTR: usize = 0x004;
 const ICDISER: usize = 0x100;
+const ICDICER: usize = 0x180;
 const ICDISPR: usize = 0x200;
+const ICDICPR: usize = 0x280;
+const ICDABR: usize = 0x300;
 const ICDIPR: usize = 0x400;
 const ICDIPTR: usize = 0x800;
+const ICDICFR: usize = 0xC00;
 // CPU interface offsets.
 const ICCICR: usize = 0x00;
 const ICCPMR: usize = 0x04;
@@ -37,10 +42,31 @@ fn reg8(addr: usize) -> &'static RW<u8> {
     unsafe { &*(addr as *const RW<u8>) }
 }
 
-/// Enables distributor and CPU interface; all priorities pass.
+/// Starts the distributor and CPU interface from known values, whatever
+/// the last run left (a warm restart: a debugger's reset of the core, or a
+/// download and run, keeps the GIC's state): forwarding off, the active
+/// interrupts ended, every interrupt disabled and its pending state
+/// cleared; then both on with all priorities passing. Interrupts come on
+/// one by one ([`enable_at`]).
 pub fn init() {
-    // SAFETY: documented enable values.
+    // SAFETY: documented registers and values (PL390 / Cortex-A9 MPCore
+    // TRM), with IRQs masked.
     unsafe {
+        reg(DIST + ICDDCR).write(0);
+        let regs = (reg(DIST + ICDICTR).read() as usize & 0x1F) + 1;
+        for r in 0..regs {
+            // An interrupt still active (its handler cut short by the
+            // restart) would hold off every one of its priority and below.
+            let active = reg(DIST + ICDABR + 4 * r).read();
+            for b in 0..32 {
+                if active & (1 << b) != 0 {
+                    reg(CPU + ICCEOIR).write((32 * r + b) as u32);
+                }
+            }
+            reg(DIST + ICDICER + 4 * r).write(u32::MAX);
+            reg(DIST + ICDICPR + 4 * r).write(u32::MAX);
+        }
+        reg(CPU + ICCICR).write(0);
         reg(DIST + ICDDCR).write(1);
         reg(CPU + ICCPMR).write(0xF0);
         reg(CPU + ICCICR).write(1);
@@ -67,6 +93,10 @@ pub fn enable_at(id: u32, priority: u8) {
         reg8(DIST + ICDIPR + id).write(priority);
         if id >= 32 {
             reg8(DIST + ICDIPTR + id).write(0x01);
+            // The boot ROM leaves the sensitivity to software (UG585 7.2.4):
+            // ours are level-high (the PL's `irq_o` stays up until cleared).
+            let cfg = reg(DIST + ICDICFR + 4 * (id / 16));
+            cfg.write(drive::zynq::icdicfr_level_high(cfg.read(), id as u32));
         }
         reg(DIST + ICDISER + 4 * (id / 32)).write(1 << (id % 32));
     }

@@ -15,6 +15,7 @@ const DATA_RAM: usize = 0x10C;
 const INT_CLEAR: usize = 0x220;
 const CACHE_SYNC: usize = 0x730;
 const INV_WAY: usize = 0x77C;
+const CLEAN_INV_WAY: usize = 0x7FC;
 
 /// SLCR: unlock/lock keys and `L2C_RAM` (UG585 B.28).
 const SLCR_LOCK: usize = 0xF800_0004;
@@ -51,14 +52,19 @@ pub fn cache_id() -> u32 {
     reg(BASE + CACHE_ID).read()
 }
 
-/// Invalidates all ways and enables the L2 (it must be off: `CTRL` = 0,
-/// as the FSBL leaves it). Nothing without a PL310.
+/// Invalidates all ways and enables the L2, from known values whatever it
+/// was: one left on (a core reset without a system reset) is switched off
+/// first and its lines dropped, not written back (they are the previous
+/// run's: this image's start-up ran with the L1 off, uncached, so nothing
+/// of it is there; after a start-up with the caches on the caller has
+/// cleaned it with [`disable`]). Nothing without a PL310.
 pub fn enable() {
-    if !present() || ctrl() & 1 != 0 {
+    if !present() {
         return;
     }
     // SAFETY: documented values, written with the L2 disabled.
     unsafe {
+        reg(BASE + CTRL).write(0);
         reg(SLCR_UNLOCK).write(UNLOCK_KEY);
         reg(SLCR_L2C_RAM).write(L2C_RAM_VALUE);
         reg(SLCR_LOCK).write(LOCK_KEY);
@@ -73,6 +79,22 @@ pub fn enable() {
         reg(BASE + CACHE_SYNC).write(0);
         reg(BASE + INT_CLEAR).write(0x1FF);
         reg(BASE + CTRL).write(1);
+    }
+}
+
+/// Cleans, invalidates and switches off an L2 left on (a warm restart);
+/// nothing when it is off or absent. [`enable`] then sets it up afresh.
+pub fn disable() {
+    if !present() || ctrl() & 1 == 0 {
+        return;
+    }
+    // SAFETY: the PL310's maintenance by way with the L1 already cleaned.
+    unsafe { reg(BASE + CLEAN_INV_WAY).write(WAYS) };
+    while reg(BASE + CLEAN_INV_WAY).read() & WAYS != 0 {}
+    // SAFETY: as above; then off.
+    unsafe {
+        reg(BASE + CACHE_SYNC).write(0);
+        reg(BASE + CTRL).write(0);
     }
 }
 

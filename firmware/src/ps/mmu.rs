@@ -7,8 +7,16 @@
 //! invalidate the L1 data cache by set/way (its contents are not defined
 //! after a reset on every part, and the FSBL ran with it on), the
 //! instruction cache, the branch predictor and the TLBs; load DACR, TTBCR
-//! and TTBR0; invalidate and enable the L2; then set SCTLR.M, C, Z, I. The
-//! code runs at its own (flat) address throughout.
+//! and TTBR0; invalidate and enable the L2; then write SCTLR whole
+//! (`drive::mmu::SCTLR_BOOT`). The code runs at its own (flat) address
+//! throughout.
+//!
+//! A warm restart (a debugger's reset of the core without a system reset,
+//! or a download and run) may find the MMU and caches on: the L1 data
+//! cache then holds this image's own start-up writes (`.data`, `.bss`, the
+//! stack), so it is cleaned and invalidated, not just invalidated, and
+//! switched off before the sequence above; an L2 left on is cleaned,
+//! invalidated and switched off before it is set up again (`l2c`).
 use super::l2c;
 use drive::mmu::{self, ENTRIES};
 
@@ -20,8 +28,9 @@ struct Table([u32; ENTRIES]);
 /// `entry`).
 static mut TABLE: Table = Table([0; ENTRIES]);
 
-/// Invalidates the L1 data cache by set/way, with the geometry from CCSIDR.
-fn invalidate_l1d() {
+/// Invalidates (`clean` false: DCISW) or cleans and invalidates (DCCISW)
+/// the L1 data cache by set/way, with the geometry from CCSIDR.
+fn l1d_by_set_way(clean: bool) {
     let ccsidr: u32;
     // SAFETY: CSSELR = 0 selects the L1 data cache; reading CCSIDR.
     unsafe {
@@ -41,8 +50,17 @@ fn invalidate_l1d() {
     for way in 0..ways {
         for set in 0..sets {
             let sw = (way.checked_shl(way_shift).unwrap_or(0)) | (set << line_shift);
-            // SAFETY: DCISW with caches off: nothing dirty to lose.
-            unsafe { core::arch::asm!("mcr p15, 0, {}, c7, c6, 2", in(reg) sw, options(nostack)) };
+            if clean {
+                // SAFETY: DCCISW: dirty lines are written back first.
+                unsafe {
+                    core::arch::asm!("mcr p15, 0, {}, c7, c14, 2", in(reg) sw, options(nostack))
+                };
+            } else {
+                // SAFETY: DCISW with caches off: nothing dirty to lose.
+                unsafe {
+                    core::arch::asm!("mcr p15, 0, {}, c7, c6, 2", in(reg) sw, options(nostack))
+                };
+            }
         }
     }
     // SAFETY: barrier only.
@@ -56,7 +74,24 @@ pub fn enable() {
     let table = unsafe { &mut *core::ptr::addr_of_mut!(TABLE) };
     mmu::fill(&mut table.0);
     let base = table.0.as_ptr() as u32;
-    invalidate_l1d();
+    let at_entry = sctlr();
+    if at_entry & (mmu::SCTLR_M | mmu::SCTLR_C) != 0 {
+        // A warm restart: write back what the start-up wrote, then off.
+        l1d_by_set_way(true);
+        // SAFETY: the flat table maps this code at its own address, so
+        // execution continues with the MMU off.
+        unsafe {
+            core::arch::asm!(
+                "mcr p15, 0, {t}, c1, c0, 0",
+                "dsb",
+                "isb",
+                t = in(reg) at_entry & !mmu::SCTLR_ON,
+                options(nostack)
+            );
+        }
+        l2c::disable();
+    }
+    l1d_by_set_way(false);
     // SAFETY: the sequence of the module comment; the table maps this code
     // and its data at their own addresses, so execution continues.
     unsafe {
@@ -78,16 +113,13 @@ pub fn enable() {
         );
     }
     l2c::enable();
-    // SAFETY: as above.
+    // SAFETY: as above; the whole register, not ORed into.
     unsafe {
         core::arch::asm!(
-            "mrc p15, 0, {t}, c1, c0, 0",
-            "orr {t}, {t}, {on}",
             "mcr p15, 0, {t}, c1, c0, 0",
             "dsb",
             "isb",
-            t = out(reg) _,
-            on = in(reg) mmu::SCTLR_ON,
+            t = in(reg) mmu::SCTLR_BOOT,
             options(nostack)
         );
     }
