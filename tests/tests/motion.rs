@@ -306,7 +306,9 @@ fn move_one_revolution_on_the_rtl_matches_the_simulated_pl() {
 /// `pos zero` right after `enable` in MPDTC (one write: the firmware takes
 /// it within the alignment, however busy the host) answers `ERR aligning`
 /// and zeroes nothing; once `status` no longer shows the alignment it is
-/// taken.
+/// taken, and `move 1` then holds the rotor at 1 rev: `status`, the move's
+/// target and its final error agree (a zero taken during the alignment,
+/// which still turned the rotor, left the hold 108 counts short of 1 rev).
 #[test]
 fn pos_zero_during_the_mpdtc_alignment_is_refused_until_it_ends() {
     let mut s = boot();
@@ -334,4 +336,11 @@ fn pos_zero_during_the_mpdtc_alignment_is_refused_until_it_ends() {
     assert_ok(&cmd(&mut s, "pos zero"));
     let st = cmd(&mut s, "status");
     assert!(num(&st, "position").abs() <= 1.0 / 4096.0, "{st:?}");
+    let r = cmd(&mut s, "move 1");
+    assert_ok(&r);
+    assert!(num(&r, "final_error").abs() <= 2.0, "{r:?}");
+    let st = cmd(&mut s, "status");
+    assert_eq!(field(&st, "loop"), Some("position"), "{st:?}");
+    assert_eq!(num(&st, "position_ref"), 1.0, "{st:?}");
+    assert!((num(&st, "position") - 1.0).abs() <= 2.0 / 4096.0, "{st:?}");
 }
