@@ -5,6 +5,7 @@ set board_part xc7z020clg484-1
 set fclk0_hz 100000000
 set pl_base 0x43C00000
 set pl_range 32K
+set emio_gpio_width 32
 set ps7_config [list \
     CONFIG.PCW_CRYSTAL_PERIPHERAL_FREQMHZ {33.333333} \
     CONFIG.PCW_APU_PERIPHERAL_FREQMHZ {666.666667} \
@@ -43,4 +44,6 @@ set ps7_config [list \
     CONFIG.PCW_USE_M_AXI_GP0 {1} \
     CONFIG.PCW_USE_FABRIC_INTERRUPT {1} \
     CONFIG.PCW_IRQ_F2P_INTR {1} \
+    CONFIG.PCW_GPIO_EMIO_GPIO_ENABLE {1} \
+    CONFIG.PCW_GPIO_EMIO_GPIO_IO {32} \
 ]

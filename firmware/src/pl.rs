@@ -4,17 +4,24 @@
 //! GP0 is touched only after `drive::pl::presence` found our bitstream:
 //! on a real Zynq an access to an unconfigured PL (or with the level
 //! shifters off, or the PL in reset) hangs the bus. The one exception is
-//! [`gates_safe`], which writes `GATE_CTRL` = 0 whenever the GP0 guard
-//! passes, also before detection (first thing at boot, once the vector
-//! table is in place).
+//! [`gates_safe`], which writes `GATE_CTRL` = 0 before detection too (first
+//! thing at boot, once the vector table is in place), but only when the
+//! GP0 guard passes and the PL carries our EMIO signature.
 //!
-//! A configured PL that is not ours may answer GP0 with a bus error
-//! (DECERR/SLVERR: a data abort, asynchronous for a store). The boot's
-//! accesses before detection run as a *probe* ([`boot_probe`]): the data
-//! abort handler resumes after a bus error taken during it
-//! (`drive::zynq::probe_resume`), GP0 is then never touched again
-//! ([`GP0_BROKEN`]) and the drive reports `pl: absent`. A bus error outside
-//! a probe halts with the gates off (`panic.rs`).
+//! The signature ([`emio_signature`]) is read without any AXI access to the
+//! PL: the GPIO controller's `DATA_RO_2` (bank 2, EMIO GPIO 54..85), which
+//! our `board_top` drives with the register map's `ID` value. So a foreign
+//! design is recognised before GP0 is touched and never sees the boot's
+//! write. It is read only after the guard passed: before that the word
+//! means nothing, and QEMU (guard failing) does not model the controller.
+//!
+//! A configured PL that is not ours but copies the signature may still
+//! answer GP0 with a bus error (DECERR/SLVERR: a data abort, asynchronous
+//! for a store): the second line. The boot's accesses before detection run
+//! as a *probe* ([`boot_probe`]): the data abort handler resumes after a
+//! bus error taken during it (`drive::zynq::probe_resume`), GP0 is then
+//! never touched again ([`GP0_BROKEN`]) and the drive reports `pl: absent`.
+//! A bus error outside a probe halts with the gates off (`panic.rs`).
 use core::sync::atomic::{AtomicBool, Ordering};
 use drive::pl::presence::{self, Guard, Presence};
 use regmap::bus::{BusError, RegisterBus};
@@ -92,14 +99,59 @@ pub fn guard() -> Guard {
     }
 }
 
-/// Decides what is in the PL; GP0 is read only when the guard passes.
-/// Remembers whether GP0 may be used from now on.
+/// Turns the GPIO controller's AMBA clock on (SLCR `APER_CLK_CTRL`
+/// `GPIO_CPU_1XCLKACT`) unless it is on already: a read of a clock-gated
+/// peripheral can hang the bus. The SLCR is unlocked only for the one write
+/// and locked again, as `ps::l2c` leaves it. Nothing is written when the
+/// clock is on already (after the first call; or when the FSBL's
+/// `ps7_init` turned it on for the GPIO the PS7 configuration enables: not
+/// measured on a board), so a later call from the panic path only reads.
+fn gpio_clock_on() {
+    let clk = reg(presence::SLCR_APER_CLK_CTRL);
+    if clk.read() & presence::GPIO_CPU_1XCLKACT != 0 {
+        return;
+    }
+    crate::ps::slcr::unlocked(|| {
+        // SAFETY: a read-modify-write that only sets the GPIO's clock
+        // enable, with the SLCR unlocked.
+        unsafe { clk.modify(|v| v | presence::GPIO_CPU_1XCLKACT) }
+    });
+    // SAFETY: a barrier only: the clock is on before the controller is read.
+    unsafe { core::arch::asm!("dsb", options(nostack)) };
+}
+
+/// The EMIO signature: GPIO `DATA_RO_2`, the PS7's EMIO GPIO inputs
+/// 54..85 (a PS register: no AXI access to the PL), read only when `guard`
+/// passes (before that the word means nothing); 0 otherwise, a value
+/// `presence::gp0_access` ignores while the guard fails. Under QEMU the
+/// guard fails, so neither the SLCR clock gate nor the GPIO controller
+/// (not modelled by QEMU 7.2's `xilinx-zynq-a9`) is touched.
+pub fn emio_signature(guard: &Guard) -> u32 {
+    if guard.check().is_err() {
+        return 0;
+    }
+    gpio_clock_on();
+    reg(presence::GPIO_DATA_RO_2).read()
+}
+
+/// Whether GP0 may be touched now: the guard passes and the PL carries our
+/// EMIO signature (PS reads only). `presence::gp0_access`.
+fn gp0_reachable() -> Result<(), Presence> {
+    let g = guard();
+    presence::gp0_access(&g, emio_signature(&g))
+}
+
+/// Decides what is in the PL; GP0 is read only when the guard passes and
+/// the EMIO signature is ours. Remembers whether GP0 may be used from now
+/// on.
 pub fn detect() -> Presence {
     if GP0_BROKEN.load(Ordering::SeqCst) {
         // The boot probe's bus error: a design that is not ours.
         return Presence::Foreign { id: 0 };
     }
-    let (p, fault) = probe(|| presence::detect(&guard(), &mut Gp0));
+    let g = guard();
+    let signature = emio_signature(&g);
+    let (p, fault) = probe(|| presence::detect_signed(&g, signature, &mut Gp0));
     let p = if fault {
         Presence::Foreign { id: 0 }
     } else {
@@ -133,14 +185,16 @@ impl RegisterBus for Gp0 {
 /// read-modify-write, safe from any context including the panic and abort
 /// handlers. With our bitstream found, at once; otherwise (before detection,
 /// or a design detection did not recognise) only when the GP0 guard passes,
-/// so that the store cannot hang the bus. A foreign design may see a 0
-/// written at `GATE_CTRL`'s offset: the price of not waiting for `ID`.
+/// so that the store cannot hang the bus, and the EMIO signature is ours,
+/// so that a foreign design never sees it. A design that copies our
+/// signature but not our map may see a 0 written at `GATE_CTRL`'s offset:
+/// the price of not waiting for `ID`.
 pub fn gates_safe() {
     if GP0_BROKEN.load(Ordering::SeqCst) {
         // A bus error there already: a store now would abort again.
         return;
     }
-    if GP0_OK.load(Ordering::Acquire) || guard().check().is_ok() {
+    if GP0_OK.load(Ordering::Acquire) || gp0_reachable().is_ok() {
         // Only GATE_EN is writable in GATE_CTRL: all gates off.
         let _ = GateCtrl::write(&mut Gp0, GateCtrlValue::ZERO.with_gate_en(false));
         // GP0 is device memory: the store may wait in the write buffer;

@@ -13,6 +13,12 @@
 //   IRQ      pl_top's control interrupt irq_o (a level, high until the
 //            firmware clears IRQ_STATUS) to IRQ_F2P[0] (GIC ID 61, level
 //            high): the PL paces the control step
+//   EMIO     the constant signature RM_ID_RESET ("PSDR", the register map's
+//            ID) on the PS7's 32 EMIO GPIO inputs (GPIO 54..85, the GPIO
+//            controller's bank 2): the firmware reads it in DATA_RO_2, a PS
+//            register, and touches GP0 only when it is ours, so a foreign
+//            design in the PL never sees a GP0 access (a constant needs no
+//            clock or reset: readable as soon as the PL is configured)
 // Ports other than ddr_*/fixed_io_* (placed by the PS7 itself) are the
 // board's PL pins: boards/<board>.toml constrains each bit exactly once
 // (checked by scripts/board-check against this port list).
@@ -69,6 +75,11 @@ module board_top (
     wire [ 3:0] wstrb;
     wire [ 1:0] bresp, rresp;
 
+    // RM_ID_RESET: the same word as the ID register, one source of truth
+    // (firmware/regmap, generated into regmap.vh).
+    `include "regmap.vh"
+    localparam [31:0] EMIO_SIGNATURE = RM_ID_RESET;
+
     ps_bd u_ps (
         .DDR_addr         (ddr_addr_io),
         .DDR_ba           (ddr_ba_io),
@@ -112,7 +123,8 @@ module board_top (
         .M_AXI_PL_wvalid  (wvalid),
         .fclk0            (clk),
         .aresetn          (aresetn),
-        .irq_f2p          (irq)
+        .irq_f2p          (irq),
+        .emio_gpio_i      (EMIO_SIGNATURE)
     );
 
     // pl_top sees the low 15 address bits. With a single slave the protocol

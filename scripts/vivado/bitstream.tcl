@@ -11,11 +11,14 @@
 #
 # Block design ps_bd (instantiated by pl-bitstream-src/board/board_top.v):
 #   ps7       PS7 configured from the board file: DDR, UART0 (defmt log) and
-#             UART1 (console), SD0, QSPI, FCLK0, GP0 master, IRQ_F2P
+#             UART1 (console), SD0, QSPI, FCLK0, GP0 master, IRQ_F2P,
+#             32 EMIO GPIO (GPIO 54..85, bank 2)
 #   axi_conv  AXI protocol converter, GP0 (AXI3) -> M_AXI_PL (AXI4-Lite),
 #             mapped at pl_base (0x43C0_0000) with pl_range (32 KiB)
 #   rst_fclk0 proc_sys_reset: aresetn synchronous to FCLK0
-# External ports: DDR, FIXED_IO, M_AXI_PL, fclk0, aresetn, irq_f2p.
+# External ports: DDR, FIXED_IO, M_AXI_PL, fclk0, aresetn, irq_f2p,
+# emio_gpio_i (board_top drives the signature the firmware reads in the
+# GPIO controller's DATA_RO_2 before any GP0 access).
 
 if {[llength $argv] != 4} {
     puts stderr "usage: vivado -mode batch -source bitstream.tcl -tclargs ROOT BOARD OUT JOBS"
@@ -27,7 +30,8 @@ if {![file exists $ps7_file]} {
     puts stderr "bitstream.tcl: no board `$board` ($ps7_file missing)"
     exit 2
 }
-# board_name, board_part, fclk0_hz, pl_base, pl_range, ps7_config
+# board_name, board_part, fclk0_hz, pl_base, pl_range, emio_gpio_width,
+# ps7_config
 source $ps7_file
 file mkdir $out
 set_param general.maxThreads $jobs
@@ -69,6 +73,10 @@ connect_bd_net [get_bd_pins ps7/FCLK_RESET0_N] [get_bd_pins rst_fclk0/ext_reset_
 connect_bd_net [get_bd_pins rst_fclk0/peripheral_aresetn] [get_bd_pins axi_conv/aresetn] \
     [get_bd_ports aresetn]
 connect_bd_net [get_bd_ports irq_f2p] [get_bd_pins ps7/IRQ_F2P]
+# EMIO GPIO inputs only: the signature is read, never driven by the PS, so
+# GPIO_O and GPIO_T stay unconnected (outputs left open).
+create_bd_port -dir I -from [expr {$emio_gpio_width - 1}] -to 0 emio_gpio_i
+connect_bd_net [get_bd_ports emio_gpio_i] [get_bd_pins ps7/GPIO_I]
 
 assign_bd_address -offset $pl_base -range $pl_range \
     -target_address_space [get_bd_addr_spaces ps7/Data] [get_bd_addr_segs M_AXI_PL/Reg] -force

@@ -17,12 +17,8 @@ const CACHE_SYNC: usize = 0x730;
 const INV_WAY: usize = 0x77C;
 const CLEAN_INV_WAY: usize = 0x7FC;
 
-/// SLCR: unlock/lock keys and `L2C_RAM` (UG585 B.28).
-const SLCR_LOCK: usize = 0xF800_0004;
-const SLCR_UNLOCK: usize = 0xF800_0008;
+/// SLCR `L2C_RAM` (UG585 B.28).
 const SLCR_L2C_RAM: usize = 0xF800_0A1C;
-const LOCK_KEY: u32 = 0x767B;
-const UNLOCK_KEY: u32 = 0xDF0D;
 /// The value UG585 requires in `L2C_RAM` before the L2 is used.
 const L2C_RAM_VALUE: u32 = 0x0002_0202;
 /// RAM latencies (setup, read, write, cycles - 1) of the Zynq-7000's L2
@@ -65,9 +61,7 @@ pub fn enable() {
     // SAFETY: documented values, written with the L2 disabled.
     unsafe {
         reg(BASE + CTRL).write(0);
-        reg(SLCR_UNLOCK).write(UNLOCK_KEY);
-        reg(SLCR_L2C_RAM).write(L2C_RAM_VALUE);
-        reg(SLCR_LOCK).write(LOCK_KEY);
+        super::slcr::unlocked(|| reg(SLCR_L2C_RAM).write(L2C_RAM_VALUE));
         reg(BASE + AUX).modify(|a| a | AUX_SET);
         reg(BASE + TAG_RAM).write(TAG_LATENCY);
         reg(BASE + DATA_RAM).write(DATA_LATENCY);

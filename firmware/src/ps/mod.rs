@@ -7,5 +7,6 @@ pub mod gic;
 pub mod l2c;
 pub mod mmu;
 pub mod qspi;
+pub mod slcr;
 pub mod timer;
 pub mod uart;

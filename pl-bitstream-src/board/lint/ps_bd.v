@@ -48,7 +48,8 @@ module ps_bd (
     output wire        M_AXI_PL_wvalid,
     output wire        fclk0,
     output wire        aresetn,
-    input  wire        irq_f2p
+    input  wire        irq_f2p,
+    input  wire [31:0] emio_gpio_i
 );
     assign M_AXI_PL_araddr  = 32'd0;
     assign M_AXI_PL_arprot  = 3'd0;

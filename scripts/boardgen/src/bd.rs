@@ -1,9 +1,12 @@
 //! The block design as the Vivado flow builds it (facts recorded by
 //! scripts/vivado/stub-run.tcl) against the RTL and the register map: the
 //! ports match the `ps_bd` stand-in that board_top is linted with, the PL
-//! window is the register map's, FCLK0 is the PL clock, and the PL's
+//! window is the register map's, FCLK0 is the PL clock, the PL's
 //! control interrupt reaches the PS: port `irq_f2p` (level high) on the
-//! net of `ps7/IRQ_F2P`, with the PS7's fabric interrupts enabled.
+//! net of `ps7/IRQ_F2P`, with the PS7's fabric interrupts enabled, and the
+//! bitstream's signature reaches the GPIO controller: port `emio_gpio_i`
+//! on the net of `ps7/GPIO_I`, with the PS7's EMIO GPIO enabled at the
+//! signature's width.
 use crate::verilog::{Dir, Port};
 use crate::Board;
 
@@ -21,6 +24,8 @@ pub fn problems(facts: &str, stub_ports: &[Port], board: &Board) -> Vec<String> 
     let mut irq_net = false;
     let mut irq_level = None;
     let mut f2p = (false, false);
+    let mut emio_net = false;
+    let mut emio = (false, None);
     for line in facts.lines().filter(|l| !l.trim().is_empty()) {
         let f: Vec<&str> = line.split_whitespace().collect();
         match f.as_slice() {
@@ -35,9 +40,12 @@ pub fn problems(facts: &str, stub_ports: &[Port], board: &Board) -> Vec<String> 
             ["ps7", "CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ", v] => fclk = Some(v.to_string()),
             ["ps7", "CONFIG.PCW_USE_FABRIC_INTERRUPT", v] => f2p.0 = *v == "1",
             ["ps7", "CONFIG.PCW_IRQ_F2P_INTR", v] => f2p.1 = *v == "1",
+            ["ps7", "CONFIG.PCW_GPIO_EMIO_GPIO_ENABLE", v] => emio.0 = *v == "1",
+            ["ps7", "CONFIG.PCW_GPIO_EMIO_GPIO_IO", v] => emio.1 = Some(v.to_string()),
             ["portprop", "irq_f2p", "CONFIG.SENSITIVITY", v] => irq_level = Some(v.to_string()),
             ["net", ends @ ..] => {
-                irq_net |= ends.contains(&"port:irq_f2p") && ends.contains(&"pin:ps7/IRQ_F2P")
+                irq_net |= ends.contains(&"port:irq_f2p") && ends.contains(&"pin:ps7/IRQ_F2P");
+                emio_net |= ends.contains(&"port:emio_gpio_i") && ends.contains(&"pin:ps7/GPIO_I");
             }
             _ => {}
         }
@@ -113,6 +121,26 @@ pub fn problems(facts: &str, stub_ports: &[Port], board: &Board) -> Vec<String> 
             "PS7 fabric interrupts (PCW_USE_FABRIC_INTERRUPT, PCW_IRQ_F2P_INTR) not enabled".into(),
         );
     }
+    // The firmware reads the signature in bank 2 (DATA_RO_2) before any GP0
+    // access: EMIO GPIO on, as wide as the signature, fed by board_top.
+    if !emio_net {
+        out.push(
+            "port emio_gpio_i (the bitstream's signature) is not connected to ps7/GPIO_I".into(),
+        );
+    }
+    let want_emio = crate::gen::EMIO_GPIO_WIDTH.to_string();
+    if emio != (true, Some(want_emio.clone())) {
+        out.push(format!(
+            "PS7 EMIO GPIO (PCW_GPIO_EMIO_GPIO_ENABLE, PCW_GPIO_EMIO_GPIO_IO) {emio:?}, \
+             the signature needs it enabled with {want_emio} bits"
+        ));
+    }
+    let emio_port = ports.iter().find(|p| p.0 == "emio_gpio_i");
+    if emio_port.map(|p| (p.1.as_str(), p.2)) != Some(("input", crate::gen::EMIO_GPIO_WIDTH)) {
+        out.push(format!(
+            "port emio_gpio_i {emio_port:?}: the signature needs an input of {want_emio} bits"
+        ));
+    }
     out
 }
 
@@ -130,7 +158,9 @@ mod tests {
              ps7 CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ 100\n\
              ps7 CONFIG.PCW_USE_FABRIC_INTERRUPT 1\nps7 CONFIG.PCW_IRQ_F2P_INTR 1\n\
              portprop irq_f2p CONFIG.SENSITIVITY LEVEL_HIGH\n\
-             net port:irq_f2p pin:ps7/IRQ_F2P\n",
+             net port:irq_f2p pin:ps7/IRQ_F2P\n\
+             ps7 CONFIG.PCW_GPIO_EMIO_GPIO_ENABLE 1\nps7 CONFIG.PCW_GPIO_EMIO_GPIO_IO 32\n\
+             net port:emio_gpio_i pin:ps7/GPIO_I\n",
         );
         for p in stub {
             let dir = match p.dir {
@@ -173,6 +203,26 @@ mod tests {
                 "PCW_IRQ_F2P_INTR 1",
                 "PCW_IRQ_F2P_INTR 0",
                 "fabric interrupts",
+            ),
+            (
+                "net port:emio_gpio_i pin:ps7/GPIO_I",
+                "net port:emio_gpio_i pin:ps7/GPIO_O",
+                "not connected to ps7/GPIO_I",
+            ),
+            (
+                "PCW_GPIO_EMIO_GPIO_ENABLE 1",
+                "PCW_GPIO_EMIO_GPIO_ENABLE 0",
+                "EMIO GPIO",
+            ),
+            (
+                "PCW_GPIO_EMIO_GPIO_IO 32",
+                "PCW_GPIO_EMIO_GPIO_IO 16",
+                "EMIO GPIO",
+            ),
+            (
+                "port emio_gpio_i input 32",
+                "port emio_gpio_i input 16",
+                "emio_gpio_i",
             ),
         ];
         for (from, to, needle) in cases {

@@ -119,6 +119,11 @@ pub fn xdc(b: &Board, ports: &[Port]) -> String {
     s
 }
 
+/// Width of the PS7's EMIO GPIO (GPIO 54..85, the GPIO controller's bank 2):
+/// board_top drives the 32-bit signature (the register map's `ID` value)
+/// that the firmware reads in `DATA_RO_2` before any GP0 access.
+pub const EMIO_GPIO_WIDTH: u32 = 32;
+
 /// The PS7 configuration as a Tcl list of CONFIG.* pairs plus the board
 /// facts bitstream.tcl needs.
 pub fn ps7_tcl(b: &Board) -> String {
@@ -139,6 +144,9 @@ pub fn ps7_tcl(b: &Board) -> String {
         "set pl_range {}K",
         (1usize << regmap::AXI_ADDR_BITS) / 1024
     );
+    // The width of the block design's emio_gpio_i port, the same number as
+    // PCW_GPIO_EMIO_GPIO_IO below.
+    let _ = writeln!(s, "set emio_gpio_width {EMIO_GPIO_WIDTH}");
     let bit = |v: bool| if v { "1" } else { "0" };
     let mut cfg: Vec<(String, String)> = vec![
         ("PCW_CRYSTAL_PERIPHERAL_FREQMHZ".into(), mhz(ps.ps_clk_hz)),
@@ -181,6 +189,9 @@ pub fn ps7_tcl(b: &Board) -> String {
         ("PCW_USE_M_AXI_GP0".into(), "1".into()),
         ("PCW_USE_FABRIC_INTERRUPT".into(), "1".into()),
         ("PCW_IRQ_F2P_INTR".into(), "1".into()),
+        // EMIO GPIO for the bitstream's signature (a PS read, no AXI).
+        ("PCW_GPIO_EMIO_GPIO_ENABLE".into(), "1".into()),
+        ("PCW_GPIO_EMIO_GPIO_IO".into(), EMIO_GPIO_WIDTH.to_string()),
     ]);
     s.push_str("set ps7_config [list \\\n");
     for (k, v) in cfg {
@@ -305,9 +316,12 @@ mod tests {
             "CONFIG.PCW_UART1_UART1_IO {MIO 48 .. 49}",
             "CONFIG.PCW_UIPARAM_DDR_DQS_TO_CLK_DELAY_3 {-0.061}",
             "CONFIG.PCW_USE_M_AXI_GP0 {1}",
+            "CONFIG.PCW_GPIO_EMIO_GPIO_ENABLE {1}",
+            "CONFIG.PCW_GPIO_EMIO_GPIO_IO {32}",
             "set board_part xc7z020clg484-1",
             "set pl_base 0x43C00000",
             "set pl_range 32K",
+            "set emio_gpio_width 32",
         ] {
             assert!(t.contains(line), "missing {line}");
         }

@@ -3,8 +3,9 @@
 //! driver talks to GP0 on a board, to the simulated PL under QEMU and to a
 //! fake bus in host tests.
 //!
-//! - [`presence`]: is our bitstream there? (devcfg `INT_STS.PCFG_DONE`, then
-//!   `ID`/`VERSION`) - decided before any GP0 access.
+//! - [`presence`]: is our bitstream there? (devcfg `INT_STS.PCFG_DONE`, the
+//!   EMIO GPIO signature, then `ID`/`VERSION`) - GP0 touched only once the
+//!   first two say ours.
 //! - [`top`]: mode, status, access errors, watchdog heartbeat.
 //! - [`pwm`]: gate enable, dead time, PWM period and duties
 //!   (`embedded_hal::pwm::SetDutyCycle` per leg).

@@ -10,13 +10,28 @@
 //!    on), and `FPGA_RST_CTRL` (`0xF800_0240`) does not hold
 //!    `FCLK_RESET0_N`, the reset of the design's AXI interconnect and
 //!    `pl_top` (bit 0, `FPGA0_OUT_RST`);
-//! 2. only then `ID` and `VERSION` are read over GP0; `ID` must be
+//! 2. the EMIO signature ([`gp0_access`]): our `board_top` drives the
+//!    constant [`SIGNATURE`] (the register map's `ID` value, `"PSDR"`) into
+//!    the PS7's 32 EMIO GPIO inputs, which the PS reads in the GPIO
+//!    controller's bank-2 input register `DATA_RO_2` (`0xE000_A068`,
+//!    EMIO GPIO 54..85) without any AXI access to the PL. A configured PL
+//!    whose signature is not ours is a foreign design and GP0 is not
+//!    touched at all, not even for the boot's `GATE_CTRL` write: a foreign
+//!    design neither sees a write nor gets the chance to answer one with a
+//!    bus error. The word means something only once the guard passed (the
+//!    PL configured, the PL-to-PS level shifters on), so it is read after
+//!    the guard and the guard's verdict comes first;
+//! 3. only then `ID` and `VERSION` are read over GP0; `ID` must be
 //!    [`regmap::ID_VALUE`] and the major version of `VERSION` the one this
-//!    firmware was built against.
+//!    firmware was built against. The signature makes `ID` a second line:
+//!    a design that copies the signature but not the register map is still
+//!    caught here (and a bus error here is survived, `pl.rs`).
 //!
 //! QEMU 7.2's `xilinx-zynq-a9` models devcfg; with no bitstream (QEMU cannot
 //! load one) `INT_STS` reads `0x0000_0000` after reset (measured: `status`
-//! prints it), so `PCFG_DONE` is clear and the firmware never touches GP0.
+//! prints it), so `PCFG_DONE` is clear and the firmware never touches GP0,
+//! nor the GPIO controller (QEMU 7.2 does not model it): the signature is
+//! not exercised under QEMU.
 //!
 //! An unconfigured PL alone does not mean QEMU: a board booted without our
 //! bitstream reads the same. The simulated PL (or the co-simulated RTL) is
@@ -45,6 +60,22 @@ pub const SLCR_FPGA_RST_CTRL: usize = 0xF800_0240;
 /// `FPGA_RST_CTRL.FPGA0_OUT_RST`: `FCLK_RESET0_N` held (the PL's AXI slave
 /// in reset).
 pub const FPGA0_OUT_RST: u32 = 1 << 0;
+
+/// Absolute address of the GPIO controller's `DATA_RO_2` (UG585 appendix B,
+/// `gpio`): the input value of bank 2, EMIO GPIO 54..85, bit 0 = GPIO 54.
+/// A PS register, but only readable with the controller's AMBA clock on
+/// ([`SLCR_APER_CLK_CTRL`]).
+pub const GPIO_DATA_RO_2: usize = 0xE000_A000 + 0x68;
+/// Absolute address of SLCR `APER_CLK_CTRL` (AMBA peripheral clock gates).
+pub const SLCR_APER_CLK_CTRL: usize = 0xF800_0000 + 0x12C;
+/// `APER_CLK_CTRL.GPIO_CPU_1XCLKACT`: the GPIO controller's AMBA clock.
+/// A read of a clock-gated peripheral can hang the bus, so it is set before
+/// `DATA_RO_2` is read.
+pub const GPIO_CPU_1XCLKACT: u32 = 1 << 22;
+/// What our `board_top` drives into the PS7's EMIO GPIO inputs: the
+/// register map's `ID` value (`"PSDR"`), one source of truth for the RTL
+/// (`RM_ID_RESET` in `regmap.vh`) and the firmware.
+pub const SIGNATURE: u32 = regmap::ID_VALUE;
 
 /// The three PS-side words the GP0 guard reads.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -165,7 +196,14 @@ pub enum Presence {
     /// The PL is configured but the level shifters are off or it is held
     /// in reset: GP0 must not be touched.
     Blocked(GuardFailure),
-    /// The PL is configured but `ID` is not ours (another design).
+    /// The PL is configured and reachable but its EMIO signature
+    /// (`DATA_RO_2`) is not ours: another design, GP0 must not be touched.
+    Unsigned {
+        /// What `DATA_RO_2` read.
+        signature: u32,
+    },
+    /// The signature is ours but `ID` is not (or GP0 answered with a bus
+    /// error): not our register map.
     Foreign {
         /// What `ID` read.
         id: u32,
@@ -194,9 +232,35 @@ pub const fn major(version: u32) -> u32 {
     VersionValue::from_bits(version).major()
 }
 
-/// Decides from the guard's words (read by the caller) and, only when the
-/// guard passes, `ID`/`VERSION` over `bus`. A bus error on `ID` counts as
-/// a foreign design.
+/// Whether GP0 may be touched at all, from the guard's words and the EMIO
+/// signature word (`DATA_RO_2`), both read by the caller from PS registers:
+/// `Ok` only when the guard passes and the signature is ours; otherwise
+/// what is in the PL, and GP0 stays untouched (reads and writes alike).
+/// The guard decides first: its failure is reported whatever `signature`
+/// holds, so a caller that did not read the signature (it must not before
+/// the guard passes: see `pl.rs`) may pass anything.
+pub fn gp0_access(guard: &Guard, signature: u32) -> Result<(), Presence> {
+    match guard.check() {
+        Err(GuardFailure::Unconfigured) => Err(Presence::Unconfigured),
+        Err(f) => Err(Presence::Blocked(f)),
+        Ok(()) if signature != SIGNATURE => Err(Presence::Unsigned { signature }),
+        Ok(()) => Ok(()),
+    }
+}
+
+/// What is in the PL: [`gp0_access`] first, and only when it allows GP0,
+/// `ID`/`VERSION` over `bus` ([`detect`]). What the firmware calls.
+pub fn detect_signed<B: RegisterBus>(guard: &Guard, signature: u32, bus: &mut B) -> Presence {
+    match gp0_access(guard, signature) {
+        Ok(()) => detect(guard, bus),
+        Err(p) => p,
+    }
+}
+
+/// The GP0 step of [`detect_signed`]: decides from the guard's words (read
+/// by the caller) and, only when the guard passes, `ID`/`VERSION` over
+/// `bus`. A bus error on `ID` counts as a foreign design. It does not look
+/// at the EMIO signature: call it only after [`gp0_access`] allowed GP0.
 pub fn detect<B: RegisterBus>(guard: &Guard, bus: &mut B) -> Presence {
     match guard.check() {
         Ok(()) => {}
@@ -221,14 +285,15 @@ mod tests {
     use crate::pl::fake::FakePl;
     use regmap::bus::BusError;
 
-    /// A bus that must never be touched.
+    /// A bus that must never be touched (the PL unconfigured, unreachable
+    /// or not signed as ours).
     struct Untouchable;
     impl RegisterBus for Untouchable {
         fn read(&mut self, addr: usize) -> Result<u32, BusError> {
-            panic!("GP0 read at {addr:#x} with the PL unconfigured")
+            panic!("GP0 read at {addr:#x} where GP0 must not be touched")
         }
         fn write(&mut self, addr: usize, _: u32) -> Result<(), BusError> {
-            panic!("GP0 write at {addr:#x} with the PL unconfigured")
+            panic!("GP0 write at {addr:#x} where GP0 must not be touched")
         }
     }
 
@@ -385,6 +450,110 @@ mod tests {
         assert_eq!(
             detect(&READY, &mut pl),
             Presence::Foreign { id: 0xDEAD_BEEF }
+        );
+    }
+
+    #[test]
+    fn our_emio_signature_allows_gp0() {
+        // The register map's ID, "PSDR": what board_top drives (RM_ID_RESET).
+        assert_eq!(SIGNATURE, 0x5053_4452);
+        assert_eq!(gp0_access(&READY, SIGNATURE), Ok(()));
+        let v = regmap::VERSION.reset;
+        let p = detect_signed(&READY, SIGNATURE, &mut FakePl::new());
+        assert_eq!(p, Presence::Ours { version: v });
+        assert_eq!(
+            select(p, platform(IDCODE_7Z020)),
+            Selection::Bitstream { version: v }
+        );
+        // ID stays the second line: signed as ours but another register map.
+        let mut pl = FakePl::new();
+        pl.set(regmap::TOP.addr(&regmap::ID), 0xDEAD_BEEF);
+        assert_eq!(
+            detect_signed(&READY, SIGNATURE, &mut pl),
+            Presence::Foreign { id: 0xDEAD_BEEF }
+        );
+        pl.set(regmap::TOP.addr(&regmap::ID), regmap::ID_VALUE);
+        pl.set(regmap::TOP.addr(&regmap::VERSION), v + 0x1_0000);
+        assert_eq!(
+            detect_signed(&READY, SIGNATURE, &mut pl),
+            Presence::Incompatible {
+                version: v + 0x1_0000
+            }
+        );
+    }
+
+    #[test]
+    fn a_foreign_emio_signature_keeps_gp0_untouched() {
+        // Another design's EMIO word, ours with bytes swapped or one bit
+        // off, all ones: GP0 is neither read nor written (Untouchable).
+        for sig in [
+            0x1234_5678,
+            SIGNATURE.swap_bytes(),
+            SIGNATURE ^ 1,
+            SIGNATURE ^ 0x8000_0000,
+            0xFFFF_FFFF,
+        ] {
+            let p = detect_signed(&READY, sig, &mut Untouchable);
+            assert_eq!(p, Presence::Unsigned { signature: sig });
+            assert_eq!(gp0_access(&READY, sig), Err(p));
+            assert!(!p.usable());
+            // Never driven, never simulated, on a board or in an emulator.
+            assert_eq!(select(p, platform(IDCODE_7Z020)), Selection::Absent(p));
+            assert_eq!(select(p, platform(IDCODE_QEMU)), Selection::Absent(p));
+        }
+    }
+
+    #[test]
+    fn an_all_zero_emio_signature_is_not_ours() {
+        // What a design reads that leaves the PS7's EMIO inputs undriven
+        // (Vivado ties them low): a foreign design, GP0 untouched.
+        let p = detect_signed(&READY, 0, &mut Untouchable);
+        assert_eq!(p, Presence::Unsigned { signature: 0 });
+        assert_eq!(
+            select(p, platform(IDCODE_7Z020)),
+            Selection::Absent(Presence::Unsigned { signature: 0 })
+        );
+    }
+
+    #[test]
+    fn the_guard_decides_before_the_signature() {
+        // The signature is read only once the guard passed; before that the
+        // caller passes 0 (QEMU: no GPIO read at all), and even our word
+        // cannot open GP0 while the guard fails.
+        let unconfigured = Guard {
+            int_sts: 0,
+            ..READY
+        };
+        let shifters_off = Guard {
+            lvl_shftr_en: 0x3,
+            ..READY
+        };
+        let in_reset = Guard {
+            fpga_rst_ctrl: FPGA0_OUT_RST,
+            ..READY
+        };
+        for sig in [0, SIGNATURE, 0x1234_5678] {
+            assert_eq!(
+                detect_signed(&unconfigured, sig, &mut Untouchable),
+                Presence::Unconfigured
+            );
+            assert_eq!(
+                detect_signed(&shifters_off, sig, &mut Untouchable),
+                Presence::Blocked(GuardFailure::LevelShifters(0x3))
+            );
+            assert_eq!(
+                detect_signed(&in_reset, sig, &mut Untouchable),
+                Presence::Blocked(GuardFailure::PlReset(FPGA0_OUT_RST))
+            );
+        }
+        // QEMU (PL unconfigured, signature not read): the simulated PL, as
+        // before the signature existed.
+        assert_eq!(
+            select(
+                detect_signed(&unconfigured, 0, &mut Untouchable),
+                platform(IDCODE_QEMU)
+            ),
+            Selection::Simulated
         );
     }
 }
