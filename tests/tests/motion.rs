@@ -40,7 +40,8 @@ fn move_one(mode: &str, m: Mode) {
     assert!(final_error.abs() <= 1.0, "{r:?}");
     assert!(settling <= 5.0, "{r:?}");
     assert!(num(&r, "overshoot") <= 2.0, "{r:?}");
-    assert!((num(&r, "move_time") - 90.0).abs() < 1e-6, "{r:?}");
+    // The default 100 rev/s^2: a 200 ms triangle.
+    assert!((num(&r, "move_time") - 200.0).abs() < 1e-6, "{r:?}");
     let (h, _) = drivectl::motion::run_move(m, &[("locked", 0.0)], 1.0, 0.02).unwrap();
     println!("{mode}: move 1 on the host: {h:?}");
     assert!(
@@ -242,8 +243,19 @@ fn move_in_one_write(s: &mut Session) -> drivectl::link::Reply {
 /// A 2 ms alignment (the default 0.2 s is most of a minute of wall time
 /// in co-simulation): a fresh boot's rotor starts on the d axis (angle 0).
 /// The configuration write costs no control step (no overrun, no fault).
+/// The bare rotor's tuned gains (the README's gain rule for its known
+/// inertia, rounded): a 90 ms move instead of the default 200 ms, less PL
+/// time to co-simulate.
 fn short_align(s: &mut Session) {
     assert_ok(&cmd(s, "config set mpdtc_align_time 200000"));
+    for (name, v) in [
+        ("traj_accel_limit", 500.0),
+        ("vel_kp", 0.25),
+        ("vel_ki", 30.0),
+        ("pos_kp", 100.0),
+    ] {
+        assert_ok(&cmd(s, &format!("config set {name} {v}")));
+    }
     let st = cmd(s, "status");
     assert_eq!(num(&st, "overruns"), 0.0, "{st:?}");
     assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
@@ -276,23 +288,15 @@ fn move_one_revolution_on_the_rtl_matches_the_simulated_pl() {
             "{key}: RTL {a}, simulated PL {b}"
         );
     }
-    // Within 5 % or two digits of the printed figure (0.2 count). The
+    // The figures agree within a count (the loop above), not closer: the
     // control step's position is ENC_POS_SAMPLE, latched at the boundary on
-    // both PLs, so the bus models' access times (the live ENC_POS read came
-    // 174..1453 PL cycles after the boundary on the RTL, 8 on the simulated
-    // PL, and differed from the sample by a count in 7 % of the periods)
-    // no longer move it. Measured (RTL against simulated PL) 1.1/1.1,
-    // 1.1/1.0, 1.1/1.0, 1.2/1.1 counts: the simulated PL alone spreads
-    // 1.0..1.1 counts from run to run (overshoot 0..1, final error -1..0),
-    // what still depends on guest time (the period the move starts in, a
-    // slow step's torque-reference write), and the RTL 1.1..1.2: the bound
-    // is the two runs' spreads added, two printed digits (0.2 count).
-    let fe = num(&r_sim, "max_following_error");
-    let fe_rtl = num(&r_rtl, "max_following_error");
-    assert!(
-        (fe_rtl / fe - 1.0).abs() <= 0.05 || (fe_rtl - fe).abs() <= 0.2 + 1e-9,
-        "{r_rtl:?} {r_sim:?}"
-    );
+    // both PLs, but the step's torque-reference write still lands at a
+    // guest-time latency, which host load moves (QEMU without -icount on
+    // the simulated PL): the maximum following error measured 1.0..1.1
+    // counts on the simulated PL and 1.1..1.2 on the RTL on an idle
+    // machine, 1.4 and 1.7 in one run beside two busy loops (`scripts/bench
+    // flaky`: a bound of 0.2 count failed one loaded run in 14). The PL's
+    // own arithmetic is held bit-exact by the RTL tests, not here.
     let st = cmd(&mut rtl, "status");
     assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
     assert_eq!(num(&st, "overruns"), 0.0, "{st:?}");
@@ -343,4 +347,46 @@ fn pos_zero_during_the_mpdtc_alignment_is_refused_until_it_ends() {
     assert_eq!(field(&st, "loop"), Some("position"), "{st:?}");
     assert_eq!(num(&st, "position_ref"), 1.0, "{st:?}");
     assert!((num(&st, "position") - 1.0).abs() <= 2.0 / 4096.0, "{st:?}");
+}
+
+/// A load the drive was not told about, with the default gains (the
+/// corners of `drivectl`'s `motion::tests::robustness_table` under QEMU):
+/// the true inertia 10 times `load_inertia` in MPDTC and 0.3 times in FOC,
+/// each with Coulomb friction of 5 % of the 1 N m torque limit; `move 1`
+/// with a 300 ms window settles into +-2 counts and ends there, within a
+/// count of the host simulation's final error.
+#[test]
+fn a_move_on_a_load_it_was_not_told_about_ends_within_two_counts() {
+    for (jm, mode, m) in [(10.0, "mpdtc", Mode::Mpdtc), (0.3, "foc", Mode::Foc)] {
+        let j = 8.1e-5 * jm;
+        let mut s = boot();
+        for c in [
+            "sim set locked 0".to_string(),
+            format!("sim set j {j}"),
+            "sim set coulomb 0.05".to_string(),
+            format!("mode {mode}"),
+            "enable".to_string(),
+        ] {
+            assert_ok(&cmd(&mut s, &c));
+        }
+        let end = Instant::now() + SLOW;
+        while cmd(&mut s, "status")
+            .lines
+            .iter()
+            .any(|l| l.starts_with("alignment: running"))
+        {
+            assert!(Instant::now() < end, "alignment");
+        }
+        let r = cmd(&mut s, "move 1 300");
+        assert_ok(&r);
+        println!("{jm}x, {mode}: {:?}", r.lines);
+        assert!(num(&r, "settling_time") < 300.0, "{r:?}");
+        let fe = num(&r, "final_error");
+        assert!(fe.abs() <= 2.0, "{r:?}");
+        let sim = [("locked", 0.0), ("j", j), ("coulomb", 0.05)];
+        let (h, _) = drivectl::motion::run_move(m, &sim, 1.0, 0.3).unwrap();
+        assert!((fe - h.final_error_counts).abs() <= 1.0, "{r:?} vs {h:?}");
+        let st = cmd(&mut s, "status");
+        assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
+    }
 }

@@ -339,7 +339,7 @@ pub const PARAMS: [Param; N_PARAMS] = [
         "Nm s/rev",
         0.0,
         10.0,
-        0.25,
+        0.5,
         "velocity loop proportional gain (vel, pos, move)",
     ),
     real(
@@ -347,7 +347,7 @@ pub const PARAMS: [Param; N_PARAMS] = [
         "Nm/rev",
         0.0,
         10_000.0,
-        30.0,
+        60.0,
         "velocity loop integral gain (anti-windup: conditional integration)",
     ),
     real(
@@ -355,7 +355,7 @@ pub const PARAMS: [Param; N_PARAMS] = [
         "1/s",
         0.0,
         2000.0,
-        100.0,
+        40.0,
         "position loop gain: velocity command per position error, (rev/s)/rev",
     ),
     real(
@@ -379,7 +379,7 @@ pub const PARAMS: [Param; N_PARAMS] = [
         "rev/s^2",
         1.0,
         100_000.0,
-        500.0,
+        100.0,
         "trajectory acceleration limit (pos, move) and vel's acceleration limit",
     ),
     real(

@@ -52,17 +52,29 @@ pub struct MotionConfig {
 }
 
 impl Default for MotionConfig {
-    /// Tuned for the paper's motor as a bare rotor (8.1e-5 kg m^2): a
-    /// velocity loop of about 80 Hz (`vel_kp` = J 2 pi w_v, w_v = 2 pi 80
-    /// Hz), its integrator a quarter of that, the position loop at 100/s.
+    /// Robust to a load the drive was not told about: every `move` stays
+    /// stable and ends within 2 counts with the true inertia anywhere from
+    /// 0.3 to 10 times `load_inertia` (the paper's bare rotor, 8.1e-5
+    /// kg m^2: 2.4e-5 to 8.1e-4) and Coulomb friction up to 5 % of the
+    /// torque limit (`drivectl`'s `motion::tests::robustness_table`). The
+    /// velocity loop's bandwidth `vel_kp / (2 pi J)` is 156 Hz on the bare
+    /// rotor and 16 Hz at 10x, still 2.5 times the position loop's 40/s;
+    /// its integrator a fifth of the bare rotor's (`vel_ki / vel_kp` =
+    /// 120/s); 100 rev/s^2 needs half the 1 N m torque limit at 10x (500
+    /// rev/s^2 would need 2.5 N m: the trajectory ran away from the rotor
+    /// and the move overshot by 0.7 rev). A known inertia J
+    /// (`calibrate mechanics`) allows the faster gain rule of the README
+    /// ("Tuning the outer loops"): `vel_kp` = 3100 J, `vel_ki` = 120
+    /// `vel_kp`, `pos_kp` = 100, `traj_accel_limit` = 0.25 `torque_limit` /
+    /// (2 pi J).
     fn default() -> Self {
         Self {
-            vel_kp: 0.25,
-            vel_ki: 30.0,
-            pos_kp: 100.0,
+            vel_kp: 0.5,
+            vel_ki: 60.0,
+            pos_kp: 40.0,
             load_inertia_kg_m2: 8.1e-5,
             traj_vel_limit: 20.0,
-            traj_accel_limit: 500.0,
+            traj_accel_limit: 100.0,
             vel_limit: 50.0,
             pos_min: -1000.0,
             pos_max: 1000.0,
@@ -582,7 +594,8 @@ mod tests {
     fn a_move_on_an_ideal_inertia_is_scored() {
         // Rotor of 8.1e-5 kg m^2 driven by the torque reference directly,
         // the encoder quantised to 4096 counts: the default tuning moves 1
-        // rev at 20 rev/s and 500 rev/s^2 in 90 ms and settles at once.
+        // rev at 100 rev/s^2 (a triangle peaking at 10 rev/s) in 200 ms
+        // and settles at once.
         let c = MotionConfig::default();
         let (j, dt) = (8.1e-5 * core::f64::consts::TAU, 1.0 / 16_000.0);
         let mut m = Motion::new(4096).unwrap();
@@ -600,7 +613,7 @@ mod tests {
             assert!(n < 20_000);
         }
         let r = m.move_result().unwrap();
-        assert!((r.move_time_s - 0.09).abs() < 1e-9);
+        assert!((r.move_time_s - 0.2).abs() < 1e-9);
         assert!(r.final_error_counts.abs() <= 1.0, "{r:?}");
         assert!(r.settling_s.unwrap() <= 5e-3, "{r:?}");
         assert!(r.overshoot_counts <= 2.0, "{r:?}");
