@@ -121,8 +121,9 @@ fn velocity_loop_reaches_10_rev_s() {
     let mut s = boot();
     free_rotor_foc(&mut s);
     assert_ok(&cmd(&mut s, "vel 10"));
-    // The ramp takes 20 ms at 500 rev/s^2; 20 ms more to settle.
-    let a = run_periods(&mut s, 640);
+    // The ramp takes 100 ms at the default 100 rev/s^2; 20 ms more to
+    // settle (16 kHz FOC periods).
+    let a = run_periods(&mut s, 1920);
     let b = run_periods(&mut s, 320);
     let dp = num(&b, "position") - num(&a, "position");
     let dt = (num(&b, "periods") - num(&a, "periods")) / num(&b, "control_rate");
