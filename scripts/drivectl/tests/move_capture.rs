@@ -12,7 +12,8 @@ use drivectl::motion::{run, setup};
 
 #[test]
 fn a_move_record_holds_the_servos_position_velocity_and_following_error() {
-    for (mode, every) in [(Mode::Mpdtc, 8u32), (Mode::Mpdtc, 1), (Mode::Foc, 3)] {
+    // 16 and 4: 256 ms of record, the default gains' 200 ms move whole.
+    for (mode, every) in [(Mode::Mpdtc, 16u32), (Mode::Mpdtc, 1), (Mode::Foc, 4)] {
         let (mut s, mut d) = setup(mode, &[("locked", 0.0)], 3e-3).unwrap();
         s.capture_arm(&mut d, Trigger::Manual, 0, every).unwrap();
         // Runs a while armed (the restart must empty the ring).
@@ -56,7 +57,7 @@ fn a_move_record_holds_the_servos_position_velocity_and_following_error() {
         // Not a record of a rotor at rest: the move is in it.
         let span = 1024.0 * f64::from(every) / s.control_rate_hz();
         println!("{mode:?} every {every}: {span:.4} s recorded, {moved} counts reached");
-        if span > 0.1 {
+        if span > 0.21 {
             assert!((moved - 4096.0).abs() <= 3.0, "{moved}");
         } else {
             assert!(moved > 0.0, "{moved}");
