@@ -15,7 +15,6 @@ fn ctx() -> Context {
             lines: 5,
             errors: 2,
             rx_overruns: 0,
-            log_dropped: 0,
         },
     }
 }
