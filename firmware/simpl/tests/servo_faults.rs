@@ -85,9 +85,9 @@ fn gates_go_off_within_one_control_period_on_the_simulated_pl() {
     }
 }
 
-/// The servo on a fresh simulated PL with the paper's motor, in `mode`,
-/// gates on.
-fn enabled(mode: Mode) -> (Servo, SimDrive) {
+/// A servo initialised on a fresh simulated PL with the paper's motor
+/// (gates off, mode off).
+fn fresh() -> (Servo, SimDrive) {
     let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
     let mut s = Servo::new(&ServoConfig::for_plant(
         sim.config().motor,
@@ -95,6 +95,12 @@ fn enabled(mode: Mode) -> (Servo, SimDrive) {
     ))
     .unwrap();
     s.init(&mut sim).unwrap();
+    (s, sim)
+}
+
+/// [`fresh`], in `mode`, gates on.
+fn enabled(mode: Mode) -> (Servo, SimDrive) {
+    let (mut s, mut sim) = fresh();
     s.set_mode(&mut sim, mode).unwrap();
     s.enable(&mut sim).unwrap();
     (s, sim)
@@ -120,13 +126,7 @@ fn gates_off_after(sim: &mut SimDrive, cause: impl FnOnce(&mut SimDrive)) -> u64
 /// direction, with the gates on and off.
 #[test]
 fn mode_changes_on_the_simulated_pl_raise_no_fault() {
-    let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
-    let mut s = Servo::new(&ServoConfig::for_plant(
-        sim.config().motor,
-        sim.config().adc_amps_per_count,
-    ))
-    .unwrap();
-    s.init(&mut sim).unwrap();
+    let (mut s, mut sim) = fresh();
     for (k, mode) in [Mode::Mpdtc, Mode::Foc, Mode::Off, Mode::Foc, Mode::Mpdtc]
         .into_iter()
         .cycle()
