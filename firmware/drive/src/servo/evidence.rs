@@ -337,6 +337,22 @@ impl FastTier {
 use models::pmsm::frames::{clarke, inv_clarke, inv_park, park};
 use models::pmsm::mpdtc_ref::MpdtcConfig;
 
+/// Whether `delta` new ADC results since the last step's read are what
+/// one control period of `period_cycles` gives with one result every
+/// `result_cycles` (the lower or the upper whole number when they do not
+/// divide). Anything else pairs the step's currents with another period
+/// than its voltage: a boundary served without a step (an overrun) leaves
+/// that period's voltage out, and a step that read the ADC after the next
+/// result (a late start) has the next period's currents, and the step
+/// after it none. The checks of a period need the voltage that made its
+/// currents, so they start afresh there.
+pub fn results_regular(delta: u32, period_cycles: u32, result_cycles: u32) -> bool {
+    let r = result_cycles.max(1);
+    let lo = period_cycles / r;
+    let hi = period_cycles.div_ceil(r);
+    (lo..=hi).contains(&delta)
+}
+
 /// Window of both checks, s.
 pub const WINDOW_S: f64 = 0.5e-3;
 /// Relative error of the controller's `R` and `L` against the motor's
@@ -627,6 +643,24 @@ mod tests {
         let c = counts_in_period(3.0, 0.0093, 7, 4096, TS);
         assert!((c - 3.0 / 0.0093 / 7.0 * TS * 4096.0 / core::f64::consts::TAU).abs() < 1e-12);
         assert!((1.8..1.9).contains(&c), "{c}");
+    }
+
+    /// Hand-computed: FOC 6256 cycles over 1564-cycle results is 4 a
+    /// period; the MPDTC's period is one result; 6256 over 1500 is 4 or
+    /// 5. An overrun doubles the count, a late read takes one from the
+    /// next period.
+    #[test]
+    fn regular_result_counts() {
+        assert!(results_regular(4, 6256, 1564));
+        assert!(!results_regular(8, 6256, 1564));
+        assert!(!results_regular(5, 6256, 1564));
+        assert!(!results_regular(3, 6256, 1564));
+        assert!(results_regular(1, 1564, 1564));
+        assert!(!results_regular(0, 1564, 1564));
+        assert!(!results_regular(2, 1564, 1564));
+        assert!(results_regular(4, 6256, 1500) && results_regular(5, 6256, 1500));
+        assert!(!results_regular(3, 6256, 1500) && !results_regular(6, 6256, 1500));
+        assert!(results_regular(7, 7, 0));
     }
 
     /// The fault matrix's false `ENCODER_DEAD` on the co-simulated

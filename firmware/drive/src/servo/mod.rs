@@ -1340,6 +1340,16 @@ impl Servo {
         // boundary, and a count read after it would make the step that
         // serves that boundary see no new result.
         let (adc_count, i_abc) = Adc(&mut *bus).count_and_currents_a(&self.cfg.adc)?;
+        // The period's currents belong to its voltage only if one period's
+        // results came since the last step's read.
+        let results_regular = self.last_adc_count.is_none_or(|l| {
+            let result = 4 * self.cfg.adc_period_cycles;
+            let period = match self.mode {
+                Mode::Foc => 2 * self.cfg.foc_half_period_cycles,
+                _ => result,
+            };
+            evidence::results_regular(adc_count.wrapping_sub(l), period, result)
+        });
         // The autonomous loop: the PL computes the core's inputs itself.
         let auto = self.mode == Mode::Mpdtc && !self.cfg.mpdtc_ps_fed;
         // The position of the boundary's instant, as the currents: a live
@@ -1430,6 +1440,15 @@ impl Servo {
         }
         // The checks of `evidence` last: a fault already found latches
         // without waiting for their arithmetic.
+        if gates && running && !results_regular {
+            // A period left out or taken from the next: the one-period
+            // checks and the window start afresh, and judge again once the
+            // voltage applied is again that of the steps seen (as after a
+            // start).
+            self.enc_dead.reset();
+            self.fast.reset();
+            self.evidence_skip = EVIDENCE_SKIP;
+        }
         if gates && running && ps & !self.ps_faults == 0 {
             ps |= self.evidence_checks(enc.pos, i_abc, &m, torque_ref_nm);
         } else if !(gates && running) {
