@@ -121,6 +121,7 @@ fn run_console(con: &mut Uart) -> ! {
     let mut drive = control::FwDrive::new();
     loop {
         drive.background();
+        log::drain();
         let Some(b) = next_byte() else { continue };
         let echo_to = *con;
         let Some(result) = editor.feed(b, &mut |e| echo_to.write_bytes(e)) else {
@@ -155,6 +156,9 @@ fn run_console(con: &mut Uart) -> ! {
                 let _ = console::write_line_error(con, e);
             }
         }
+        // The command's log frames toward UART0 before the prompt (the
+        // tick moves whatever the FIFO had no room for).
+        log::drain();
         con.write_bytes(PROMPT.as_bytes());
     }
 }
@@ -171,6 +175,7 @@ fn context(lines: u32, errors: u32) -> Context {
             lines,
             errors,
             rx_overruns: RX.overruns.load(Ordering::Relaxed),
+            log_dropped: log::dropped(),
         },
     }
 }
@@ -211,6 +216,7 @@ fn irq_handler() {
                 timer::ack_private();
                 TICKS.fetch_add(1, Ordering::Relaxed);
                 control::on_tick();
+                log::drain();
             }
             gic::IRQ_GLOBAL_TIMER => control::on_pl_tick(),
             control::IRQ_CONTROL => control::on_control(),

@@ -138,7 +138,9 @@ pub fn run() -> Option<Bench> {
     let mpdcc_expm = count(|| {
         core::hint::black_box(expm(core::hint::black_box(&a)));
     });
+    let log_frame = count(crate::log::bench_frame);
     Some(Bench {
+        log_frame,
         foc_step,
         mpdtc_period,
         mpdcc_boundary,

@@ -22,6 +22,8 @@ fn console() -> uart::Uart {
 }
 
 fn halt(con: &mut uart::Uart) -> ! {
+    // The log frames still in the RAM ring (gates already off).
+    crate::log::drain_blocking();
     match crate::control::gates_off_read_back() {
         Some(on) => {
             let _ = write!(con, "gate_en: {} (read back)\r\n", u8::from(on));

@@ -145,6 +145,7 @@ fn context() -> Context {
             lines: 0,
             errors: 0,
             rx_overruns: 0,
+            log_dropped: 0,
         },
     }
 }

@@ -168,3 +168,24 @@ fn swapped_current_channels_refuse_the_first_enable() {
 fn an_inverted_current_channel_refuses_the_first_enable() {
     refused_on("adc-invert", "current channel a inverted");
 }
+
+/// The logger masks the interrupts only while it encodes a frame into its
+/// RAM ring (`drive::logring`): a frame of a console line's size costs at
+/// most 2,000 guest instructions (QEMU `-icount shift=0`, `debug bench`),
+/// 3 us at the A9's 666 MHz, far inside a 15.6 us FOC period. Written to
+/// UART0 at 115200 baud with the interrupts off it held them off for
+/// 86.8 us a byte past the 64-byte FIFO on a board (QEMU's UART has no
+/// baud timing). The frames still reach UART0 (`console.rs`'s defmt test).
+#[test]
+fn a_log_frame_masks_the_interrupts_for_at_most_2000_instructions() {
+    let mut q = drivectl::link::Qemu::new(elf());
+    q.icount = true;
+    let mut s = drivectl::link::Session::spawn_qemu(&q, std::time::Duration::from_secs(60))
+        .expect("firmware boots");
+    let r = cmd(&mut s, "debug bench");
+    assert_ok(&r);
+    let n = num(&r, "log_frame");
+    assert!(n > 100.0 && n <= 2000.0, "{r:?}");
+    let st = cmd(&mut s, "status");
+    assert_eq!(field(&st, "log"), Some("0"), "{st:?}");
+}

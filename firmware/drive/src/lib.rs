@@ -17,6 +17,7 @@
 //!   timer loads), tested on the host.
 //! - [`telemetry`]: the live channel stream on the console UART.
 //! - [`mmu`]: the flat translation table (memory types of the address map).
+//! - [`logring`]: the log's RAM ring (whole frames, drained to the UART).
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 
@@ -25,6 +26,7 @@ pub mod console;
 #[cfg(test)]
 mod doc_figures;
 pub mod hil;
+pub mod logring;
 pub mod mmu;
 pub mod pl;
 pub mod servo;

@@ -108,6 +108,18 @@ impl Uart {
         unsafe { r.fifo.write(u32::from(b)) };
     }
 
+    /// Puts `b` into the TX FIFO if it has room; `false` (nothing
+    /// written) when it is full.
+    pub fn try_write_byte(&self, b: u8) -> bool {
+        let r = self.regs();
+        if r.sr.read() & SR_TFUL != 0 {
+            return false;
+        }
+        // SAFETY: writing a data byte to the FIFO.
+        unsafe { r.fifo.write(u32::from(b)) };
+        true
+    }
+
     pub fn write_bytes(&self, bytes: &[u8]) {
         for &b in bytes {
             self.write_byte(b);

@@ -166,6 +166,8 @@ pub struct Status {
     pub errors: u32,
     /// Received bytes lost because the receive buffer was full.
     pub rx_overruns: u32,
+    /// Log frames dropped because the log's RAM ring was full.
+    pub log_dropped: u32,
 }
 
 /// What the commands need to know about the firmware.

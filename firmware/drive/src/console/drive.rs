@@ -144,6 +144,9 @@ pub struct Bench {
     /// A transition matrix the plant's cache misses (9 x 9 matrix
     /// exponential), instructions.
     pub mpdcc_expm: u32,
+    /// One `defmt` frame of a console line's size encoded into the log's
+    /// RAM ring: the logger's interrupts-off window, instructions.
+    pub log_frame: u32,
     /// Repetitions each figure is the minimum of.
     pub runs: u32,
 }

@@ -131,6 +131,7 @@ pub fn execute<W: Write>(
             write!(out, "mpdtc_period: {} instructions\r\n", b.mpdtc_period)?;
             write!(out, "mpdcc_boundary: {} instructions\r\n", b.mpdcc_boundary)?;
             write!(out, "mpdcc_expm: {} instructions\r\n", b.mpdcc_expm)?;
+            write!(out, "log_frame: {} instructions\r\n", b.log_frame)?;
             write!(out, "runs: {}\r\n", b.runs)?;
         }
         DebugCmd::FlashPace(ms) => {

@@ -66,6 +66,7 @@ pub fn execute<W: Write>(
                 "console: {} lines, {} errors, {} rx overruns\r\n",
                 s.lines, s.errors, s.rx_overruns
             )?;
+            write!(out, "log: {} frames dropped (ring full)\r\n", s.log_dropped)?;
             write_status(out, &drv.status())?;
             match drv.sensor_check_due() {
                 Some(true) => out.write_str("sensor_check: due (runs at the next enable)\r\n")?,

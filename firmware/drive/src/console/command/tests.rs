@@ -15,6 +15,7 @@ fn ctx() -> Context {
             lines: 5,
             errors: 2,
             rx_overruns: 0,
+            log_dropped: 0,
         },
     }
 }
