@@ -98,6 +98,121 @@ impl<const N: usize> Lsq<N> {
     }
 }
 
+/// A weighted least-squares fit: coefficients, their covariance from the
+/// rows' stated uncertainties alone, and the reduced chi-square of the
+/// residuals (about 1 when the stated uncertainties are right).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Weighted<const N: usize> {
+    /// Coefficients.
+    pub b: [f64; N],
+    /// Their covariance from the rows' uncertainties, `(X' W X)^-1`.
+    pub cov: [[f64; N]; N],
+    /// Sum of the squared residuals in units of their uncertainties over
+    /// the degrees of freedom.
+    pub chi2: f64,
+}
+
+impl<const N: usize> Weighted<N> {
+    /// Standard uncertainty of coefficient `j`: the stated uncertainties'
+    /// share, scaled up when the residuals are larger than they allow
+    /// (never down: a few degrees of freedom can scatter small by chance).
+    pub fn sigma(&self, j: usize) -> f64 {
+        libm::sqrt(self.cov[j][j].max(0.0) * self.chi2.max(1.0))
+    }
+}
+
+/// Weighted least squares over the rows (regressors, value, standard
+/// uncertainty of the value); `None` with too few rows, a row without a
+/// finite positive uncertainty, or singular regressors. The columns are
+/// scaled to unit norm first: the unknowns may differ by many orders of
+/// magnitude.
+pub fn weighted<const N: usize>(rows: &[([f64; N], f64, f64)]) -> Option<Weighted<N>> {
+    if rows.iter().any(|r| !(r.2 > 0.0 && r.2.is_finite())) {
+        return None;
+    }
+    let mut norm = [0.0; N];
+    for (x, _, s) in rows {
+        for (n, xi) in norm.iter_mut().zip(x) {
+            *n += (xi / s) * (xi / s);
+        }
+    }
+    let norm = norm.map(libm::sqrt);
+    if norm.iter().any(|n| !(*n > 0.0 && n.is_finite())) {
+        return None;
+    }
+    let mut f = Lsq::<N>::default();
+    for (x, y, s) in rows {
+        let mut xs = [0.0; N];
+        for ((v, xi), n) in xs.iter_mut().zip(x).zip(&norm) {
+            *v = xi / s / n;
+        }
+        f.add(xs, y / s);
+    }
+    let sol = f.solve()?;
+    let inv = invert(&f.xtx)?;
+    let mut b = sol.b;
+    let mut cov = inv;
+    for i in 0..N {
+        b[i] /= norm[i];
+        for j in 0..N {
+            cov[i][j] /= norm[i] * norm[j];
+        }
+    }
+    Some(Weighted {
+        b,
+        cov,
+        chi2: sol.rms * sol.rms,
+    })
+}
+
+/// Generalised least squares: as [`weighted`] with the values' errors
+/// correlated, `cov` their covariance. The rows are whitened by the
+/// covariance's Cholesky factor (`L^-1`) and fitted with unit
+/// uncertainties; `None` when `cov` is not positive definite or the fit
+/// singular.
+pub fn generalised<const N: usize, const M: usize>(
+    x: &[[f64; N]; M],
+    y: &[f64; M],
+    cov: &[[f64; M]; M],
+) -> Option<Weighted<N>> {
+    let l = cholesky(cov)?;
+    let mut rows = [([0.0; N], 0.0, 1.0); M];
+    // Forward substitution, one row at a time: row i of L^-1 [X y].
+    for i in 0..M {
+        let mut xi = x[i];
+        let mut yi = y[i];
+        for k in 0..i {
+            for (a, b) in xi.iter_mut().zip(&rows[k].0) {
+                *a -= l[i][k] * b;
+            }
+            yi -= l[i][k] * rows[k].1;
+        }
+        rows[i] = (xi.map(|v| v / l[i][i]), yi / l[i][i], 1.0);
+    }
+    weighted(&rows)
+}
+
+/// Lower Cholesky factor of a symmetric positive definite matrix; `None`
+/// when it is not.
+fn cholesky<const M: usize>(a: &[[f64; M]; M]) -> Option<[[f64; M]; M]> {
+    let mut l = [[0.0; M]; M];
+    for i in 0..M {
+        for j in 0..=i {
+            let s: f64 = (0..j).map(|k| l[i][k] * l[j][k]).sum();
+            if i == j {
+                let d = a[i][i] - s;
+                if !(d > 0.0 && d.is_finite()) {
+                    return None;
+                }
+                l[i][i] = libm::sqrt(d);
+            } else {
+                l[i][j] = (a[i][j] - s) / l[j][j];
+            }
+        }
+    }
+    Some(l)
+}
+
 /// Inverse of a small symmetric positive matrix (Gauss-Jordan, partial
 /// pivoting); `None` when singular.
 fn invert<const N: usize>(m: &[[f64; N]; N]) -> Option<[[f64; N]; N]> {
@@ -219,6 +334,55 @@ mod tests {
         }
         assert!(g.solve().is_none());
         assert!(Lsq::<2>::default().solve().is_none());
+    }
+
+    /// Two unknowns a million apart in size, rows of different
+    /// uncertainty: recovered, the covariance from the uncertainties, the
+    /// chi-square about one.
+    #[test]
+    fn weighted_fit_of_disparate_unknowns() {
+        let mut r = Rng(5);
+        let mut rows = [([0.0; 2], 0.0, 0.0); 200];
+        for (k, row) in rows.iter_mut().enumerate() {
+            let x = f64::from(k as u32) / 20.0;
+            let s = if k % 2 == 0 { 1e-3 } else { 3e-3 };
+            // y = 2e-6 x + 3.0, noise of standard deviation s (uniform).
+            let y = 2e-6 * x + 3.0 + s * 3f64.sqrt() * r.uniform(-1.0, 1.0);
+            *row = ([x, 1.0], y, s);
+        }
+        let w = weighted(&rows).unwrap();
+        assert!((w.b[0] - 2e-6).abs() < 3.0 * w.sigma(0), "{w:?}");
+        assert!((w.b[1] - 3.0).abs() < 3.0 * w.sigma(1), "{w:?}");
+        assert!((w.chi2 - 1.0).abs() < 0.3, "{w:?}");
+        rows[0].2 = 0.0;
+        assert!(weighted(&rows).is_none());
+    }
+
+    /// Errors that accumulate (a random walk) fitted by generalised least
+    /// squares: the same line as with the steps' own errors, independent.
+    #[test]
+    fn generalised_fit_of_a_random_walk() {
+        const M: usize = 8;
+        let mut r = Rng(9);
+        let (mut x, mut y) = ([[0.0; 2]; M], [0.0; M]);
+        let mut walk = 0.0;
+        let mut cov = [[0.0; M]; M];
+        for i in 0..M {
+            walk += 0.01 * 3f64.sqrt() * r.uniform(-1.0, 1.0);
+            let t = f64::from(i as u32);
+            x[i] = [t, 1.0];
+            y[i] = 0.5 * t + 2.0 + walk;
+            for (j, c) in cov[i].iter_mut().enumerate() {
+                *c = 1e-4 * f64::from(i.min(j) as u32 + 1);
+            }
+        }
+        let g = generalised(&x, &y, &cov).unwrap();
+        // The slope from the steps: their mean, its error 0.01 / sqrt(7).
+        let steps: f64 = (1..M).map(|i| y[i] - y[i - 1]).sum::<f64>() / 7.0;
+        assert!((g.b[0] - steps).abs() < 1e-12, "{g:?} {steps}");
+        assert!((libm::sqrt(g.cov[0][0]) - 0.01 / 7f64.sqrt()).abs() < 1e-12);
+        cov[0][0] = -1.0;
+        assert!(generalised(&x, &y, &cov).is_none());
     }
 
     #[test]

@@ -3,6 +3,7 @@
 //! the fits accumulate sums as the samples arrive and are solved when the
 //! phase ends.
 use super::fit::{Lsq, Mean};
+use super::mech::{self, first, level, reversed, Spin, Window, COUNT_PAIR_SIGMA, LEVELS, WINDOWS};
 use super::{
     bounds, Command, EncoderEst, Estimate, Measurement, MechEst, Outcome, Phase, Results, Setup,
 };
@@ -33,7 +34,12 @@ const L_STEPS: usize = 4;
 const SPIN_SETTLE: u32 = 768;
 const SPIN_AVG: u32 = 512;
 /// Spin speeds, fractions of the top speed.
-const SPIN_LEVELS: [f64; 3] = [0.35, 0.65, 0.95];
+const SPIN_LEVELS: [f64; LEVELS] = [0.35, 0.65, 0.95];
+/// Periods from a reversal of i_d to the next window: the current settles
+/// in a few periods, the speed loop takes up most of the torque step the
+/// frame's error makes of it (its windows follow the rest).
+const FLIP_SETTLE: u32 = 256;
+
 /// Periods over which the speed is measured for the speed loop.
 const SPEED_WINDOW: usize = 16;
 /// Current ramp periods (up or down).
@@ -57,7 +63,10 @@ enum Stage {
     SpinPre,
     SpinAccel(usize),
     SpinSettle(usize),
+    /// Window `h` (see [`mech::WINDOWS`]).
     SpinAvg(usize),
+    /// i_d reversed before window `h`, settling.
+    SpinFlip(usize),
     SpinStop,
     Release,
     Finished,
@@ -75,6 +84,29 @@ struct Pi {
 /// Finite and above zero (NaN is not).
 fn positive(x: f64) -> bool {
     x > 0.0 && x.is_finite()
+}
+
+/// The estimates with no bound on their errors (infinite sigmas).
+fn unbounded(e: MechEst) -> MechEst {
+    let inf = |v: Estimate| Estimate {
+        sigma: f64::INFINITY,
+        ..v
+    };
+    MechEst {
+        j: inf(e.j),
+        b: inf(e.b),
+        coulomb: inf(e.coulomb),
+    }
+}
+
+/// A friction, which cannot be negative: a fit below zero is reported as
+/// zero with its sigma, which still covers the truth (the truth is at
+/// least zero, so it is nearer zero than the fit).
+fn non_negative((value, sigma): (f64, f64)) -> Estimate {
+    Estimate {
+        value: value.max(0.0),
+        sigma,
+    }
 }
 
 fn clamp_circle((x, y): (f64, f64), r: f64) -> (f64, f64) {
@@ -143,14 +175,11 @@ impl Line {
     }
 }
 
-/// A snapshot for the inertia fit: time, position, integral of i_q.
-#[derive(Debug, Clone, Copy, Default)]
-struct Snap {
-    k: u64,
-    pos: i64,
-    iq_int: f64,
-    w_m: f64,
-}
+/// The means of one averaging window: v_d, v_q, i_d, i_q (V, A; the
+/// flux fit), then the running quantities at the ends of its periods:
+/// angle (rad), time (s), integrals of i_d and i_q over time (A s) and
+/// over the angle (A rad; the mechanics fit).
+type WindowMeans = [Mean; 10];
 
 /// The calibration in progress (see the module doc of [`super`]).
 pub struct Calibrator {
@@ -199,12 +228,13 @@ pub struct Calibrator {
     // Spin.
     w_ref: f64,
     w_int: f64,
-    iq_int: f64,
-    spin_v: [[Mean; 4]; 3],
-    spin_pos: [(i64, u64); 3],
-    /// Acceleration over each speed window (second half against first), rad/s^2.
-    spin_acc: [f64; 3],
-    snaps: [Snap; 4],
+    /// Integrals of the measured (i_d, i_q) over time, A s.
+    i_int: (f64, f64),
+    /// Integrals of the measured (i_d, i_q) over the mechanical angle, A rad.
+    i_th: (f64, f64),
+    spin_v: [WindowMeans; WINDOWS],
+    /// Each window's (position counts, period) at its start and end.
+    spin_pos: [[(i64, u64); 2]; WINDOWS],
     spin_top: f64,
     spin_start: i64,
     spin_done: bool,
@@ -262,11 +292,10 @@ impl Calibrator {
             i_prev: 0.0,
             w_ref: 0.0,
             w_int: 0.0,
-            iq_int: 0.0,
-            spin_v: [[Mean::default(); 4]; 3],
-            spin_pos: [(0, 0); 3],
-            spin_acc: [0.0; 3],
-            snaps: [Snap::default(); 4],
+            i_int: (0.0, 0.0),
+            i_th: (0.0, 0.0),
+            spin_v: [[Mean::default(); 10]; WINDOWS],
+            spin_pos: [[(0, 0); 2]; WINDOWS],
             spin_top: 0.0,
             spin_start: 0,
             spin_done: false,
@@ -718,6 +747,7 @@ impl Calibrator {
             | Stage::SpinAccel(_)
             | Stage::SpinSettle(_)
             | Stage::SpinAvg(_)
+            | Stage::SpinFlip(_)
             | Stage::SpinStop => Some(self.spin(i_ab, v_app, n)),
         }
     }
@@ -735,120 +765,162 @@ impl Calibrator {
 
     fn spin(&mut self, i_ab: (f64, f64), v_app: (f64, f64), n: u32) -> ((f64, f64), f64) {
         let t = self.s.period_s;
-        let i_cal = self.s.current_a;
         let (mid, th_cmd, _) = self.rotor_frame_angles();
-        let (_, p, _) = self.rotor_model();
-        let kt = 1.5 * p * self.psi_best();
-        let j_g = self.s.motor.j_kg_m2;
-        let w_m = self.speed_m();
         let stage = self.stage;
-        if stage == Stage::SpinPre {
-            if n == 0 {
-                self.pi = Pi::new(self.r_best(), self.l_best(), t, self.s.voltage_v);
-                self.w_ref = 0.0;
-                self.w_int = 0.0;
-                self.iq_int = 0.0;
-                // Top speed: half the voltage limit as back-EMF.
-                self.spin_top = 0.5 * self.s.voltage_v / self.psi_best() / p;
+        if stage == Stage::SpinPre && n == 0 {
+            let (_, p, _) = self.rotor_model();
+            self.pi = Pi::new(self.r_best(), self.l_best(), t, self.s.voltage_v);
+            self.w_ref = 0.0;
+            self.w_int = 0.0;
+            // Top speed: half the voltage limit as back-EMF.
+            self.spin_top = 0.5 * self.s.voltage_v / self.psi_best() / p;
+        }
+        // The running integrals through this period: a window's means pair
+        // them with the position at this period's end.
+        let (id_m, iq_m) = park(i_ab.0, i_ab.1, mid);
+        let dth = self.rad_per_count() * (self.pos_u - self.pos_u_prev) as f64;
+        self.i_int = (self.i_int.0 + id_m * t, self.i_int.1 + iq_m * t);
+        self.i_th = (self.i_th.0 + id_m * dth, self.i_th.1 + iq_m * dth);
+        let id_target = match stage {
+            Stage::SpinFlip(h) | Stage::SpinAvg(h) if reversed(h) => -SPIN_ID,
+            _ => SPIN_ID,
+        };
+        self.i_ref.0 = self.ramp_to(self.i_ref.0, id_target * self.s.current_a, 0, 20);
+        self.speed_loop();
+        match stage {
+            Stage::SpinPre => self.spin_hold(n),
+            Stage::SpinAccel(j) => self.spin_accel(j, n),
+            Stage::SpinSettle(j) => self.spin_settle(n, SPIN_SETTLE, first(j)),
+            Stage::SpinFlip(h) => self.spin_settle(n, FLIP_SETTLE, h),
+            Stage::SpinAvg(h) => {
+                let (vd, vq) = park(v_app.0, v_app.1, mid);
+                let th = self.rad_per_count() * (self.pos_u - self.spin_start) as f64;
+                let time = self.k as f64 * t;
+                let (i, it) = (self.i_int, self.i_th);
+                let x = [vd, vq, id_m, iq_m, th, time, i.0, i.1, it.0, it.1];
+                for (m, x) in self.spin_v[h].iter_mut().zip(x) {
+                    m.add(x);
+                }
+                self.spin_window(h, n);
             }
-            self.i_ref = (self.ramp_to(self.i_ref.0, SPIN_ID * i_cal, 0, 20), 0.0);
-            if n + 1 >= CURRENT_RAMP {
-                self.spin_start = self.pos_u;
-                self.snaps[0] = Snap {
-                    k: self.k,
-                    pos: self.pos_u,
-                    iq_int: 0.0,
-                    w_m: 0.0,
-                };
-                self.set_stage(Stage::SpinAccel(0));
-            }
-        } else {
-            // Speed loop (20 Hz) on the i_q reference, within the limit.
-            let target = match stage {
-                Stage::SpinAccel(j) | Stage::SpinSettle(j) | Stage::SpinAvg(j) => {
-                    SPIN_LEVELS[j] * self.spin_top
-                }
-                _ => 0.0,
-            };
-            let acc = 0.5 * kt * i_cal / j_g * t;
-            self.w_ref += (target - self.w_ref).clamp(-acc, acc);
-            let ww = TAU * 20.0;
-            let kp = j_g * ww / kt;
-            let e = self.w_ref - w_m;
-            self.w_int = (self.w_int + kp * ww / 2.0 * t * e).clamp(-i_cal, i_cal);
-            let iq_max = libm::sqrt((i_cal * i_cal - self.i_ref.0 * self.i_ref.0).max(0.0));
-            self.i_ref.1 = (kp * e + self.w_int).clamp(-iq_max, iq_max);
-            match stage {
-                Stage::SpinAccel(j) => {
-                    if j == 0 && n == 800 && (self.pos_u - self.spin_start).abs() < LOCKED_COUNTS {
-                        self.locked = true;
-                        self.refuse(
-                            Phase::Flux,
-                            "rotor locked: the back-EMF needs the rotor to turn",
-                        );
-                        self.set_stage(Stage::SpinStop);
-                        self.spin_done = true;
-                    } else if self.w_ref == target {
-                        self.set_stage(Stage::SpinSettle(j));
-                    }
-                }
-                Stage::SpinSettle(j) => {
-                    if n + 1 >= SPIN_SETTLE {
-                        self.spin_pos[j] = (self.pos_u, self.k);
-                        self.set_stage(Stage::SpinAvg(j));
-                    }
-                }
-                Stage::SpinAvg(j) => {
-                    let (vd, vq) = park(v_app.0, v_app.1, mid);
-                    let (id, iq) = park(i_ab.0, i_ab.1, mid);
-                    for (m, x) in self.spin_v[j].iter_mut().zip([vd, vq, id, iq]) {
-                        m.add(x);
-                    }
-                    if n == SPIN_AVG / 2 {
-                        self.snaps[j + 1] = Snap {
-                            k: self.k,
-                            pos: self.pos_u,
-                            iq_int: self.iq_int,
-                            w_m: 0.0,
-                        };
-                    }
-                    if n + 1 >= SPIN_AVG {
-                        let (p0, k0) = self.spin_pos[j];
-                        let (dir, _, _) = self.rotor_model();
-                        let w = dir * (self.pos_u - p0) as f64 * TAU
-                            / self.cpr()
-                            / ((self.k + 1 - k0) as f64 * t);
-                        self.snaps[j + 1].w_m = w;
-                        let half = f64::from(SPIN_AVG / 2) * t;
-                        let mid = self.snaps[j + 1].pos;
-                        let w1 = dir * (mid - p0) as f64 * TAU / self.cpr() / half;
-                        let w2 = dir * (self.pos_u - mid) as f64 * TAU / self.cpr() / half;
-                        self.spin_acc[j] = (w2 - w1) / half;
-                        if j + 1 < SPIN_LEVELS.len() {
-                            self.set_stage(Stage::SpinAccel(j + 1));
-                        } else {
-                            self.spin_fit();
-                            self.spin_done = true;
-                            if self.s.phases.has(Phase::Mechanics) {
-                                // The same run gave the mechanics.
-                                self.phase = Some(Phase::Mechanics);
-                            }
-                            self.set_stage(Stage::SpinStop);
-                        }
-                    }
-                }
-                _ => {
-                    if self.w_ref == 0.0 && n >= 320 {
-                        self.i_ref = (self.i_ref.0, 0.0);
-                        self.pi.int = (self.pi.int.0, 0.0);
-                        self.set_stage(Stage::Next);
-                    }
+            _ => {
+                if self.w_ref == 0.0 && n >= 320 {
+                    self.i_ref = (self.i_ref.0, 0.0);
+                    self.pi.int = (self.pi.int.0, 0.0);
+                    self.set_stage(Stage::Next);
                 }
             }
         }
-        let (_, iq) = park(i_ab.0, i_ab.1, mid);
-        self.iq_int += iq * t;
         (self.current_loop(i_ab, mid, th_cmd), th_cmd)
+    }
+
+    /// The speed of the spin's stage, rad/s.
+    fn spin_target(&self) -> f64 {
+        let level = match self.stage {
+            Stage::SpinAccel(j) | Stage::SpinSettle(j) => j,
+            Stage::SpinFlip(h) | Stage::SpinAvg(h) => level(h),
+            _ => return 0.0,
+        };
+        SPIN_LEVELS[level] * self.spin_top
+    }
+
+    /// Speed loop (20 Hz) on the i_q reference, within the current limit,
+    /// the reference ramped at half the torque the limit gives the
+    /// configured inertia.
+    fn speed_loop(&mut self) {
+        let t = self.s.period_s;
+        let i_cal = self.s.current_a;
+        let (_, p, _) = self.rotor_model();
+        let kt = 1.5 * p * self.psi_best();
+        let j_g = self.s.motor.j_kg_m2;
+        let acc = 0.5 * kt * i_cal / j_g * t;
+        let dw_ref = (self.spin_target() - self.w_ref).clamp(-acc, acc);
+        self.w_ref += dw_ref;
+        // The reference's acceleration torque fed forward (configured J):
+        // without it the integrator carried that current through the ramp
+        // and the speed overshot by a quarter, still settling in the
+        // averaging windows.
+        let i_ff = j_g * dw_ref / t / kt;
+        let ww = TAU * 20.0;
+        let kp = j_g * ww / kt;
+        let e = self.w_ref - self.speed_m();
+        self.w_int = (self.w_int + kp * ww / 2.0 * t * e).clamp(-i_cal, i_cal);
+        let iq_max = libm::sqrt((i_cal * i_cal - self.i_ref.0 * self.i_ref.0).max(0.0));
+        self.i_ref.1 = (kp * e + self.w_int + i_ff).clamp(-iq_max, iq_max);
+    }
+
+    fn spin_accel(&mut self, j: usize, n: u32) {
+        if j == 0 && n == 800 && (self.pos_u - self.spin_start).abs() < LOCKED_COUNTS {
+            self.locked = true;
+            self.refuse(
+                Phase::Flux,
+                "rotor locked: the back-EMF needs the rotor to turn",
+            );
+            self.set_stage(Stage::SpinStop);
+            self.spin_done = true;
+        } else if self.w_ref == self.spin_target() {
+            self.set_stage(Stage::SpinSettle(j));
+        }
+    }
+
+    /// Period `n` of `periods` settling before window `h`.
+    fn spin_settle(&mut self, n: u32, periods: u32, h: usize) {
+        if n + 1 >= periods {
+            self.spin_pos[h][0] = (self.pos_u, self.k);
+            self.set_stage(Stage::SpinAvg(h));
+        }
+    }
+
+    /// Period `n` of window `h`; at its end the next stage (after the
+    /// last, the fits).
+    fn spin_window(&mut self, h: usize, n: u32) {
+        if n + 1 < SPIN_AVG {
+            return;
+        }
+        self.spin_pos[h][1] = (self.pos_u, self.k);
+        if level(h + 1) == level(h) {
+            self.set_stage(Stage::SpinFlip(h + 1));
+        } else if h + 1 < WINDOWS {
+            self.set_stage(Stage::SpinAccel(level(h + 1)));
+        } else {
+            self.spin_fit();
+            self.spin_done = true;
+            if self.s.phases.has(Phase::Mechanics) {
+                // The same run gave the mechanics.
+                self.phase = Some(Phase::Mechanics);
+            }
+            self.set_stage(Stage::SpinStop);
+        }
+    }
+
+    /// Period `n` of the current's rise before the first speed (the
+    /// speed loop holds the rotor: a frame error turns i_d into torque).
+    fn spin_hold(&mut self, n: u32) {
+        if n + 1 >= CURRENT_RAMP {
+            self.spin_start = self.pos_u;
+            self.set_stage(Stage::SpinAccel(0));
+        }
+    }
+
+    /// Mechanical angle of one encoder count, signed with the rotor's
+    /// positive direction, rad.
+    fn rad_per_count(&self) -> f64 {
+        let (dir, _, _) = self.rotor_model();
+        dir * TAU / self.cpr()
+    }
+
+    /// Window `h`'s mean speed: the angle between its ends over its
+    /// duration, rad/s.
+    ///
+    /// The window spans the ends of periods k0 to k0 + SPIN_AVG. Its speed
+    /// once came from the counts over SPIN_AVG + 1 periods and the
+    /// acceleration in it from halves of 257 and 255 periods taken as 256
+    /// each: every speed 0.2 % low and a false deceleration of 2 w / 256
+    /// per half window, +20 % on b and, through b's share of the speed
+    /// steps, J 5 % low.
+    fn window_speed(&self, h: usize) -> f64 {
+        let [(p0, k0), (p1, k1)] = self.spin_pos[h];
+        self.rad_per_count() * (p1 - p0) as f64 / ((k1 - k0) as f64 * self.s.period_s)
     }
 
     fn encoder_fit(&self) -> Outcome<EncoderEst> {
@@ -967,14 +1039,17 @@ impl Calibrator {
         // turning field is 3/pi of the loss along phase a at standstill.
         let v_dt = 3.0 / PI * self.res.dead_time_v;
         let mut f = Lsq::<2>::default();
-        let psi_g = self.psi_best();
-        for (j, m) in self.spin_v.iter().enumerate() {
-            let [_, vq, id, iq] = m.map(|x| x.mean());
-            let w = self.snaps[j + 1].w_m * p;
+        let mut d_points = [(0.0, 0.0); LEVELS];
+        // The first window at each speed (i_d at +I/2).
+        for (j, d) in d_points.iter_mut().enumerate() {
+            let m = &self.spin_v[first(j)];
+            let [vd, vq, id, iq] = [0, 1, 2, 3].map(|i| m[i].mean());
+            let w = self.window_speed(first(j)) * p;
             let mag = libm::hypot(id, iq).max(1e-9);
             let y = vq - v_dt * iq / mag - r * iq - w * l * id;
             f.add([w / 1000.0, 1.0], y);
             self.res.flux_points[j] = (w, y);
+            *d = (w, vd - v_dt * id / mag - r * id + w * l * iq);
         }
         let flux = match f.solve() {
             Some(sol) => {
@@ -994,75 +1069,85 @@ impl Calibrator {
         if self.s.phases.has(Phase::Flux) {
             self.res.flux = flux;
         }
-        if !self.s.phases.has(Phase::Mechanics) {
-            return;
+        if self.s.phases.has(Phase::Mechanics) {
+            self.res.mechanics = self.mechanics_fit(flux, &d_points);
         }
-        let psi = match flux {
-            Outcome::Done(e) => e.value,
-            _ => psi_g,
+    }
+
+    /// The flux linkage for the torque and its uncertainty, Wb: the fit's
+    /// when good; otherwise the configured one, uncertain by its distance
+    /// from the fitted one (all of it when there is none).
+    fn torque_flux(&self, flux: Outcome<Estimate>) -> (f64, f64) {
+        let psi_g = self.psi_best();
+        match flux {
+            Outcome::Done(e) => (e.value, e.sigma),
+            Outcome::Poor(e, _) if e.value.is_finite() => {
+                (psi_g, libm::fabs(e.value - psi_g).max(e.sigma))
+            }
+            _ => (psi_g, psi_g),
+        }
+    }
+
+    /// What the mechanics fit needs of the spin (see [`mech`]).
+    fn spin_record(&self) -> Spin {
+        let span = f64::from(SPIN_AVG) * self.s.period_s;
+        let mut s = Spin {
+            j_weight: self.s.motor.j_kg_m2,
+            ..Spin::default()
         };
-        let kt = 1.5 * p * psi;
-        // Friction from the levels (less the inertia's share of any
-        // acceleration left in the windows), inertia from the steps
-        // between them: solved in turn, three times.
-        let t = self.s.period_s;
-        let (dir, _, _) = self.rotor_model();
-        let mut j = self.s.motor.j_kg_m2;
-        let (mut b, mut tc, mut sb, mut stc, mut sigma_j) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        for _ in 0..3 {
-            let mut tq = Lsq::<2>::default();
-            for (jj, m) in self.spin_v.iter().enumerate() {
-                let torque = kt * m[3].mean() - j * self.spin_acc[jj];
-                tq.add([self.snaps[jj + 1].w_m, 1.0], torque);
-                self.res.friction_points[jj] = (self.snaps[jj + 1].w_m, torque);
-            }
-            let Some(ts) = tq.solve() else {
-                self.res.mechanics = Outcome::Refused("singular fit");
-                return;
+        for (h, m) in self.spin_v.iter().enumerate() {
+            let [_, _, _, _, th, t, i_d, i_q, th_d, th_q] = m.map(|x| x.mean());
+            s.windows[h] = Window {
+                w: self.window_speed(h),
+                sigma_w: COUNT_PAIR_SIGMA * libm::fabs(self.rad_per_count()) / span,
+                th,
+                t,
+                i_int: (i_d, i_q),
+                i_th: (th_d, th_q),
             };
-            (b, tc, sb, stc) = (ts.b[0], ts.b[1], ts.se(0), ts.se(1));
-            // Inertia: J dw = integral of (T - b w - Tc) between the snapshots.
-            let (mut num, mut den, mut dth_w) = (0.0, 0.0, 0.0);
-            let mut rows = [(0.0, 0.0); 3];
-            for (jj, row) in rows.iter_mut().enumerate() {
-                let (a, z) = (self.snaps[jj], self.snaps[jj + 1]);
-                let dw = z.w_m - a.w_m;
-                let dth = dir * (z.pos - a.pos) as f64 * TAU / self.cpr();
-                let dt = (z.k - a.k) as f64 * t;
-                let rhs = kt * (z.iq_int - a.iq_int) - b * dth - tc * dt;
-                *row = (dw, rhs);
-                num += dw * rhs;
-                den += dw * dw;
-                dth_w += dw * dth;
-            }
-            j = num / den;
-            let res2: f64 = rows
-                .iter()
-                .map(|(dw, rhs)| (rhs - j * dw) * (rhs - j * dw))
-                .sum();
-            let se_fit = libm::sqrt(res2 / 2.0 / den);
-            sigma_j = libm::hypot(se_fit, sb * dth_w / den).max(1e-3 * libm::fabs(j));
         }
+        s
+    }
+
+    fn mechanics_fit(
+        &mut self,
+        flux: Outcome<Estimate>,
+        d_points: &[(f64, f64); LEVELS],
+    ) -> Outcome<MechEst> {
+        let (_, p, _) = self.rotor_model();
+        let (psi, sigma_psi) = self.torque_flux(flux);
+        let Some(e_v) = mech::frame_angle(d_points, psi) else {
+            return Outcome::Refused("singular fit");
+        };
+        let spin = Spin {
+            kt: 1.5 * p * psi,
+            sigma_kt: 1.5 * p * sigma_psi,
+            e_v,
+            ..self.spin_record()
+        };
+        let Some(m) = mech::fit(&spin) else {
+            return Outcome::Refused("singular fit");
+        };
+        self.res.friction_points = m.points;
         let est = MechEst {
             j: Estimate {
-                value: j,
-                sigma: sigma_j,
+                value: m.j.0,
+                sigma: m.j.1,
             },
-            b: Estimate {
-                value: b,
-                sigma: sb,
-            },
-            coulomb: Estimate {
-                value: tc,
-                sigma: stc,
-            },
+            b: non_negative(m.b),
+            coulomb: non_negative(m.tc),
         };
-        self.res.mechanics = if !positive(j) {
+        if matches!(self.res.encoder, Outcome::Poor(..)) {
+            // The spin turned in the encoder fit's frame: with its pole
+            // pairs or zero wrong the currents are not the torque's, and
+            // nothing here bounds the error.
+            Outcome::Poor(unbounded(est), "mechanics: the encoder's fit is poor")
+        } else if !positive(est.j.value) {
             Outcome::Poor(est, "inertia not positive")
         } else if est.j.rel() > bounds::J_REL {
             Outcome::Poor(est, "inertia: the speed steps disagree")
         } else {
             Outcome::Done(est)
-        };
+        }
     }
 }

@@ -14,6 +14,7 @@
 //! PWM period means) during period `k + 2` ([`DELAY_PERIODS`]).
 mod fit;
 mod machine;
+mod mech;
 
 pub use fit::{Lsq, Mean, Solution};
 pub use machine::Calibrator;
