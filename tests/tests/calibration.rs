@@ -8,7 +8,9 @@ use models::testrng::Rng;
 use std::time::Duration;
 use system_tests::{assert_err, assert_ok, boot, cmd};
 
-/// `calibrate` takes about a second of PL time.
+/// `calibrate all` takes about 1.3 s of PL time (docs/ARCHITECTURE.md,
+/// "Tests and their budget"): 25 to 105 s of wall time under QEMU with
+/// four in parallel, by the machine's load.
 fn calibrate(s: &mut Session, line: &str) -> Reply {
     match s.command(line, Duration::from_secs(300)) {
         Ok(r) => r,

@@ -110,7 +110,7 @@ pub struct CalibrateArgs {
     #[arg(long, default_value = "target/calibration")]
     pub out: PathBuf,
     /// Seconds to wait for boot and for the reply (a calibration takes
-    /// about a second of PL time, longer under QEMU).
+    /// about 1.3 s of PL time for `all`, longer under QEMU).
     #[arg(long, default_value_t = 600.0)]
     pub timeout_s: f64,
 }
