@@ -78,7 +78,7 @@ impl Phase {
             Phase::Inductance => "voltage steps at standstill, current time constant",
             Phase::Flux => "q-axis voltage balance at three speeds under velocity control",
             Phase::Mechanics => {
-                "torque to three speeds: friction from the levels, inertia from the steps"
+                "torque steps between three speeds, i_d reversed: inertia and friction from a momentum balance over nine windows"
             }
         }
     }
