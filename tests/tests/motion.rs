@@ -379,7 +379,11 @@ fn a_move_on_a_load_it_was_not_told_about_ends_within_two_counts() {
             assert!(Instant::now() < end, "alignment");
         }
         let r = cmd(&mut s, "move 1 300");
-        assert_ok(&r);
+        if r.fin != drivectl::link::Final::Ok {
+            let st = cmd(&mut s, "status");
+            let h = cmd(&mut s, "fault history");
+            panic!("{jm}x, {mode}: {r:?}\n{st:?}\n{h:?}");
+        }
         println!("{jm}x, {mode}: {:?}", r.lines);
         assert!(num(&r, "settling_time") < 300.0, "{r:?}");
         let fe = num(&r, "final_error");

@@ -323,3 +323,41 @@ fn a_period_without_its_step_is_no_evidence() {
         }
     }
 }
+
+/// A 1 rev move in MPDTC on ten times the configured inertia with
+/// Coulomb friction of 0.05 N m (`motion::a_move_on_a_load_it_was_not_told_about...`
+/// under QEMU), started at 40 instants after the alignment: no fault. The
+/// MPDTC leaves the d-axis current free (-1.4 A at -3.4 A of q current
+/// while braking), and the window check's reference (i_d = 0) wanted
+/// -1.32 A in phase b while the MPDTC held it at -0.04 A for the window:
+/// a false `PHASE_OPEN` at 3 of the 40 instants.
+#[test]
+fn an_mpdtc_move_on_a_heavy_load_trips_nothing() {
+    for delay_ms in (0..120u64).step_by(3) {
+        let sims = [("j", 8.1e-4), ("coulomb", 0.05)];
+        let (mut s, mut sim, period) = running_with(Mode::Mpdtc, 0.0, false, &sims, |_, k| k > 0);
+        let per_ms = 100_000 / period;
+        for _ in 0..delay_ms * per_ms {
+            step(&mut s, &mut sim, period);
+        }
+        s.begin_move(&mut sim, 1.0, 0.3).unwrap();
+        let mut k = 0;
+        while s.move_pending() {
+            step(&mut s, &mut sim, period);
+            let f = s.faults(&mut sim).unwrap().0;
+            assert_eq!(
+                f,
+                0,
+                "+{delay_ms} ms: trip {f:#x} at step {k}: {:?}",
+                s.measured()
+            );
+            k += 1;
+            assert!(
+                k < 1000 * per_ms,
+                "+{delay_ms} ms: the move does not end in 1 s"
+            );
+        }
+        let r = s.move_result().expect("a result");
+        assert!(r.final_error_counts.abs() <= 2.0, "+{delay_ms} ms: {r:?}");
+    }
+}

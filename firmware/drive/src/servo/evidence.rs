@@ -72,7 +72,11 @@
 //! (10 ADC counts) in every period of the window, with current in another
 //! phase (all three at zero is no one phase's fault). A healthy current loop
 //! follows a step well within the window; a locked rotor carries its
-//! current in every phase whose reference needs it.
+//! current in every phase whose reference needs it. FOC only: the MPDTC
+//! controls the torque, not the d-axis current, so the `i_d = 0` reference
+//! does not say which phase must carry current there (a healthy phase
+//! stayed at zero for a window during a move on a heavy load); in MPDTC
+//! the fast tier judges an open phase alone.
 
 /// Predicted phase current that must show in one period, A.
 pub const FAST_PRED_MIN_A: f64 = 1.0;

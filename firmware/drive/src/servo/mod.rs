@@ -1583,7 +1583,15 @@ impl Servo {
         let kt = 1.5 * f64::from(mo.pole_pairs) * mo.psi_pm_wb;
         let (ra, rb) = models::pmsm::frames::inv_park(0.0, t_ref / kt, theta_e);
         let i_ref = models::pmsm::frames::inv_clarke(ra, rb);
-        let open = self.phase_open.step(i_ref, i_abc, win).is_some();
+        // The MPDTC controls the torque only: its d-axis current is free,
+        // so the reference above (i_d = 0) does not say which phase must
+        // carry current, and a healthy phase can stay at zero for a
+        // window while the d-axis current makes the vector turn with the
+        // rotor (a 1 rev move on ten times the inertia: phase b at -0.04 A
+        // for 0.5 ms against -1.32 A of reference, i_d -1.4 A). In MPDTC
+        // the one-period check, against the model's prediction from the
+        // voltage applied, judges an open phase alone.
+        let open = self.phase_open.step(i_ref, i_abc, win).is_some() && self.mode == Mode::Foc;
         // A period where a phase looks open voids the voltage equation.
         let suspect = self.phase_open.suspect();
         let dead = flowing
