@@ -6,4 +6,5 @@ pub mod cosim;
 pub mod defmt_log;
 pub mod link;
 pub mod motion;
+pub mod step_map;
 pub mod tel;

@@ -8,6 +8,7 @@ mod calibrate_cmd;
 mod console;
 mod experiment;
 mod experiment_move;
+mod experiment_step_map;
 mod explore;
 mod paper_mpdcc;
 mod paper_mpdtc;
@@ -84,6 +85,9 @@ enum ExperimentCmd {
     /// of the same loops; CSV and SVG of position, velocity, following
     /// error and torque.
     Move(experiment_move::MoveArgs),
+    /// Torque step-response map: MPDTC and FOC on the nominal motor and the
+    /// 26 corners of R, L, psi, six steps each; CSV and Markdown.
+    StepMap(experiment_step_map::StepMapArgs),
 }
 
 #[derive(Subcommand)]
@@ -147,6 +151,7 @@ fn dispatch(cmd: Cmd) -> Result<()> {
         Cmd::Experiment(ExperimentCmd::Step(a)) => experiment::step(a),
         Cmd::Experiment(ExperimentCmd::Sweep(a)) => experiment::sweep(a),
         Cmd::Experiment(ExperimentCmd::Move(a)) => experiment_move::run(a),
+        Cmd::Experiment(ExperimentCmd::StepMap(a)) => experiment_step_map::run(a),
         Cmd::Capture(a) => experiment::capture(a),
         Cmd::Explore(ExploreCmd::Mpdcc(a)) => explore::mpdcc(a),
         Cmd::Tel(a) => tel_cmd::run(a),
