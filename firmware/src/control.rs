@@ -198,7 +198,7 @@ fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
             if sim.boundaries_crossed() > 0 {
                 let n = sim.advance(0).control_periods;
                 let line = sim.pl().irq_line();
-                raise = s.serve(n, "console-sim") && line;
+                raise = s.serve(n) && line;
             }
         }
         if let (Some((before, writes)), Backend::Cosim(c)) = (before, &s.bus) {
@@ -207,7 +207,7 @@ fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
                     s.phase_known = false;
                 }
                 let n = s.cosim_sync(timer::global_count());
-                raise = s.serve(n, "console-cosim");
+                raise = s.serve(n);
                 if !raise {
                     timer::set_compare(s.next_tick);
                 }
@@ -345,7 +345,7 @@ pub fn init() -> Boot {
 
 /// PL clock cycles of one control period of the active mode.
 fn period_cycles(servo: &Servo) -> u64 {
-    servo.control_period_cycles()
+    (f64::from(regmap::PL_CLOCK_HZ) / servo.control_rate_hz()) as u64
 }
 
 /// Global-timer counts of `cycles` PL clock cycles at real-time speed.
@@ -430,7 +430,7 @@ pub fn on_pl_tick() {
             Backend::Sim(sim) => sim.pl().irq_line(),
             _ => true,
         };
-        s.serve(boundaries, "tick") && line
+        s.serve(boundaries) && line
     })
     .unwrap_or(false);
     if raise {
@@ -451,8 +451,7 @@ pub fn on_pl_tick() {
 const COSIM_TICK_LAG: u64 = 4;
 
 /// Co-simulation: while the boundaries' phase is not known (after a
-/// console section's register writes), or a boundary is due but not yet
-/// seen (`drive::pl::irq::next_cosim_tick`), a PL tick every `1 / COSIM_POLL_DIV`
+/// console section's register writes), a PL tick every `1 / COSIM_POLL_DIV`
 /// of the period looks for the first boundary: the first step after a
 /// mode change starts at most that late (MPDTC 195, FOC 782 PL cycles)
 /// plus the handler's entry, instead of up to a period, as when the next
@@ -473,13 +472,6 @@ pub fn on_control() {
                     // are steps lost, and the next sync must not raise
                     // the interrupt for them again.
                     s.absorbed = c.last.boundaries;
-                    if s.absorbed > 0 {
-                        defmt::warn!(
-                            "overrun: the step found {=u32} more boundaries, {=u32} PL cycles after its own",
-                            s.absorbed,
-                            t.age
-                        );
-                    }
                     s.servo.note_overruns(u64::from(s.absorbed));
                 }
                 s.latency.add(t.age);
@@ -589,37 +581,23 @@ impl State {
         n = n.saturating_sub(core::mem::take(&mut self.absorbed));
         // A boundary after the last register writes fixes the phase.
         self.phase_known |= n > 0;
-        self.next_tick = ctrl_irq::next_cosim_tick(
-            ctrl_irq::SyncPoint {
-                now,
-                since,
-                phase_known: self.phase_known,
-            },
-            period,
-            COSIM_TICK_LAG,
-            COSIM_POLL_DIV,
-        );
+        self.next_tick = if !self.phase_known {
+            now + period / COSIM_POLL_DIV
+        } else if since < period {
+            now - since + period + COSIM_TICK_LAG
+        } else {
+            now + period
+        };
         n
     }
     /// Marks a control step due for `boundaries` crossed; false if none.
-    fn serve(&mut self, boundaries: u32, src: &'static str) -> bool {
+    fn serve(&mut self, boundaries: u32) -> bool {
         if boundaries == 0 {
             return false;
         }
         // Boundaries the control step did not see: the previous one still
         // pending, or more than one crossed at once.
         let missed = u64::from(self.control_pending) + u64::from(boundaries - 1);
-        if missed > 0 {
-            // Where a step was lost, for the log: who found the boundaries
-            // (the PL tick or a console section's sync), how many, and
-            // whether a step was still pending.
-            defmt::warn!(
-                "overrun: {=str} found {=u32} boundaries, a step pending: {=bool}",
-                src,
-                boundaries,
-                self.control_pending
-            );
-        }
         self.servo.note_overruns(missed);
         self.control_pending = true;
         true
