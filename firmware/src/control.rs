@@ -159,8 +159,9 @@ struct State {
     /// present timing, so the next one is a period after it. A console
     /// section that wrote registers may have moved the boundaries (a mode
     /// change turns the PWM period start into the boundary, a new ADC
-    /// period or restart moves the averages): until a sync reports a
-    /// boundary after it, the ticks poll (`COSIM_POLL_DIV`).
+    /// period or restart moves the averages): until a later sync reports
+    /// a boundary, the ticks poll (`COSIM_POLL_DIV`;
+    /// `drive::pl::irq::phase_known_after`).
     phase_known: bool,
 }
 
@@ -198,16 +199,14 @@ fn console<T>(f: impl FnOnce(&mut State) -> T) -> Option<T> {
             if sim.boundaries_crossed() > 0 {
                 let n = sim.advance(0).control_periods;
                 let line = sim.pl().irq_line();
-                raise = s.serve(n) && line;
+                raise = s.serve(n, "console-sim") && line;
             }
         }
         if let (Some((before, writes)), Backend::Cosim(c)) = (before, &s.bus) {
             if c.last.pl_cycles != before {
-                if c.writes != writes {
-                    s.phase_known = false;
-                }
-                let n = s.cosim_sync(timer::global_count());
-                raise = s.serve(n);
+                let wrote = c.writes != writes;
+                let n = s.cosim_sync(timer::global_count(), wrote);
+                raise = s.serve(n, "console-cosim");
                 if !raise {
                     timer::set_compare(s.next_tick);
                 }
@@ -345,7 +344,7 @@ pub fn init() -> Boot {
 
 /// PL clock cycles of one control period of the active mode.
 fn period_cycles(servo: &Servo) -> u64 {
-    (f64::from(regmap::PL_CLOCK_HZ) / servo.control_rate_hz()) as u64
+    servo.control_period_cycles()
 }
 
 /// Global-timer counts of `cycles` PL clock cycles at real-time speed.
@@ -415,7 +414,7 @@ pub fn on_pl_tick() {
             // The PL runs to now; the next tick comes just after the next
             // boundary (one global-timer count per PL cycle under QEMU).
             Backend::Cosim(_) => {
-                let n = s.cosim_sync(now);
+                let n = s.cosim_sync(now, false);
                 if n == 0 {
                     // No step to see the PL's faults (a stuck ADC stops
                     // the MPDTC's boundaries).
@@ -430,7 +429,7 @@ pub fn on_pl_tick() {
             Backend::Sim(sim) => sim.pl().irq_line(),
             _ => true,
         };
-        s.serve(boundaries) && line
+        s.serve(boundaries, "tick") && line
     })
     .unwrap_or(false);
     if raise {
@@ -451,7 +450,8 @@ pub fn on_pl_tick() {
 const COSIM_TICK_LAG: u64 = 4;
 
 /// Co-simulation: while the boundaries' phase is not known (after a
-/// console section's register writes), a PL tick every `1 / COSIM_POLL_DIV`
+/// console section's register writes), or a boundary is due but not yet
+/// seen (`drive::pl::irq::next_cosim_tick`), a PL tick every `1 / COSIM_POLL_DIV`
 /// of the period looks for the first boundary: the first step after a
 /// mode change starts at most that late (MPDTC 195, FOC 782 PL cycles)
 /// plus the handler's entry, instead of up to a period, as when the next
@@ -472,6 +472,13 @@ pub fn on_control() {
                     // are steps lost, and the next sync must not raise
                     // the interrupt for them again.
                     s.absorbed = c.last.boundaries;
+                    if s.absorbed > 0 {
+                        defmt::warn!(
+                            "overrun: the step found {=u32} more boundaries, {=u32} PL cycles after its own",
+                            s.absorbed,
+                            t.age
+                        );
+                    }
                     s.servo.note_overruns(u64::from(s.absorbed));
                 }
                 s.latency.add(t.age);
@@ -552,7 +559,7 @@ impl State {
             return now + 1000;
         }
         let _ = ctrl_irq::clear(&mut self.bus);
-        self.cosim_sync(timer::global_count());
+        self.cosim_sync(timer::global_count(), false);
         self.next_tick
     }
 
@@ -567,8 +574,9 @@ impl State {
 
     /// Co-simulation: runs the PL to `now` (a global-timer count), plans
     /// the next tick just after the next boundary with the period now set,
-    /// and returns the boundaries crossed since the previous sync.
-    fn cosim_sync(&mut self, now: u64) -> u32 {
+    /// and returns the boundaries crossed since the previous sync; `wrote`:
+    /// the sync ends a console section that wrote registers.
+    fn cosim_sync(&mut self, now: u64, wrote: bool) -> u32 {
         let period = period_cycles(&self.servo);
         let Backend::Cosim(c) = &mut self.bus else {
             return 0;
@@ -579,25 +587,40 @@ impl State {
         };
         // Those the last control step has served already.
         n = n.saturating_sub(core::mem::take(&mut self.absorbed));
-        // A boundary after the last register writes fixes the phase.
-        self.phase_known |= n > 0;
-        self.next_tick = if !self.phase_known {
-            now + period / COSIM_POLL_DIV
-        } else if since < period {
-            now - since + period + COSIM_TICK_LAG
-        } else {
-            now + period
-        };
+        // A boundary reported after the last register writes fixes the
+        // phase; one reported with them may be of the old timing.
+        self.phase_known = ctrl_irq::phase_known_after(self.phase_known, wrote, n);
+        self.next_tick = ctrl_irq::next_cosim_tick(
+            ctrl_irq::SyncPoint {
+                now,
+                since,
+                phase_known: self.phase_known,
+            },
+            period,
+            COSIM_TICK_LAG,
+            COSIM_POLL_DIV,
+        );
         n
     }
     /// Marks a control step due for `boundaries` crossed; false if none.
-    fn serve(&mut self, boundaries: u32) -> bool {
+    fn serve(&mut self, boundaries: u32, src: &'static str) -> bool {
         if boundaries == 0 {
             return false;
         }
         // Boundaries the control step did not see: the previous one still
         // pending, or more than one crossed at once.
         let missed = u64::from(self.control_pending) + u64::from(boundaries - 1);
+        if missed > 0 {
+            // Where a step was lost, for the log: who found the boundaries
+            // (the PL tick or a console section's sync), how many, and
+            // whether a step was still pending.
+            defmt::warn!(
+                "overrun: {=str} found {=u32} boundaries, a step pending: {=bool}",
+                src,
+                boundaries,
+                self.control_pending
+            );
+        }
         self.servo.note_overruns(missed);
         self.control_pending = true;
         true

@@ -193,6 +193,13 @@ pub struct Events {
     /// The PWM counter was at its bottom: the duties loaded at the cycle's
     /// edge and a PWM period starts (the FOC control-period boundary).
     pub pwm_period: bool,
+    /// The control-period boundary of the mode in force in the cycle
+    /// (`pl_top`'s `ctrl_boundary`, which sets `IRQ_STATUS.BOUNDARY`): the
+    /// PWM bottom in FOC-PWM, else the new ADC average. Judged by the PL
+    /// cycle by cycle; the two events above alone cannot tell it across a
+    /// bus access that changes the mode (a PWM bottom in the cycles of a
+    /// write of `CTRL.MODE` comes before the new mode takes effect).
+    pub control_boundary: bool,
 }
 
 impl Events {
@@ -202,6 +209,7 @@ impl Events {
         adc_convert: true,
         adc_average: true,
         pwm_period: true,
+        control_boundary: true,
     };
 
     /// Any flag set in both.
@@ -210,6 +218,7 @@ impl Events {
             || (self.adc_convert && mask.adc_convert)
             || (self.adc_average && mask.adc_average)
             || (self.pwm_period && mask.pwm_period)
+            || (self.control_boundary && mask.control_boundary)
     }
 
     /// Adds the events of `o` (either's).
@@ -218,6 +227,7 @@ impl Events {
         self.adc_convert |= o.adc_convert;
         self.adc_average |= o.adc_average;
         self.pwm_period |= o.pwm_period;
+        self.control_boundary |= o.control_boundary;
     }
 }
 
@@ -555,6 +565,7 @@ impl SimPl {
         } else {
             ev.adc_average
         };
+        ev.control_boundary = boundary;
         let irq_clr = match strobe {
             Strobe::Write(WriteResult::Cleared { slot, value }) if slot == S_IRQ_STATUS => {
                 self.irq.status & !(value as u8)

@@ -23,7 +23,6 @@ use models::pmsm::params::{check_finite, check_pos, MotorParams, ParamError};
 use models::pmsm::plant::{MechanicalMode, Plant};
 use models::pmsm::sim_motor::{SimMotor, SimSetError};
 use regmap::bus::{BusError, RegisterBus};
-use regmap::{self, mode};
 
 /// Seconds per PL clock cycle.
 pub const CYCLE_S: f64 = 1.0 / regmap::PL_CLOCK_HZ as f64;
@@ -171,7 +170,8 @@ pub struct Advance {
     /// Control-period boundaries crossed since the last `advance` (also
     /// those crossed during register accesses in between): PWM period starts
     /// in mode FOC-PWM, ADC average strobes otherwise (the MPDTC sequence's
-    /// SAMPLE point).
+    /// SAMPLE point), each judged by the mode in force in its cycle
+    /// ([`Events::control_boundary`]), as `IRQ_STATUS.BOUNDARY` is.
     pub control_periods: u32,
     /// ADC average strobes crossed.
     pub adc_averages: u32,
@@ -566,23 +566,12 @@ impl<P: PlModel> SimDrive<P> {
             let i = self.adc_wiring.apply(self.plant.i_abc_a());
             self.pl.pins_mut().adc_word = adc_word(i.map(|x| self.cfg.adc_counts(x)));
         }
-        let foc = self.pl.mode() == mode::FOC_PWM;
-        let mut boundary = false;
-        if ev.adc_average {
-            adv.adc_averages += 1;
-            if !foc {
-                adv.control_periods += 1;
-                boundary = true;
-            }
-        }
-        if ev.pwm_period {
-            adv.pwm_periods += 1;
-            if foc {
-                adv.control_periods += 1;
-                boundary = true;
-            }
-        }
-        boundary
+        adv.adc_averages += u32::from(ev.adc_average);
+        adv.pwm_periods += u32::from(ev.pwm_period);
+        // The PL's own judgement, cycle by cycle: the mode after a bus
+        // access is not the mode of every cycle of it.
+        adv.control_periods += u32::from(ev.control_boundary);
+        ev.control_boundary
     }
 
     /// Cycles until the encoder moves by one count at the present speed.

@@ -27,6 +27,7 @@ const GATES: Events = Events {
     adc_convert: false,
     adc_average: false,
     pwm_period: false,
+    control_boundary: false,
 };
 
 /// Gate edges (cycle first showing the new levels, hi, lo) over `n` cycles.
@@ -340,4 +341,53 @@ fn state_is_small() {
     std::println!("size_of::<SimDrive>() = {n} bytes, of which the capture ring {ring}");
     assert!(ring <= 24 * DEPTH, "{ring} bytes");
     assert!(n - ring <= 2048, "{n} bytes");
+}
+
+/// A write of `CTRL.MODE` changes which event is the control-period
+/// boundary from the cycle after its strobe; a PWM bottom in the cycles
+/// of that write belongs to the mode before it. The drive counts as
+/// boundaries exactly the cycles the PL flags in `IRQ_STATUS.BOUNDARY`,
+/// whatever the phase of a mode change against the PWM bottom (the
+/// co-simulation bridge counted the bottom in the cycles of a write to
+/// FOC-PWM by the mode after it: the control interrupt was raised for a
+/// boundary the PL never flagged).
+#[test]
+fn boundaries_counted_are_the_ones_flagged_across_mode_changes() {
+    let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+    wr(&mut sim, &rm::FAULT, &rm::WDG_TIMEOUT, u32::MAX);
+    Pwm(&mut sim).set_half_period(3128).unwrap();
+    wr(&mut sim, &rm::ADC, &rm::ADC_PERIOD, 391);
+    wr(&mut sim, &rm::ADC, &rm::ADC_CTRL, 1);
+    wr(&mut sim, &rm::TOP, &rm::IRQ_EN, 1);
+    let status = rm::TOP.addr(&rm::IRQ_STATUS);
+    let mut checked = 0;
+    // Counted against flagged for a mode change `d` cycles before a PWM
+    // bottom (the cycles around it: the write's strobe, its edge, after).
+    let mut change = |sim: &mut SimDrive, m: Mode, d: u64| {
+        sim.write(status, 0b111).unwrap();
+        Top(&mut *sim).set_mode(m).unwrap();
+        let counted = sim.boundaries_crossed();
+        let flagged = sim.read(status).unwrap() & 1;
+        // A boundary in the read's own cycle is the next check's.
+        if sim.boundaries_crossed() == counted {
+            assert_eq!(counted, flagged, "to {m:?}, {d} cycles before a PWM bottom");
+            checked += 1;
+        }
+        sim.advance(0);
+    };
+    for other in [Mode::Off, Mode::Mpdtc] {
+        for d in 0..24 {
+            // Just after a PWM bottom, in FOC-PWM.
+            Top(&mut sim).set_mode(Mode::Foc).unwrap();
+            sim.advance_to_boundary(2 * 6256);
+            sim.advance(6256 - d);
+            change(&mut sim, other, d);
+            Top(&mut sim).set_mode(Mode::Foc).unwrap();
+            sim.advance_to_boundary(2 * 6256);
+            Top(&mut sim).set_mode(other).unwrap();
+            sim.advance(6256 - d);
+            change(&mut sim, Mode::Foc, d);
+        }
+    }
+    assert!(checked >= 90, "{checked} of 96 checked");
 }

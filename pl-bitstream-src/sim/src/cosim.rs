@@ -174,6 +174,7 @@ impl RtlPl {
             adc_convert: after.adc_cnv == 1,
             adc_average: o.adc_avg_valid == 1,
             pwm_period: sev.pwm_period,
+            control_boundary: sev.control_boundary,
         };
         (o, ev, res)
     }
@@ -229,6 +230,7 @@ impl PlModel for RtlPl {
             all.adc_convert |= ev.adc_convert;
             all.adc_average |= ev.adc_average;
             all.pwm_period |= ev.pwm_period;
+            all.control_boundary |= ev.control_boundary;
             if ev.hits(stop) {
                 break;
             }
@@ -298,6 +300,7 @@ fn merge(a: Events, b: Events) -> Events {
         adc_convert: a.adc_convert | b.adc_convert,
         adc_average: a.adc_average | b.adc_average,
         pwm_period: a.pwm_period | b.pwm_period,
+        control_boundary: a.control_boundary | b.control_boundary,
     }
 }
 

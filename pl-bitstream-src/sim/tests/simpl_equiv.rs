@@ -36,6 +36,7 @@ const GATES: Events = Events {
     adc_convert: false,
     adc_average: false,
     pwm_period: false,
+    control_boundary: false,
 };
 
 /// Both models and the gate edges each has produced: (cycle, hi, lo).

@@ -650,6 +650,13 @@ impl Servo {
     pub fn control_rate_hz(&self) -> f64 {
         1.0 / self.control_period_s()
     }
+    /// The control period of the active mode in PL clock cycles (10 ns),
+    /// the whole number the PL's timers count (MPDTC: 4 ADC periods, FOC:
+    /// 2 PWM half periods): rounded, as `1 / control_rate_hz` in cycles
+    /// lands a hair below it (1563.99... for 1,564) and truncates one short.
+    pub fn control_period_cycles(&self) -> u64 {
+        libm::round(self.control_period_s() * f64::from(regmap::PL_CLOCK_HZ)) as u64
+    }
     /// The control period of the active mode, s.
     pub fn control_period_s(&self) -> f64 {
         match self.mode {

@@ -36,6 +36,21 @@ fn control_rates_are_the_papers_within_a_permille() {
 }
 
 #[test]
+fn control_periods_in_pl_cycles_are_the_timers_whole_counts() {
+    // MPDTC: 4 ADC periods of 391 cycles; FOC: 2 PWM half periods of 3,128.
+    let (mut s, mut pl) = setup();
+    s.set_mode(&mut pl, Mode::Mpdtc).unwrap();
+    assert_eq!(s.control_period_cycles(), 4 * 391);
+    // The float route that lost a cycle: 1e8 / rate truncated.
+    assert_eq!(
+        (f64::from(regmap::PL_CLOCK_HZ) / s.control_rate_hz()) as u64,
+        1563
+    );
+    s.set_mode(&mut pl, Mode::Foc).unwrap();
+    assert_eq!(s.control_period_cycles(), 2 * 3128);
+}
+
+#[test]
 fn enable_is_refused_in_mode_off_and_with_a_fault_latched() {
     let (mut s, mut pl) = setup();
     assert_eq!(s.enable(&mut pl), Err(ServoError::ModeOff));
