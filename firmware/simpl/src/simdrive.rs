@@ -222,8 +222,6 @@ pub trait PlModel {
     fn cycles(&self) -> u64;
     /// Gate outputs now (bit 2 = leg a).
     fn gates(&self) -> crate::gates::GateOutputs;
-    /// `CTRL.MODE` now.
-    fn mode(&self) -> u32;
     /// Pin levels and converter data driven into the PL.
     fn pins_mut(&mut self) -> &mut Pins;
     /// Fits or removes the ADC card ([`crate::adc::Converter::set_fitted`]),
@@ -246,9 +244,6 @@ impl PlModel for SimPl {
     }
     fn gates(&self) -> crate::gates::GateOutputs {
         SimPl::gates(self)
-    }
-    fn mode(&self) -> u32 {
-        SimPl::mode(self)
     }
     fn pins_mut(&mut self) -> &mut Pins {
         &mut self.pins

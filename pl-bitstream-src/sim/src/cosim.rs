@@ -205,9 +205,6 @@ impl PlModel for RtlPl {
         let (hi, lo) = self.gates_q;
         GateOutputs { hi, lo }
     }
-    fn mode(&self) -> u32 {
-        self.shadow.mode()
-    }
     fn pins_mut(&mut self) -> &mut Pins {
         &mut self.pins
     }

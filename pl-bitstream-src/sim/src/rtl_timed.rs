@@ -30,9 +30,6 @@ impl PlModel for RtlTimedSimPl {
     fn gates(&self) -> GateOutputs {
         self.0.gates()
     }
-    fn mode(&self) -> u32 {
-        self.0.mode()
-    }
     fn pins_mut(&mut self) -> &mut Pins {
         &mut self.0.pins
     }
