@@ -59,13 +59,15 @@ impl Bridge {
         std::fs::create_dir_all(&dir)
             .with_context(|| format!("cannot create {}", dir.display()))?;
         let exe = pl_cosim_exe()?;
-        let mut child = Command::new(&exe)
-            .arg("--dir")
+        let mut cmd = Command::new(&exe);
+        cmd.arg("--dir")
             .arg(&dir)
             .arg("--stats")
             .arg(dir.join("stats.json"))
             .stdin(Stdio::null())
-            .stdout(Stdio::piped())
+            .stdout(Stdio::piped());
+        crate::link::end_with_parent(&mut cmd);
+        let mut child = cmd
             .spawn()
             .with_context(|| format!("cannot start {}", exe.display()))?;
         let mut line = String::new();

@@ -4,7 +4,9 @@
 pub mod config_file;
 pub mod cosim;
 pub mod defmt_log;
+pub mod frames;
 pub mod link;
 pub mod motion;
+pub mod server;
 pub mod step_map;
 pub mod tel;

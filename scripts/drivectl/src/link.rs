@@ -2,12 +2,50 @@
 //! the console protocol on top of it (see `drive::console`).
 use anyhow::{anyhow, bail, Context as _, Result};
 use std::io::{Read, Write};
+use std::os::unix::process::CommandExt as _;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
 use std::time::{Duration, Instant};
 
 pub use drive::console::PROMPT;
+
+/// Whether the processes this one starts (QEMU, `pl-cosim`) end when it
+/// ends, whatever ends it (a signal, a panic, SIGKILL): `drivectl` sets it
+/// at start; a library user (the system tests) starts its children from
+/// threads that end before the child should, so it stays off there.
+static END_CHILDREN_WITH_PARENT: AtomicBool = AtomicBool::new(false);
+
+/// Children spawned from now on get SIGTERM when the thread that spawned
+/// them ends (Linux `PR_SET_PDEATHSIG`); call it from the main thread,
+/// which lives as long as the process. SIGTERM, not SIGKILL: QEMU's clean
+/// exit on SIGTERM keeps the flash writes the firmware finished.
+pub fn end_children_with_parent() {
+    END_CHILDREN_WITH_PARENT.store(true, Ordering::Relaxed);
+}
+
+/// Applies [`end_children_with_parent`] to `cmd`.
+pub(crate) fn end_with_parent(cmd: &mut Command) {
+    if !END_CHILDREN_WITH_PARENT.load(Ordering::Relaxed) {
+        return;
+    }
+    let parent = std::process::id();
+    // SAFETY: the closure runs in the forked child before exec and calls
+    // only async-signal-safe functions (prctl, getppid, kill).
+    unsafe {
+        cmd.pre_exec(move || {
+            if libc::prctl(libc::PR_SET_PDEATHSIG, libc::SIGTERM) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            // The parent may have ended between fork and prctl.
+            if libc::getppid() as u32 != parent {
+                libc::kill(libc::getpid(), libc::SIGTERM);
+            }
+            Ok(())
+        });
+    }
+}
 
 /// The last line of the firmware's boot banner: the receiver is on by then.
 pub const BANNER_END: &str = "type `help`";
@@ -132,6 +170,7 @@ impl Qemu {
         self.check()?;
         let mut c = Command::new("qemu-system-arm");
         c.args(self.args("mon:stdio"));
+        end_with_parent(&mut c);
         Ok(c)
     }
 }
@@ -187,17 +226,20 @@ pub struct Session {
     tx: Box<dyn Write + Send>,
     rx: Receiver<Vec<u8>>,
     /// Telemetry frames split off the byte stream (`drive::telemetry`).
-    pub frames: crate::tel::Frames,
+    pub frames: crate::frames::Frames,
     /// Received and not yet consumed.
     pending: Vec<u8>,
     /// Everything received so far (for diagnostics).
     pub transcript: Vec<u8>,
     /// The co-simulation bridge of this QEMU, if any.
     bridge: Option<crate::cosim::Bridge>,
+    /// The socket of a running drive's console: shut down on drop, or
+    /// the reader thread's handle would keep the connection open.
+    socket: Option<std::os::unix::net::UnixStream>,
 }
 
 impl Session {
-    fn new(
+    pub(crate) fn new(
         child: Option<Child>,
         tx: Box<dyn Write + Send>,
         mut reader: Box<dyn Read + Send>,
@@ -205,7 +247,7 @@ impl Session {
         let (send, rx) = mpsc::channel();
         // Telemetry frames are taken out here: the console's text (and
         // `transcript`) is what it would be without a stream.
-        let (frames, mut demux) = crate::tel::Frames::new();
+        let (frames, mut demux) = crate::frames::Frames::new();
         std::thread::spawn(move || {
             let mut buf = [0u8; 4096];
             loop {
@@ -231,6 +273,7 @@ impl Session {
             pending: Vec::new(),
             transcript: Vec::new(),
             bridge: None,
+            socket: None,
         }
     }
 
@@ -246,11 +289,13 @@ impl Session {
         } else {
             None
         };
-        let mut child = Command::new("qemu-system-arm")
-            .args(q.args("stdio"))
+        let mut cmd = Command::new("qemu-system-arm");
+        cmd.args(q.args("stdio"))
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
-            .stderr(Stdio::null())
+            .stderr(Stdio::null());
+        end_with_parent(&mut cmd);
+        let mut child = cmd
             .spawn()
             .context("cannot start qemu-system-arm (run scripts/setup)")?;
         let tx = Box::new(child.stdin.take().expect("piped stdin"));
@@ -273,6 +318,33 @@ impl Session {
         let mut s = Self::new(None, Box::new(p), Box::new(reader));
         s.sync(timeout)?;
         Ok(s)
+    }
+
+    /// Connects to a running drive's console socket (`drivectl up`, see
+    /// [`crate::server`]) and synchronises on a fresh prompt.
+    pub fn connect(socket: &Path, timeout: Duration) -> Result<Self> {
+        let s = std::os::unix::net::UnixStream::connect(socket)
+            .with_context(|| format!("cannot connect to {}", socket.display()))?;
+        let reader = s.try_clone().context("cannot clone the socket")?;
+        let shut = s.try_clone().context("cannot clone the socket")?;
+        let mut s = Self::new(None, Box::new(s), Box::new(reader));
+        s.socket = Some(shut);
+        s.sync(timeout)?;
+        Ok(s)
+    }
+
+    /// The QEMU process of this session, if it started one.
+    pub fn child_id(&self) -> Option<u32> {
+        self.child.as_ref().map(Child::id)
+    }
+
+    /// Text received and not yet consumed, waiting at most `timeout` for
+    /// some; empty on timeout, an error once the link closed.
+    pub fn recv_text(&mut self, timeout: Duration) -> Result<Vec<u8>> {
+        if self.pending.is_empty() {
+            self.pull(Instant::now() + timeout)?;
+        }
+        Ok(std::mem::take(&mut self.pending))
     }
 
     /// Synchronises on a fresh prompt, dropping whatever came before.
@@ -416,6 +488,9 @@ impl Session {
 
 impl Drop for Session {
     fn drop(&mut self) {
+        if let Some(s) = &self.socket {
+            let _ = s.shutdown(std::net::Shutdown::Both);
+        }
         if let Some(c) = &mut self.child {
             let _ = c.kill();
             let _ = c.wait();

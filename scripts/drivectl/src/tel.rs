@@ -1,84 +1,11 @@
-//! Telemetry on the host: the frames split off the console link
-//! (`drive::telemetry`'s demultiplexer), a stream's bookkeeping (sequence
+//! Telemetry on the host: a stream's bookkeeping (sequence
 //! gaps are lost frames, drive time unwrapped) and the recording behind
 //! `drivectl tel`.
 use crate::link::{Final, Reply, Session};
 use anyhow::{bail, Context as _, Result};
-use drive::telemetry::{Demux, Demuxed, Sample, CHANNELS};
+use drive::telemetry::{Sample, CHANNELS};
 use std::io::Write;
-use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::mpsc::{self, Receiver, Sender};
-use std::sync::Arc;
 use std::time::{Duration, Instant};
-
-/// The receiving end of the frames found on a console link.
-pub struct Frames {
-    rx: Receiver<Sample>,
-    bad: Arc<AtomicU64>,
-}
-
-/// The link reader's end: splits received bytes into text and frames.
-pub struct Splitter {
-    demux: Demux,
-    tx: Sender<Sample>,
-    bad: Arc<AtomicU64>,
-}
-
-impl Splitter {
-    /// The text bytes of `bytes`; frames go to the [`Frames`] receiver.
-    pub fn split(&mut self, bytes: &[u8]) -> Vec<u8> {
-        let mut text = Vec::with_capacity(bytes.len());
-        for &b in bytes {
-            match self.demux.feed(b) {
-                Demuxed::Text(t) => text.push(t),
-                Demuxed::Frame(s) => {
-                    // Nobody listening: the frame is not wanted.
-                    let _ = self.tx.send(s);
-                }
-                Demuxed::Bad => {
-                    self.bad.fetch_add(1, Ordering::Relaxed);
-                }
-                Demuxed::Nothing => {}
-            }
-        }
-        text
-    }
-}
-
-impl Frames {
-    /// A connected pair.
-    pub fn new() -> (Frames, Splitter) {
-        let (tx, rx) = mpsc::channel();
-        let bad = Arc::new(AtomicU64::new(0));
-        (
-            Frames {
-                rx,
-                bad: bad.clone(),
-            },
-            Splitter {
-                demux: Demux::new(),
-                tx,
-                bad,
-            },
-        )
-    }
-
-    /// The next frame, waiting at most `timeout`.
-    pub fn next(&self, timeout: Duration) -> Option<Sample> {
-        // Timeout or a closed link: nothing more now.
-        self.rx.recv_timeout(timeout).ok()
-    }
-
-    /// Every frame received so far.
-    pub fn drain(&self) -> Vec<Sample> {
-        self.rx.try_iter().collect()
-    }
-
-    /// Frames that failed their checks (CRC, COBS, length) since the start.
-    pub fn bad(&self) -> u64 {
-        self.bad.load(Ordering::Relaxed)
-    }
-}
 
 /// One running stream as the host sees it.
 #[derive(Clone, Debug)]
@@ -321,7 +248,7 @@ pub fn write_csv(rec: &Recording, out: &mut dyn Write) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use drive::telemetry::{FRAME_MAX, MAX_CHANNELS};
+    use drive::telemetry::MAX_CHANNELS;
 
     fn frame(stream: u8, seq: u16, time_us: u32) -> Sample {
         Sample {
@@ -363,27 +290,6 @@ mod tests {
         let (t, _) = st.accept(&frame(4, 0, u32::MAX - 499)).unwrap();
         let (t2, _) = st.accept(&frame(4, 1, 500)).unwrap();
         assert!((t2 - t - 1e-3).abs() < 1e-9, "{t} {t2}");
-    }
-
-    #[test]
-    fn the_splitter_keeps_text_and_counts_bad_frames() {
-        let (frames, mut sp) = Frames::new();
-        let mut buf = [0u8; FRAME_MAX];
-        let n = frame(1, 7, 10).encode(&mut buf);
-        let mut wire = b"OK\r\n".to_vec();
-        wire.extend_from_slice(&buf[..n]);
-        let mut broken = buf;
-        broken[5] ^= 0x10;
-        wire.extend_from_slice(&broken[..n]);
-        wire.extend_from_slice(b"drive> ");
-        // Fed in two pieces, split inside the first frame.
-        let mut text = sp.split(&wire[..9]);
-        text.extend(sp.split(&wire[9..]));
-        assert_eq!(text, b"OK\r\ndrive> ");
-        let got = frames.drain();
-        assert_eq!(got.len(), 1);
-        assert_eq!(got[0].seq, 7);
-        assert_eq!(frames.bad(), 1);
     }
 
     #[test]

@@ -17,7 +17,8 @@
 use crate::console::Target;
 use anyhow::{bail, Context as _, Result};
 use drivectl::link::{Final, Reply, Session};
-use drivectl::tel::{Frames, Stream};
+use drivectl::frames::Frames;
+use drivectl::tel::Stream;
 use serde_json::json;
 use std::net::SocketAddr;
 use std::sync::{Arc, Mutex};
