@@ -4,8 +4,8 @@
 //! plot of each line fit the reply gives the points of (`fit ...` lines:
 //! resistance, flux, friction) to `DIR`, and with `--save` keeps the
 //! configuration in the drive's flash.
-use crate::console::{session, timeout, Target};
-use anyhow::{bail, Context, Result};
+use crate::console::{session, timeout, Refused, Target};
+use anyhow::{Context, Result};
 use drivectl::link::{parse_reply, Final};
 use std::path::PathBuf;
 
@@ -169,11 +169,15 @@ pub fn calibrate(a: CalibrateArgs) -> Result<()> {
         let r = s.command("config save", t)?;
         match r.fin {
             Final::Ok => println!("{}", r.lines.join("\n")),
-            Final::Err { code, message } => bail!("config save: ERR {code} {message}"),
+            Final::Err { code, message } => {
+                println!("ERR {code} {message}");
+                return Err(Refused(format!("config save: ERR {code} {message}")).into());
+            }
         }
     }
     if let Final::Err { code, message } = reply.fin {
-        bail!("ERR {code} {message}");
+        println!("ERR {code} {message}");
+        return Err(Refused(format!("calibrate {}: ERR {code} {message}", a.phase)).into());
     }
     Ok(())
 }

@@ -3,7 +3,7 @@ use anyhow::{bail, Context as _, Result};
 use drivectl::defmt_log::LogTable;
 use drivectl::link::{default_elf, Final, Qemu, Session, PROMPT};
 use std::io::{IsTerminal, Read, Write};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{mpsc, Arc};
 use std::time::{Duration, Instant};
@@ -31,11 +31,67 @@ pub struct Target {
     pub pl: String,
     /// QSPI flash image of QEMU (the saved configuration); created erased
     /// (16 MiB of 0xFF) when missing.
-    #[arg(long, default_value = "target/run/qspi-flash.img")]
+    #[arg(long, default_value = DEFAULT_FLASH)]
     pub flash: PathBuf,
+    /// Boot a QEMU for this command even when a drive is running
+    /// (`drivectl up`); without it, the running drive is used.
+    #[arg(long)]
+    pub fresh: bool,
 }
 
+const DEFAULT_FLASH: &str = "target/run/qspi-flash.img";
+
 impl Target {
+    /// The firmware this command talks to: the board on `--port`; else the
+    /// running drive (`drivectl up`), unless `--fresh`; else a QEMU booted
+    /// for this command alone (and ended with it), saying so.
+    pub fn open(&self, t: Duration) -> Result<Session> {
+        if let Some(p) = &self.port {
+            return Session::open_serial(p, self.baud, t);
+        }
+        if let Some(sock) = self.running()? {
+            return Session::connect(&sock, t);
+        }
+        eprintln!(
+            "drivectl: no drive running (`drivectl up` starts one): booting QEMU for this command"
+        );
+        Session::spawn_qemu(&self.qemu(), t)
+    }
+
+    /// The running drive's socket, if this command uses it. Options that
+    /// describe a QEMU to boot are an error then: they would be ignored.
+    pub fn running(&self) -> Result<Option<PathBuf>> {
+        if self.fresh || self.port.is_some() {
+            return Ok(None);
+        }
+        let run = drivectl::server::RunDir::default_dir();
+        let Some(sock) = run.live_socket() else {
+            return Ok(None);
+        };
+        let boot_options = [
+            (self.elf.is_some(), "--elf"),
+            (self.icount, "--icount"),
+            (self.pl != "sim", "--pl"),
+            (self.flash != Path::new(DEFAULT_FLASH), "--flash"),
+        ];
+        let given: Vec<&str> = boot_options
+            .iter()
+            .filter(|(set, _)| *set)
+            .map(|(_, name)| *name)
+            .collect();
+        if !given.is_empty() {
+            let info = std::fs::read_to_string(run.info()).unwrap_or_default();
+            bail!(
+                "a drive is running ({}, console {}); {} describe a QEMU to boot: \
+                 add --fresh to boot one for this command, or `drivectl down` first",
+                info.trim(),
+                sock.display(),
+                given.join(", ")
+            );
+        }
+        Ok(Some(sock))
+    }
+
     pub fn qemu(&self) -> Qemu {
         let mut q = Qemu::new(self.elf.clone().unwrap_or_else(default_elf));
         q.icount = self.icount;
@@ -78,10 +134,7 @@ pub struct ConfigFileArgs {
 }
 
 pub fn session(target: &Target, t: Duration) -> Result<Session> {
-    match &target.port {
-        Some(p) => Session::open_serial(p, target.baud, t),
-        None => Session::spawn_qemu(&target.qemu(), t),
-    }
+    target.open(t)
 }
 
 pub fn config_pull(a: ConfigFileArgs) -> Result<()> {
@@ -132,6 +185,25 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
     if let Some(port) = &a.target.port {
         return serial_terminal(port, a.target.baud);
     }
+    let interactive = std::io::stdin().is_terminal();
+    if let Some(sock) = a.target.running()? {
+        let s = Session::connect(&sock, Duration::from_secs(20))?;
+        let run = drivectl::server::RunDir::default_dir();
+        eprintln!(
+            "drivectl: the running drive's console ({}); defmt log in {}",
+            sock.display(),
+            run.defmt_log().display()
+        );
+        return if interactive {
+            eprint!("drivectl: Ctrl-] quits (the drive keeps running)\r\n");
+            let mut out = std::io::stdout();
+            out.write_all(PROMPT.as_bytes())?;
+            out.flush()?;
+            session_terminal(s)
+        } else {
+            piped_console(s)
+        };
+    }
     let mut q = a.target.qemu();
     let raw = PathBuf::from(format!("{}.bin", a.defmt_log.display()));
     if let Some(dir) = a.defmt_log.parent() {
@@ -151,41 +223,25 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
         })
     };
     eprintln!(
-        "drivectl: firmware {} in QEMU; defmt log (decoded) in {}",
+        "drivectl: firmware {} in QEMU for this console alone (`drivectl up` keeps one running); \
+         defmt log (decoded) in {}",
         q.elf.display(),
         a.defmt_log.display()
     );
-    let result = if std::io::stdin().is_terminal() {
-        eprintln!("drivectl: console on this terminal; Ctrl-A X quits QEMU\r");
-        // The bridge lives as long as QEMU does.
-        let bridge = if q.pl_rtl {
-            let b = drivectl::cosim::Bridge::start()?;
-            q.cosim_dir = Some(b.dir().to_path_buf());
-            eprintln!(
-                "drivectl: PL = the Verilated pl_top (pl-cosim in {})\r",
-                b.dir().display()
-            );
-            Some(b)
+    if q.pl_rtl {
+        eprintln!("drivectl: PL = the Verilated pl_top (pl-cosim)");
+    }
+    let result = Session::spawn_qemu(&q, Duration::from_secs(20)).and_then(|s| {
+        let mut out = std::io::stdout();
+        out.write_all(&s.transcript)?;
+        out.flush()?;
+        if interactive {
+            eprint!("drivectl: Ctrl-] (or Ctrl-A X) quits and ends QEMU\r\n");
+            session_terminal(s)
         } else {
-            None
-        };
-        let status = q
-            .interactive()?
-            .status()
-            .context("cannot start qemu-system-arm")?;
-        if let Some(b) = bridge {
-            if let Ok(stats) = b.finish() {
-                eprintln!("drivectl: pl-cosim: {}", stats.trim());
-            }
+            piped_console(s)
         }
-        if status.success() {
-            Ok(())
-        } else {
-            Err(anyhow::anyhow!("QEMU exited with {status}"))
-        }
-    } else {
-        piped_console(&q)
-    };
+    });
     stop.store(true, Ordering::Relaxed);
     let frames = decoder
         .join()
@@ -194,14 +250,92 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
     result
 }
 
+/// What a byte typed on the terminal does: Ctrl-] quits; so does Ctrl-A
+/// then `x` (QEMU's own key, which users of `scripts/run` know).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Key {
+    Send,
+    /// Ctrl-A: held back until the next byte says what it was.
+    Prefix,
+    Quit,
+}
+
+fn key(b: u8, after_prefix: bool) -> Key {
+    match (after_prefix, b) {
+        (_, 0x1d) => Key::Quit,
+        (true, b'x' | b'X') => Key::Quit,
+        (false, 0x01) => Key::Prefix,
+        _ => Key::Send,
+    }
+}
+
+/// A raw terminal on a console session (QEMU's pipes or the running
+/// drive's socket): typed bytes go out as typed, the firmware's text
+/// comes back (telemetry frames are not shown); Ctrl-] quits. A QEMU the
+/// session started ends cleanly (its flash writes kept).
+fn session_terminal(mut s: Session) -> Result<()> {
+    let saved = stty(&["-g"]).ok();
+    stty(&["raw", "-echo"]).context("cannot put the terminal in raw mode")?;
+    let (tx, rx) = mpsc::channel::<Vec<u8>>();
+    std::thread::spawn(move || {
+        let mut stdin = std::io::stdin();
+        let mut buf = [0u8; 64];
+        while let Ok(n) = stdin.read(&mut buf) {
+            if n == 0 || tx.send(buf[..n].to_vec()).is_err() {
+                break;
+            }
+        }
+    });
+    let mut out = std::io::stdout();
+    let mut prefix = false;
+    let result = 'term: loop {
+        match s.recv_text(Duration::from_millis(20)) {
+            Ok(text) => {
+                let _ = out.write_all(&text);
+                let _ = out.flush();
+            }
+            Err(e) => break Err(e),
+        }
+        let chunk = match rx.try_recv() {
+            Ok(c) => c,
+            Err(mpsc::TryRecvError::Empty) => continue,
+            Err(mpsc::TryRecvError::Disconnected) => break Ok(()),
+        };
+        let mut send = Vec::with_capacity(chunk.len());
+        for &b in &chunk {
+            match key(b, prefix) {
+                Key::Quit => {
+                    let _ = s.send(&send);
+                    break 'term Ok(());
+                }
+                Key::Prefix => prefix = true,
+                Key::Send => {
+                    if prefix {
+                        send.push(0x01);
+                    }
+                    prefix = false;
+                    send.push(b);
+                }
+            }
+        }
+        if let Err(e) = s.send(&send) {
+            break Err(e);
+        }
+    };
+    if let Some(st) = saved {
+        let _ = stty(&[st.trim()]);
+    }
+    eprintln!();
+    let quit = s.quit(Duration::from_secs(10));
+    result.and(quit)
+}
+
 /// Standard input is a pipe: hold it until the firmware is ready, relay
 /// both ways, quit one second after the input ends and the firmware is back
 /// at its prompt (a slow command, e.g. a `step` on the co-simulated RTL,
 /// may print nothing for longer; at most 30 s of silence).
-fn piped_console(q: &Qemu) -> Result<()> {
-    let mut s = Session::spawn_qemu(q, Duration::from_secs(20))?;
+fn piped_console(mut s: Session) -> Result<()> {
     let mut out = std::io::stdout();
-    out.write_all(&s.transcript)?;
     let (tx, rx) = mpsc::channel::<Vec<u8>>();
     std::thread::spawn(move || {
         let mut stdin = std::io::stdin();
@@ -309,12 +443,22 @@ fn stty(args: &[&str]) -> Result<String> {
     Ok(String::from_utf8_lossy(&o.stdout).into_owned())
 }
 
+/// The drive answered `ERR`: the command ran and was refused, as opposed
+/// to a link or host failure. `drivectl` exits 1 for it, 2 for the others.
+#[derive(Debug)]
+pub struct Refused(pub String);
+
+impl std::fmt::Display for Refused {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for Refused {}
+
 pub fn send(a: SendArgs) -> Result<()> {
     let t = timeout(a.timeout_s)?;
-    let mut s = match &a.target.port {
-        Some(p) => Session::open_serial(p, a.target.baud, t)?,
-        None => Session::spawn_qemu(&a.target.qemu(), t)?,
-    };
+    let mut s = a.target.open(t)?;
     let reply = s.command(&a.command, t)?;
     for l in &reply.lines {
         println!("{l}");
@@ -326,8 +470,7 @@ pub fn send(a: SendArgs) -> Result<()> {
         }
         Final::Err { code, message } => {
             println!("ERR {code} {message}");
-            drop(s);
-            std::process::exit(1);
+            Err(Refused(format!("`{}`: ERR {code} {message}", a.command)).into())
         }
     }
 }
@@ -344,4 +487,38 @@ pub fn log(a: LogArgs) -> Result<()> {
         table.decode(f, &mut out, stop)?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Feeds `typed` through [`key`] as the terminal loop does: the bytes
+    /// sent and whether it quit.
+    fn typed(bytes: &[u8]) -> (Vec<u8>, bool) {
+        let (mut sent, mut prefix) = (Vec::new(), false);
+        for &b in bytes {
+            match key(b, prefix) {
+                Key::Quit => return (sent, true),
+                Key::Prefix => prefix = true,
+                Key::Send => {
+                    if prefix {
+                        sent.push(0x01);
+                    }
+                    prefix = false;
+                    sent.push(b);
+                }
+            }
+        }
+        (sent, false)
+    }
+
+    #[test]
+    fn ctrl_close_bracket_and_ctrl_a_x_quit_other_bytes_go_through() {
+        assert_eq!(typed(b"status\r\x1dmore"), (b"status\r".to_vec(), true));
+        assert_eq!(typed(b"st\x01x"), (b"st".to_vec(), true));
+        assert_eq!(typed(b"st\x01X"), (b"st".to_vec(), true));
+        // Ctrl-A before anything else is sent as typed.
+        assert_eq!(typed(b"\x01a\x03"), (b"\x01a\x03".to_vec(), false));
+    }
 }

@@ -99,10 +99,7 @@ const BOOT: Duration = Duration::from_secs(20);
 const CMD: Duration = Duration::from_secs(30);
 
 pub(crate) fn open(t: &Target) -> Result<Session> {
-    match &t.port {
-        Some(p) => Session::open_serial(p, t.baud, BOOT),
-        None => Session::spawn_qemu(&t.qemu(), BOOT),
-    }
+    t.open(BOOT)
 }
 
 /// Sends `line`; an `ERR` reply is an error with the firmware's message.

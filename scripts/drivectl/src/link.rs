@@ -3,9 +3,9 @@
 use anyhow::{anyhow, bail, Context as _, Result};
 use std::io::{Read, Write};
 use std::os::unix::process::CommandExt as _;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
 use std::time::{Duration, Instant};
 
@@ -25,16 +25,25 @@ pub fn end_children_with_parent() {
     END_CHILDREN_WITH_PARENT.store(true, Ordering::Relaxed);
 }
 
-/// Applies [`end_children_with_parent`] to `cmd`.
+/// Prepares `cmd` as a child of this tool: it starts with no signal
+/// blocked (a server blocks SIGTERM in all its threads to take it in one,
+/// and a blocked mask survives exec: QEMU would ignore the SIGTERM that
+/// asks it to end cleanly), and with [`end_children_with_parent`] it ends
+/// with this process.
 pub(crate) fn end_with_parent(cmd: &mut Command) {
-    if !END_CHILDREN_WITH_PARENT.load(Ordering::Relaxed) {
-        return;
-    }
+    let die_with_parent = END_CHILDREN_WITH_PARENT.load(Ordering::Relaxed);
     let parent = std::process::id();
     // SAFETY: the closure runs in the forked child before exec and calls
-    // only async-signal-safe functions (prctl, getppid, kill).
+    // only async-signal-safe functions (sigemptyset, pthread_sigmask,
+    // prctl, getppid, kill).
     unsafe {
         cmd.pre_exec(move || {
+            let mut none: libc::sigset_t = std::mem::zeroed();
+            libc::sigemptyset(&mut none);
+            libc::pthread_sigmask(libc::SIG_SETMASK, &none, std::ptr::null_mut());
+            if !die_with_parent {
+                return Ok(());
+            }
             if libc::prctl(libc::PR_SET_PDEATHSIG, libc::SIGTERM) != 0 {
                 return Err(std::io::Error::last_os_error());
             }

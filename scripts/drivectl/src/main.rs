@@ -13,6 +13,7 @@ mod explore;
 mod paper_mpdcc;
 mod paper_mpdtc;
 mod plot;
+mod running;
 mod sim;
 mod tel_cmd;
 mod ui;
@@ -30,7 +31,17 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Cmd {
-    /// Interactive console: over a serial port, or on a firmware booted in QEMU (default).
+    /// Boot the drive once (QEMU, or share a board's --port) with its
+    /// console on a local socket under target/run; every other command
+    /// then uses it. Returns once it is up.
+    Up(running::UpArgs),
+    /// End the drive `drivectl up` started (QEMU ends cleanly).
+    Down(running::DownArgs),
+    /// The server `drivectl up` starts (not for direct use).
+    #[command(hide = true)]
+    Serve(running::UpArgs),
+    /// Interactive console: over a serial port, the running drive, or a
+    /// firmware booted in QEMU; Ctrl-] quits.
     Console(console::ConsoleArgs),
     /// Send one console command, print the reply, exit non-zero on `ERR`.
     Send(console::SendArgs),
@@ -121,15 +132,23 @@ enum BenchCmd {
     Mpdcc(paper_mpdcc::BenchArgs),
 }
 
-/// Errors are the user's to read: one line of causes, exit code 2, never a
-/// backtrace (anyhow prints one from `main` when RUST_BACKTRACE is set).
+/// Errors are the user's to read: one line of causes, exit code 1 when the
+/// drive answered `ERR`, 2 for any other failure, never a backtrace (anyhow prints one from `main` when RUST_BACKTRACE is set).
 fn main() {
     // `drivectl paper mpdtc | head` must end quietly, as other command-line
     // tools do, not panic on the closed pipe: restore SIGPIPE's default action,
     // which Rust's runtime sets to "ignore".
     // SAFETY: called before any other thread exists; SIG_DFL is always valid.
     unsafe { libc::signal(libc::SIGPIPE, libc::SIG_DFL) };
+    // Whatever ends this process (Ctrl-C, SIGTERM, a kill) ends the QEMU
+    // and co-simulation it started.
+    drivectl::link::end_children_with_parent();
     if let Err(e) = dispatch(Cli::parse().cmd) {
+        // The drive's `ERR` line is already on standard output.
+        if let Some(r) = e.downcast_ref::<console::Refused>() {
+            eprintln!("drivectl: the drive refused {r}");
+            std::process::exit(1);
+        }
         eprintln!("drivectl: error: {e:#}");
         std::process::exit(2);
     }
@@ -137,6 +156,9 @@ fn main() {
 
 fn dispatch(cmd: Cmd) -> Result<()> {
     match cmd {
+        Cmd::Up(a) => running::up(a),
+        Cmd::Down(a) => running::down(a),
+        Cmd::Serve(a) => running::serve(a),
         Cmd::Console(a) => console::console(a),
         Cmd::Send(a) => console::send(a),
         Cmd::Calibrate(a) => calibrate_cmd::calibrate(a),

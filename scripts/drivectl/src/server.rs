@@ -297,7 +297,9 @@ impl Server {
         self.waiting.retain(|&w| w != id);
         if self.tel_owner == Some(id) {
             self.tel_owner = None;
-            eprintln!("drivectl serve: client {id} left with a telemetry stream running: `tel stop`");
+            eprintln!(
+                "drivectl serve: client {id} left with a telemetry stream running: `tel stop`"
+            );
             self.queue(SERVER, b"tel stop\r");
         }
         if let Some((h, Phase::Typing)) = &self.holder {
@@ -349,7 +351,8 @@ impl Server {
                     }
                     if !sent.is_empty() {
                         self.link.send(&sent)?;
-                        self.line.extend(sent.iter().filter(|b| !b.is_ascii_control()));
+                        self.line
+                            .extend(sent.iter().filter(|b| !b.is_ascii_control()));
                     }
                     if !ended {
                         return Ok(());

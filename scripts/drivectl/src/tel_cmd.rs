@@ -1,7 +1,6 @@
 //! `drivectl tel`: records the drive's telemetry stream to CSV.
 use crate::console::Target;
 use anyhow::{Context as _, Result};
-use drivectl::link::Session;
 use drivectl::tel::{self, RecordOptions};
 use std::path::PathBuf;
 use std::time::Duration;
@@ -34,10 +33,7 @@ pub struct TelArgs {
 pub fn run(a: TelArgs) -> Result<()> {
     let t = crate::console::timeout(a.timeout_s)?;
     let channels: Vec<String> = a.channels.split(',').map(str::to_string).collect();
-    let mut s = match &a.target.port {
-        Some(p) => Session::open_serial(p, a.target.baud, t)?,
-        None => Session::spawn_qemu(&a.target.qemu(), t)?,
-    };
+    let mut s = a.target.open(t)?;
     let bar = indicatif::ProgressBar::new(1000);
     bar.set_style(
         indicatif::ProgressStyle::with_template("{bar:40} {percent:>3}% of drive time {msg}")

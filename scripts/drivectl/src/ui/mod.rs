@@ -16,8 +16,8 @@
 //!   "rate_hz", "next", "lost", "bad", "t": [...], "v": [[...], ...]}`.
 use crate::console::Target;
 use anyhow::{bail, Context as _, Result};
-use drivectl::link::{Final, Reply, Session};
 use drivectl::frames::Frames;
+use drivectl::link::{Final, Reply, Session};
 use drivectl::tel::Stream;
 use serde_json::json;
 use std::net::SocketAddr;
@@ -167,10 +167,7 @@ fn pump_frames(shared: Arc<Shared>, frames: Frames) {
 pub fn run(a: UiArgs) -> Result<()> {
     check_listen(&a.listen, a.allow_remote)?;
     let t = crate::console::timeout(a.timeout_s)?;
-    let mut s = match &a.target.port {
-        Some(p) => Session::open_serial(p, a.target.baud, t)?,
-        None => Session::spawn_qemu(&a.target.qemu(), t)?,
-    };
+    let mut s = a.target.open(t)?;
     // The frames go to their own thread; the session keeps the text.
     let frames = std::mem::replace(&mut s.frames, Frames::new().0);
     let shared = Arc::new(Shared {
@@ -189,9 +186,10 @@ pub fn run(a: UiArgs) -> Result<()> {
     } else {
         "REMOTE ACCESS: anyone who reaches this address can run the drive"
     };
-    let target = match &a.target.port {
-        Some(p) => format!("the board on {p}"),
-        None => "the firmware in QEMU".to_string(),
+    let target = match (&a.target.port, a.target.running()?) {
+        (Some(p), _) => format!("the board on {p}"),
+        (None, Some(sock)) => format!("the running drive ({})", sock.display()),
+        (None, None) => "the firmware in QEMU (ended with this page's server)".to_string(),
     };
     println!("drivectl ui: serving {target} on http://{addr}/ ({scope}); Ctrl-C ends");
     {
