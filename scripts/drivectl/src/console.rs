@@ -232,11 +232,13 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
         eprintln!("drivectl: PL = the Verilated pl_top (pl-cosim)");
     }
     let result = Session::spawn_qemu(&q, Duration::from_secs(20)).and_then(|s| {
+        if interactive {
+            eprintln!("drivectl: Ctrl-] (or Ctrl-A X) quits and ends QEMU");
+        }
         let mut out = std::io::stdout();
         out.write_all(&s.transcript)?;
         out.flush()?;
         if interactive {
-            eprint!("drivectl: Ctrl-] (or Ctrl-A X) quits and ends QEMU\r\n");
             session_terminal(s)
         } else {
             piped_console(s)
