@@ -519,3 +519,53 @@ fn refusals_leave_the_gates_off_and_the_configuration_alone() {
     );
     assert!(!s.gates_on(&mut bus).unwrap());
 }
+
+/// A coasting rotor is refused before anything is driven: its back EMF
+/// would drive currents the phases do not command (an OVERCURRENT trip
+/// at 55 rev/s, seen through the console).
+#[test]
+fn a_turning_rotor_is_refused_and_nothing_changes() {
+    use drive::servo::{ServoError, CAL_REST_REV_S};
+    let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+    sim.apply_sim_motor(&SimMotor {
+        locked: false,
+        ..SimMotor::default()
+    })
+    .unwrap();
+    let cfg = ServoConfig::for_plant(sim.config().motor, sim.config().adc_amps_per_count);
+    let mut bus = Bus(sim);
+    let mut s = Servo::new(&cfg).unwrap();
+    s.init(&mut bus).unwrap();
+    s.set_mode(&mut bus, Mode::Foc).unwrap();
+    s.enable(&mut bus).unwrap();
+    // The frictionless rotor spun up by 0.05 N m, then left to coast.
+    s.set_torque_ref(0.05).unwrap();
+    let mut speed = 0.0;
+    for _ in 0..20_000 {
+        bus.0.advance_to_boundary(20_000);
+        s.control_step(&mut bus.0).unwrap();
+        speed = s.motion_status().velocity_rev_s;
+        if speed > 2.0 * CAL_REST_REV_S {
+            break;
+        }
+    }
+    assert!(speed > 2.0 * CAL_REST_REV_S, "{speed} rev/s");
+    s.set_torque_ref(0.0).unwrap();
+    s.disable(&mut bus).unwrap();
+    for _ in 0..100 {
+        bus.0.advance_to_boundary(20_000);
+        s.control_step(&mut bus.0).unwrap();
+    }
+    let coasting = s.motion_status().velocity_rev_s;
+    assert!(coasting > CAL_REST_REV_S, "{coasting} rev/s");
+    let setup = s.calibration_setup(8.0, 16.0, Phases::ALL);
+    let r = s.calibrate(&mut bus, &setup, &mut |_| {}, &mut || false);
+    match r {
+        Err(ServoError::RotorTurning(v)) => {
+            assert!((v - coasting).abs() < 0.05 * coasting, "{v} vs {coasting}")
+        }
+        other => panic!("{other:?}"),
+    }
+    assert!(!s.gates_on(&mut bus).unwrap());
+    assert_eq!(*s.config(), cfg);
+}

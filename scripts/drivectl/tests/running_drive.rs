@@ -181,10 +181,17 @@ fn send_tel_and_calibrate_talk_to_one_running_drive() {
         assert!(fault.contains("OVERSPEED"), "{fault}");
     }
 
-    // On the free rotor the drive calibrates, at rest as on a bench: the
-    // frictionless simulated rotor coasts at the trip speed, so the
-    // velocity loop stops it first; calibration needs the gates off.
-    for c in ["fault clear", "enable", "vel 0"] {
+    // The frictionless simulated rotor coasts at the trip speed:
+    // `calibrate` refuses it (exit 1: the drive's ERR), changing nothing.
+    d.ok(&["send", "fault clear"]);
+    let o = d.run(&["calibrate", "--out", d.dir.join("cal0").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1), "{o:?}");
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(said.contains("ERR rotor-turning"), "{said}");
+
+    // On the free rotor at rest the drive calibrates: the velocity loop
+    // stops it first; calibration needs the gates off.
+    for c in ["enable", "vel 0"] {
         d.ok(&["send", c]);
     }
     let t0 = Instant::now();

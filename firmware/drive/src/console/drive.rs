@@ -507,6 +507,15 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
                 libm::ceil(left_s * 1e3)
             ),
         ),
+        DriveError::Servo(ServoError::RotorTurning(v)) => write_err(
+            out,
+            ErrorCode::RotorTurning,
+            format_args!(
+                "{cmd}: the rotor turns at {v:.2} rev/s (at most {} rev/s to start): \
+                 stop it first (`enable`, `vel 0`, then `disable`); nothing changed",
+                crate::servo::CAL_REST_REV_S
+            ),
+        ),
         DriveError::Servo(ServoError::Bus(b)) => write_err(
             out,
             ErrorCode::BusError,

@@ -71,6 +71,8 @@ pub enum ErrorCode {
     Aligning,
     /// `pos zero` while a loop holds a position.
     Holding,
+    /// `calibrate` while the rotor turns.
+    RotorTurning,
 }
 
 impl ErrorCode {
@@ -97,6 +99,7 @@ impl ErrorCode {
             ErrorCode::Interrupted => "interrupted",
             ErrorCode::Aligning => "aligning",
             ErrorCode::Holding => "holding",
+            ErrorCode::RotorTurning => "rotor-turning",
         }
     }
 }

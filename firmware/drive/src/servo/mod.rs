@@ -242,7 +242,17 @@ pub enum ServoError {
     /// MPDTC's rotor alignment, which still turns the rotor: at most this
     /// long left, s.
     Aligning(f64),
+    /// `calibrate` while the rotor turns faster than
+    /// [`CAL_REST_REV_S`]: its speed, rev/s.
+    RotorTurning(f64),
 }
+
+/// The fastest a rotor may turn for `calibrate` to start, rev/s: its
+/// phases assume a rotor at rest (the encoder phase turns the field
+/// against it, the resistance phase holds a current vector); a coasting
+/// rotor's back EMF drives currents they do not command. 0.5 rev/s of the
+/// paper's motor (7 pole pairs, 9.29 mWb) is 0.20 V of back EMF.
+pub const CAL_REST_REV_S: f64 = 0.5;
 
 impl From<MotionError> for ServoError {
     fn from(e: MotionError) -> Self {
@@ -770,6 +780,10 @@ impl Servo {
         let f = self.faults(bus)?;
         if !f.none() {
             return Err(ServoError::FaultLatched(f));
+        }
+        let v = self.motion_status().velocity_rev_s;
+        if !(libm::fabs(v) <= CAL_REST_REV_S) {
+            return Err(ServoError::RotorTurning(v));
         }
         setup.validate().map_err(ServoError::BadConfig)?;
         let bad = |field, reason| Err(ServoError::BadConfig(ParamError { field, reason }));
