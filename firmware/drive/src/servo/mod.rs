@@ -782,7 +782,8 @@ impl Servo {
             return Err(ServoError::FaultLatched(f));
         }
         let v = self.motion_status().velocity_rev_s;
-        if !(libm::fabs(v) <= CAL_REST_REV_S) {
+        // A NaN estimate is no proof of rest either.
+        if v.is_nan() || libm::fabs(v) > CAL_REST_REV_S {
             return Err(ServoError::RotorTurning(v));
         }
         setup.validate().map_err(ServoError::BadConfig)?;
