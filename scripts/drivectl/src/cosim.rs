@@ -66,7 +66,7 @@ impl Bridge {
             .arg(dir.join("stats.json"))
             .stdin(Stdio::null())
             .stdout(Stdio::piped());
-        crate::link::end_with_parent(&mut cmd);
+        crate::children::end_with_parent(&mut cmd);
         let mut child = cmd
             .spawn()
             .with_context(|| format!("cannot start {}", exe.display()))?;
