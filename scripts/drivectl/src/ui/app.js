@@ -96,7 +96,7 @@ function plotInto(el, o) {
   if (old) old.destroy();
   el.textContent = "";
   const scales = { x: Object.assign({ time: false }, o.xScale || {}) };
-  const axes = [{ label: o.xLabel }];
+  const axes = [Object.assign({ label: o.xLabel }, o.xAxis || {})];
   o.yAxes.forEach((a, k) => {
     scales[a.scale] = {};
     axes.push({ scale: a.scale, label: a.label, side: k === 0 ? 3 : 1, grid: { show: k === 0 } });
@@ -457,6 +457,30 @@ function sweepRangeFor(mode) {
   $("sweep-f1").value = r[1];
 }
 
+// The drive reports each phase in (-180, 180] deg; the plot shows the lag
+// growing past -180 deg instead of a jump of 360 deg.
+function unwrapDeg(ph) {
+  const out = [];
+  let off = 0;
+  ph.forEach((p, k) => {
+    if (k > 0) {
+      const d = p + off - out[k - 1];
+      if (d > 180) off -= 360;
+      else if (d < -180) off += 360;
+    }
+    out.push(p + off);
+  });
+  return out;
+}
+
+// Labels at 1, 2 and 5 times a power of ten: a decade or less of range
+// still gets labels, and a wider one no crowded 7, 8, 9.
+function logTick(v) {
+  if (v == null || !(v > 0)) return null;
+  const m = Math.round(v / 10 ** Math.floor(Math.log10(v) + 1e-9));
+  return [1, 2, 5].includes(m) ? v : null;
+}
+
 $("sweep-run").onclick = () => experiment("sweep-result", async (out) => {
   out.textContent = "running";
   const line = ["sweep", $("sweep-f0").value, $("sweep-f1").value, $("sweep-amp").value, $("sweep-points").value].join(" ");
@@ -468,9 +492,12 @@ $("sweep-run").onclick = () => experiment("sweep-result", async (out) => {
     if (v.length === 3 && v.every(isFinite)) { f.push(v[0]); g.push(v[1]); ph.push(v[2]); }
   }
   out.textContent = r.lines.filter((l) => l.startsWith("bandwidth")).join("");
-  const log = { time: false, distr: 3 };
-  plotInto($("sweep-gain"), { xLabel: "frequency [Hz]", xScale: log, series: [{ label: "gain [dB]", scale: "dB" }], yAxes: [{ scale: "dB", label: "dB" }], data: [f, g] });
-  plotInto($("sweep-phase"), { xLabel: "frequency [Hz]", xScale: log, series: [{ label: "phase [deg]", scale: "deg" }], yAxes: [{ scale: "deg", label: "deg" }], data: [f, ph] });
+  // Log frequency axis over the swept range alone (uPlot's own range
+  // would widen it to whole decades).
+  const log = { time: false, distr: 3, range: (u, min, max) => [min, max] };
+  const xAxis = { filter: (u, splits) => splits.map(logTick), values: (u, splits) => splits.map((v) => (v == null ? "" : String(Math.round(v)))) };
+  plotInto($("sweep-gain"), { xLabel: "frequency [Hz]", xScale: log, xAxis, series: [{ label: "gain [dB]", scale: "dB" }], yAxes: [{ scale: "dB", label: "dB" }], data: [f, g] });
+  plotInto($("sweep-phase"), { xLabel: "frequency [Hz]", xScale: log, xAxis, series: [{ label: "phase [deg]", scale: "deg" }], yAxes: [{ scale: "deg", label: "deg" }], data: [f, unwrapDeg(ph)] });
 });
 
 // ---- start -----------------------------------------------------------------
