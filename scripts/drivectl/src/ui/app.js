@@ -473,12 +473,12 @@ function unwrapDeg(ph) {
   return out;
 }
 
-// Labels at 1, 2 and 5 times a power of ten: a decade or less of range
+// Labels at 1, 2, 3 and 5 times a power of ten: a decade or less of range
 // still gets labels, and a wider one no crowded 7, 8, 9.
 function logTick(v) {
   if (v == null || !(v > 0)) return null;
   const m = Math.round(v / 10 ** Math.floor(Math.log10(v) + 1e-9));
-  return [1, 2, 5].includes(m) ? v : null;
+  return [1, 2, 3, 5].includes(m) ? v : null;
 }
 
 $("sweep-run").onclick = () => experiment("sweep-result", async (out) => {

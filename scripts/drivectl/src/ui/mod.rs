@@ -288,7 +288,8 @@ mod tests {
         let motor = MotorParams::default();
         let mpdtc = MpdtcConfig::new(motor, MpdtcParams::default()).unwrap();
         let foc = || Foc::new(&motor, &FocParams::default()).unwrap();
-        let cases: [(&str, f64, &dyn Fn(f64) -> SweepPoint); 2] = [
+        type Point<'a> = &'a dyn Fn(f64) -> SweepPoint;
+        let cases: [(&str, f64, Point); 2] = [
             ("foc", foc().period_s(), &|f| host_point(foc(), f, amp)),
             ("mpdtc", mpdtc.params.control_period_s, &|f| {
                 host_point(MpdtcRef::new(mpdtc), f, amp)
