@@ -241,7 +241,8 @@ mod tests {
     /// Gain and phase of the locked-rotor loop's torque (mean over each
     /// control period) against a sine reference of `amp_nm` at `f_hz`,
     /// after 1 ms (at least one period of the sine) of transient, over
-    /// 4 ms: what the firmware's `sweep` measures on its capture.
+    /// 4 ms (at least two periods): what the firmware's `sweep` measures
+    /// on its capture.
     fn host_point<C: Controller>(mut ctrl: C, f_hz: f64, amp_nm: f64) -> SweepPoint {
         let drive = SamplingParams::default();
         let mut plant = Plant::new(
@@ -253,7 +254,7 @@ mod tests {
         .unwrap();
         let ts = ctrl.period_s();
         let skip = (1e-3f64.max(1.0 / f_hz) / ts).ceil() as usize;
-        let periods = skip + (4e-3 / ts).ceil() as usize;
+        let periods = skip + (4e-3f64.max(2.0 / f_hz) / ts).ceil() as usize;
         let (mut reference, mut torque) = (Vec::new(), Vec::new());
         let (mut sum, mut n) = (0.0, 0u32);
         let sine = |t: f64| amp_nm * (std::f64::consts::TAU * f_hz * t).sin();
