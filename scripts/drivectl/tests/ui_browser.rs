@@ -376,12 +376,14 @@ fn the_page_drives_the_firmware_in_a_real_browser() {
     b.type_into("#step-nm", "0.4");
     const DISABLED: &str = "return ['step-run', 'sweep-run', 'capture-run']\
                             .map((id) => document.getElementById(id).disabled)";
+    // A sweep and a capture clicked during the step (same script: the step
+    // is still running) do not start.
     let during = b.js(&format!(
-        "document.getElementById('step-run').click(); {DISABLED}"
+        "document.getElementById('step-run').click();
+         document.getElementById('sweep-run').click();
+         document.getElementById('capture-run').click(); {DISABLED}"
     ));
     assert_eq!(during, json!([true, true, true]), "buttons during the step");
-    // A sweep clicked during the step does not start.
-    b.click("#sweep-run");
     b.wait_for("the step's plot", 120, |b| {
         b.js("return Number(document.getElementById('step-plot').dataset.points || 0)")
             .as_u64()
@@ -397,7 +399,12 @@ fn the_page_drives_the_firmware_in_a_real_browser() {
         b.js(DISABLED) == json!([false, false, false])
     });
     assert_eq!(b.text("#sweep-result"), "");
-    assert!(!b.text("#console-log").contains("> sweep"));
+    assert_eq!(b.text("#capture-result"), "");
+    let log = b.text("#console-log");
+    assert!(
+        !log.contains("> sweep") && !log.contains("> capture arm manual"),
+        "{log}"
+    );
     // Torque and its reference on the left axis in N m, the currents on
     // the right one in A (uPlot's sides: 1 right, 2 bottom, 3 left).
     const STEP_PLOT: &str = "const p = plots.get(document.getElementById('step-plot'));";
