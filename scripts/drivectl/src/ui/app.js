@@ -69,9 +69,60 @@ $("console-input").addEventListener("keydown", async (e) => {
   }
 });
 
+// ---- plots -----------------------------------------------------------------
+
+// The page shows the firmware's "Nm" as "N m"; other units as they are.
+function unitText(u) {
+  return u === "Nm" ? "N m" : u;
+}
+
+// Every plot on the page by its container: a plot follows its container's
+// width when the window is resized, so that no plot is wider than its panel.
+const plots = new Map();
+const resizer = new ResizeObserver((entries) => {
+  for (const e of entries) {
+    const p = plots.get(e.target);
+    const w = Math.floor(e.contentRect.width);
+    if (p && w > 0 && w !== p.width) p.setSize({ width: w, height: p.height });
+  }
+});
+
+// A plot in `el`: x axis `xLabel`, the series [{label, scale}], one y axis
+// per entry of `yAxes` ([{scale, label}]: the first on the left with the
+// grid, the others on the right), so that quantities of different units
+// each get their own range.
+function plotInto(el, o) {
+  const old = plots.get(el);
+  if (old) old.destroy();
+  el.textContent = "";
+  const scales = { x: Object.assign({ time: false }, o.xScale || {}) };
+  const axes = [Object.assign({ label: o.xLabel }, o.xAxis || {})];
+  o.yAxes.forEach((a, k) => {
+    scales[a.scale] = {};
+    axes.push({ scale: a.scale, label: a.label, side: k === 0 ? 3 : 1, grid: { show: k === 0 } });
+  });
+  const series = [{ label: o.xLabel }];
+  o.series.forEach((x, k) => series.push({ label: x.label, scale: x.scale, stroke: COLORS[k % COLORS.length], width: o.lineWidth || 1.5 }));
+  const p = new uPlot({
+    width: Math.max(100, Math.floor(el.clientWidth)),
+    height: o.height || 220,
+    scales,
+    series,
+    axes,
+  }, o.data, el);
+  plots.set(el, p);
+  resizer.observe(el);
+  return p;
+}
+
+// One y axis per unit, in the order the units first appear.
+function unitAxes(units) {
+  return [...new Set(units)].map((u) => ({ scale: u, label: unitText(u) }));
+}
+
 // ---- live telemetry --------------------------------------------------------
 
-const tel = { plot: null, channels: [], t: [], v: [], next: 0, paused: false, total: 0 };
+const tel = { plot: null, channels: [], t: [], v: [], next: 0, paused: false, total: 0, running: false };
 
 async function loadChannels() {
   const r = await cmd("tel list", true);
@@ -88,33 +139,44 @@ async function loadChannels() {
     cb.value = m[1];
     cb.dataset.unit = m[2];
     cb.checked = ["torque", "torque_ref", "i_q"].includes(m[1]);
-    lab.append(cb, " " + m[1] + " [" + m[2] + "]");
+    // A changed choice restarts a running stream with it.
+    cb.onchange = () => { if (tel.running) startTel(); };
+    lab.append(cb, " " + m[1] + " [" + unitText(m[2]) + "]");
     box.append(lab);
   }
 }
 
 function makeTelPlot(channels, units) {
-  if (tel.plot) tel.plot.destroy();
-  const series = [{ label: "drive time [s]" }];
-  channels.forEach((c, k) => series.push({ label: c + " [" + units[k] + "]", stroke: COLORS[k % COLORS.length], width: 1 }));
-  tel.plot = new uPlot({
-    width: $("tel").clientWidth - 30,
+  tel.plot = plotInto($("tel-plot"), {
+    xLabel: "drive time [s]",
+    series: channels.map((c, k) => ({ label: c + " [" + unitText(units[k]) + "]", scale: units[k] })),
+    yAxes: unitAxes(units),
+    data: [[], ...channels.map(() => [])],
     height: 300,
-    scales: { x: { time: false } },
-    series,
-    axes: [{ label: "drive time [s]" }, {}],
-  }, [[], ...channels.map(() => [])], $("tel-plot"));
+    lineWidth: 1,
+  });
 }
 
-$("tel-start").onclick = async () => {
+function showTelRunning(on) {
+  tel.running = on;
+  $("tel-run").textContent = on ? "stop" : "start";
+}
+
+async function startTel() {
   const boxes = [...document.querySelectorAll("#tel-channels input:checked")];
   const channels = boxes.map((b) => b.value);
   const units = boxes.map((b) => b.dataset.unit);
   const rate = $("tel-rate").value;
-  const r = await fetch("/api/tel/start?rate=" + encodeURIComponent(rate) + "&channels=" + channels.join(","), { method: "POST" }).then((x) => x.json());
+  let r;
+  try {
+    r = await fetch("/api/tel/start?rate=" + encodeURIComponent(rate) + "&channels=" + channels.join(","), { method: "POST" }).then((x) => x.json());
+  } catch (e) {
+    r = { error: String(e) };
+  }
   logConsole("tel start " + rate + " " + channels.join(","), r);
   if (!r.ok) {
     $("tel-msg").textContent = errText(r);
+    showTelRunning(false);
     return;
   }
   $("tel-msg").textContent = "streaming";
@@ -124,13 +186,23 @@ $("tel-start").onclick = async () => {
   tel.next = 0;
   tel.total = 0;
   makeTelPlot(channels, units);
-};
+  showTelRunning(true);
+}
 
-$("tel-stop").onclick = async () => {
-  const r = await fetch("/api/tel/stop", { method: "POST" }).then((x) => x.json());
+async function stopTel() {
+  let r;
+  try {
+    r = await fetch("/api/tel/stop", { method: "POST" }).then((x) => x.json());
+  } catch (e) {
+    r = { error: String(e) };
+  }
   logConsole("tel stop", r);
   $("tel-msg").textContent = r.ok ? "stopped" : errText(r);
-};
+  if (r.ok) showTelRunning(false);
+}
+
+$("tel-run").onclick = () => (tel.running ? stopTel() : startTel());
+$("tel-rate").onchange = () => { if (tel.running) startTel(); };
 
 $("tel-pause").onclick = () => {
   tel.paused = !tel.paused;
@@ -187,6 +259,8 @@ async function pollStatus() {
   if (!busy) {
     const r = await cmd("status", true);
     if (r.lines) $("status").textContent = r.lines.join("\n");
+    const mode = field(r, "mode");
+    if (mode) sweepRangeFor(mode);
     const f = await cmd("fault", true);
     if (f.lines) $("faults").textContent = f.lines.join("\n") + (f.ok ? "" : "\n" + errText(f));
     const h = await cmd("fault history", true);
@@ -195,7 +269,11 @@ async function pollStatus() {
   setTimeout(pollStatus, 1000);
 }
 
-$("mode-set").onclick = () => cmd("mode " + $("mode").value);
+$("mode-set").onclick = async () => {
+  const m = $("mode").value;
+  const r = await cmd("mode " + m);
+  if (r.ok) sweepRangeFor(m);
+};
 $("enable").onclick = () => cmd("enable");
 $("disable").onclick = () => cmd("disable");
 $("fault-clear").onclick = () => cmd("fault clear");
@@ -273,19 +351,6 @@ $("cfg-reset").onclick = async () => {
 
 // ---- experiments -----------------------------------------------------------
 
-function plotInto(el, xLabel, series, data, opts) {
-  el.textContent = "";
-  const s = [{ label: xLabel }];
-  series.forEach((name, k) => s.push({ label: name, stroke: COLORS[k % COLORS.length], width: 1.5 }));
-  return new uPlot(Object.assign({
-    width: $("experiments").clientWidth - 30,
-    height: 220,
-    scales: { x: { time: false } },
-    series: s,
-    axes: [{ label: xLabel }, {}],
-  }, opts || {}), data, el);
-}
-
 // `capture dump`'s CSV: t_ms, i_d, i_q, torque, torque_ref, sw, adc.
 function parseDump(r) {
   const cols = [[], [], [], [], []];
@@ -306,68 +371,141 @@ async function waitCapture() {
   return { error: "capture not complete after 60 s" };
 }
 
+// A record's torques on the left axis, its currents on the right: a
+// 0.4 N m step drawn on the axis of 4 A of i_q would be a flat line.
 function plotCapture(el, r) {
   const c = parseDump(r);
-  plotInto(el, "time from trigger [ms]", ["torque [Nm]", "torque_ref [Nm]", "i_d [A]", "i_q [A]"], [c[0], c[3], c[4], c[1], c[2]]);
+  plotInto(el, {
+    xLabel: "time from trigger [ms]",
+    series: [
+      { label: "torque [N m]", scale: "Nm" },
+      { label: "torque_ref [N m]", scale: "Nm" },
+      { label: "i_d [A]", scale: "A" },
+      { label: "i_q [A]", scale: "A" },
+    ],
+    yAxes: unitAxes(["Nm", "A"]),
+    data: [c[0], c[3], c[4], c[1], c[2]],
+  });
   el.dataset.points = c[0].length;
 }
 
-$("step-run").onclick = async () => {
-  busy++;
-  try {
-    const out = $("step-result");
-    out.textContent = "running";
-    const arm = await cmd("capture arm step 64");
-    if (!arm.ok) { out.textContent = errText(arm); return; }
-    const r = await cmd("step " + $("step-nm").value.trim());
-    if (!r.ok) { out.textContent = errText(r); return; }
-    out.textContent = r.lines.join(", ");
-    const d = await waitCapture();
-    if (!d.ok) { out.textContent += " " + errText(d); return; }
-    plotCapture($("step-plot"), d);
-  } finally { busy--; }
-};
+// The experiments share the drive's capture buffer and torque reference:
+// one at a time. Their buttons are off while one runs, and back on when it
+// ends, however it ends.
+const EXPERIMENT_BUTTONS = ["step-run", "sweep-run", "capture-run"];
+let experimentRunning = false;
 
-$("capture-run").onclick = async () => {
+async function experiment(outId, body) {
+  if (experimentRunning) return;
+  experimentRunning = true;
+  for (const id of EXPERIMENT_BUTTONS) $(id).disabled = true;
   busy++;
   try {
-    const out = $("capture-result");
-    const trig = $("capture-trigger").value;
-    const arm = await cmd("capture arm " + trig + " 64");
-    if (!arm.ok) { out.textContent = errText(arm); return; }
-    if (trig === "manual") await cmd("capture trigger");
-    out.textContent = "waiting for the trigger";
-    const d = await waitCapture();
-    if (!d.ok) { out.textContent = errText(d); return; }
-    out.textContent = (d.lines.length - 1) + " samples";
-    plotCapture($("capture-plot"), d);
-  } finally { busy--; }
-};
+    await body($(outId));
+  } catch (e) {
+    $(outId).textContent = "page error: " + e;
+  } finally {
+    busy--;
+    experimentRunning = false;
+    for (const id of EXPERIMENT_BUTTONS) $(id).disabled = false;
+  }
+}
 
-$("sweep-run").onclick = async () => {
-  busy++;
-  try {
-    const out = $("sweep-result");
-    out.textContent = "running";
-    const line = ["sweep", $("sweep-f0").value, $("sweep-f1").value, $("sweep-amp").value, $("sweep-points").value].join(" ");
-    const r = await cmd(line);
-    if (!r.ok) { out.textContent = errText(r); return; }
-    const f = [], g = [], ph = [];
-    for (const l of r.lines) {
-      const v = l.trim().split(/\s+/).map(Number);
-      if (v.length === 3 && v.every(isFinite)) { f.push(v[0]); g.push(v[1]); ph.push(v[2]); }
+$("step-run").onclick = () => experiment("step-result", async (out) => {
+  out.textContent = "running";
+  const arm = await cmd("capture arm step 64");
+  if (!arm.ok) { out.textContent = errText(arm); return; }
+  const r = await cmd("step " + $("step-nm").value.trim());
+  if (!r.ok) { out.textContent = errText(r); return; }
+  out.textContent = r.lines.join(", ");
+  const d = await waitCapture();
+  if (!d.ok) { out.textContent += " " + errText(d); return; }
+  plotCapture($("step-plot"), d);
+});
+
+$("capture-run").onclick = () => experiment("capture-result", async (out) => {
+  const trig = $("capture-trigger").value;
+  const arm = await cmd("capture arm " + trig + " 64");
+  if (!arm.ok) { out.textContent = errText(arm); return; }
+  if (trig === "manual") await cmd("capture trigger");
+  out.textContent = "waiting for the trigger";
+  const d = await waitCapture();
+  if (!d.ok) { out.textContent = errText(d); return; }
+  out.textContent = (d.lines.length - 1) + " samples";
+  plotCapture($("capture-plot"), d);
+});
+
+// The sweep's default range per mode, at the default amplitude of 0.3 N m
+// (the amplitude of the project's bandwidth figures, README "Fig. 11"):
+// each contains the torque loop's -3 dB bandwidth with room on both sides.
+// Measured with `drivectl experiment sweep --amplitude 0.3 --points 16`
+// on the firmware in QEMU: FOC 3355 Hz (500..3990 Hz swept), MPDTC 3930 Hz
+// (1000..15000 Hz swept). FOC's range cannot reach further up: `sweep`
+// refuses f_stop above a quarter of the control rate (16 kHz / 4).
+// At the former 0.1 N m the FOC loop stays above -3 dB up to that limit
+// (-2.7 dB at 3990 Hz), so no range would give a bandwidth, and MPDTC's
+// 0.08 N m torque tolerance band is most of the sine.
+const SWEEP_RANGE_HZ = { foc: [1000, 3990], mpdtc: [1000, 12000] };
+// The range follows the mode until the user types one.
+let sweepRangeAuto = true;
+for (const id of ["sweep-f0", "sweep-f1"]) $(id).addEventListener("input", () => { sweepRangeAuto = false; });
+
+function sweepRangeFor(mode) {
+  const r = SWEEP_RANGE_HZ[mode];
+  if (!r || !sweepRangeAuto) return;
+  $("sweep-f0").value = r[0];
+  $("sweep-f1").value = r[1];
+}
+
+// The drive reports each phase in (-180, 180] deg; the plot shows the lag
+// growing past -180 deg instead of a jump of 360 deg.
+function unwrapDeg(ph) {
+  const out = [];
+  let off = 0;
+  ph.forEach((p, k) => {
+    if (k > 0) {
+      const d = p + off - out[k - 1];
+      if (d > 180) off -= 360;
+      else if (d < -180) off += 360;
     }
-    out.textContent = r.lines.filter((l) => l.startsWith("bandwidth")).join("");
-    const log = { scales: { x: { time: false, distr: 3 } } };
-    plotInto($("sweep-gain"), "frequency [Hz]", ["gain [dB]"], [f, g], log);
-    plotInto($("sweep-phase"), "frequency [Hz]", ["phase [deg]"], [f, ph], log);
-  } finally { busy--; }
-};
+    out.push(p + off);
+  });
+  return out;
+}
+
+// Labels at 1, 2, 3 and 5 times a power of ten: a decade or less of range
+// still gets labels, and a wider one no crowded 7, 8, 9.
+function logTick(v) {
+  if (v == null || !(v > 0)) return null;
+  const m = Math.round(v / 10 ** Math.floor(Math.log10(v) + 1e-9));
+  return [1, 2, 3, 5].includes(m) ? v : null;
+}
+
+$("sweep-run").onclick = () => experiment("sweep-result", async (out) => {
+  out.textContent = "running";
+  const line = ["sweep", $("sweep-f0").value, $("sweep-f1").value, $("sweep-amp").value, $("sweep-points").value].join(" ");
+  const r = await cmd(line);
+  if (!r.ok) { out.textContent = errText(r); return; }
+  const f = [], g = [], ph = [];
+  for (const l of r.lines) {
+    const v = l.trim().split(/\s+/).map(Number);
+    if (v.length === 3 && v.every(isFinite)) { f.push(v[0]); g.push(v[1]); ph.push(v[2]); }
+  }
+  out.textContent = r.lines.filter((l) => l.startsWith("bandwidth")).join("");
+  // Log frequency axis over the swept range alone (uPlot's own range
+  // would widen it to whole decades).
+  const log = { time: false, distr: 3, range: (u, min, max) => [min, max] };
+  const xAxis = { filter: (u, splits) => splits.map(logTick), values: (u, splits) => splits.map((v) => (v == null ? "" : String(Math.round(v)))) };
+  plotInto($("sweep-gain"), { xLabel: "frequency [Hz]", xScale: log, xAxis, series: [{ label: "gain [dB]", scale: "dB" }], yAxes: [{ scale: "dB", label: "dB" }], data: [f, g] });
+  plotInto($("sweep-phase"), { xLabel: "frequency [Hz]", xScale: log, xAxis, series: [{ label: "phase [deg]", scale: "deg" }], yAxes: [{ scale: "deg", label: "deg" }], data: [f, unwrapDeg(ph)] });
+});
 
 // ---- start -----------------------------------------------------------------
 
 (async () => {
   await loadChannels();
+  // The live plot runs from the start; its button stops it.
+  await startTel();
   await loadConfig();
   pollTel();
   pollStatus();

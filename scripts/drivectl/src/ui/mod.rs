@@ -202,6 +202,112 @@ pub fn run(a: UiArgs) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::check_listen;
+    use drive::servo::{bandwidth_hz, tone_response, SweepPoint};
+    use models::pmsm::closed_loop::{self, Controller};
+    use models::pmsm::foc::{Foc, FocParams};
+    use models::pmsm::mpdtc_ctrl::MpdtcRef;
+    use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+    use models::pmsm::params::{MotorParams, SamplingParams};
+    use models::pmsm::plant::{MechanicalMode, Plant};
+
+    const PAGE: &str = include_str!("page.html");
+    const APP_JS: &str = include_str!("app.js");
+
+    /// The `value` of the page's input `id`.
+    fn page_value(id: &str) -> f64 {
+        let tag = PAGE
+            .split('<')
+            .find(|t| t.contains(&format!("id=\"{id}\"")))
+            .unwrap_or_else(|| panic!("no input {id} in page.html"));
+        let v = tag.split("value=\"").nth(1).expect("a value");
+        v[..v.find('"').unwrap()].parse().expect("a number")
+    }
+
+    /// The default range of `mode` in app.js's `SWEEP_RANGE_HZ`.
+    fn default_range(mode: &str) -> (f64, f64) {
+        let line = APP_JS
+            .lines()
+            .find(|l| l.starts_with("const SWEEP_RANGE_HZ = {"))
+            .expect("SWEEP_RANGE_HZ in app.js");
+        let tail = line.split(&format!("{mode}: [")).nth(1).expect("the mode");
+        let nums: Vec<f64> = tail[..tail.find(']').unwrap()]
+            .split(',')
+            .map(|x| x.trim().parse().unwrap())
+            .collect();
+        (nums[0], nums[1])
+    }
+
+    /// Gain and phase of the locked-rotor loop's torque (mean over each
+    /// control period) against a sine reference of `amp_nm` at `f_hz`,
+    /// after 1 ms (at least one period of the sine) of transient, over
+    /// 4 ms (at least two periods): what the firmware's `sweep` measures
+    /// on its capture.
+    fn host_point<C: Controller>(mut ctrl: C, f_hz: f64, amp_nm: f64) -> SweepPoint {
+        let drive = SamplingParams::default();
+        let mut plant = Plant::new(
+            &MotorParams::default(),
+            drive.dead_time_s,
+            MechanicalMode::ConstantSpeed,
+            0.0,
+        )
+        .unwrap();
+        let ts = ctrl.period_s();
+        let skip = (1e-3f64.max(1.0 / f_hz) / ts).ceil() as usize;
+        let periods = skip + (4e-3f64.max(2.0 / f_hz) / ts).ceil() as usize;
+        let (mut reference, mut torque) = (Vec::new(), Vec::new());
+        let (mut sum, mut n) = (0.0, 0u32);
+        let sine = |t: f64| amp_nm * (std::f64::consts::TAU * f_hz * t).sin();
+        closed_loop::run(&mut plant, &mut ctrl, &drive, periods as u64, sine, |p| {
+            sum += p.torque_nm;
+            n += 1;
+            if p.end_of_period {
+                reference.push(p.torque_ref_nm);
+                torque.push(sum / f64::from(n));
+                (sum, n) = (0.0, 0);
+            }
+        })
+        .unwrap();
+        tone_response(&reference[skip..], &torque[skip..], f_hz, ts).unwrap()
+    }
+
+    /// The page's default sweep (range of the mode, amplitude, points)
+    /// against the loop computed on the host: the -3 dB bandwidth lies
+    /// strictly inside the range (a first point already below -3 dB would
+    /// report the range's start), and the range ends at or below a quarter
+    /// of the control rate (the firmware refuses more). The browser test
+    /// runs the FOC one on the firmware.
+    #[test]
+    fn the_default_sweep_range_holds_the_torque_loops_bandwidth() {
+        let amp = page_value("sweep-amp");
+        let n = page_value("sweep-points") as usize;
+        assert_eq!(
+            (page_value("sweep-f0"), page_value("sweep-f1")),
+            default_range("foc"),
+            "the page's initial range is FOC's"
+        );
+        let motor = MotorParams::default();
+        let mpdtc = MpdtcConfig::new(motor, MpdtcParams::default()).unwrap();
+        let foc = || Foc::new(&motor, &FocParams::default()).unwrap();
+        type Point<'a> = &'a dyn Fn(f64) -> SweepPoint;
+        let cases: [(&str, f64, Point); 2] = [
+            ("foc", foc().period_s(), &|f| host_point(foc(), f, amp)),
+            ("mpdtc", mpdtc.params.control_period_s, &|f| {
+                host_point(MpdtcRef::new(mpdtc), f, amp)
+            }),
+        ];
+        for (mode, period_s, point) in cases {
+            let (f0, f1) = default_range(mode);
+            assert!(f1 <= 0.25 / period_s, "{mode}: {f1} Hz above rate / 4");
+            let pts: Vec<SweepPoint> = (0..n)
+                .map(|k| point(f0 * (f1 / f0).powf(k as f64 / (n - 1) as f64)))
+                .collect();
+            let bw = bandwidth_hz(&pts);
+            println!("{mode} {f0}..{f1} Hz at {amp} N m: {bw:?} Hz, {pts:?}");
+            assert!(pts[0].gain_db > -3.0, "{mode}: {pts:?}");
+            let bw = bw.unwrap_or_else(|| panic!("{mode}: no -3 dB point in {pts:?}"));
+            assert!(f0 < bw && bw < f1, "{mode}: {bw} Hz");
+        }
+    }
 
     #[test]
     fn only_loopback_addresses_unless_asked() {
