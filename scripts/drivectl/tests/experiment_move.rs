@@ -10,7 +10,15 @@ fn experiment_move_plots_the_drives_capture_beside_the_host_run() {
     let _ = std::fs::remove_dir_all(&out);
     let flash = out.join("flash.img");
     let o = Command::new(env!("CARGO_BIN_EXE_drivectl"))
-        .args(["experiment", "move", "--fresh", "--mode", "mpdtc", "--json", "--out"])
+        .args([
+            "experiment",
+            "move",
+            "--fresh",
+            "--mode",
+            "mpdtc",
+            "--json",
+            "--out",
+        ])
         .arg(&out)
         .arg("--flash")
         .arg(&flash)

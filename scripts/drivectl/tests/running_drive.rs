@@ -37,6 +37,12 @@ impl Drive {
         c
     }
 
+    /// `drivectl up` with the flash image in this test's directory.
+    fn up(&self) -> String {
+        let flash = self.dir.join("flash.img");
+        self.ok(&["up", "--flash", flash.to_str().unwrap()])
+    }
+
     fn run(&self, args: &[&str]) -> Output {
         self.cmd(args).output().unwrap()
     }
@@ -110,13 +116,13 @@ fn value(reply: &str, name: &str) -> f64 {
 #[test]
 fn send_tel_and_calibrate_talk_to_one_running_drive() {
     let d = Drive::new("bench");
-    let up = d.ok(&["up"]);
+    let up = d.up();
     assert!(up.contains("drive running"), "{up}");
     let server = d.pid("drive.pid", "");
     let qemu = d.pid("drive.info", "QEMU pid");
     assert!(alive(server) && alive(qemu));
     // A second `up` finds it.
-    let again = d.ok(&["up"]);
+    let again = d.up();
     assert!(again.contains("already running"), "{again}");
 
     // The sequence a user types, one process per command.
@@ -258,8 +264,17 @@ fn qemu_child(parent: u32, t: Duration) -> Option<i32> {
 fn a_command_killed_ends_the_qemu_it_booted() {
     let d = Drive::new("none");
     for sig in [libc::SIGTERM, libc::SIGINT] {
+        let flash = d.dir.join("flash.img");
         let tel = d
-            .cmd(&["tel", "--seconds", "1000", "--out", "/dev/null"])
+            .cmd(&[
+                "tel",
+                "--seconds",
+                "1000",
+                "--out",
+                "/dev/null",
+                "--flash",
+                flash.to_str().unwrap(),
+            ])
             .stdout(Stdio::null())
             .stderr(Stdio::piped())
             .spawn()
@@ -283,7 +298,7 @@ fn a_command_killed_ends_the_qemu_it_booted() {
 #[test]
 fn boot_options_with_a_running_drive_are_an_error_not_ignored() {
     let d = Drive::new("options");
-    d.ok(&["up"]);
+    d.up();
     let o = d.run(&["send", "--pl", "rtl", "status"]);
     assert_eq!(o.status.code(), Some(2));
     let e = String::from_utf8_lossy(&o.stderr);

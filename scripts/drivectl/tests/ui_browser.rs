@@ -238,7 +238,7 @@ fn the_page_drives_the_firmware_in_a_real_browser() {
     // The page's server against QEMU, on a free loopback port.
     let mut ui = spawn_group(
         Command::new(env!("CARGO_BIN_EXE_drivectl"))
-            .args(["ui", "--listen", "127.0.0.1:0", "--flash"])
+            .args(["ui", "--fresh", "--listen", "127.0.0.1:0", "--flash"])
             .arg(&flash)
             .arg("--elf")
             .arg(&elf)
