@@ -137,7 +137,14 @@ fn run_console(con: &mut Uart) -> ! {
                         let ctx = context(lines, errors);
                         match console::execute(cmd, &ctx, &mut drive, con) {
                             Ok(Action::Panic) => panic!("`debug panic` requested on the console"),
-                            _ => true,
+                            Ok(Action::None) => true,
+                            // The command's own `ERR` line (a state, a limit,
+                            // the PL): sent like a parse error's, counted
+                            // like one.
+                            Ok(Action::Refused) => false,
+                            // The UART writer does not fail; were it to, the
+                            // reply is incomplete: not a success either.
+                            Err(_) => false,
                         }
                     }
                     Err(e) => {

@@ -81,6 +81,38 @@ fn bad_arguments_are_reported() {
     assert!(cmd(&mut s, "help status").is_ok());
 }
 
+/// `status`'s console counters count what was sent: every `ERR` reply is an
+/// error, the drive's refusals (mode, gates, no record) as much as the
+/// grammar's and the line editor's.
+#[test]
+fn status_counts_every_err_reply_as_an_error() {
+    let mut s = boot();
+    let lines = [
+        ("version", None),
+        ("frobnicate", Some("unknown-command")),
+        ("st\u{1}atus", Some("bad-char")),
+        ("enable", Some("mode-off")),
+        ("step 0.2", Some("gates-off")),
+        ("help nope", Some("bad-args")),
+        ("capture dump", Some("bad-args")),
+    ];
+    for (line, want) in lines {
+        let r = cmd(&mut s, line);
+        match want {
+            None => assert!(r.is_ok(), "{line}: {r:?}"),
+            Some(code) => assert_err(&r, code),
+        }
+    }
+    let st = cmd(&mut s, "status");
+    // The seven lines above and `status` itself; six of them refused.
+    assert!(
+        st.lines
+            .iter()
+            .any(|l| l == "console: 8 lines, 6 errors, 0 rx overruns"),
+        "{st:?}"
+    );
+}
+
 #[test]
 fn overlong_line_is_rejected_and_the_console_recovers() {
     let mut s = boot();

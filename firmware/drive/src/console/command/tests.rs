@@ -963,3 +963,41 @@ fn position_commands_during_the_mpdtc_alignment_answer_aligning_and_change_nothi
     assert!(!reply_on(&mut d, "status").contains("alignment:"));
     assert!(reply_on(&mut d, "pos zero").ends_with("OK\r\n"));
 }
+
+/// The caller counts a line as an error from what `execute` returns: it
+/// must say `Refused` exactly when the reply's final line is `ERR`, for
+/// the drive's own refusals (state, limits) as much as for the grammar's.
+#[test]
+fn execute_says_refused_exactly_when_the_reply_ends_with_err() {
+    let mut d = TestDrive::new();
+    let mut refused = 0;
+    let lines = [
+        "version",
+        "enable",       // mode off: ERR mode-off
+        "step 0.2",     // gates off
+        "help nope",    // no such command
+        "capture dump", // no record
+        "tel status",   // no stream in this build
+        "mode foc",
+        "enable",
+        "torque 0.1",
+        "pos 0.5",
+        "pos zero", // holding
+        "vel 1e9",  // beyond vel_limit
+        "pos 1e9",  // beyond the soft limits
+        "torque 0",
+        "status",
+    ];
+    for line in lines {
+        let mut out = String::new();
+        let a = execute(parse(line).unwrap(), &ctx(), &mut d, &mut out).unwrap();
+        assert_one_final_line(&out);
+        let last = out.trim_end().rsplit("\r\n").next().unwrap();
+        let err = last.starts_with("ERR ");
+        assert_eq!(a == Action::Refused, err, "{line}: {out:?}");
+        assert_eq!(a == Action::None, !err, "{line}: {out:?}");
+        refused += usize::from(err);
+    }
+    // The ERR replies of the list above, counted by hand.
+    assert_eq!(refused, 8);
+}
