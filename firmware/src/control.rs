@@ -352,7 +352,7 @@ fn guest_counts(cycles: u64) -> u64 {
     cycles * u64::from(timer::PERIPHCLK_HZ / 1_000_000) / 100
 }
 
-/// The firmware's periodic tick (private timer, `app::TICK_HZ`): with our
+/// The firmware's periodic tick (the private timer, 1 kHz): with our
 /// bitstream, the watchdog's heartbeat while the gates are off and no
 /// control-period boundary comes (`State::keep_alive`). Under QEMU the PL
 /// tick does it (the private timer runs at 0.3x there, too slow for the
@@ -706,15 +706,21 @@ pub struct FwDrive {
     hil_seen: u64,
     /// The telemetry stream.
     tel: crate::telemetry::Ops,
+    /// Whether Ctrl-C arrived on the console: polled by the long commands
+    /// that run with IRQs masked. The console's owner (`app`, which holds
+    /// the UART and its receive ring) provides it, so that this module
+    /// needs nothing from the one that calls it.
+    interrupted: fn() -> bool,
 }
 
 impl FwDrive {
-    /// No HIL loop.
-    pub const fn new() -> Self {
+    /// No HIL loop; `interrupted` polls the console for Ctrl-C.
+    pub const fn new(interrupted: fn() -> bool) -> Self {
         Self {
             hil: None,
             hil_seen: 0,
             tel: crate::telemetry::Ops,
+            interrupted,
         }
     }
 
@@ -914,17 +920,15 @@ impl DriveOps for FwDrive {
         phases: models::calibration::Phases,
         on_phase: &mut dyn FnMut(Option<models::calibration::Phase>),
     ) -> Result<drive::servo::calibrate::CalReport, DriveError> {
+        let mut interrupted = self.interrupted;
         run(|s| {
             let c = *s.servo.config();
             let setup =
                 s.servo
                     .calibration_setup(c.calibration_current_a, c.calibration_voltage_v, phases);
-            let r = s.servo.calibrate(
-                &mut s.bus,
-                &setup,
-                on_phase,
-                &mut crate::app::ctrl_c_pending,
-            );
+            let r = s
+                .servo
+                .calibrate(&mut s.bus, &setup, on_phase, &mut interrupted);
             s.after_sensor_check();
             r
         })
