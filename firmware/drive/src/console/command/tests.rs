@@ -61,6 +61,16 @@ fn help_lists_every_command_with_its_arguments() {
 #[test]
 fn help_on_one_command() {
     assert!(reply("help status").starts_with("  status"));
+    // `help tel` gives the max rates the console carries (by hand: 73,728
+    // B/s for telemetry over 17-byte frames for one channel).
+    let r = reply("help tel");
+    assert!(r.starts_with("  tel "), "{r}");
+    assert!(
+        r.contains("\r\nmax rate: 1 channel 4336 Hz, 2 channels 3510 Hz, "),
+        "{r}"
+    );
+    assert!(!r.contains("10000"), "{r}");
+    assert_one_final_line(&r);
     assert_eq!(
         reply("help nothing"),
         "ERR bad-args help: no command `nothing`\r\n"
