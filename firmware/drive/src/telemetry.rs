@@ -111,18 +111,19 @@ pub const CHANNELS: &[ChannelSpec] = &[
     },
     ChannelSpec {
         name: "position",
-        unit: "rad",
-        what: "rotor mechanical angle from the encoder count, [0, 2 pi)",
+        unit: "rev",
+        what: "multi-turn rotor position since boot or `pos zero`, as `status` position",
     },
     ChannelSpec {
         name: "velocity",
-        unit: "rad/s",
-        what: "rotor mechanical speed from the encoder's speed window",
+        unit: "rev/s",
+        what: "rotor mechanical velocity, as `status` velocity",
     },
     ChannelSpec {
         name: "speed",
-        unit: "rpm",
-        what: "velocity in revolutions per minute",
+        unit: "rad/s",
+        what: "electrical angular speed (pole pairs x mechanical) from the encoder's speed \
+               window, as `status` speed",
     },
     ChannelSpec {
         name: "duty_a",

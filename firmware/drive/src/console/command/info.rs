@@ -16,7 +16,8 @@ pub const STATUS: Spec = Spec {
     name: "status",
     args: "",
     help: "uptime [s], ticks, console counters, then the drive: mode, gates, fault, torque \
-           [Nm], i_d/i_q [A], speed [rad/s], control rate [Hz], periods, overruns, PL",
+           [Nm], i_d/i_q [A], electrical speed [rad/s], position [rev], velocity [rev/s], \
+           control rate [Hz], periods, overruns, PL",
 };
 
 /// `version` or `status`.

@@ -197,7 +197,9 @@ mod tests {
         for n in [
             "i_d [A]",
             "torque [Nm]",
-            "velocity [rad/s]",
+            "position [rev]",
+            "velocity [rev/s]",
+            "speed [rad/s]",
             "step_time [us]",
         ] {
             assert!(r.contains(n), "{n} in {r}");
