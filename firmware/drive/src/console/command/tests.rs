@@ -369,6 +369,17 @@ impl DriveOps for TestDrive {
     fn zero_position(&mut self) -> Result<(), DriveError> {
         Ok(self.servo.zero_position()?)
     }
+    /// The move's start as the firmware's; the fake PL runs no control
+    /// steps, so an accepted move can only time out here.
+    fn run_move(
+        &mut self,
+        distance_rev: f64,
+        window_s: f64,
+    ) -> Result<crate::servo::motion::MoveResult, DriveError> {
+        self.servo
+            .begin_move(&mut self.pl, distance_rev, window_s)?;
+        Err(DriveError::Timeout)
+    }
     fn set_impedance(&mut self, c: &models::motion::law::Impedance) -> Result<(), DriveError> {
         Ok(self.servo.set_impedance(&mut self.pl, c)?)
     }
@@ -1010,4 +1021,33 @@ fn execute_says_refused_exactly_when_the_reply_ends_with_err() {
     }
     // The ERR replies of the list above, counted by hand.
     assert_eq!(refused, 8);
+}
+
+/// A `move` or `pos` beyond the soft limits (default +-1000 rev) is
+/// refused as such before anything else, gates on or off: one `ERR` line
+/// with the limits and units, and nothing changes.
+#[test]
+fn move_and_pos_beyond_the_soft_limits_are_refused_first_and_change_nothing() {
+    let mut d = TestDrive::new();
+    let want_move = "ERR bad-args move: outside the soft limits [-1000..1000] rev (pos_min, \
+                     pos_max): a move by 1000000000 rev from 0.000000 rev would end at \
+                     1000000000.000000 rev; nothing changed\r\n";
+    let want_pos = "ERR bad-args pos: 1000000000 rev is outside the soft limits [-1000..1000] rev \
+         (pos_min, pos_max)\r\n";
+    for setup in [None, Some("mode foc"), Some("enable")] {
+        if let Some(l) = setup {
+            reply_on(&mut d, l);
+        }
+        let before = reply_on(&mut d, "status");
+        assert_eq!(reply_on(&mut d, "move 1e9"), want_move, "{setup:?}");
+        assert_eq!(reply_on(&mut d, "pos 1e9"), want_pos, "{setup:?}");
+        // One step back inside: the end is checked, not the distance.
+        assert!(
+            reply_on(&mut d, "move -1000.5").starts_with("ERR bad-args move: outside the soft"),
+            "{setup:?}"
+        );
+        assert_eq!(reply_on(&mut d, "status"), before, "{setup:?}");
+    }
+    // The last setup took effect: the refusals above came with the gates on.
+    assert!(reply_on(&mut d, "status").contains("gates: on\r\n"));
 }
