@@ -63,6 +63,18 @@ fn status_ticks_advance_with_uptime() {
     // QEMU has no bitstream (devcfg says the PL is unconfigured): the
     // firmware drives the simulated PL.
     assert!(b.lines.contains(&"pl: simulated".to_string()), "{b:?}");
+    // The GP0 guard fails under QEMU (no PL behind GP0) and says that this
+    // is expected there.
+    let guard = b
+        .lines
+        .iter()
+        .find(|l| l.starts_with("gp0_guard: "))
+        .expect("a gp0_guard line");
+    assert!(guard.starts_with("gp0_guard: fail: "), "{guard}");
+    assert!(
+        guard.contains("; expected under QEMU (PSS_IDCODE reads as an emulator's)"),
+        "{guard}"
+    );
 }
 
 #[test]

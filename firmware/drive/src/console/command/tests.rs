@@ -1051,3 +1051,47 @@ fn move_and_pos_beyond_the_soft_limits_are_refused_first_and_change_nothing() {
     // The last setup took effect: the refusals above came with the gates on.
     assert!(reply_on(&mut d, "status").contains("gates: on\r\n"));
 }
+
+/// `gp0_guard:` says a failed guard is expected only where the simulated
+/// PL (or the co-simulated RTL) answers, which presence detection picks
+/// only in an emulator; on a board the failure stands without the note.
+#[test]
+fn gp0_guard_failure_is_called_expected_only_under_the_emulator() {
+    use crate::pl::presence::{Guard, PCFG_DONE};
+    // What QEMU reads (the banner and `status` print it).
+    let qemu = Guard {
+        int_sts: 0,
+        lvl_shftr_en: 0,
+        fpga_rst_ctrl: 0x01f3_3f0f,
+    };
+    let line = |g: &Guard, pl: PlKind| {
+        let mut out = String::new();
+        info::write_guard(&mut out, g, pl).unwrap();
+        out
+    };
+    let fail = "gp0_guard: fail: devcfg INT_STS.PCFG_DONE clear (PL not configured) (INT_STS \
+                0x00000000, LVL_SHFTR_EN 0x0, FPGA_RST_CTRL 0x01f33f0f)";
+    let sim = line(&qemu, PlKind::Simulated);
+    assert!(sim.starts_with(fail), "{sim}");
+    assert!(
+        sim.contains(
+            "; expected under QEMU (PSS_IDCODE reads as an emulator's): no real PL \
+                      behind GP0, so GP0 is left alone and the simulated PL answers"
+        ),
+        "{sim}"
+    );
+    assert!(line(&qemu, PlKind::RtlCosim).contains("the co-simulated RTL"));
+    // A board without our bitstream reads the same words: no QEMU note.
+    assert_eq!(line(&qemu, PlKind::Absent), std::format!("{fail}\r\n"));
+    // A passing guard never gets it.
+    let board = Guard {
+        int_sts: PCFG_DONE,
+        lvl_shftr_en: 0xF,
+        fpga_rst_ctrl: 0,
+    };
+    let pass = line(&board, PlKind::Bitstream(0x0001_0000));
+    assert!(
+        pass.starts_with("gp0_guard: pass (") && !pass.contains("QEMU"),
+        "{pass}"
+    );
+}
