@@ -33,6 +33,7 @@ use crate::{cosim, pl};
 use core::cell::RefCell;
 use drive::config::spi_nor::SpiNor;
 use drive::config::{store, Config};
+use drive::console::drive::LATCH_WAIT_PERIODS;
 use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
 use drive::hil::{self, HilError, HilReport, Paced, PacedStatus};
 use drive::pl::capture::{CapSample, CapState, CapStatus, Trigger};
@@ -670,6 +671,17 @@ impl State {
         };
         self.pl_now() + u64::from(ms) * per_ms
     }
+    /// PL time after `n` control periods from now.
+    fn pl_after_periods(&self, n: u32) -> u64 {
+        let cycles = period_cycles(&self.servo) * u64::from(n);
+        match &self.bus {
+            Backend::Sim(_) | Backend::Cosim(_) => self.pl_now() + cycles,
+            // `pl_now` counts microseconds there.
+            Backend::Gp0(_) => {
+                self.pl_now() + cycles.div_ceil(u64::from(regmap::PL_CLOCK_HZ / 1_000_000))
+            }
+        }
+    }
     /// Inside a `debug stall`.
     fn stalled(&self) -> bool {
         self.pl_now() < self.stall_until
@@ -878,6 +890,25 @@ fn wait_recorded(f: Injection) {
     }
 }
 
+/// Waits until fault `bit` is latched, at most [`LATCH_WAIT_PERIODS`]
+/// control periods of PL time: the latched faults, or `NotLatched`. The
+/// answer of `debug fault` then matches what `fault` says right after it.
+fn wait_latched(bit: u32) -> Result<Faults, DriveError> {
+    let until = with(|s| s.pl_after_periods(LATCH_WAIT_PERIODS)).ok_or(DriveError::Absent)?;
+    loop {
+        let (faults, now) =
+            console(|s| (s.servo.faults(&mut s.bus), s.pl_now())).ok_or(DriveError::Absent)?;
+        let faults = faults.map_err(|e| DriveError::Servo(ServoError::Bus(e)))?;
+        if faults.0 & bit != 0 {
+            return Ok(faults);
+        }
+        if now >= until {
+            return Err(DriveError::NotLatched(bit));
+        }
+        wait();
+    }
+}
+
 fn wait() {
     // SAFETY: WFI has no memory effects.
     unsafe { core::arch::asm!("wfi", options(nomem, nostack)) };
@@ -1012,7 +1043,7 @@ impl DriveOps for FwDrive {
             Ok((h.records().nth(k).copied(), h.total))
         })
     }
-    fn inject(&mut self, f: Injection) -> Result<(), DriveError> {
+    fn inject(&mut self, f: Injection) -> Result<Option<Faults>, DriveError> {
         let r = match f {
             Injection::Watchdog => {
                 run(|s| {
@@ -1026,10 +1057,10 @@ impl DriveOps for FwDrive {
                 while console(|s| s.stalled()).unwrap_or(false) {
                     wait();
                 }
-                Ok(())
+                Ok(None)
             }
             Injection::Overrun | Injection::AdcSwap | Injection::AdcInvert => {
-                run(|s| inject_now(s, f))
+                run(|s| inject_now(s, f)).map(|()| None)
             }
             _ => {
                 // At a fixed point of the control period: right after the
@@ -1039,7 +1070,7 @@ impl DriveOps for FwDrive {
                 // simulated PL); at once with the gates off (no step).
                 let gates = run(|s| Ok(s.servo.gates_on(&mut s.bus)?))?;
                 if !gates {
-                    run(|s| inject_now(s, f))
+                    run(|s| inject_now(s, f)).map(|()| None)
                 } else {
                     run(|s| {
                         s.pending_injection = Some(f);
@@ -1062,7 +1093,12 @@ impl DriveOps for FwDrive {
                     if r.is_ok() {
                         wait_recorded(f);
                     }
-                    r
+                    // A fault the PL latches within a period: the reply
+                    // waits for it, so that `fault` right after shows it.
+                    match (r, f.prompt_fault()) {
+                        (Ok(()), Some(bit)) => wait_latched(bit).map(Some),
+                        (r, _) => r.map(|()| None),
+                    }
                 }
             }
         };

@@ -346,14 +346,24 @@ impl DriveOps for TestDrive {
         let h = self.servo.fault_history();
         Ok((h.records().nth(k).copied(), h.total))
     }
-    fn inject(&mut self, f: Injection) -> Result<(), DriveError> {
+    fn inject(&mut self, f: Injection) -> Result<Option<Faults>, DriveError> {
         match f {
             Injection::AdcStuck => {
                 crate::pl::adc::Adc(&mut self.pl)
                     .set_enabled(false)
                     .unwrap();
-                Ok(())
+                Ok(None)
             }
+            // The firmware's answers after its wait for the latch (the fake
+            // PL latches nothing itself): overcurrent latched, the external
+            // pulse not.
+            Injection::Overcurrent | Injection::External
+                if !self.servo.gates_on(&mut self.pl).unwrap() =>
+            {
+                Ok(None)
+            }
+            Injection::Overcurrent => Ok(Some(Faults(Faults::OVERCURRENT))),
+            Injection::External => Err(DriveError::NotLatched(Faults::EXTERNAL)),
             _ => Err(DriveError::Unsupported),
         }
     }
@@ -1094,4 +1104,28 @@ fn gp0_guard_failure_is_called_expected_only_under_the_emulator() {
         pass.starts_with("gp0_guard: pass (") && !pass.contains("QEMU"),
         "{pass}"
     );
+}
+
+/// `debug fault` with the gates on answers once the fault latched, naming
+/// it, or `ERR timeout` naming the fault that did not latch.
+#[test]
+fn debug_fault_reports_the_latched_fault_or_that_it_did_not_latch() {
+    let mut d = TestDrive::new();
+    assert_eq!(
+        reply_on(&mut d, "debug fault overcurrent"),
+        "injected\r\nOK\r\n"
+    );
+    reply_on(&mut d, "mode foc");
+    reply_on(&mut d, "enable");
+    assert_eq!(
+        reply_on(&mut d, "debug fault overcurrent"),
+        "injected\r\nfault: OVERCURRENT\r\nOK\r\n"
+    );
+    assert_eq!(
+        reply_on(&mut d, "debug fault external"),
+        "ERR timeout debug: EXTERNAL did not latch within 4 control periods of the injection \
+         (gates still on)\r\n"
+    );
+    // Hand-checked bits: FAULT_STATUS bit 0 is OVERCURRENT, bit 1 EXTERNAL.
+    assert_eq!((Faults::OVERCURRENT, Faults::EXTERNAL), (1, 2));
 }
