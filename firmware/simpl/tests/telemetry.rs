@@ -74,7 +74,7 @@ fn position_velocity_and_speed_are_in_rev_rev_per_s_and_rad_per_s() {
     let p = f64::from(sim.config().motor.pole_pairs);
     let rev_s = w_e / (core::f64::consts::TAU * p);
     let period = (f64::from(regmap::PL_CLOCK_HZ) / servo.control_rate_hz()) as u64;
-    let mut step = |servo: &mut Servo, sim: &mut SimDrive| {
+    let step = |servo: &mut Servo, sim: &mut SimDrive| {
         sim.advance_to_boundary(2 * period);
         servo.control_step(sim).unwrap();
         // Nothing drives the rotor: the spin's missing heartbeat is all.
