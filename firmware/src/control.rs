@@ -890,15 +890,18 @@ fn wait_recorded(f: Injection) {
     }
 }
 
-/// Waits until fault `bit` is latched, at most [`LATCH_WAIT_PERIODS`]
-/// control periods of PL time: the latched faults, or `NotLatched`. The
-/// answer of `debug fault` then matches what `fault` says right after it.
+/// Waits until fault `bit` is latched and the control loop has recorded
+/// it, at most [`LATCH_WAIT_PERIODS`] control periods of PL time: the
+/// faults the loop saw latched, or `NotLatched`. The answer of
+/// `debug fault` then matches what `fault` says right after it. The
+/// loop's own view is polled, not the register: a register read syncs the
+/// co-simulated PL, and syncs back to back while a step is pending count
+/// as missed steps (`CONTROL_OVERRUN`).
 fn wait_latched(bit: u32) -> Result<Faults, DriveError> {
     let until = with(|s| s.pl_after_periods(LATCH_WAIT_PERIODS)).ok_or(DriveError::Absent)?;
     loop {
         let (faults, now) =
-            console(|s| (s.servo.faults(&mut s.bus), s.pl_now())).ok_or(DriveError::Absent)?;
-        let faults = faults.map_err(|e| DriveError::Servo(ServoError::Bus(e)))?;
+            with(|s| (s.servo.faults_recorded(), s.pl_now())).ok_or(DriveError::Absent)?;
         if faults.0 & bit != 0 {
             return Ok(faults);
         }

@@ -165,7 +165,7 @@ pub struct Status {
     pub tick_hz: u32,
     /// Lines the console received.
     pub lines: u32,
-    /// Lines answered with `ERR`.
+    /// Lines answered with `ERR` (the grammar's, the editor's or the drive's).
     pub errors: u32,
     /// Received bytes lost because the receive buffer was full.
     pub rx_overruns: u32,
