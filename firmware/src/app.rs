@@ -26,8 +26,9 @@ extern "C" {
 
 /// Whether Ctrl-C (0x03) arrived on the console: a long command (`calibrate`)
 /// runs with IRQs masked, so it reads the UART's FIFO itself; other bytes
-/// go to the ring as the interrupt would put them.
-pub fn ctrl_c_pending() -> bool {
+/// go to the ring as the interrupt would put them. Handed to
+/// `control::FwDrive` (this module owns the UART and the ring).
+fn ctrl_c_pending() -> bool {
     let mut seen = false;
     while !RX.is_full() {
         let Some(b) = CONSOLE.read_byte() else { break };
@@ -118,7 +119,7 @@ fn banner(con: &mut Uart, boot: &control::Boot, gp0_bus_error: bool) {
 fn run_console(con: &mut Uart) -> ! {
     let mut editor = LineEditor::new();
     let (mut lines, mut errors) = (0u32, 0u32);
-    let mut drive = control::FwDrive::new();
+    let mut drive = control::FwDrive::new(ctrl_c_pending);
     loop {
         drive.background();
         log::drain();
@@ -137,7 +138,14 @@ fn run_console(con: &mut Uart) -> ! {
                         let ctx = context(lines, errors);
                         match console::execute(cmd, &ctx, &mut drive, con) {
                             Ok(Action::Panic) => panic!("`debug panic` requested on the console"),
-                            _ => true,
+                            Ok(Action::None) => true,
+                            // The command's own `ERR` line (a state, a limit,
+                            // the PL): sent like a parse error's, counted
+                            // like one.
+                            Ok(Action::Refused) => false,
+                            // The UART writer does not fail; were it to, the
+                            // reply is incomplete: not a success either.
+                            Err(_) => false,
                         }
                     }
                     Err(e) => {

@@ -33,6 +33,7 @@ use crate::{cosim, pl};
 use core::cell::RefCell;
 use drive::config::spi_nor::SpiNor;
 use drive::config::{store, Config};
+use drive::console::drive::LATCH_WAIT_PERIODS;
 use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
 use drive::hil::{self, HilError, HilReport, Paced, PacedStatus};
 use drive::pl::capture::{CapSample, CapState, CapStatus, Trigger};
@@ -352,7 +353,7 @@ fn guest_counts(cycles: u64) -> u64 {
     cycles * u64::from(timer::PERIPHCLK_HZ / 1_000_000) / 100
 }
 
-/// The firmware's periodic tick (private timer, `app::TICK_HZ`): with our
+/// The firmware's periodic tick (the private timer, 1 kHz): with our
 /// bitstream, the watchdog's heartbeat while the gates are off and no
 /// control-period boundary comes (`State::keep_alive`). Under QEMU the PL
 /// tick does it (the private timer runs at 0.3x there, too slow for the
@@ -670,6 +671,17 @@ impl State {
         };
         self.pl_now() + u64::from(ms) * per_ms
     }
+    /// PL time after `n` control periods from now.
+    fn pl_after_periods(&self, n: u32) -> u64 {
+        let cycles = period_cycles(&self.servo) * u64::from(n);
+        match &self.bus {
+            Backend::Sim(_) | Backend::Cosim(_) => self.pl_now() + cycles,
+            // `pl_now` counts microseconds there.
+            Backend::Gp0(_) => {
+                self.pl_now() + cycles.div_ceil(u64::from(regmap::PL_CLOCK_HZ / 1_000_000))
+            }
+        }
+    }
     /// Inside a `debug stall`.
     fn stalled(&self) -> bool {
         self.pl_now() < self.stall_until
@@ -706,15 +718,21 @@ pub struct FwDrive {
     hil_seen: u64,
     /// The telemetry stream.
     tel: crate::telemetry::Ops,
+    /// Whether Ctrl-C arrived on the console: polled by the long commands
+    /// that run with IRQs masked. The console's owner (`app`, which holds
+    /// the UART and its receive ring) provides it, so that this module
+    /// needs nothing from the one that calls it.
+    interrupted: fn() -> bool,
 }
 
 impl FwDrive {
-    /// No HIL loop.
-    pub const fn new() -> Self {
+    /// No HIL loop; `interrupted` polls the console for Ctrl-C.
+    pub const fn new(interrupted: fn() -> bool) -> Self {
         Self {
             hil: None,
             hil_seen: 0,
             tel: crate::telemetry::Ops,
+            interrupted,
         }
     }
 
@@ -872,6 +890,28 @@ fn wait_recorded(f: Injection) {
     }
 }
 
+/// Waits until fault `bit` is latched and the control loop has recorded
+/// it, at most [`LATCH_WAIT_PERIODS`] control periods of PL time: the
+/// faults the loop saw latched, or `NotLatched`. The answer of
+/// `debug fault` then matches what `fault` says right after it. The
+/// loop's own view is polled, not the register: a register read syncs the
+/// co-simulated PL, and syncs back to back while a step is pending count
+/// as missed steps (`CONTROL_OVERRUN`).
+fn wait_latched(bit: u32) -> Result<Faults, DriveError> {
+    let until = with(|s| s.pl_after_periods(LATCH_WAIT_PERIODS)).ok_or(DriveError::Absent)?;
+    loop {
+        let (faults, now) =
+            with(|s| (s.servo.faults_recorded(), s.pl_now())).ok_or(DriveError::Absent)?;
+        if faults.0 & bit != 0 {
+            return Ok(faults);
+        }
+        if now >= until {
+            return Err(DriveError::NotLatched(bit));
+        }
+        wait();
+    }
+}
+
 fn wait() {
     // SAFETY: WFI has no memory effects.
     unsafe { core::arch::asm!("wfi", options(nomem, nostack)) };
@@ -914,17 +954,15 @@ impl DriveOps for FwDrive {
         phases: models::calibration::Phases,
         on_phase: &mut dyn FnMut(Option<models::calibration::Phase>),
     ) -> Result<drive::servo::calibrate::CalReport, DriveError> {
+        let mut interrupted = self.interrupted;
         run(|s| {
             let c = *s.servo.config();
             let setup =
                 s.servo
                     .calibration_setup(c.calibration_current_a, c.calibration_voltage_v, phases);
-            let r = s.servo.calibrate(
-                &mut s.bus,
-                &setup,
-                on_phase,
-                &mut crate::app::ctrl_c_pending,
-            );
+            let r = s
+                .servo
+                .calibrate(&mut s.bus, &setup, on_phase, &mut interrupted);
             s.after_sensor_check();
             r
         })
@@ -1008,7 +1046,7 @@ impl DriveOps for FwDrive {
             Ok((h.records().nth(k).copied(), h.total))
         })
     }
-    fn inject(&mut self, f: Injection) -> Result<(), DriveError> {
+    fn inject(&mut self, f: Injection) -> Result<Option<Faults>, DriveError> {
         let r = match f {
             Injection::Watchdog => {
                 run(|s| {
@@ -1022,10 +1060,10 @@ impl DriveOps for FwDrive {
                 while console(|s| s.stalled()).unwrap_or(false) {
                     wait();
                 }
-                Ok(())
+                Ok(None)
             }
             Injection::Overrun | Injection::AdcSwap | Injection::AdcInvert => {
-                run(|s| inject_now(s, f))
+                run(|s| inject_now(s, f)).map(|()| None)
             }
             _ => {
                 // At a fixed point of the control period: right after the
@@ -1035,7 +1073,7 @@ impl DriveOps for FwDrive {
                 // simulated PL); at once with the gates off (no step).
                 let gates = run(|s| Ok(s.servo.gates_on(&mut s.bus)?))?;
                 if !gates {
-                    run(|s| inject_now(s, f))
+                    run(|s| inject_now(s, f)).map(|()| None)
                 } else {
                     run(|s| {
                         s.pending_injection = Some(f);
@@ -1058,7 +1096,12 @@ impl DriveOps for FwDrive {
                     if r.is_ok() {
                         wait_recorded(f);
                     }
-                    r
+                    // A fault the PL latches within a period: the reply
+                    // waits for it, so that `fault` right after shows it.
+                    match (r, f.prompt_fault()) {
+                        (Ok(()), Some(bit)) => wait_latched(bit).map(Some),
+                        (r, _) => r.map(|()| None),
+                    }
                 }
             }
         };

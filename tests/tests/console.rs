@@ -63,6 +63,18 @@ fn status_ticks_advance_with_uptime() {
     // QEMU has no bitstream (devcfg says the PL is unconfigured): the
     // firmware drives the simulated PL.
     assert!(b.lines.contains(&"pl: simulated".to_string()), "{b:?}");
+    // The GP0 guard fails under QEMU (no PL behind GP0) and says that this
+    // is expected there.
+    let guard = b
+        .lines
+        .iter()
+        .find(|l| l.starts_with("gp0_guard: "))
+        .expect("a gp0_guard line");
+    assert!(guard.starts_with("gp0_guard: fail: "), "{guard}");
+    assert!(
+        guard.contains("; expected under QEMU (PSS_IDCODE reads as an emulator's)"),
+        "{guard}"
+    );
 }
 
 #[test]
@@ -79,6 +91,38 @@ fn bad_arguments_are_reported() {
     assert_err(&cmd(&mut s, "status now"), "bad-args");
     assert_err(&cmd(&mut s, "debug"), "bad-args");
     assert!(cmd(&mut s, "help status").is_ok());
+}
+
+/// `status`'s console counters count what was sent: every `ERR` reply is an
+/// error, the drive's refusals (mode, gates, no record) as much as the
+/// grammar's and the line editor's.
+#[test]
+fn status_counts_every_err_reply_as_an_error() {
+    let mut s = boot();
+    let lines = [
+        ("version", None),
+        ("frobnicate", Some("unknown-command")),
+        ("st\u{1}atus", Some("bad-char")),
+        ("enable", Some("mode-off")),
+        ("step 0.2", Some("gates-off")),
+        ("help nope", Some("bad-args")),
+        ("capture dump", Some("bad-args")),
+    ];
+    for (line, want) in lines {
+        let r = cmd(&mut s, line);
+        match want {
+            None => assert!(r.is_ok(), "{line}: {r:?}"),
+            Some(code) => assert_err(&r, code),
+        }
+    }
+    let st = cmd(&mut s, "status");
+    // The seven lines above and `status` itself; six of them refused.
+    assert!(
+        st.lines
+            .iter()
+            .any(|l| l == "console: 8 lines, 6 errors, 0 rx overruns"),
+        "{st:?}"
+    );
 }
 
 #[test]

@@ -265,7 +265,19 @@ fn cell(s: &mut Session, m: usize, c: &Case) -> i64 {
             Duration::from_secs(90),
         )
         .expect("debug fault");
-    assert_eq!(r.lines, ["injected"], "{} {mode}: {r:?}", c.fault);
+    assert_eq!(r.lines[0], "injected", "{} {mode}: {r:?}", c.fault);
+    // The PL's prompt faults are waited for and named in the reply (with
+    // whatever else latched in the same control period).
+    if drive::console::Injection::from_name(c.inject)
+        .and_then(|i| i.prompt_fault())
+        .is_some()
+    {
+        assert_eq!(r.lines.len(), 2, "{} {mode}: {r:?}", c.fault);
+        let named = r.lines[1]
+            .strip_prefix("fault: ")
+            .is_some_and(|l| l.split_whitespace().any(|w| w == c.fault));
+        assert!(named, "{} {mode}: {r:?}", c.fault);
+    }
     let end = Instant::now() + Duration::from_secs(20);
     let st = loop {
         let st = cmd(s, "status");

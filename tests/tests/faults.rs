@@ -51,7 +51,21 @@ fn fault_cycle(s: &mut Session, mode: &str, what: &str, name: &str, code: u32) {
     }
     let (before, _) = history(s);
     let r = cmd(s, &format!("debug fault {what}"));
-    assert_eq!(r.lines, ["injected"], "{r:?}");
+    assert_eq!(r.lines[0], "injected", "{r:?}");
+    // A fault the PL latches at once is waited for and named (with
+    // whatever else latched in the same control period).
+    if drive::console::Injection::from_name(what)
+        .and_then(|i| i.prompt_fault())
+        .is_some()
+    {
+        assert_eq!(r.lines.len(), 2, "{r:?}");
+        let named = r.lines[1]
+            .strip_prefix("fault: ")
+            .is_some_and(|l| l.split_whitespace().any(|w| w == name));
+        assert!(named, "{r:?}");
+    } else {
+        assert_eq!(r.lines.len(), 1, "{r:?}");
+    }
     let st = wait_fault(s, name);
     assert_eq!(field(&st, "gates"), Some("off"), "{st:?}");
     assert_err(&cmd(s, "enable"), "fault-latched");
@@ -94,6 +108,35 @@ fn fault_cycle(s: &mut Session, mode: &str, what: &str, name: &str, code: u32) {
     assert_eq!(field(&st, "fault"), Some("none"), "{st:?}");
     assert_eq!(field(&st, "gates"), Some("on"), "{st:?}");
     assert_ok(&cmd(s, "disable"));
+}
+
+/// `debug fault overcurrent` with the gates on answers once `OC_LIMIT` 0
+/// has tripped: the reply names the fault, and `fault` right after it (no
+/// wait in between) shows it latched with the gates off.
+#[test]
+fn overcurrent_is_latched_when_debug_fault_answers() {
+    let mut s = boot();
+    for mode in ["foc", "mpdtc"] {
+        assert_ok(&cmd(&mut s, &format!("mode {mode}")));
+        assert_ok(&cmd(&mut s, "enable"));
+        assert_ok(&cmd(&mut s, "torque 0.2"));
+        let r = s
+            .command("debug fault overcurrent", Duration::from_secs(90))
+            .expect("debug fault");
+        assert_ok(&r);
+        assert_eq!(r.lines[0], "injected", "{mode}: {r:?}");
+        assert!(
+            r.lines.len() == 2
+                && r.lines[1].starts_with("fault: ")
+                && r.lines[1].split_whitespace().any(|w| w == "OVERCURRENT"),
+            "{mode}: {r:?}"
+        );
+        // `fault` right after says what the reply said.
+        let f = cmd(&mut s, "fault");
+        assert_eq!(f.lines, r.lines[1..], "{mode}: {f:?}");
+        assert_eq!(field(&cmd(&mut s, "status"), "gates"), Some("off"));
+        assert_ok(&cmd(&mut s, "fault clear"));
+    }
 }
 
 #[test]

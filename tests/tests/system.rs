@@ -53,3 +53,93 @@ fn every_test_file_is_a_module_of_its_binary() {
         "not a module of its test binary: {missing:?}"
     );
 }
+
+/// The firmware crate's modules (`firmware/src/*.rs`, `ps/` as one) import
+/// each other without a circle: a function two modules need lives in one
+/// and is used by (or handed to) the other. A module's imports are the
+/// `crate::<module>` paths and `use crate::{...}` groups outside comments.
+#[test]
+fn firmware_modules_import_each_other_without_a_circle() {
+    use std::collections::BTreeMap;
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../firmware/src");
+    let mut files: Vec<(String, std::path::PathBuf)> = Vec::new();
+    for e in std::fs::read_dir(&src).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            for f in std::fs::read_dir(&p).unwrap() {
+                files.push((
+                    p.file_name().unwrap().to_string_lossy().into(),
+                    f.unwrap().path(),
+                ));
+            }
+        } else if let Some(m) = p
+            .file_stem()
+            .filter(|_| p.extension().is_some_and(|x| x == "rs"))
+        {
+            files.push((m.to_string_lossy().into(), p.clone()));
+        }
+    }
+    let mut deps: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    for (m, path) in &files {
+        let text = std::fs::read_to_string(path).unwrap();
+        let code: String = text
+            .lines()
+            .map(|l| l.split("//").next().unwrap_or(""))
+            .collect::<Vec<_>>()
+            .join("\n");
+        let d = deps.entry(m.clone()).or_default();
+        let mut add = |name: &str| {
+            let name: String = name
+                .trim()
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            if !name.is_empty() && name != *m && !d.contains(&name) {
+                d.push(name);
+            }
+        };
+        for (k, _) in code.match_indices("crate::") {
+            let rest = &code[k + "crate::".len()..];
+            if let Some(group) = rest.strip_prefix('{') {
+                let group = &group[..group.find('}').unwrap_or(group.len())];
+                group.split(',').for_each(&mut add);
+            } else {
+                add(rest);
+            }
+        }
+    }
+    // Depth-first search for a back edge.
+    fn visit(
+        m: &str,
+        deps: &BTreeMap<String, Vec<String>>,
+        path: &mut Vec<String>,
+        done: &mut Vec<String>,
+    ) -> Option<Vec<String>> {
+        if let Some(i) = path.iter().position(|p| p == m) {
+            let mut circle = path[i..].to_vec();
+            circle.push(m.to_string());
+            return Some(circle);
+        }
+        if done.iter().any(|d| d == m) {
+            return None;
+        }
+        path.push(m.to_string());
+        for d in deps.get(m).into_iter().flatten() {
+            if let Some(c) = visit(d, deps, path, done) {
+                return Some(c);
+            }
+        }
+        path.pop();
+        done.push(m.to_string());
+        None
+    }
+    assert!(
+        deps.contains_key("app") && deps.contains_key("control"),
+        "{deps:?}"
+    );
+    let mut done = Vec::new();
+    for m in deps.keys() {
+        let circle = visit(m, &deps, &mut Vec::new(), &mut done);
+        assert!(circle.is_none(), "import circle: {circle:?}");
+    }
+}

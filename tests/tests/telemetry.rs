@@ -68,9 +68,9 @@ fn tel_list_names_the_channels_and_bad_starts_change_nothing() {
         "i_q [A]",
         "torque [Nm]",
         "torque_ref [Nm]",
-        "position [rad]",
-        "velocity [rad/s]",
-        "speed [rpm]",
+        "position [rev]",
+        "velocity [rev/s]",
+        "speed [rad/s]",
         "duty_a [1]",
         "switching [bits]",
         "faults [bits]",
@@ -78,7 +78,24 @@ fn tel_list_names_the_channels_and_bad_starts_change_nothing() {
     ] {
         assert!(r.lines.iter().any(|l| l.starts_with(want)), "{want}: {r:?}");
     }
+    // The max rates from the baud rate, by hand: 73,728 B/s for telemetry
+    // over 17-byte frames (one channel) and 45-byte frames (eight).
+    assert!(
+        r.lines.iter().any(
+            |l| l.starts_with("max rate: 1 channel 4336 Hz, 2 channels 3510 Hz, ")
+                && l.contains(", 8 channels 1638 Hz ")
+        ),
+        "{r:?}"
+    );
+    assert_ok(&cmd(&mut s, "tel start 4336 i_d"));
     assert_ok(&cmd(&mut s, "tel start 100 i_d,step_time"));
+    let r = cmd(&mut s, "tel start 4337 i_d");
+    match &r.fin {
+        Final::Err { message, .. } => {
+            assert!(message.contains("max rate of 1 channel, 4336 Hz"), "{r:?}")
+        }
+        Final::Ok => panic!("4337 Hz accepted: {r:?}"),
+    }
     for bad in [
         "tel start 0 i_d",
         "tel start 100 nope",
@@ -94,14 +111,21 @@ fn tel_list_names_the_channels_and_bad_starts_change_nothing() {
         }
     }
     let st = cmd(&mut s, "tel status");
-    assert!(st.lines.iter().any(|l| l == "stream: 1 running"), "{st:?}");
+    // The second start above (the first was the max rate's).
+    assert!(st.lines.iter().any(|l| l == "stream: 2 running"), "{st:?}");
     assert!(
         st.lines.iter().any(|l| l == "channels: i_d,step_time"),
         "{st:?}"
     );
     // Frames of the running stream arrive, with the step time measured.
-    let f = s.frames.next(TIMEOUT).expect("a frame");
-    assert_eq!((f.stream, f.n), (1, 2));
+    // (Frames of the first stream, sent before it was replaced, come first.)
+    let f = loop {
+        let f = s.frames.next(TIMEOUT).expect("a frame");
+        if f.stream != 1 {
+            break f;
+        }
+    };
+    assert_eq!((f.stream, f.n), (2, 2));
     assert!(f.values[1] > 0.0, "step_time {}", f.values[1]);
     assert_ok(&cmd(&mut s, "tel stop"));
 }

@@ -27,22 +27,53 @@ use heapless::{Deque, Vec};
 
 /// Channels per stream at most.
 pub const MAX_CHANNELS: usize = 8;
-/// Sample rate limits, Hz of drive time.
+/// The lowest sample rate, Hz of drive time; the highest is what the
+/// console carries for the stream's channels ([`max_rate_hz`]).
 pub const RATE_MIN_HZ: u32 = 1;
-/// The highest rate (the MPDTC's control rate is 63.94 kHz).
-pub const RATE_MAX_HZ: u32 = 10_000;
 /// Kind byte of a sample frame.
 pub const KIND_SAMPLE: u8 = 0x01;
 /// Payload bytes before the channel values.
 pub const HEADER_BYTES: usize = 8;
 /// Baud rate of the console UART (UART1) on a board, 8N1.
 pub const CONSOLE_BAUD: u32 = 921_600;
-/// Bytes per second the console UART carries at [`CONSOLE_BAUD`] (8N1:
-/// 10 bit times per byte).
-pub const CONSOLE_BYTES_PER_S: u32 = CONSOLE_BAUD / 10;
-/// Share of the console's bytes a stream may take; the rest is the
-/// console's replies.
-pub const BUDGET_SHARE: f64 = 0.8;
+/// Bit times per byte on the console UART: 8N1 is a start bit, 8 data
+/// bits and a stop bit.
+pub const BITS_PER_BYTE: u32 = 10;
+/// Bytes per second the console UART carries at [`CONSOLE_BAUD`].
+pub const CONSOLE_BYTES_PER_S: u32 = CONSOLE_BAUD / BITS_PER_BYTE;
+/// Share of the console's bytes a stream may take, percent; the rest is
+/// the console's replies.
+pub const BUDGET_PERCENT: u32 = 80;
+/// Bytes per second a stream may take.
+pub const BUDGET_BYTES_PER_S: u32 = CONSOLE_BYTES_PER_S * BUDGET_PERCENT / 100;
+
+/// The highest sample rate, Hz of drive time, of a stream of `channels`
+/// channels: the whole frames per second that fit [`BUDGET_BYTES_PER_S`].
+/// The one place the limit is computed: `tel start` refuses above it,
+/// `tel list` and `help tel` print it. 0 for a channel count outside
+/// `1..=MAX_CHANNELS`.
+pub const fn max_rate_hz(channels: usize) -> u32 {
+    if channels == 0 || channels > MAX_CHANNELS {
+        return 0;
+    }
+    BUDGET_BYTES_PER_S / frame_bytes(channels) as u32
+}
+
+/// Writes `max rate: 1 channel <r> Hz, 2 channels <r> Hz, ...` with the
+/// link it follows from (no line end).
+pub fn write_max_rates<W: core::fmt::Write>(out: &mut W) -> core::fmt::Result {
+    out.write_str("max rate: ")?;
+    for n in 1..=MAX_CHANNELS {
+        let sep = if n == 1 { "" } else { ", " };
+        let s = if n == 1 { "" } else { "s" };
+        write!(out, "{sep}{n} channel{s} {} Hz", max_rate_hz(n))?;
+    }
+    write!(
+        out,
+        " of drive time ({BUDGET_PERCENT} % of the console's {CONSOLE_BYTES_PER_S} B/s at \
+         {CONSOLE_BAUD} baud 8N1, {BITS_PER_BYTE} bits per byte)"
+    )
+}
 
 /// What a channel samples.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -80,18 +111,19 @@ pub const CHANNELS: &[ChannelSpec] = &[
     },
     ChannelSpec {
         name: "position",
-        unit: "rad",
-        what: "rotor mechanical angle from the encoder count, [0, 2 pi)",
+        unit: "rev",
+        what: "multi-turn rotor position since boot or `pos zero`, as `status` position",
     },
     ChannelSpec {
         name: "velocity",
-        unit: "rad/s",
-        what: "rotor mechanical speed from the encoder's speed window",
+        unit: "rev/s",
+        what: "rotor mechanical velocity, as `status` velocity",
     },
     ChannelSpec {
         name: "speed",
-        unit: "rpm",
-        what: "velocity in revolutions per minute",
+        unit: "rad/s",
+        what: "electrical angular speed (pole pairs x mechanical) from the encoder's speed \
+               window, as `status` speed",
     },
     ChannelSpec {
         name: "duty_a",
@@ -159,7 +191,7 @@ pub struct StreamSpec {
 /// Why a `tel start` is refused.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SpecError<'a> {
-    /// Rate outside `RATE_MIN_HZ..=RATE_MAX_HZ` or not a whole number.
+    /// Rate below [`RATE_MIN_HZ`] or not a whole number.
     Rate,
     /// A name not in [`CHANNELS`].
     Unknown(&'a str),
@@ -167,12 +199,13 @@ pub enum SpecError<'a> {
     Twice(&'a str),
     /// No channel, or more than [`MAX_CHANNELS`].
     Count,
-    /// More bytes per second than the console's share.
+    /// A rate above [`max_rate_hz`] of the channel count: more bytes per
+    /// second than the console's share.
     Budget {
-        /// What the stream needs, bytes/s.
-        needs: u32,
-        /// What it may take, bytes/s.
-        allowed: u32,
+        /// Channels named.
+        channels: usize,
+        /// Rate asked for, Hz.
+        rate_hz: u32,
     },
 }
 
@@ -181,7 +214,8 @@ impl core::fmt::Display for SpecError<'_> {
         match self {
             SpecError::Rate => write!(
                 f,
-                "rate must be a whole number of Hz in {RATE_MIN_HZ}..={RATE_MAX_HZ}"
+                "rate must be a whole number of Hz, at least {RATE_MIN_HZ} (at most the \
+                 max rate of `tel list`)"
             ),
             SpecError::Unknown(n) => {
                 let n = n.get(..24).unwrap_or(n);
@@ -189,11 +223,18 @@ impl core::fmt::Display for SpecError<'_> {
             }
             SpecError::Twice(n) => write!(f, "channel `{n}` named twice"),
             SpecError::Count => write!(f, "name 1 to {MAX_CHANNELS} channels, comma separated"),
-            SpecError::Budget { needs, allowed } => write!(
-                f,
-                "the stream needs {needs} B/s, the console UART ({CONSOLE_BAUD} baud) \
-                 allows {allowed} B/s for telemetry"
-            ),
+            SpecError::Budget { channels, rate_hz } => {
+                let s = if *channels == 1 { "" } else { "s" };
+                write!(
+                    f,
+                    "{rate_hz} Hz is above the max rate of {channels} channel{s}, {} Hz: \
+                     {}-byte frames at {rate_hz} Hz need {} B/s, the console UART \
+                     ({CONSOLE_BAUD} baud 8N1) allows {BUDGET_BYTES_PER_S} B/s for telemetry",
+                    max_rate_hz(*channels),
+                    frame_bytes(*channels),
+                    u64::from(*rate_hz) * frame_bytes(*channels) as u64,
+                )
+            }
         }
     }
 }
@@ -204,7 +245,7 @@ impl StreamSpec {
         let rate_hz = rate
             .parse::<u32>()
             .ok()
-            .filter(|r| (RATE_MIN_HZ..=RATE_MAX_HZ).contains(r))
+            .filter(|r| *r >= RATE_MIN_HZ)
             .ok_or(SpecError::Rate)?;
         let mut channels: Vec<u8, MAX_CHANNELS> = Vec::new();
         for n in names.split(',') {
@@ -216,19 +257,17 @@ impl StreamSpec {
         }
         let mut index = [0; MAX_CHANNELS];
         index[..channels.len()].copy_from_slice(&channels);
-        let s = Self {
+        if rate_hz > max_rate_hz(channels.len()) {
+            return Err(SpecError::Budget {
+                channels: channels.len(),
+                rate_hz,
+            });
+        }
+        Ok(Self {
             rate_hz,
             index,
             n: channels.len() as u8,
-        };
-        let allowed = (f64::from(CONSOLE_BYTES_PER_S) * BUDGET_SHARE) as u32;
-        if s.bytes_per_s() > allowed {
-            return Err(SpecError::Budget {
-                needs: s.bytes_per_s(),
-                allowed,
-            });
-        }
-        Ok(s)
+        })
     }
 
     /// Channel indices into [`CHANNELS`], in frame order.
@@ -774,7 +813,11 @@ mod tests {
     #[test]
     fn start_is_checked_and_a_refusal_changes_nothing() {
         assert_eq!(StreamSpec::parse("0", "i_d"), Err(SpecError::Rate));
-        assert_eq!(StreamSpec::parse("10001", "i_d"), Err(SpecError::Rate));
+        assert_eq!(StreamSpec::parse("-5", "i_d"), Err(SpecError::Rate));
+        assert_eq!(
+            StreamSpec::parse("99999999999", "i_d"),
+            Err(SpecError::Rate)
+        );
         assert_eq!(StreamSpec::parse("1e3", "i_d"), Err(SpecError::Rate));
         assert_eq!(
             StreamSpec::parse("100", "i_d,nope"),
@@ -792,11 +835,80 @@ mod tests {
         assert_eq!(StreamSpec::parse("100", nine), Err(SpecError::Count));
         // 8 channels at 10 kHz: 450 kB/s, far beyond 921600 baud.
         let eight = "i_d,i_q,torque,torque_ref,position,velocity,speed,duty_a";
-        assert!(matches!(
-            StreamSpec::parse("10000", eight),
-            Err(SpecError::Budget { needs: 450_000, .. })
-        ));
+        let e = StreamSpec::parse("10000", eight).unwrap_err();
+        assert_eq!(
+            e,
+            SpecError::Budget {
+                channels: 8,
+                rate_hz: 10_000
+            }
+        );
+        assert_eq!(
+            std::format!("{e}"),
+            "10000 Hz is above the max rate of 8 channels, 1638 Hz: 45-byte frames at \
+             10000 Hz need 450000 B/s, the console UART (921600 baud 8N1) allows 73728 B/s \
+             for telemetry"
+        );
+        // The largest u32 rate: no overflow on the way to the refusal.
+        let e = StreamSpec::parse("4294967295", "i_d").unwrap_err();
+        assert!(std::format!("{e}").contains("need 73014444015 B/s"), "{e}");
         assert!(Telemetry::<4>::new().status().spec.is_none());
+    }
+
+    /// The rate limit against the link, by hand: 921600 baud at 10 bits
+    /// per byte is 92,160 B/s, 80 % of it 73,728 B/s; a frame is
+    /// 2 delimiters + 1 COBS byte + 8 header + 4 per channel + 2 CRC bytes.
+    #[test]
+    fn max_rate_is_the_frames_per_second_the_console_carries() {
+        // n: frame bytes, floor(73728 / frame) Hz.
+        let by_hand = [
+            (1, 17, 4336),
+            (2, 21, 3510),
+            (3, 25, 2949),
+            (4, 29, 2542),
+            (5, 33, 2234),
+            (6, 37, 1992),
+            (7, 41, 1798),
+            (8, 45, 1638),
+        ];
+        for (n, frame, max) in by_hand {
+            assert_eq!(frame_bytes(n), frame, "{n}");
+            assert_eq!(max_rate_hz(n), max, "{n}");
+        }
+        assert_eq!(max_rate_hz(0), 0);
+        assert_eq!(max_rate_hz(9), 0);
+        // The limit is exact: the max rate starts, one more Hz is refused.
+        let names = [
+            "i_d",
+            "i_d,i_q",
+            "i_d,i_q,torque,torque_ref,position,velocity,speed,duty_a",
+        ];
+        for (names, n, max) in [
+            (names[0], 1, 4336),
+            (names[1], 2, 3510),
+            (names[2], 8, 1638),
+        ] {
+            let s = StreamSpec::parse(&std::format!("{max}"), names).unwrap();
+            assert!(s.bytes_per_s() <= 73_728, "{names}");
+            assert_eq!(
+                StreamSpec::parse(&std::format!("{}", max + 1), names),
+                Err(SpecError::Budget {
+                    channels: n,
+                    rate_hz: max + 1
+                })
+            );
+        }
+        let mut line = std::string::String::new();
+        write_max_rates(&mut line).unwrap();
+        assert!(
+            line.starts_with(
+                "max rate: 1 channel 4336 Hz, 2 channels 3510 Hz, 3 channels 2949 Hz, \
+                 4 channels 2542 Hz, 5 channels 2234 Hz, 6 channels 1992 Hz, 7 channels \
+                 1798 Hz, 8 channels 1638 Hz of drive time (80 % of the console's 92160 B/s \
+                 at 921600 baud 8N1"
+            ),
+            "{line}"
+        );
     }
 
     #[test]

@@ -311,7 +311,7 @@ mod tests {
         write_csv(&rec, &mut out).unwrap();
         assert_eq!(
             String::from_utf8(out).unwrap(),
-            "time_s,torque_Nm,velocity_rad_per_s\n0.001000,0.25,-3\n"
+            "time_s,torque_Nm,velocity_rev_per_s\n0.001000,0.25,-3\n"
         );
     }
 }

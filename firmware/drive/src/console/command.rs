@@ -145,8 +145,11 @@ pub enum ParseError<'a> {
 /// What the caller must do after the reply.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Action {
-    /// Nothing: print the prompt again.
+    /// The reply ended with `OK`: print the prompt again.
     None,
+    /// The reply ended with an `ERR` line (the drive refused or failed the
+    /// command): the caller counts it as an error, then prompts again.
+    Refused,
     /// Panic on purpose (`debug panic`).
     Panic,
 }
@@ -162,7 +165,7 @@ pub struct Status {
     pub tick_hz: u32,
     /// Lines the console received.
     pub lines: u32,
-    /// Lines answered with `ERR`.
+    /// Lines answered with `ERR` (the grammar's, the editor's or the drive's).
     pub errors: u32,
     /// Received bytes lost because the receive buffer was full.
     pub rx_overruns: u32,
@@ -272,7 +275,7 @@ pub fn execute<W: Write>(
             out.write_str("OK\r\n")?;
             Ok(Action::None)
         }
-        Outcome::Final => Ok(Action::None),
+        Outcome::Final => Ok(Action::Refused),
         Outcome::Panic => Ok(Action::Panic),
     }
 }

@@ -211,7 +211,24 @@ pub enum Injection {
     EncoderLoss,
 }
 
+/// Control periods `debug fault` waits, with the gates on, for a
+/// [`Injection::prompt_fault`] to latch: the PL latches either at its next
+/// raw ADC sample or pin sample, well inside one period.
+pub const LATCH_WAIT_PERIODS: u32 = 4;
+
 impl Injection {
+    /// The fault the PL latches within a period of this injection with the
+    /// gates on (current flows, the pin is sampled), so that `debug fault`
+    /// waits for it and reports it; `None` for the injections whose fault
+    /// comes later or not at all.
+    pub fn prompt_fault(self) -> Option<u32> {
+        match self {
+            Injection::Overcurrent => Some(Faults::OVERCURRENT),
+            Injection::External => Some(Faults::EXTERNAL),
+            _ => None,
+        }
+    }
+
     /// From the console word.
     pub fn from_name(s: &str) -> Option<Self> {
         match s {
@@ -248,6 +265,9 @@ pub enum DriveError {
     /// Refused in `mode mpdcc` (the HIL loop uses the MPDCC page, the PMSM
     /// gates stay off).
     MpdccMode,
+    /// `debug fault`: the fault (bits) did not latch within
+    /// [`LATCH_WAIT_PERIODS`] control periods.
+    NotLatched(u32),
 }
 
 impl From<ServoError> for DriveError {
@@ -289,7 +309,10 @@ pub trait DriveOps {
         Err(DriveError::Unsupported)
     }
     /// Makes a fault happen (`debug fault`), to test the drive's reaction.
-    fn inject(&mut self, _f: Injection) -> Result<(), DriveError> {
+    /// With the gates on, an injection with a [`Injection::prompt_fault`]
+    /// returns once that fault has latched, with the latched faults
+    /// (`Some`), or [`DriveError::NotLatched`]; otherwise `None` at once.
+    fn inject(&mut self, _f: Injection) -> Result<Option<Faults>, DriveError> {
         Err(DriveError::Unsupported)
     }
     /// The last injection's cause and the gates-off instant, PL cycles
@@ -529,6 +552,15 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
                  (boot a BOOT.BIN with it, see docs/board.md; `status` shows devcfg)"
             ),
         ),
+        DriveError::NotLatched(bits) => {
+            write!(out, "ERR {} {cmd}: ", ErrorCode::Timeout.as_str())?;
+            Faults(bits).write_names(out)?;
+            write!(
+                out,
+                " did not latch within {LATCH_WAIT_PERIODS} control periods of the \
+                 injection (gates still on)\r\n"
+            )
+        }
         DriveError::Timeout => write_err(
             out,
             ErrorCode::Timeout,

@@ -26,6 +26,10 @@ impl Faults {
         "ENCODER_DEAD",
         "PHASE_OPEN",
     ];
+    /// The overcurrent bit.
+    pub const OVERCURRENT: u32 = FaultStatusValue::ZERO.with_overcurrent(true).bits();
+    /// The external fault input's bit.
+    pub const EXTERNAL: u32 = FaultStatusValue::ZERO.with_external(true).bits();
     /// The watchdog bit.
     pub const WATCHDOG: u32 = FaultStatusValue::ZERO.with_watchdog(true).bits();
     /// The bits of `FAULT_STATUS`.

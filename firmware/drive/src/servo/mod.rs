@@ -984,6 +984,9 @@ impl Servo {
         bus: &mut B,
         target: f64,
     ) -> Result<(), ServoError> {
+        // The argument before the drive's state: a target out of range is
+        // refused as such whatever the gates.
+        Motion::check_position(&self.cfg.motion, target)?;
         self.need_gates(bus)?;
         self.not_aligning()?;
         Ok(self.motion.set_position(&self.cfg.motion, target)?)
@@ -1008,6 +1011,10 @@ impl Servo {
         distance: f64,
         window_s: f64,
     ) -> Result<(), ServoError> {
+        // The arguments first, before the gates and before anything is
+        // cancelled: a refused move changes nothing.
+        self.motion
+            .check_move(&self.cfg.motion, distance, window_s)?;
         self.need_gates(bus)?;
         self.rec.cancel();
         self.sine = None;

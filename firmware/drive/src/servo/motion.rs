@@ -113,6 +113,15 @@ impl MotionConfig {
 pub enum MotionError {
     /// A position outside the soft limits: (rev, pos_min, pos_max).
     Position(f64, f64, f64),
+    /// A `move` whose end is outside the soft limits (or not a number).
+    MoveTarget {
+        /// The distance asked for, rev.
+        distance: f64,
+        /// The position at the command, rev.
+        from: f64,
+        /// `pos_min`, `pos_max`, rev.
+        limits: (f64, f64),
+    },
     /// A velocity beyond `vel_limit`: (rev/s, vel_limit).
     Velocity(f64, f64),
     /// An `imp` gain negative or above its maximum: (name, value, max).
@@ -131,6 +140,18 @@ impl core::fmt::Display for MotionError {
             MotionError::Position(x, lo, hi) => write!(
                 f,
                 "{x} rev is outside the soft limits [{lo}..{hi}] rev (pos_min, pos_max)"
+            ),
+            // The limits first: the end position is a sum the user did not
+            // type, printed rounded to the display's 6 decimals.
+            MotionError::MoveTarget {
+                distance,
+                from,
+                limits: (lo, hi),
+            } => write!(
+                f,
+                "outside the soft limits [{lo}..{hi}] rev (pos_min, pos_max): a move by \
+                 {distance} rev from {from:.6} rev would end at {:.6} rev; nothing changed",
+                from + distance
             ),
             MotionError::Velocity(x, lim) => {
                 write!(f, "{x} rev/s is beyond vel_limit ({lim} rev/s)")
@@ -324,10 +345,10 @@ impl Motion {
         Ok(())
     }
 
-    /// `move <rev> [<window>]`: a move by `distance` from the position at
-    /// its start, then `window_s` of holding; [`Self::move_result`] after.
-    pub fn begin_move(
-        &mut self,
+    /// The arguments of [`Self::begin_move`] checked against the present
+    /// position and the soft limits; nothing changes.
+    pub fn check_move(
+        &self,
         c: &MotionConfig,
         distance: f64,
         window_s: f64,
@@ -338,7 +359,31 @@ impl Motion {
         if !(window_s > 0.0 && window_s <= MOVE_WINDOW_MAX_S) {
             return Err(MotionError::Window(window_s));
         }
-        check_target(c, self.est.position_rev() + distance)?;
+        let from = self.est.position_rev();
+        if !(c.pos_min..=c.pos_max).contains(&(from + distance)) {
+            return Err(MotionError::MoveTarget {
+                distance,
+                from,
+                limits: (c.pos_min, c.pos_max),
+            });
+        }
+        Ok(())
+    }
+
+    /// A `pos` target checked against the soft limits; nothing changes.
+    pub fn check_position(c: &MotionConfig, target: f64) -> Result<(), MotionError> {
+        check_target(c, target)
+    }
+
+    /// `move <rev> [<window>]`: a move by `distance` from the position at
+    /// its start, then `window_s` of holding; [`Self::move_result`] after.
+    pub fn begin_move(
+        &mut self,
+        c: &MotionConfig,
+        distance: f64,
+        window_s: f64,
+    ) -> Result<(), MotionError> {
+        self.check_move(c, distance, window_s)?;
         self.start(LoopKind::Position);
         self.pending_target = None;
         self.traj = None;

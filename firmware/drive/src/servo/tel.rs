@@ -10,11 +10,10 @@ impl Servo {
     /// the caller.
     pub fn tel_point(&self, step_time_us: f64) -> Point {
         let m = self.measured;
-        let velocity = m.omega_e_rad_s / f64::from(self.cfg.motor.pole_pairs.max(1));
-        let cpr = f64::from(self.cfg.enc_cpr.max(1));
-        let position = self
-            .last_pos
-            .map_or(0.0, |p| f64::from(p) / cpr * core::f64::consts::TAU);
+        // The position and velocity `status` prints, in its units (rev,
+        // rev/s), so that a stream and `status` agree; speed is `status`'s
+        // electrical speed.
+        let mo = self.motion.status();
         let state = self.last_state;
         let (duties, switching) = match self.mode {
             Mode::Foc if self.gates => (self.duties, 0),
@@ -29,9 +28,9 @@ impl Servo {
             m.i_q_a,
             m.torque_nm,
             self.torque_ref_nm,
-            position,
-            velocity,
-            velocity * 60.0 / core::f64::consts::TAU,
+            mo.position_rev,
+            mo.velocity_rev_s,
+            m.omega_e_rad_s,
             duties[0],
             duties[1],
             duties[2],

@@ -12,7 +12,8 @@ pub const DEBUG: Spec = Spec {
            `mmu` reads back SCTLR, the L2 and the translation table's memory types; \
            `stall <ms>` stops the control loop and heartbeat for <ms> of PL time (the \
            simulated PL's under QEMU); `bench` counts guest instructions of the control \
-           code; `fault <f>` makes a fault happen (<f>: external, adc-stuck, overrun, \
+           code; `fault <f>` makes a fault happen (with the gates on, overcurrent and \
+           external answer once latched, naming it; <f>: external, adc-stuck, overrun, \
            overcurrent, watchdog, encoder-dead, encoder-loss, phase-open, position-limit, \
            overspeed; \
            adc-swap or adc-invert: current channels a and b swapped, or a inverted, in the \
@@ -105,8 +106,14 @@ pub fn execute<W: Write>(
             write_mmu(out, &m)?;
         }
         DebugCmd::Fault(f) => {
-            try_drive!(out, "debug", drv.inject(f));
+            let latched = try_drive!(out, "debug", drv.inject(f));
             out.write_str("injected\r\n")?;
+            // The command waited for the latch: what `fault` now says.
+            if let Some(l) = latched {
+                out.write_str("fault: ")?;
+                l.write_names(out)?;
+                out.write_str("\r\n")?;
+            }
         }
         DebugCmd::FaultTime => {
             let (cause, off) = try_drive!(out, "debug", drv.fault_time());

@@ -31,7 +31,13 @@ pub fn execute<W: Write>(topic: Option<&str>, out: &mut W) -> Result<Outcome, fm
             out.write_str("replies end with `OK` or `ERR <code> <message>`\r\n")?;
         }
         Some(topic) => match spec(topic) {
-            Some(s) => write_spec(out, s)?,
+            Some(s) => {
+                write_spec(out, s)?;
+                // A limit that follows from the link, not from the table.
+                if s.name == super::tel::TEL.name {
+                    super::tel::write_max_rates(out)?;
+                }
+            }
             None => {
                 let (w, more) = clip(topic);
                 write_err(

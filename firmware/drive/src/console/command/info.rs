@@ -1,5 +1,5 @@
 //! `version` and `status`: what the firmware and the drive are.
-use super::super::drive::{DriveOps, DriveStatus};
+use super::super::drive::{DriveOps, DriveStatus, PlKind};
 use super::{no_args, Context, Outcome, ParseError, Spec};
 use crate::hil::{HilError, PacedStatus};
 use core::fmt::{self, Write};
@@ -16,7 +16,8 @@ pub const STATUS: Spec = Spec {
     name: "status",
     args: "",
     help: "uptime [s], ticks, console counters, then the drive: mode, gates, fault, torque \
-           [Nm], i_d/i_q [A], speed [rad/s], control rate [Hz], periods, overruns, PL",
+           [Nm], i_d/i_q [A], electrical speed [rad/s], position [rev], velocity [rev/s], \
+           control rate [Hz], periods, overruns, PL",
 };
 
 /// `version` or `status`.
@@ -67,18 +68,45 @@ pub fn execute<W: Write>(
                 s.lines, s.errors, s.rx_overruns
             )?;
             write!(out, "log: {} frames dropped (ring full)\r\n", s.log_dropped)?;
-            write_status(out, &drv.status())?;
+            let st = drv.status();
+            write_status(out, &st)?;
             match drv.sensor_check_due() {
                 Some(true) => out.write_str("sensor_check: due (runs at the next enable)\r\n")?,
                 Some(false) => out.write_str("sensor_check: passed\r\n")?,
                 None => {}
             }
             if let Some(g) = drv.gp0_guard() {
-                write!(out, "gp0_guard: {g}\r\n")?;
+                write_guard(out, &g, st.pl)?;
             }
         }
     }
     Ok(Outcome::Ok)
+}
+
+/// The `gp0_guard:` line of `status`. A failed guard is what an emulator
+/// shows (QEMU has no PL behind GP0): the simulated PL, chosen only where
+/// `PSS_IDCODE` says emulator (`crate::pl::presence::platform`), answers
+/// instead, so the line says the failure is expected there. On a board
+/// (any other `pl`) it is the reason the PL is unusable, without that note.
+pub fn write_guard<W: Write>(
+    out: &mut W,
+    g: &crate::pl::presence::Guard,
+    pl: PlKind,
+) -> fmt::Result {
+    let instead = match pl {
+        PlKind::Simulated => Some("the simulated PL"),
+        PlKind::RtlCosim => Some("the co-simulated RTL, over the bridge,"),
+        PlKind::Bitstream(_) | PlKind::Absent => None,
+    };
+    match (g.check(), instead) {
+        (Err(_), Some(who)) => write!(
+            out,
+            "gp0_guard: {g}; expected under QEMU (PSS_IDCODE reads as an emulator's): no \
+             real PL behind GP0, so GP0 is left alone and {who} answers the drive's \
+             registers\r\n"
+        ),
+        _ => write!(out, "gp0_guard: {g}\r\n"),
+    }
 }
 
 /// The `mode mpdcc` lines of `status`: the paced HIL loop's progress.

@@ -8,7 +8,8 @@ use core::fmt::{self, Write};
 pub const MOVE: Spec = Spec {
     name: "move",
     args: "<rev> [<window_ms>]",
-    help: "position move by <rev> from the present position (trajectory as `pos`), held for \
+    help: "position move by <rev> from the present position (trajectory as `pos`; the end \
+           within pos_min..pos_max, else refused), held for \
            the window [ms] after the trajectory (default 20, at most 500); prints move_time \
            [ms], settling_time [ms] into +-2 counts, overshoot, max_following_error and \
            final_error [counts]",

@@ -3,6 +3,8 @@
 //! console's replies (docs/telemetry.md).
 use super::super::{write_err, ErrorCode};
 use super::{Outcome, ParseError, Spec};
+#[cfg(doc)]
+use crate::telemetry::max_rate_hz;
 use crate::telemetry::{Counters, StreamSpec, TelStatus, CHANNELS, CONSOLE_BAUD};
 use core::fmt::{self, Write};
 
@@ -20,11 +22,19 @@ pub trait TelOps {
 pub const TEL: Spec = Spec {
     name: "tel",
     args: "list|start <rate_hz> <channels>|stop|status",
-    help: "live telemetry: `list` the channels with units, `start` a stream of up to 8 \
-           comma-separated <channels> at <rate_hz> of drive time (1..=10000, one control \
+    help: "live telemetry: `list` the channels with units and the max rates, `start` a \
+           stream of up to 8 comma-separated <channels> at <rate_hz> of drive time (from 1 \
+           up to the max rate the console carries for that many channels, one control \
            period's value per sample) as binary frames between the replies, `stop`, \
            `status` (samples taken, sent, dropped)",
 };
+
+/// The line `tel list` and `help tel` end with: the max rate per channel
+/// count, from the console's baud rate ([`max_rate_hz`]).
+pub fn write_max_rates<W: Write>(out: &mut W) -> fmt::Result {
+    crate::telemetry::write_max_rates(out)?;
+    out.write_str("\r\n")
+}
 
 /// A parsed `tel` line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -95,6 +105,7 @@ pub fn execute<W: Write>(
         for c in CHANNELS {
             write!(out, "{} [{}] {}\r\n", c.name, c.unit, c.what)?;
         }
+        write_max_rates(out)?;
         return Ok(Outcome::Ok);
     }
     let Some(ops) = ops else {
@@ -174,11 +185,21 @@ mod tests {
     fn list_names_every_channel_with_its_unit() {
         let mut f = Fake(Telemetry::new());
         let r = run(&mut f, "tel list");
-        assert_eq!(r.lines().count(), CHANNEL_COUNT + 1);
+        // The channels, the max rates, OK.
+        assert_eq!(r.lines().count(), CHANNEL_COUNT + 2);
+        // By hand: 73,728 B/s for telemetry (80 % of 921600 baud at 10
+        // bits per byte) over 17-byte frames (one channel), 45-byte (eight).
+        assert!(
+            r.contains("\r\nmax rate: 1 channel 4336 Hz, 2 channels 3510 Hz, "),
+            "{r}"
+        );
+        assert!(r.contains(", 8 channels 1638 Hz of drive time"), "{r}");
         for n in [
             "i_d [A]",
             "torque [Nm]",
-            "velocity [rad/s]",
+            "position [rev]",
+            "velocity [rev/s]",
+            "speed [rad/s]",
             "step_time [us]",
         ] {
             assert!(r.contains(n), "{n} in {r}");
@@ -220,7 +241,11 @@ mod tests {
             ("tel start 0 i_d", "rate must be"),
             ("tel start 100 i_d,bogus", "no channel `bogus`"),
             ("tel start 100 i_d,i_d", "named twice"),
-            ("tel start 10000 i_d,i_q,torque", "B/s"),
+            (
+                "tel start 10000 i_d,i_q,torque",
+                "max rate of 3 channels, 2949 Hz",
+            ),
+            ("tel start 4337 i_d", "max rate of 1 channel, 4336 Hz"),
             ("tel start 100", "expected `tel list`"),
             ("tel bogus", "expected `tel list`"),
         ] {
@@ -231,6 +256,8 @@ mod tests {
         }
         let st = f.0.status();
         assert_eq!((st.stream, st.spec.unwrap().rate_hz), (1, 100));
+        // The advertised max rate starts.
+        assert!(run(&mut f, "tel start 4336 i_d").ends_with("OK\r\n"));
     }
 
     #[test]

@@ -61,6 +61,16 @@ fn help_lists_every_command_with_its_arguments() {
 #[test]
 fn help_on_one_command() {
     assert!(reply("help status").starts_with("  status"));
+    // `help tel` gives the max rates the console carries (by hand: 73,728
+    // B/s for telemetry over 17-byte frames for one channel).
+    let r = reply("help tel");
+    assert!(r.starts_with("  tel "), "{r}");
+    assert!(
+        r.contains("\r\nmax rate: 1 channel 4336 Hz, 2 channels 3510 Hz, "),
+        "{r}"
+    );
+    assert!(!r.contains("10000"), "{r}");
+    assert_one_final_line(&r);
     assert_eq!(
         reply("help nothing"),
         "ERR bad-args help: no command `nothing`\r\n"
@@ -336,14 +346,24 @@ impl DriveOps for TestDrive {
         let h = self.servo.fault_history();
         Ok((h.records().nth(k).copied(), h.total))
     }
-    fn inject(&mut self, f: Injection) -> Result<(), DriveError> {
+    fn inject(&mut self, f: Injection) -> Result<Option<Faults>, DriveError> {
         match f {
             Injection::AdcStuck => {
                 crate::pl::adc::Adc(&mut self.pl)
                     .set_enabled(false)
                     .unwrap();
-                Ok(())
+                Ok(None)
             }
+            // The firmware's answers after its wait for the latch (the fake
+            // PL latches nothing itself): overcurrent latched, the external
+            // pulse not.
+            Injection::Overcurrent | Injection::External
+                if !self.servo.gates_on(&mut self.pl).unwrap() =>
+            {
+                Ok(None)
+            }
+            Injection::Overcurrent => Ok(Some(Faults(Faults::OVERCURRENT))),
+            Injection::External => Err(DriveError::NotLatched(Faults::EXTERNAL)),
             _ => Err(DriveError::Unsupported),
         }
     }
@@ -358,6 +378,17 @@ impl DriveOps for TestDrive {
     }
     fn zero_position(&mut self) -> Result<(), DriveError> {
         Ok(self.servo.zero_position()?)
+    }
+    /// The move's start as the firmware's; the fake PL runs no control
+    /// steps, so an accepted move can only time out here.
+    fn run_move(
+        &mut self,
+        distance_rev: f64,
+        window_s: f64,
+    ) -> Result<crate::servo::motion::MoveResult, DriveError> {
+        self.servo
+            .begin_move(&mut self.pl, distance_rev, window_s)?;
+        Err(DriveError::Timeout)
     }
     fn set_impedance(&mut self, c: &models::motion::law::Impedance) -> Result<(), DriveError> {
         Ok(self.servo.set_impedance(&mut self.pl, c)?)
@@ -962,4 +993,139 @@ fn position_commands_during_the_mpdtc_alignment_answer_aligning_and_change_nothi
     reply_on(&mut d, "enable");
     assert!(!reply_on(&mut d, "status").contains("alignment:"));
     assert!(reply_on(&mut d, "pos zero").ends_with("OK\r\n"));
+}
+
+/// The caller counts a line as an error from what `execute` returns: it
+/// must say `Refused` exactly when the reply's final line is `ERR`, for
+/// the drive's own refusals (state, limits) as much as for the grammar's.
+#[test]
+fn execute_says_refused_exactly_when_the_reply_ends_with_err() {
+    let mut d = TestDrive::new();
+    let mut refused = 0;
+    let lines = [
+        "version",
+        "enable",       // mode off: ERR mode-off
+        "step 0.2",     // gates off
+        "help nope",    // no such command
+        "capture dump", // no record
+        "tel status",   // no stream in this build
+        "mode foc",
+        "enable",
+        "torque 0.1",
+        "pos 0.5",
+        "pos zero", // holding
+        "vel 1e9",  // beyond vel_limit
+        "pos 1e9",  // beyond the soft limits
+        "torque 0",
+        "status",
+    ];
+    for line in lines {
+        let mut out = String::new();
+        let a = execute(parse(line).unwrap(), &ctx(), &mut d, &mut out).unwrap();
+        assert_one_final_line(&out);
+        let last = out.trim_end().rsplit("\r\n").next().unwrap();
+        let err = last.starts_with("ERR ");
+        assert_eq!(a == Action::Refused, err, "{line}: {out:?}");
+        assert_eq!(a == Action::None, !err, "{line}: {out:?}");
+        refused += usize::from(err);
+    }
+    // The ERR replies of the list above, counted by hand.
+    assert_eq!(refused, 8);
+}
+
+/// A `move` or `pos` beyond the soft limits (default +-1000 rev) is
+/// refused as such before anything else, gates on or off: one `ERR` line
+/// with the limits and units, and nothing changes.
+#[test]
+fn move_and_pos_beyond_the_soft_limits_are_refused_first_and_change_nothing() {
+    let mut d = TestDrive::new();
+    let want_move = "ERR bad-args move: outside the soft limits [-1000..1000] rev (pos_min, \
+                     pos_max): a move by 1000000000 rev from 0.000000 rev would end at \
+                     1000000000.000000 rev; nothing changed\r\n";
+    let want_pos = "ERR bad-args pos: 1000000000 rev is outside the soft limits [-1000..1000] rev \
+         (pos_min, pos_max)\r\n";
+    for setup in [None, Some("mode foc"), Some("enable")] {
+        if let Some(l) = setup {
+            reply_on(&mut d, l);
+        }
+        let before = reply_on(&mut d, "status");
+        assert_eq!(reply_on(&mut d, "move 1e9"), want_move, "{setup:?}");
+        assert_eq!(reply_on(&mut d, "pos 1e9"), want_pos, "{setup:?}");
+        // One step back inside: the end is checked, not the distance.
+        assert!(
+            reply_on(&mut d, "move -1000.5").starts_with("ERR bad-args move: outside the soft"),
+            "{setup:?}"
+        );
+        assert_eq!(reply_on(&mut d, "status"), before, "{setup:?}");
+    }
+    // The last setup took effect: the refusals above came with the gates on.
+    assert!(reply_on(&mut d, "status").contains("gates: on\r\n"));
+}
+
+/// `gp0_guard:` says a failed guard is expected only where the simulated
+/// PL (or the co-simulated RTL) answers, which presence detection picks
+/// only in an emulator; on a board the failure stands without the note.
+#[test]
+fn gp0_guard_failure_is_called_expected_only_under_the_emulator() {
+    use crate::pl::presence::{Guard, PCFG_DONE};
+    // What QEMU reads (the banner and `status` print it).
+    let qemu = Guard {
+        int_sts: 0,
+        lvl_shftr_en: 0,
+        fpga_rst_ctrl: 0x01f3_3f0f,
+    };
+    let line = |g: &Guard, pl: PlKind| {
+        let mut out = String::new();
+        info::write_guard(&mut out, g, pl).unwrap();
+        out
+    };
+    let fail = "gp0_guard: fail: devcfg INT_STS.PCFG_DONE clear (PL not configured) (INT_STS \
+                0x00000000, LVL_SHFTR_EN 0x0, FPGA_RST_CTRL 0x01f33f0f)";
+    let sim = line(&qemu, PlKind::Simulated);
+    assert!(sim.starts_with(fail), "{sim}");
+    assert!(
+        sim.contains(
+            "; expected under QEMU (PSS_IDCODE reads as an emulator's): no real PL \
+                      behind GP0, so GP0 is left alone and the simulated PL answers"
+        ),
+        "{sim}"
+    );
+    assert!(line(&qemu, PlKind::RtlCosim).contains("the co-simulated RTL"));
+    // A board without our bitstream reads the same words: no QEMU note.
+    assert_eq!(line(&qemu, PlKind::Absent), std::format!("{fail}\r\n"));
+    // A passing guard never gets it.
+    let board = Guard {
+        int_sts: PCFG_DONE,
+        lvl_shftr_en: 0xF,
+        fpga_rst_ctrl: 0,
+    };
+    let pass = line(&board, PlKind::Bitstream(0x0001_0000));
+    assert!(
+        pass.starts_with("gp0_guard: pass (") && !pass.contains("QEMU"),
+        "{pass}"
+    );
+}
+
+/// `debug fault` with the gates on answers once the fault latched, naming
+/// it, or `ERR timeout` naming the fault that did not latch.
+#[test]
+fn debug_fault_reports_the_latched_fault_or_that_it_did_not_latch() {
+    let mut d = TestDrive::new();
+    assert_eq!(
+        reply_on(&mut d, "debug fault overcurrent"),
+        "injected\r\nOK\r\n"
+    );
+    reply_on(&mut d, "mode foc");
+    reply_on(&mut d, "enable");
+    assert_eq!(
+        reply_on(&mut d, "debug fault overcurrent"),
+        "injected\r\nfault: OVERCURRENT\r\nOK\r\n"
+    );
+    assert_eq!(
+        reply_on(&mut d, "debug fault external"),
+        "ERR timeout debug: EXTERNAL did not latch within 4 control periods of the injection \
+         (gates still on)\r\n"
+    );
+    // Hand-checked bits: FAULT_STATUS bit 0 is OVERCURRENT, bit 1 EXTERNAL.
+    assert_eq!((Faults::OVERCURRENT, Faults::EXTERNAL), (1, 2));
 }
