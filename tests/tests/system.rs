@@ -54,23 +54,23 @@ fn every_test_file_is_a_module_of_its_binary() {
     );
 }
 
-/// The firmware crate's modules (`firmware/src/*.rs`, `ps/` as one) import
-/// each other without a circle: a function two modules need lives in one
-/// and is used by (or handed to) the other. A module's imports are the
-/// `crate::<module>` paths and `use crate::{...}` groups outside comments.
-#[test]
-fn firmware_modules_import_each_other_without_a_circle() {
+/// The modules of a crate's source directory (`*.rs`, a subdirectory as
+/// one module) import each other without a circle: a function two modules
+/// need lives in one and is used by (or handed to) the other. A module's
+/// imports are the `crate::<module>` paths and `use crate::{...}` groups
+/// outside comments. `must`: modules the scan has to find (a guard against
+/// a scan that finds nothing and passes).
+fn assert_no_import_circle(src: &std::path::Path, must: &[&str]) {
     use std::collections::BTreeMap;
-    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../firmware/src");
     let mut files: Vec<(String, std::path::PathBuf)> = Vec::new();
     for e in std::fs::read_dir(&src).unwrap() {
         let p = e.unwrap().path();
         if p.is_dir() {
             for f in std::fs::read_dir(&p).unwrap() {
-                files.push((
-                    p.file_name().unwrap().to_string_lossy().into(),
-                    f.unwrap().path(),
-                ));
+                let f = f.unwrap().path();
+                if f.extension().is_some_and(|x| x == "rs") {
+                    files.push((p.file_name().unwrap().to_string_lossy().into(), f));
+                }
             }
         } else if let Some(m) = p
             .file_stem()
@@ -133,13 +133,35 @@ fn firmware_modules_import_each_other_without_a_circle() {
         done.push(m.to_string());
         None
     }
-    assert!(
-        deps.contains_key("app") && deps.contains_key("control"),
-        "{deps:?}"
-    );
+    for m in must {
+        assert!(deps.contains_key(*m), "{m} not among {deps:?}");
+    }
     let mut done = Vec::new();
     for m in deps.keys() {
         let circle = visit(m, &deps, &mut Vec::new(), &mut done);
-        assert!(circle.is_none(), "import circle: {circle:?}");
+        assert!(
+            circle.is_none(),
+            "{}: import circle: {circle:?}",
+            src.display()
+        );
     }
+}
+
+/// The firmware crate's modules (`ps/` as one).
+#[test]
+fn firmware_modules_import_each_other_without_a_circle() {
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../firmware/src");
+    assert_no_import_circle(&src, &["app", "control"]);
+}
+
+/// `drivectl`'s modules, library and binary (their names differ; `ui/` as
+/// one): the console link, the telemetry frames and the co-simulation
+/// bridge among them.
+#[test]
+fn drivectl_modules_import_each_other_without_a_circle() {
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scripts/drivectl/src");
+    assert_no_import_circle(
+        &src,
+        &["link", "tel", "frames", "cosim", "server", "console"],
+    );
 }
