@@ -63,7 +63,7 @@ fn every_test_file_is_a_module_of_its_binary() {
 fn assert_no_import_circle(src: &std::path::Path, must: &[&str]) {
     use std::collections::BTreeMap;
     let mut files: Vec<(String, std::path::PathBuf)> = Vec::new();
-    for e in std::fs::read_dir(&src).unwrap() {
+    for e in std::fs::read_dir(src).unwrap() {
         let p = e.unwrap().path();
         if p.is_dir() {
             for f in std::fs::read_dir(&p).unwrap() {
