@@ -263,34 +263,43 @@ fn qemu_child(parent: u32, t: Duration) -> Option<i32> {
 #[test]
 fn a_command_killed_ends_the_qemu_it_booted() {
     let d = Drive::new("none");
-    for sig in [libc::SIGTERM, libc::SIGINT] {
-        let flash = d.dir.join("flash.img");
-        let tel = d
-            .cmd(&[
-                "tel",
-                "--seconds",
-                "1000",
-                "--out",
-                "/dev/null",
-                "--flash",
-                flash.to_str().unwrap(),
-            ])
+    let flash = d.dir.join("flash.img");
+    let flash = flash.to_str().unwrap();
+    let tel = [
+        "tel",
+        "--seconds",
+        "1000",
+        "--out",
+        "/dev/null",
+        "--flash",
+        flash,
+    ];
+    let ui = ["ui", "--listen", "127.0.0.1:0", "--flash", flash];
+    for (args, sig) in [
+        (&tel[..], libc::SIGTERM),
+        (&tel[..], libc::SIGINT),
+        (&ui[..], libc::SIGTERM),
+        (&ui[..], libc::SIGINT),
+    ] {
+        let cmd = d
+            .cmd(args)
             .stdout(Stdio::null())
             .stderr(Stdio::piped())
             .spawn()
             .unwrap();
-        let qemu = qemu_child(tel.id(), Duration::from_secs(20)).expect("a QEMU child");
-        // Booted and recording: then the signal.
+        let qemu = qemu_child(cmd.id(), Duration::from_secs(20)).expect("a QEMU child");
+        // Booted and at work (recording, serving): then the signal.
         std::thread::sleep(Duration::from_millis(500));
         // SAFETY: kill(2) on the child this test spawned.
-        unsafe { libc::kill(tel.id() as i32, sig) };
-        let o = tel.wait_with_output().unwrap();
+        unsafe { libc::kill(cmd.id() as i32, sig) };
+        let o = cmd.wait_with_output().unwrap();
         assert!(!o.status.success());
         let said = String::from_utf8_lossy(&o.stderr);
         assert!(said.contains("booting QEMU for this command"), "{said}");
         assert!(
             wait_gone(qemu, Duration::from_secs(5)),
-            "QEMU {qemu} still runs after signal {sig} to drivectl"
+            "QEMU {qemu} still runs after signal {sig} to drivectl {}",
+            args[0]
         );
     }
 }
