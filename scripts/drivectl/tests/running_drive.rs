@@ -13,11 +13,25 @@ use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
 /// The paper's motor, which the simulated PL runs by default: pole pairs
-/// and flux linkage (Wb) give the torque constant 1.5 p psi.
+/// and flux linkage (Wb) give the torque constant 1.5 p psi; R (ohm) and
+/// L (H) for the calibration.
 const POLE_PAIRS: f64 = 7.0;
 const PSI_PM: f64 = 0.0092879;
 const R_S: f64 = 0.555;
 const L_S: f64 = 0.00064;
+/// The simulated rotor's inertia, kg m^2 (`sim list`: `j`).
+const J: f64 = 0.000081;
+/// The bench's load: viscous friction, N m s/rad.
+const B_LOAD: f64 = 0.001;
+
+/// `velocity:` of `status`, rev/s.
+fn velocity(d: &Drive) -> f64 {
+    let st = d.ok(&["send", "status"]);
+    st.lines()
+        .find_map(|l| l.strip_prefix("velocity: "))
+        .and_then(|v| v.split_whitespace().next()?.parse::<f64>().ok())
+        .unwrap_or_else(|| panic!("no velocity in {st}"))
+}
 
 struct Drive {
     dir: PathBuf,
@@ -125,6 +139,10 @@ fn send_tel_and_calibrate_talk_to_one_running_drive() {
     let again = d.up();
     assert!(again.contains("already running"), "{again}");
 
+    // The motor drives a load on the bench: viscous friction B, so 0.2 N m
+    // holds it at T / B = 200 rad/s instead of spinning it up past the
+    // overspeed limit (about 345 rad/s) as the frictionless default would.
+    d.ok(&["send", &format!("sim set b {B_LOAD}")]);
     // The sequence a user types, one process per command.
     for c in ["sim set locked 0", "mode foc", "enable", "torque 0.2"] {
         d.ok(&["send", c]);
@@ -157,10 +175,7 @@ fn send_tel_and_calibrate_talk_to_one_running_drive() {
         "{status}"
     );
 
-    // What the drive made: 0.2 N m, i_q = T / (1.5 p psi). Unloaded, the
-    // rotor accelerates at T / J until the overspeed limit trips the
-    // drive (gates off, torque 0): every sample is one or the other, and
-    // zeros only with OVERSPEED latched.
+    // What the drive made: 0.2 N m in every sample, i_q = T / (1.5 p psi).
     let text = std::fs::read_to_string(&csv).unwrap();
     let mut lines = text.lines();
     assert_eq!(lines.next(), Some("time_s,torque_Nm,i_q_A"));
@@ -168,59 +183,55 @@ fn send_tel_and_calibrate_talk_to_one_running_drive() {
         .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
         .collect();
     assert_eq!(rows.len(), 500, "0.5 s at 1 kHz");
+    // The mean within 1 %; every sample within the FOC's ripple at speed
+    // (measured: 0.195 to 0.203 N m), bounded at 5 %.
     let i_q = 0.2 / (1.5 * POLE_PAIRS * PSI_PM);
-    let making = rows.iter().take_while(|r| r[1] > 0.1).count();
-    assert!(making >= 20, "{making} samples before the trip:\n{text}");
-    // The first 20 ms: the reference made. Later, near the speed limit,
-    // the back EMF leaves the FOC less voltage and the torque ripples.
-    for r in &rows[..20] {
-        assert!((r[1] - 0.2).abs() <= 0.004, "{r:?}: torque vs 0.2 N m");
-        assert!((r[2] - i_q).abs() <= 0.03 * i_q, "{r:?}: i_q vs {i_q} A");
+    let mean = |k: usize| rows.iter().map(|r| r[k]).sum::<f64>() / rows.len() as f64;
+    assert!((mean(1) - 0.2).abs() <= 0.002, "mean torque {}", mean(1));
+    assert!(
+        (mean(2) - i_q).abs() <= 0.01 * i_q,
+        "mean i_q {} vs {i_q}",
+        mean(2)
+    );
+    for r in &rows {
+        assert!((r[1] - 0.2).abs() <= 0.01, "{r:?}: torque vs 0.2 N m");
+        assert!((r[2] - i_q).abs() <= 0.05 * i_q, "{r:?}: i_q vs {i_q} A");
     }
-    // After the trip: the current's last decay in the sample of the trip,
-    // then nothing.
-    let after = rows.get(making + 1..).unwrap_or_default();
-    let tripped = after.iter().all(|r| r[1] == 0.0 && r[2] == 0.0);
-    assert!(tripped, "after {making} samples of torque:\n{text}");
-    let fault = d.ok(&["send", "fault"]);
-    if making < rows.len() {
-        assert!(fault.contains("OVERSPEED"), "{fault}");
-    }
+    // And the load turns at T / B (the spin-up's time constant J / B is
+    // 81 ms of drive time, long past), within 5 %: measured 2.7 % slow, of
+    // which the torque estimate's mean (0.3 % low) explains a tenth.
+    let v = velocity(&d);
+    let v_ss = 0.2 / B_LOAD / std::f64::consts::TAU;
+    assert!((v - v_ss).abs() <= 0.05 * v_ss, "{v} rev/s vs {v_ss}");
 
-    // The frictionless simulated rotor coasts at the trip speed:
-    // `calibrate` refuses it (exit 1: the drive's ERR), changing nothing.
-    d.ok(&["send", "fault clear"]);
+    // `calibrate` with the gates on: the drive's ERR, exit code 1.
     let o = d.run(&["calibrate", "--out", d.dir.join("cal0").to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(1), "{o:?}");
     let said = String::from_utf8_lossy(&o.stdout);
-    assert!(said.contains("ERR rotor-turning"), "{said}");
+    assert!(said.contains("ERR gates-on"), "{said}");
 
-    // On the free rotor at rest the drive calibrates. Above the overspeed
-    // limit the drive cannot brake it (`enable` trips again), so it is
-    // held, as a hand stops a shaft on a bench, and let go.
-    for c in ["sim set locked 1", "sim set locked 0"] {
-        d.ok(&["send", c]);
-    }
+    // Gates off, the load brakes the rotor to rest; then the drive
+    // calibrates it.
+    d.ok(&["send", "disable"]);
     let t0 = Instant::now();
     loop {
-        let st = d.ok(&["send", "status"]);
-        let v = st
-            .lines()
-            .find_map(|l| l.strip_prefix("velocity: "))
-            .and_then(|v| v.split_whitespace().next()?.parse::<f64>().ok())
-            .unwrap_or_else(|| panic!("no velocity in {st}"));
+        let v = velocity(&d);
         if v.abs() < 0.01 {
             break;
         }
-        assert!(t0.elapsed() < Duration::from_secs(30), "still {v} rev/s");
+        assert!(t0.elapsed() < Duration::from_secs(60), "still {v} rev/s");
         std::thread::sleep(Duration::from_millis(200));
     }
     let out = d.dir.join("cal");
     let cal = d.ok(&["calibrate", "--out", out.to_str().unwrap()]);
+    // The load's friction and inertia come out of the mechanics phase.
+    let b = value(&cal, "viscous_friction");
+    assert!((b - B_LOAD).abs() <= 0.05 * B_LOAD, "b {b} vs {B_LOAD}");
     for (name, truth) in [
         ("motor_r_s", R_S),
         ("motor_l", L_S),
         ("motor_psi_pm", PSI_PM),
+        ("load_inertia", J),
     ] {
         let fitted = value(&cal, name);
         assert!(
