@@ -52,10 +52,39 @@ impl Target {
         if let Some(sock) = self.running()? {
             return Session::connect(&sock, t);
         }
-        eprintln!(
-            "drivectl: no drive running (`drivectl up` starts one): booting QEMU for this command"
-        );
+        if self.fresh {
+            self.check_flash_not_shared()?;
+            eprintln!("drivectl: --fresh: booting QEMU for this command");
+        } else {
+            eprintln!(
+                "drivectl: no drive running (`drivectl up` starts one): booting QEMU for this command"
+            );
+        }
         Session::spawn_qemu(&self.qemu(), t)
+    }
+
+    /// Two QEMUs on one flash image would overwrite each other's saved
+    /// configuration: `--fresh` beside a running drive needs its own.
+    fn check_flash_not_shared(&self) -> Result<()> {
+        let run = drivectl::server::RunDir::default_dir();
+        if run.live_socket().is_none() {
+            return Ok(());
+        }
+        let Ok(theirs) = std::fs::read_to_string(run.flash()) else {
+            return Ok(());
+        };
+        let ours = self
+            .flash
+            .canonicalize()
+            .unwrap_or_else(|_| self.flash.clone());
+        if Path::new(theirs.trim()) == ours {
+            bail!(
+                "the running drive uses the flash image {}: give this --fresh QEMU another \
+                 (--flash FILE)",
+                ours.display()
+            );
+        }
+        Ok(())
     }
 
     /// The running drive's socket, if this command uses it. Options that

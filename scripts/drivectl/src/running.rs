@@ -225,6 +225,10 @@ pub fn serve(a: UpArgs) -> Result<()> {
             qemu.map(|p| format!(", QEMU pid {p}")).unwrap_or_default()
         ),
     )?;
+    if let (None, Some(f)) = (&a.target.port, &q.flash) {
+        let f = f.canonicalize().unwrap_or_else(|_| f.clone());
+        std::fs::write(run.flash(), format!("{}\n", f.display()))?;
+    }
     let (stopper, handle) = server::serve(link, listener);
     {
         let stopper = stopper.clone();
@@ -251,6 +255,7 @@ pub fn serve(a: UpArgs) -> Result<()> {
         let _ = h.join();
     }
     let _ = std::fs::remove_file(run.info());
+    let _ = std::fs::remove_file(run.flash());
     let _ = std::fs::remove_file(run.pid_file());
     eprintln!("drivectl serve: ended");
     result.context("the firmware's console link")?;

@@ -30,7 +30,7 @@ use std::time::Duration;
 /// Where a running drive keeps its files: `<dir>/drive.sock` (the console),
 /// `drive.pid` (the server's process), `drive.log` (its log),
 /// `defmt.log` (the firmware's decoded defmt log), `drive.info` (how it was
-/// started, one line).
+/// started, one line), `drive.flash` (its QEMU's flash image).
 #[derive(Clone, Debug)]
 pub struct RunDir {
     pub dir: PathBuf,
@@ -69,6 +69,11 @@ impl RunDir {
     }
     pub fn info(&self) -> PathBuf {
         self.dir.join("drive.info")
+    }
+    /// The path of the running QEMU's flash image (one line), absent for a
+    /// board.
+    pub fn flash(&self) -> PathBuf {
+        self.dir.join("drive.flash")
     }
 
     /// The server's process id, if its pid file names a live process.

@@ -326,6 +326,28 @@ fn boot_options_with_a_running_drive_are_an_error_not_ignored() {
         e.contains("a drive is running") && e.contains("--fresh"),
         "{e}"
     );
+    // --fresh boots a QEMU beside it, but not on the drive's flash image.
+    let theirs = d.dir.join("flash.img");
+    let o = d.run(&[
+        "send",
+        "--fresh",
+        "--flash",
+        theirs.to_str().unwrap(),
+        "version",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(e.contains("the running drive uses the flash image"), "{e}");
+    let ours = d.dir.join("fresh.img");
+    let o = d.run(&[
+        "send",
+        "--fresh",
+        "--flash",
+        ours.to_str().unwrap(),
+        "version",
+    ]);
+    assert!(o.status.success(), "{o:?}");
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--fresh: booting QEMU"));
     // A refused command exits 1, a link failure 2.
     let o = d.run(&["send", "no-such-command"]);
     assert_eq!(o.status.code(), Some(1));
