@@ -11,3 +11,4 @@ pub mod motion;
 pub mod server;
 pub mod step_map;
 pub mod tel;
+pub mod tel_route;

@@ -13,12 +13,15 @@
 //!   goes through at once. Whether the firmware took it inside the command
 //!   or as a line of its own after the reply (one more prompt), the server
 //!   resynchronises with a marker before the next client's line.
-//! - Telemetry frames go to the client that sent the `tel start` in force,
-//!   and to no one else; when that client goes, the server stops the
-//!   stream (`tel stop`).
+//! - Telemetry frames go to the client whose stream runs, and to no one
+//!   else. The firmware has one stream: another client's `tel start`
+//!   suspends the running one, which is resumed when the newer ends
+//!   (stopped, or its client gone: the server sends `tel stop`), under the
+//!   number and sequence its client knows ([`crate::tel_route`]).
 //! - Text nobody asked for (a holder gone mid-reply) goes to the server's
 //!   log (standard error), not to another client.
 use crate::link::{Session, PROMPT};
+use crate::tel_route::{Router, TelLine};
 use anyhow::Result;
 use std::collections::{HashMap, VecDeque};
 use std::io::{Read, Write};
@@ -143,10 +146,12 @@ struct Server {
     holder: Option<(u64, Phase)>,
     /// The holder's line as typed (to see `tel start` / `tel stop`).
     line: Vec<u8>,
-    tel_owner: Option<u64>,
-    /// The owner before the holder's `tel start` / `tel stop`: restored
-    /// if the firmware refused the line.
-    tel_before: Option<Option<u64>>,
+    /// Whose telemetry frames they are.
+    tel: Router,
+    /// The holder's line, if it starts or stops the stream, and the reply
+    /// to it so far.
+    tel_line: Option<TelLine>,
+    tel_reply: Vec<u8>,
     /// The last bytes of the reply text (a prompt may arrive split; the
     /// final `OK` is before it).
     tail: Vec<u8>,
@@ -178,8 +183,9 @@ impl ServeHandle {
             waiting: VecDeque::new(),
             holder: None,
             line: Vec::new(),
-            tel_owner: None,
-            tel_before: None,
+            tel: Router::default(),
+            tel_line: None,
+            tel_reply: Vec::new(),
             tail: Vec::new(),
             nonce: std::process::id(),
         };
@@ -256,12 +262,19 @@ impl Server {
                 self.text(&text)?;
             }
             for f in self.link.frames.drain() {
-                if let Some(owner) = self.tel_owner {
-                    let mut buf = [0u8; drive::telemetry::FRAME_MAX];
-                    let n = f.encode(&mut buf);
-                    self.write_to(owner, &buf[..n]);
-                }
+                self.route(f);
             }
+        }
+    }
+
+    /// A frame to the client whose stream it is, under that client's
+    /// stream number and sequence.
+    fn route(&mut self, f: drive::telemetry::Sample) {
+        let waiting = matches!(self.tel_line, Some(TelLine::Start { .. }));
+        if let Some((client, g)) = self.tel.frame(f, waiting) {
+            let mut buf = [0u8; drive::telemetry::FRAME_MAX];
+            let n = g.encode(&mut buf);
+            self.write_to(client, &buf[..n]);
         }
     }
 
@@ -300,12 +313,9 @@ impl Server {
     fn gone(&mut self, id: u64) {
         self.clients.remove(&id);
         self.waiting.retain(|&w| w != id);
-        if self.tel_owner == Some(id) {
-            self.tel_owner = None;
-            eprintln!(
-                "drivectl serve: client {id} left with a telemetry stream running: `tel stop`"
-            );
-            self.queue(SERVER, b"tel stop\r");
+        if let Some(line) = self.tel.gone(id) {
+            eprintln!("drivectl serve: client {id} left with a telemetry stream running: `{line}`");
+            self.queue(SERVER, format!("{line}\r").as_bytes());
         }
         if let Some((h, Phase::Typing)) = &self.holder {
             if *h == id {
@@ -363,20 +373,8 @@ impl Server {
                         return Ok(());
                     }
                     let line = String::from_utf8_lossy(&self.line).trim().to_string();
-                    let mut words = line.split_whitespace();
-                    // The owner changes with the line, not with the reply:
-                    // the first frames may come before the prompt is read.
-                    self.tel_before = None;
-                    if words.next() == Some("tel") {
-                        let owner = match words.next() {
-                            Some("start") => Some(Some(id)),
-                            Some("stop") => Some(None),
-                            _ => None,
-                        };
-                        if let Some(o) = owner {
-                            self.tel_before = Some(std::mem::replace(&mut self.tel_owner, o));
-                        }
-                    }
+                    self.tel_line = TelLine::parse(&line);
+                    self.tel_reply.clear();
                     self.holder = Some((id, Phase::Reply { ctrl_c: false }));
                     return Ok(());
                 }
@@ -415,6 +413,7 @@ impl Server {
                 match end {
                     None => {
                         self.write_to(id, text);
+                        self.keep_tel_reply(text);
                         let keep = self.tail.len().saturating_sub(TAIL);
                         self.tail.drain(..keep);
                     }
@@ -422,12 +421,8 @@ impl Server {
                         let upto = e.saturating_sub(start).min(text.len());
                         self.write_to(id, &text[..upto]);
                         let rest = text[upto..].to_vec();
-                        let ok_end = format!("\r\nOK\r\n{PROMPT}");
-                        if let Some(before) = self.tel_before.take() {
-                            if !self.tail[..e].ends_with(ok_end.as_bytes()) {
-                                self.tel_owner = before;
-                            }
-                        }
+                        self.keep_tel_reply(&text[..upto]);
+                        self.tel_replied(id);
                         self.tail.clear();
                         if ctrl_c {
                             self.nonce = self.nonce.wrapping_add(1);
@@ -464,6 +459,29 @@ impl Server {
             }
         }
         Ok(())
+    }
+
+    fn keep_tel_reply(&mut self, text: &[u8]) {
+        if self.tel_line.is_some() && self.tel_reply.len() < 4096 {
+            self.tel_reply.extend_from_slice(text);
+        }
+    }
+
+    /// The reply to a telemetry line has ended: the router learns the
+    /// stream, perhaps a resume is due, and the frames held for it go out.
+    fn tel_replied(&mut self, id: u64) {
+        let Some(line) = self.tel_line.take() else {
+            return;
+        };
+        let reply = String::from_utf8_lossy(&self.tel_reply).into_owned();
+        let ok = reply.ends_with(&format!("\r\nOK\r\n{PROMPT}"));
+        if let Some(next) = self.tel.reply(id, SERVER, &line, &reply, ok) {
+            eprintln!("drivectl serve: resuming a suspended telemetry stream: `{next}`");
+            self.queue(SERVER, format!("{next}\r").as_bytes());
+        }
+        for f in self.tel.take_held() {
+            self.route(f);
+        }
     }
 
     /// The holder's turn is over: the next waiting client goes first; the
@@ -505,7 +523,7 @@ fn find(hay: &[u8], needle: &[u8]) -> Option<usize> {
 mod tests {
     use super::*;
     use crate::link::{Final, Session};
-    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::sync::atomic::{AtomicBool, AtomicU8, Ordering};
     use std::sync::{Arc, Mutex};
 
     /// Lines the fake firmware executed, in order.
@@ -515,21 +533,29 @@ mod tests {
     /// end (`\r`, Ctrl-C, Ctrl-U). `echo X` answers X; `slow` answers
     /// after 300 ms and ignores Ctrl-C, so a Ctrl-C sent during it is a
     /// line of its own afterwards (`^C` and one more prompt); `tel start`
-    /// sends a frame every 5 ms until `tel stop`.
+    /// (any channels) starts stream n + 1 (a frame every 5 ms of wall
+    /// time, 1 ms of drive time apart) until `tel stop`.
     fn fake_firmware(link: UnixStream, log: Log) {
         let out = Arc::new(Mutex::new(link.try_clone().unwrap()));
         let streaming = Arc::new(AtomicBool::new(false));
+        // The stream's number; a `tel start` restarts the sequence.
+        let number = Arc::new(AtomicU8::new(0));
+        let restart = Arc::new(AtomicBool::new(false));
         {
             let (out, streaming) = (out.clone(), streaming.clone());
+            let (number, restart) = (number.clone(), restart.clone());
             std::thread::spawn(move || {
                 let mut seq = 0u16;
                 loop {
                     std::thread::sleep(Duration::from_millis(5));
+                    if restart.swap(false, Ordering::Relaxed) {
+                        seq = 0;
+                    }
                     if streaming.load(Ordering::Relaxed) {
                         let mut v = [0f32; drive::telemetry::MAX_CHANNELS];
                         v[0] = 0.25;
                         let s = drive::telemetry::Sample {
-                            stream: 1,
+                            stream: number.load(Ordering::Relaxed),
                             seq,
                             time_us: u32::from(seq) * 1000,
                             n: 1,
@@ -569,8 +595,11 @@ mod tests {
                         } else if l == "slow" {
                             std::thread::sleep(Duration::from_millis(300));
                             o.extend_from_slice(b"done\r\nOK\r\n");
-                        } else if l == "tel start" {
-                            o.extend_from_slice(b"stream: 1\r\nOK\r\n");
+                        } else if l.starts_with("tel start ") {
+                            streaming.store(false, Ordering::Relaxed);
+                            let n = number.fetch_add(1, Ordering::Relaxed) + 1;
+                            restart.store(true, Ordering::Relaxed);
+                            o.extend_from_slice(format!("stream: {n}\r\nOK\r\n").as_bytes());
                         } else if l == "tel stop" {
                             streaming.store(false, Ordering::Relaxed);
                             o.extend_from_slice(b"OK\r\n");
@@ -579,7 +608,7 @@ mod tests {
                         }
                         o.extend_from_slice(PROMPT.as_bytes());
                         w(&o);
-                        if l == "tel start" {
+                        if l.starts_with("tel start ") {
                             streaming.store(true, Ordering::Relaxed);
                         }
                     }
@@ -687,7 +716,7 @@ mod tests {
         let (sock, stop, log, j) = start();
         let mut owner = Session::connect(&sock, T).unwrap();
         let mut other = Session::connect(&sock, T).unwrap();
-        let r = owner.command("tel start", T).unwrap();
+        let r = owner.command("tel start 1000 torque", T).unwrap();
         assert!(r.is_ok(), "{r:?}");
         for i in 0..20 {
             let r = other.command(&format!("echo {i}"), T).unwrap();
@@ -724,6 +753,48 @@ mod tests {
         let r = b.command("echo whole", T).unwrap();
         assert_eq!(r.lines, ["whole"], "{r:?}");
         assert!(!log.lock().unwrap().iter().any(|l| l.contains("half")));
+        stop.stop();
+        j.join().unwrap();
+    }
+
+    /// The page streams; a terminal's recording takes the stream over and
+    /// stops it: the page's stream comes back, under its own number and
+    /// with its sequence continued.
+    #[test]
+    fn a_stream_taken_over_comes_back_to_its_client() {
+        let (sock, stop, log, j) = start();
+        let mut page = Session::connect(&sock, T).unwrap();
+        let mut term = Session::connect(&sock, T).unwrap();
+        let r = page.command("tel start 1000 torque", T).unwrap();
+        assert_eq!(r.lines, ["stream: 1"]);
+        let first = page.frames.next(T).expect("the page's frames");
+        assert_eq!(first.stream, 1);
+        let r = term.command("tel start 1000 torque", T).unwrap();
+        assert_eq!(r.lines, ["stream: 2"]);
+        let f = term.frames.next(T).expect("the terminal's frames");
+        assert_eq!(f.stream, 2);
+        let r = term.command("tel stop", T).unwrap();
+        assert!(r.is_ok());
+        // The server resumed the page's stream: the firmware's third.
+        let t0 = std::time::Instant::now();
+        let starts = || {
+            let l = log.lock().unwrap();
+            l.iter().filter(|l| l.starts_with("tel start")).count()
+        };
+        while starts() < 3 {
+            assert!(t0.elapsed() < T, "no resume: {:?}", log.lock().unwrap());
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        page.frames.drain();
+        let g = page.frames.next(T).expect("the page's frames again");
+        assert_eq!(g.stream, 1, "under the number the page knows");
+        assert!(
+            g.seq > first.seq,
+            "its sequence goes on: {} after {}",
+            g.seq,
+            first.seq
+        );
+        assert!(term.frames.drain().iter().all(|f| f.stream == 2));
         stop.stop();
         j.join().unwrap();
     }
