@@ -234,15 +234,16 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
         };
     }
     let mut q = a.target.qemu();
-    let raw = PathBuf::from(format!("{}.bin", a.defmt_log.display()));
-    if let Some(dir) = a.defmt_log.parent() {
+    let defmt_log = own_defmt_log(&a.defmt_log);
+    let raw = PathBuf::from(format!("{}.bin", defmt_log.display()));
+    if let Some(dir) = defmt_log.parent() {
         std::fs::create_dir_all(dir)?;
     }
     std::fs::write(&raw, b"").with_context(|| format!("cannot create {}", raw.display()))?;
     q.defmt_raw = Some(raw.clone());
     let table = LogTable::load(&q.elf)?;
-    let mut log_out = std::fs::File::create(&a.defmt_log)
-        .with_context(|| format!("cannot create {}", a.defmt_log.display()))?;
+    let mut log_out = std::fs::File::create(&defmt_log)
+        .with_context(|| format!("cannot create {}", defmt_log.display()))?;
     let stop = Arc::new(AtomicBool::new(false));
     let decoder = {
         let (stop, raw) = (stop.clone(), raw.clone());
@@ -255,7 +256,7 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
         "drivectl: firmware {} in QEMU for this console alone (`drivectl up` keeps one running); \
          defmt log (decoded) in {}",
         q.elf.display(),
-        a.defmt_log.display()
+        defmt_log.display()
     );
     if q.pl_rtl {
         eprintln!("drivectl: PL = the Verilated pl_top (pl-cosim)");
@@ -277,8 +278,28 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
     let frames = decoder
         .join()
         .map_err(|_| anyhow::anyhow!("decoder thread panicked"))??;
-    eprintln!("drivectl: {frames} log frames in {}", a.defmt_log.display());
+    eprintln!("drivectl: {frames} log frames in {}", defmt_log.display());
     result
+}
+
+/// The defmt log of a console's own QEMU: `wanted`, unless that is the
+/// running drive's (a `--fresh` console beside it would truncate it), then
+/// `defmt-fresh.log` beside it, said on standard error.
+fn own_defmt_log(wanted: &Path) -> PathBuf {
+    let run = drivectl::server::RunDir::default_dir();
+    let theirs = run.defmt_log();
+    let same = run.live_socket().is_some()
+        && wanted.canonicalize().ok().as_deref() == theirs.canonicalize().ok().as_deref();
+    if !same {
+        return wanted.to_path_buf();
+    }
+    let other = theirs.with_file_name("defmt-fresh.log");
+    eprintln!(
+        "drivectl: {} is the running drive's defmt log; this console's goes to {}",
+        theirs.display(),
+        other.display()
+    );
+    other
 }
 
 /// What a byte typed on the terminal does: Ctrl-] quits; so does Ctrl-A
