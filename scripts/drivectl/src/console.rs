@@ -1,6 +1,6 @@
 //! `drivectl console`, `drivectl send`, `drivectl log`.
 use anyhow::{bail, Context as _, Result};
-use drivectl::defmt_log::LogTable;
+use drivectl::defmt_log::{LiveLog, LogTable};
 use drivectl::link::{default_elf, Final, Qemu, Session, PROMPT};
 use std::io::{IsTerminal, Read, Write};
 use std::path::{Path, PathBuf};
@@ -235,23 +235,8 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
     }
     let mut q = a.target.qemu();
     let defmt_log = own_defmt_log(&a.defmt_log);
-    let raw = PathBuf::from(format!("{}.bin", defmt_log.display()));
-    if let Some(dir) = defmt_log.parent() {
-        std::fs::create_dir_all(dir)?;
-    }
-    std::fs::write(&raw, b"").with_context(|| format!("cannot create {}", raw.display()))?;
-    q.defmt_raw = Some(raw.clone());
-    let table = LogTable::load(&q.elf)?;
-    let mut log_out = std::fs::File::create(&defmt_log)
-        .with_context(|| format!("cannot create {}", defmt_log.display()))?;
-    let stop = Arc::new(AtomicBool::new(false));
-    let decoder = {
-        let (stop, raw) = (stop.clone(), raw.clone());
-        std::thread::spawn(move || -> Result<usize> {
-            let f = std::fs::File::open(&raw)?;
-            table.decode(f, &mut log_out, Some(stop))
-        })
-    };
+    let live = LiveLog::start(&q.elf, &defmt_log)?;
+    q.defmt_raw = Some(live.raw().to_path_buf());
     eprintln!(
         "drivectl: firmware {} in QEMU for this console alone (`drivectl up` keeps one running); \
          defmt log (decoded) in {}",
@@ -274,10 +259,7 @@ pub fn console(a: ConsoleArgs) -> Result<()> {
             piped_console(s)
         }
     });
-    stop.store(true, Ordering::Relaxed);
-    let frames = decoder
-        .join()
-        .map_err(|_| anyhow::anyhow!("decoder thread panicked"))??;
+    let frames = live.finish()?;
     eprintln!("drivectl: {frames} log frames in {}", defmt_log.display());
     result
 }
@@ -302,23 +284,45 @@ fn own_defmt_log(wanted: &Path) -> PathBuf {
     other
 }
 
-/// What a byte typed on the terminal does: Ctrl-] quits; so does Ctrl-A
-/// then `x` (QEMU's own key, which users of `scripts/run` know).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Key {
-    Send,
-    /// Ctrl-A: held back until the next byte says what it was.
-    Prefix,
-    Quit,
+/// The bytes typed on the terminal: Ctrl-] quits; so does Ctrl-A then
+/// `x` (QEMU's own key, which users of `scripts/run` know). A Ctrl-A is
+/// held back until the next byte says what it was.
+#[derive(Default)]
+struct Keys {
+    after_ctrl_a: bool,
 }
 
-fn key(b: u8, after_prefix: bool) -> Key {
-    match (after_prefix, b) {
-        (_, 0x1d) => Key::Quit,
-        (true, b'x' | b'X') => Key::Quit,
-        (false, 0x01) => Key::Prefix,
-        _ => Key::Send,
+impl Keys {
+    /// The bytes of `chunk` to send, and whether a quit key came (the bytes
+    /// before it are sent, none after).
+    fn feed(&mut self, chunk: &[u8]) -> (Vec<u8>, bool) {
+        let mut send = Vec::with_capacity(chunk.len());
+        for &b in chunk {
+            match (std::mem::take(&mut self.after_ctrl_a), b) {
+                (_, 0x1d) | (true, b'x' | b'X') => return (send, true),
+                (false, 0x01) => self.after_ctrl_a = true,
+                (true, _) => send.extend_from_slice(&[0x01, b]),
+                (false, _) => send.push(b),
+            }
+        }
+        (send, false)
     }
+}
+
+/// Standard input in chunks of at most `max` bytes, read by a thread; the
+/// channel closes at its end.
+fn stdin_chunks(max: usize) -> mpsc::Receiver<Vec<u8>> {
+    let (tx, rx) = mpsc::channel::<Vec<u8>>();
+    std::thread::spawn(move || {
+        let mut stdin = std::io::stdin();
+        let mut buf = vec![0u8; max];
+        while let Ok(n) = stdin.read(&mut buf) {
+            if n == 0 || tx.send(buf[..n].to_vec()).is_err() {
+                break;
+            }
+        }
+    });
+    rx
 }
 
 /// A raw terminal on a console session (QEMU's pipes or the running
@@ -328,19 +332,10 @@ fn key(b: u8, after_prefix: bool) -> Key {
 fn session_terminal(mut s: Session) -> Result<()> {
     let saved = stty(&["-g"]).ok();
     stty(&["raw", "-echo"]).context("cannot put the terminal in raw mode")?;
-    let (tx, rx) = mpsc::channel::<Vec<u8>>();
-    std::thread::spawn(move || {
-        let mut stdin = std::io::stdin();
-        let mut buf = [0u8; 64];
-        while let Ok(n) = stdin.read(&mut buf) {
-            if n == 0 || tx.send(buf[..n].to_vec()).is_err() {
-                break;
-            }
-        }
-    });
+    let rx = stdin_chunks(64);
     let mut out = std::io::stdout();
-    let mut prefix = false;
-    let result = 'term: loop {
+    let mut keys = Keys::default();
+    let result = loop {
         match s.recv_text(Duration::from_millis(20)) {
             Ok(text) => {
                 let _ = out.write_all(&text);
@@ -353,22 +348,10 @@ fn session_terminal(mut s: Session) -> Result<()> {
             Err(mpsc::TryRecvError::Empty) => continue,
             Err(mpsc::TryRecvError::Disconnected) => break Ok(()),
         };
-        let mut send = Vec::with_capacity(chunk.len());
-        for &b in &chunk {
-            match key(b, prefix) {
-                Key::Quit => {
-                    let _ = s.send(&send);
-                    break 'term Ok(());
-                }
-                Key::Prefix => prefix = true,
-                Key::Send => {
-                    if prefix {
-                        send.push(0x01);
-                    }
-                    prefix = false;
-                    send.push(b);
-                }
-            }
+        let (send, quit) = keys.feed(&chunk);
+        if quit {
+            let _ = s.send(&send);
+            break Ok(());
         }
         if let Err(e) = s.send(&send) {
             break Err(e);
@@ -388,16 +371,7 @@ fn session_terminal(mut s: Session) -> Result<()> {
 /// may print nothing for longer; at most 30 s of silence).
 fn piped_console(mut s: Session) -> Result<()> {
     let mut out = std::io::stdout();
-    let (tx, rx) = mpsc::channel::<Vec<u8>>();
-    std::thread::spawn(move || {
-        let mut stdin = std::io::stdin();
-        let mut buf = [0u8; 1024];
-        while let Ok(n) = stdin.read(&mut buf) {
-            if n == 0 || tx.send(buf[..n].to_vec()).is_err() {
-                break;
-            }
-        }
-    });
+    let rx = stdin_chunks(1024);
     let mut eof_at: Option<Instant> = None;
     let mut tail: Vec<u8> = Vec::new();
     loop {
@@ -545,24 +519,8 @@ pub fn log(a: LogArgs) -> Result<()> {
 mod tests {
     use super::*;
 
-    /// Feeds `typed` through [`key`] as the terminal loop does: the bytes
-    /// sent and whether it quit.
     fn typed(bytes: &[u8]) -> (Vec<u8>, bool) {
-        let (mut sent, mut prefix) = (Vec::new(), false);
-        for &b in bytes {
-            match key(b, prefix) {
-                Key::Quit => return (sent, true),
-                Key::Prefix => prefix = true,
-                Key::Send => {
-                    if prefix {
-                        sent.push(0x01);
-                    }
-                    prefix = false;
-                    sent.push(b);
-                }
-            }
-        }
-        (sent, false)
+        Keys::default().feed(bytes)
     }
 
     #[test]

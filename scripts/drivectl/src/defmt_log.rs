@@ -77,3 +77,48 @@ impl LogTable {
         Ok(frames)
     }
 }
+
+/// The defmt log of a QEMU as it runs: QEMU writes UART0's raw stream to
+/// `<log>.bin`, a thread decodes it into `<log>` as it grows.
+pub struct LiveLog {
+    raw: std::path::PathBuf,
+    stop: Arc<AtomicBool>,
+    thread: std::thread::JoinHandle<Result<usize>>,
+}
+
+impl LiveLog {
+    /// Creates `<log>.bin` (empty) and `<log>` and starts decoding with the
+    /// table of `elf`.
+    pub fn start(elf: &Path, log: &Path) -> Result<Self> {
+        let raw = std::path::PathBuf::from(format!("{}.bin", log.display()));
+        if let Some(dir) = log.parent() {
+            std::fs::create_dir_all(dir)?;
+        }
+        std::fs::write(&raw, b"").with_context(|| format!("cannot create {}", raw.display()))?;
+        let table = LogTable::load(elf)?;
+        let mut out = std::fs::File::create(log)
+            .with_context(|| format!("cannot create {}", log.display()))?;
+        let stop = Arc::new(AtomicBool::new(false));
+        let thread = {
+            let (stop, raw) = (stop.clone(), raw.clone());
+            std::thread::spawn(move || -> Result<usize> {
+                let f = std::fs::File::open(&raw)?;
+                table.decode(f, &mut out, Some(stop))
+            })
+        };
+        Ok(Self { raw, stop, thread })
+    }
+
+    /// The raw stream's file, for QEMU's first serial port.
+    pub fn raw(&self) -> &Path {
+        &self.raw
+    }
+
+    /// Decodes what is left once QEMU has ended; the frames decoded.
+    pub fn finish(self) -> Result<usize> {
+        self.stop.store(true, Ordering::Relaxed);
+        self.thread
+            .join()
+            .map_err(|_| anyhow!("defmt decoder thread panicked"))?
+    }
+}

@@ -81,21 +81,18 @@ mod tests {
     use super::*;
     use drive::telemetry::{FRAME_MAX, MAX_CHANNELS};
 
-    fn frame(stream: u8, seq: u16, time_us: u32) -> Sample {
-        Sample {
-            stream,
-            seq,
-            time_us,
-            n: 2,
-            values: [1.0; MAX_CHANNELS],
-        }
-    }
-
     #[test]
     fn the_splitter_keeps_text_and_counts_bad_frames() {
         let (frames, mut sp) = Frames::new();
         let mut buf = [0u8; FRAME_MAX];
-        let n = frame(1, 7, 10).encode(&mut buf);
+        let sample = Sample {
+            stream: 1,
+            seq: 7,
+            time_us: 10,
+            n: 2,
+            values: [1.0; MAX_CHANNELS],
+        };
+        let n = sample.encode(&mut buf);
         let mut wire = b"OK\r\n".to_vec();
         wire.extend_from_slice(&buf[..n]);
         let mut broken = buf;

@@ -4,14 +4,12 @@
 //! same drive as tools on a bench do.
 use crate::console::{timeout, Target};
 use anyhow::{bail, Context as _, Result};
-use drivectl::defmt_log::LogTable;
+use drivectl::defmt_log::LiveLog;
 use drivectl::link::Session;
 use drivectl::server::{self, RunDir};
 use std::os::unix::net::UnixListener;
 use std::os::unix::process::CommandExt as _;
 use std::process::{Command, Stdio};
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 #[derive(clap::Args)]
@@ -196,21 +194,13 @@ pub fn serve(a: UpArgs) -> Result<()> {
     let listener = UnixListener::bind(run.socket())
         .with_context(|| format!("cannot listen on {}", run.socket().display()))?;
     let mut q = a.target.qemu();
-    let decoder = if a.target.port.is_none() {
-        let raw = run.dir.join("defmt.log.bin");
-        std::fs::write(&raw, b"")?;
-        q.defmt_raw = Some(raw.clone());
-        let table = LogTable::load(&q.elf)?;
-        let mut out = std::fs::File::create(run.defmt_log())?;
-        let stop = Arc::new(AtomicBool::new(false));
-        let s2 = stop.clone();
-        let h = std::thread::spawn(move || -> Result<usize> {
-            let f = std::fs::File::open(&raw)?;
-            table.decode(f, &mut out, Some(s2))
-        });
-        Some((stop, h))
-    } else {
-        None
+    let decoder = match a.target.port {
+        None => {
+            let live = LiveLog::start(&q.elf, &run.defmt_log())?;
+            q.defmt_raw = Some(live.raw().to_path_buf());
+            Some(live)
+        }
+        Some(_) => None,
     };
     let link = match &a.target.port {
         Some(p) => Session::open_serial(p, a.target.baud, t)?,
@@ -250,9 +240,8 @@ pub fn serve(a: UpArgs) -> Result<()> {
     let (link, result) = handle.run();
     let _ = std::fs::remove_file(run.socket());
     let quit = link.quit(Duration::from_secs(10));
-    if let Some((stop, h)) = decoder {
-        stop.store(true, Ordering::Relaxed);
-        let _ = h.join();
+    if let Some(live) = decoder {
+        let _ = live.finish();
     }
     let _ = std::fs::remove_file(run.info());
     let _ = std::fs::remove_file(run.flash());

@@ -658,6 +658,16 @@ mod tests {
 
     const T: Duration = Duration::from_secs(10);
 
+    /// Waits (at most [`T`]) until the fake firmware's log of lines holds
+    /// what `done` looks for.
+    fn wait_for(log: &Log, what: &str, done: impl Fn(&[String]) -> bool) {
+        let t0 = std::time::Instant::now();
+        while !done(&log.lock().unwrap()) {
+            assert!(t0.elapsed() < T, "no {what}: {:?}", log.lock().unwrap());
+            std::thread::sleep(Duration::from_millis(10));
+        }
+    }
+
     #[test]
     fn two_clients_at_once_each_get_their_own_replies() {
         let (sock, stop, log, j) = start();
@@ -730,11 +740,9 @@ mod tests {
         );
         assert_eq!(other.frames.bad(), 0);
         drop(owner);
-        let t0 = std::time::Instant::now();
-        while !log.lock().unwrap().iter().any(|l| l == "tel stop") {
-            assert!(t0.elapsed() < T, "no `tel stop` after the owner left");
-            std::thread::sleep(Duration::from_millis(10));
-        }
+        wait_for(&log, "a `tel stop` after the owner left", |l| {
+            l.iter().any(|l| l == "tel stop")
+        });
         let r = other.command("echo after", T).unwrap();
         assert_eq!(r.lines, ["after"]);
         stop.stop();
@@ -776,15 +784,9 @@ mod tests {
         let r = term.command("tel stop", T).unwrap();
         assert!(r.is_ok());
         // The server resumed the page's stream: the firmware's third.
-        let t0 = std::time::Instant::now();
-        let starts = || {
-            let l = log.lock().unwrap();
-            l.iter().filter(|l| l.starts_with("tel start")).count()
-        };
-        while starts() < 3 {
-            assert!(t0.elapsed() < T, "no resume: {:?}", log.lock().unwrap());
-            std::thread::sleep(Duration::from_millis(10));
-        }
+        wait_for(&log, "the resume", |l| {
+            l.iter().filter(|l| l.starts_with("tel start")).count() == 3
+        });
         page.frames.drain();
         let g = page.frames.next(T).expect("the page's frames again");
         assert_eq!(g.stream, 1, "under the number the page knows");
