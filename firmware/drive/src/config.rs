@@ -107,28 +107,29 @@ mod ix {
     pub const MPDTC_P: usize = 13;
     pub const MPDTC_K: usize = 14;
     pub const MPDTC_INT_LIMIT: usize = 15;
-    pub const OBS_KP: usize = 16;
-    pub const OBS_KI: usize = 17;
-    pub const OBS_LIMIT: usize = 18;
-    pub const MPDTC_ALIGN_TIME: usize = 19;
-    pub const TORQUE_LIMIT: usize = 20;
-    pub const CURRENT_LIMIT: usize = 21;
-    pub const WATCHDOG_TIMEOUT: usize = 22;
-    pub const MPDTC_PS_FED: usize = 23;
-    pub const VEL_KP: usize = 24;
-    pub const VEL_KI: usize = 25;
-    pub const POS_KP: usize = 26;
-    pub const LOAD_INERTIA: usize = 27;
-    pub const TRAJ_VEL_LIMIT: usize = 28;
-    pub const TRAJ_ACCEL_LIMIT: usize = 29;
-    pub const VEL_LIMIT: usize = 30;
-    pub const POS_MIN: usize = 31;
-    pub const POS_MAX: usize = 32;
-    pub const IMP_KP_MAX: usize = 33;
-    pub const IMP_KD_MAX: usize = 34;
-    pub const CAL_CURRENT: usize = 35;
-    pub const CAL_VOLTAGE: usize = 36;
-    pub const N: usize = 37;
+    pub const MPDTC_AW: usize = 16;
+    pub const OBS_KP: usize = 17;
+    pub const OBS_KI: usize = 18;
+    pub const OBS_LIMIT: usize = 19;
+    pub const MPDTC_ALIGN_TIME: usize = 20;
+    pub const TORQUE_LIMIT: usize = 21;
+    pub const CURRENT_LIMIT: usize = 22;
+    pub const WATCHDOG_TIMEOUT: usize = 23;
+    pub const MPDTC_PS_FED: usize = 24;
+    pub const VEL_KP: usize = 25;
+    pub const VEL_KI: usize = 26;
+    pub const POS_KP: usize = 27;
+    pub const LOAD_INERTIA: usize = 28;
+    pub const TRAJ_VEL_LIMIT: usize = 29;
+    pub const TRAJ_ACCEL_LIMIT: usize = 30;
+    pub const VEL_LIMIT: usize = 31;
+    pub const POS_MIN: usize = 32;
+    pub const POS_MAX: usize = 33;
+    pub const IMP_KP_MAX: usize = 34;
+    pub const IMP_KD_MAX: usize = 35;
+    pub const CAL_CURRENT: usize = 36;
+    pub const CAL_VOLTAGE: usize = 37;
+    pub const N: usize = 38;
 }
 
 /// Number of parameters.
@@ -264,6 +265,15 @@ pub const PARAMS: [Param; N_PARAMS] = [
         1.0,
         0.2,
         "MPDTC clamp of the torque integrator output",
+    ),
+    int(
+        "mpdtc_aw",
+        "1",
+        0,
+        1,
+        1,
+        "MPDTC torque integrator anti-windup: 1 = integrate only after a decision that reached \
+         the tolerance band (conditional integration), 0 = every period (the paper's Eq. 13)",
     ),
     real(
         "obs_kp",
@@ -582,6 +592,7 @@ impl Config {
         v[ix::MPDTC_P] = sc.mpdtc.p_weight;
         v[ix::MPDTC_K] = sc.mpdtc.k_int_per_s;
         v[ix::MPDTC_INT_LIMIT] = sc.mpdtc.int_limit_nm;
+        v[ix::MPDTC_AW] = f64::from(u8::from(sc.mpdtc.int_conditional));
         v[ix::OBS_KP] = sc.mpdtc.obs_kp_v_per_a;
         v[ix::OBS_KI] = sc.mpdtc.obs_ki_per_s;
         v[ix::OBS_LIMIT] = sc.mpdtc.obs_limit_v;
@@ -630,6 +641,7 @@ impl Config {
         sc.mpdtc.p_weight = v[ix::MPDTC_P];
         sc.mpdtc.k_int_per_s = v[ix::MPDTC_K];
         sc.mpdtc.int_limit_nm = v[ix::MPDTC_INT_LIMIT];
+        sc.mpdtc.int_conditional = u(ix::MPDTC_AW) != 0;
         sc.mpdtc.obs_kp_v_per_a = v[ix::OBS_KP];
         sc.mpdtc.obs_ki_per_s = v[ix::OBS_KI];
         sc.mpdtc.obs_limit_v = v[ix::OBS_LIMIT];

@@ -169,7 +169,12 @@ impl Default for ServoConfig {
             // Below the 16 A full scale of the simulated PL's ADC.
             current_limit_a: 14.0,
             foc: FocParams::default(),
-            mpdtc: MpdtcParams::default(),
+            // The paper's MPDTC, with the torque integrator's conditional
+            // integration (anti-windup: docs/mpdtc-step-map.md).
+            mpdtc: MpdtcParams {
+                int_conditional: true,
+                ..MpdtcParams::default()
+            },
             mpdtc_ps_fed: false,
             // Band 5 mN m: about 5 ADC counts of i_q.
             step_min_nm: 0.05,
