@@ -337,7 +337,9 @@ impl Drive {
             (S::QuickStopActive, C::DisableVoltage) => {
                 self.go(12, S::SwitchOnDisabled, Action::DisableAndPowerOff)
             }
-            (S::QuickStopActive, C::EnableOperation) if (5..=8).contains(&self.quick_stop_option) => {
+            (S::QuickStopActive, C::EnableOperation)
+                if (5..=8).contains(&self.quick_stop_option) =>
+            {
                 self.go(16, S::OperationEnabled, Action::EnableOperation)
             }
             (S::Fault, C::FaultReset) => self.go(15, S::SwitchOnDisabled, Action::ResetFault),
@@ -520,28 +522,142 @@ mod tests {
     fn every_controlword_transition() {
         // (from, controlword, to, transition numbers, action of the last).
         let cases: &[(State, u16, State, [u8; 2], Action)] = &[
-            (SwitchOnDisabled, SHUTDOWN, ReadyToSwitchOn, [2, 0], Action::None),
-            (ReadyToSwitchOn, SWITCH_ON, SwitchedOn, [3, 0], Action::PowerOn),
-            (ReadyToSwitchOn, ENABLE_OP, OperationEnabled, [3, 4], Action::EnableOperation),
-            (ReadyToSwitchOn, DISABLE_VOLTAGE, SwitchOnDisabled, [7, 0], Action::None),
-            (ReadyToSwitchOn, QUICK_STOP, SwitchOnDisabled, [7, 0], Action::None),
-            (SwitchedOn, ENABLE_OP, OperationEnabled, [4, 0], Action::EnableOperation),
-            (SwitchedOn, SHUTDOWN, ReadyToSwitchOn, [6, 0], Action::PowerOff),
-            (SwitchedOn, DISABLE_VOLTAGE, SwitchOnDisabled, [10, 0], Action::PowerOff),
-            (SwitchedOn, QUICK_STOP, SwitchOnDisabled, [10, 0], Action::PowerOff),
-            (OperationEnabled, SWITCH_ON, SwitchedOn, [5, 0], Action::DisableOperation),
-            (OperationEnabled, SHUTDOWN, ReadyToSwitchOn, [8, 0], Action::DisableAndPowerOff),
-            (OperationEnabled, DISABLE_VOLTAGE, SwitchOnDisabled, [9, 0], Action::DisableAndPowerOff),
-            (OperationEnabled, QUICK_STOP, QuickStopActive, [11, 0], Action::QuickStop { option_code: 2 }),
-            (QuickStopActive, DISABLE_VOLTAGE, SwitchOnDisabled, [12, 0], Action::DisableAndPowerOff),
-            (Fault, FAULT_RESET, SwitchOnDisabled, [15, 0], Action::ResetFault),
+            (
+                SwitchOnDisabled,
+                SHUTDOWN,
+                ReadyToSwitchOn,
+                [2, 0],
+                Action::None,
+            ),
+            (
+                ReadyToSwitchOn,
+                SWITCH_ON,
+                SwitchedOn,
+                [3, 0],
+                Action::PowerOn,
+            ),
+            (
+                ReadyToSwitchOn,
+                ENABLE_OP,
+                OperationEnabled,
+                [3, 4],
+                Action::EnableOperation,
+            ),
+            (
+                ReadyToSwitchOn,
+                DISABLE_VOLTAGE,
+                SwitchOnDisabled,
+                [7, 0],
+                Action::None,
+            ),
+            (
+                ReadyToSwitchOn,
+                QUICK_STOP,
+                SwitchOnDisabled,
+                [7, 0],
+                Action::None,
+            ),
+            (
+                SwitchedOn,
+                ENABLE_OP,
+                OperationEnabled,
+                [4, 0],
+                Action::EnableOperation,
+            ),
+            (
+                SwitchedOn,
+                SHUTDOWN,
+                ReadyToSwitchOn,
+                [6, 0],
+                Action::PowerOff,
+            ),
+            (
+                SwitchedOn,
+                DISABLE_VOLTAGE,
+                SwitchOnDisabled,
+                [10, 0],
+                Action::PowerOff,
+            ),
+            (
+                SwitchedOn,
+                QUICK_STOP,
+                SwitchOnDisabled,
+                [10, 0],
+                Action::PowerOff,
+            ),
+            (
+                OperationEnabled,
+                SWITCH_ON,
+                SwitchedOn,
+                [5, 0],
+                Action::DisableOperation,
+            ),
+            (
+                OperationEnabled,
+                SHUTDOWN,
+                ReadyToSwitchOn,
+                [8, 0],
+                Action::DisableAndPowerOff,
+            ),
+            (
+                OperationEnabled,
+                DISABLE_VOLTAGE,
+                SwitchOnDisabled,
+                [9, 0],
+                Action::DisableAndPowerOff,
+            ),
+            (
+                OperationEnabled,
+                QUICK_STOP,
+                QuickStopActive,
+                [11, 0],
+                Action::QuickStop { option_code: 2 },
+            ),
+            (
+                QuickStopActive,
+                DISABLE_VOLTAGE,
+                SwitchOnDisabled,
+                [12, 0],
+                Action::DisableAndPowerOff,
+            ),
+            (
+                Fault,
+                FAULT_RESET,
+                SwitchOnDisabled,
+                [15, 0],
+                Action::ResetFault,
+            ),
             // "x" bits set: shutdown with bit 3 set (0x0E), disable voltage
             // with bits 0 and 2 set (0x05), quick stop with bits 0, 3 set (0x0B).
-            (SwitchOnDisabled, 0x000E, ReadyToSwitchOn, [2, 0], Action::None),
-            (OperationEnabled, 0x0005, SwitchOnDisabled, [9, 0], Action::DisableAndPowerOff),
-            (OperationEnabled, 0x000B, QuickStopActive, [11, 0], Action::QuickStop { option_code: 2 }),
+            (
+                SwitchOnDisabled,
+                0x000E,
+                ReadyToSwitchOn,
+                [2, 0],
+                Action::None,
+            ),
+            (
+                OperationEnabled,
+                0x0005,
+                SwitchOnDisabled,
+                [9, 0],
+                Action::DisableAndPowerOff,
+            ),
+            (
+                OperationEnabled,
+                0x000B,
+                QuickStopActive,
+                [11, 0],
+                Action::QuickStop { option_code: 2 },
+            ),
             // Halt (bit 8) and mode-specific bits do not change the command.
-            (SwitchedOn, 0x017F, OperationEnabled, [4, 0], Action::EnableOperation),
+            (
+                SwitchedOn,
+                0x017F,
+                OperationEnabled,
+                [4, 0],
+                Action::EnableOperation,
+            ),
         ];
         for &(from, cw, to, nums, action) in cases {
             let mut d = drive_in(from, 2);
@@ -570,7 +686,10 @@ mod tests {
         ] {
             let mut d = drive_in(s, 2);
             let t = d.fault().unwrap();
-            assert_eq!((t.number, t.to, t.action), (13, FaultReactionActive, Action::FaultReaction));
+            assert_eq!(
+                (t.number, t.to, t.action),
+                (13, FaultReactionActive, Action::FaultReaction)
+            );
             assert_eq!(d.fault(), None);
             assert_eq!(d.fault_reaction_complete().map(|t| t.number), Some(14));
             assert_eq!(d.state(), Fault);
@@ -597,17 +716,39 @@ mod tests {
 
     #[test]
     fn invalid_controlwords_change_nothing() {
-        let all = [SHUTDOWN, SWITCH_ON, ENABLE_OP, DISABLE_VOLTAGE, QUICK_STOP, FAULT_RESET];
+        let all = [
+            SHUTDOWN,
+            SWITCH_ON,
+            ENABLE_OP,
+            DISABLE_VOLTAGE,
+            QUICK_STOP,
+            FAULT_RESET,
+        ];
         let refused: &[(State, &[u16])] = &[
             (NotReadyToSwitchOn, &all),
-            (SwitchOnDisabled, &[SWITCH_ON, ENABLE_OP, DISABLE_VOLTAGE, QUICK_STOP, FAULT_RESET]),
+            (
+                SwitchOnDisabled,
+                &[
+                    SWITCH_ON,
+                    ENABLE_OP,
+                    DISABLE_VOLTAGE,
+                    QUICK_STOP,
+                    FAULT_RESET,
+                ],
+            ),
             (ReadyToSwitchOn, &[SHUTDOWN, FAULT_RESET]),
             (SwitchedOn, &[SWITCH_ON, FAULT_RESET]),
             (OperationEnabled, &[ENABLE_OP, FAULT_RESET]),
             // Option code 2: enable operation does not leave quick stop.
-            (QuickStopActive, &[SHUTDOWN, SWITCH_ON, ENABLE_OP, QUICK_STOP, FAULT_RESET]),
+            (
+                QuickStopActive,
+                &[SHUTDOWN, SWITCH_ON, ENABLE_OP, QUICK_STOP, FAULT_RESET],
+            ),
             (FaultReactionActive, &all),
-            (Fault, &[SHUTDOWN, SWITCH_ON, ENABLE_OP, DISABLE_VOLTAGE, QUICK_STOP]),
+            (
+                Fault,
+                &[SHUTDOWN, SWITCH_ON, ENABLE_OP, DISABLE_VOLTAGE, QUICK_STOP],
+            ),
         ];
         for &(s, cws) in refused {
             for &cw in cws {

@@ -83,7 +83,16 @@ impl Emcy {
         let c = code.to_le_bytes();
         CanFrame::full(
             cob_id(node),
-            [c[0], c[1], self.register, mfr[0], mfr[1], mfr[2], mfr[3], mfr[4]],
+            [
+                c[0],
+                c[1],
+                self.register,
+                mfr[0],
+                mfr[1],
+                mfr[2],
+                mfr[3],
+                mfr[4],
+            ],
         )
     }
 

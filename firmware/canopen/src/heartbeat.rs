@@ -127,7 +127,11 @@ impl Consumer {
 
     /// Records a heartbeat (or boot-up) from `node` at `now_us`.
     pub fn on_heartbeat(&mut self, node: u8, now_us: u64) {
-        for w in self.watch.iter_mut().filter(|w| w.active() && w.node() == node) {
+        for w in self
+            .watch
+            .iter_mut()
+            .filter(|w| w.active() && w.node() == node)
+        {
             w.last_us = Some(now_us);
             w.expired = false;
         }

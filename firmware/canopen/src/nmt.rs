@@ -151,11 +151,7 @@ mod tests {
     #[test]
     fn every_command_from_every_state() {
         use NmtState::*;
-        let cases = [
-            (0x01, Operational),
-            (0x02, Stopped),
-            (0x80, PreOperational),
-        ];
+        let cases = [(0x01, Operational), (0x02, Stopped), (0x80, PreOperational)];
         for from_cmd in [0x01u8, 0x02, 0x80] {
             for (cmd, to) in cases {
                 let mut n = booted(3);
@@ -169,10 +165,7 @@ mod tests {
             assert_eq!(n.state(), Initialising);
             let mut n = booted(3);
             n.on_command(&[from_cmd, 3]);
-            assert_eq!(
-                n.on_command(&[0x82, 0]),
-                Some(NmtEvent::ResetCommunication)
-            );
+            assert_eq!(n.on_command(&[0x82, 0]), Some(NmtEvent::ResetCommunication));
             assert_eq!(n.state(), Initialising);
         }
     }
@@ -182,7 +175,10 @@ mod tests {
         let mut n = booted(3);
         assert_eq!(n.on_command(&[0x01, 4]), None);
         assert_eq!(n.state(), NmtState::PreOperational);
-        assert_eq!(n.on_command(&[0x01, 0]), Some(NmtEvent::StateChanged(NmtState::Operational)));
+        assert_eq!(
+            n.on_command(&[0x01, 0]),
+            Some(NmtEvent::StateChanged(NmtState::Operational))
+        );
         for bad in [&[][..], &[0x02], &[0x02, 3, 0], &[0x03, 3], &[0xFF, 0]] {
             assert_eq!(n.on_command(bad), None);
             assert_eq!(n.state(), NmtState::Operational);

@@ -147,7 +147,9 @@ impl Pdo {
 
     /// The valid mapping entries.
     pub fn mapped(&self) -> impl Iterator<Item = Mapped> + '_ {
-        self.map[..self.count as usize].iter().map(|&v| Mapped::from_u32(v))
+        self.map[..self.count as usize]
+            .iter()
+            .map(|&v| Mapped::from_u32(v))
     }
 
     /// Bytes of the PDO's data.
@@ -235,8 +237,10 @@ impl Pdos {
         let (dir, _, mapping) = Self::object(index)?;
         let e = |dt, acc| Ok(Entry::new(index, sub, dt, acc));
         Some(match (mapping, dir, sub) {
-            (true, _, 0) => Ok(Entry::new(index, 0, DataType::Unsigned8, Access::Rw)
-                .range(0, MAX_MAPPED as i64)),
+            (true, _, 0) => {
+                Ok(Entry::new(index, 0, DataType::Unsigned8, Access::Rw)
+                    .range(0, MAX_MAPPED as i64))
+            }
             (true, _, 1..=8) => e(DataType::Unsigned32, Access::Rw),
             (false, _, 0) => e(DataType::Unsigned8, Access::Const),
             (false, _, 1) => e(DataType::Unsigned32, Access::Rw),
@@ -593,8 +597,14 @@ mod tests {
         let expect_t = [0x190, 0x290, 0x390, 0x490];
         let expect_r = [0x210, 0x310, 0x410, 0x510];
         for n in 0..4 {
-            assert_eq!(read_u32(&p, 0x1800 + n as u16, 1), 0x8000_0000 | expect_t[n]);
-            assert_eq!(read_u32(&p, 0x1400 + n as u16, 1), 0x8000_0000 | expect_r[n]);
+            assert_eq!(
+                read_u32(&p, 0x1800 + n as u16, 1),
+                0x8000_0000 | expect_t[n]
+            );
+            assert_eq!(
+                read_u32(&p, 0x1400 + n as u16, 1),
+                0x8000_0000 | expect_r[n]
+            );
         }
         assert_eq!(read_u32(&p, 0x1800, 0), 5);
         assert_eq!(read_u32(&p, 0x1400, 0), 2);
@@ -638,15 +648,34 @@ mod tests {
         let od = TestOd::default();
         // Not mappable (0x2003 string), does not exist, write-only in a
         // TPDO, read-only in an RPDO, wrong bit length, not whole bytes.
-        let bad_tx = [0x2003_0008, 0x2999_0010, 0x2002_0008, 0x2000_0020, 0x2000_0004];
+        let bad_tx = [
+            0x2003_0008,
+            0x2999_0010,
+            0x2002_0008,
+            0x2000_0020,
+            0x2000_0004,
+        ];
         for v in bad_tx {
-            assert_eq!(sdo_write(&mut p, &od, 0x1A01, 1, v), Err(Abort::CannotMap), "{v:#x}");
+            assert_eq!(
+                sdo_write(&mut p, &od, 0x1A01, 1, v),
+                Err(Abort::CannotMap),
+                "{v:#x}"
+            );
         }
-        assert_eq!(sdo_write(&mut p, &od, 0x1601, 1, 0x2006_0120), Err(Abort::CannotMap));
+        assert_eq!(
+            sdo_write(&mut p, &od, 0x1601, 1, 0x2006_0120),
+            Err(Abort::CannotMap)
+        );
         // The dummy UNSIGNED16 (0x0006) in an RPDO, not in a TPDO.
         assert_eq!(sdo_write(&mut p, &od, 0x1601, 1, 0x0006_0010), Ok(()));
-        assert_eq!(sdo_write(&mut p, &od, 0x1A01, 1, 0x0006_0010), Err(Abort::CannotMap));
-        assert_eq!(sdo_write(&mut p, &od, 0x1601, 2, 0x0006_0008), Err(Abort::CannotMap));
+        assert_eq!(
+            sdo_write(&mut p, &od, 0x1A01, 1, 0x0006_0010),
+            Err(Abort::CannotMap)
+        );
+        assert_eq!(
+            sdo_write(&mut p, &od, 0x1601, 2, 0x0006_0008),
+            Err(Abort::CannotMap)
+        );
         // 3 x 32 bits = 96 > 64.
         for s in 1..=3 {
             sdo_write(&mut p, &od, 0x1A02, s, 0x2001_0020).unwrap();
@@ -654,7 +683,10 @@ mod tests {
         assert_eq!(sdo_write(&mut p, &od, 0x1A02, 0, 3), Err(Abort::MapTooLong));
         assert_eq!(read_u32(&p, 0x1A02, 0), 0);
         // Sub 0 over 8; sub 0 over an empty entry.
-        assert_eq!(sdo_write(&mut p, &od, 0x1A02, 0, 9), Err(Abort::ValueTooHigh));
+        assert_eq!(
+            sdo_write(&mut p, &od, 0x1A02, 0, 9),
+            Err(Abort::ValueTooHigh)
+        );
         assert_eq!(sdo_write(&mut p, &od, 0x1A03, 0, 1), Err(Abort::CannotMap));
         // Entries while sub 0 != 0.
         sdo_write(&mut p, &od, 0x1A02, 0, 2).unwrap();
@@ -664,7 +696,10 @@ mod tests {
         );
         // Any mapping write while the PDO is valid.
         sdo_write(&mut p, &od, 0x1802, 1, 0x381).unwrap();
-        assert_eq!(sdo_write(&mut p, &od, 0x1A02, 0, 0), Err(Abort::UnsupportedAccess));
+        assert_eq!(
+            sdo_write(&mut p, &od, 0x1A02, 0, 0),
+            Err(Abort::UnsupportedAccess)
+        );
         assert_eq!(read_u32(&p, 0x1A02, 0), 2);
     }
 
@@ -673,16 +708,25 @@ mod tests {
         let mut p = Pdos::new(1);
         let od = TestOd::default();
         // 29-bit frames are not supported.
-        assert_eq!(sdo_write(&mut p, &od, 0x1800, 1, 0x2000_0181), Err(Abort::ValueRange));
+        assert_eq!(
+            sdo_write(&mut p, &od, 0x1800, 1, 0x2000_0181),
+            Err(Abort::ValueRange)
+        );
         // Restricted CAN-IDs: 0x080 (SYNC), 0x601 (SDO), 0x701 (heartbeat).
         for id in [0x080u32, 0x601, 0x701, 0x7FF] {
-            assert_eq!(sdo_write(&mut p, &od, 0x1800, 1, id), Err(Abort::ValueRange));
+            assert_eq!(
+                sdo_write(&mut p, &od, 0x1800, 1, id),
+                Err(Abort::ValueRange)
+            );
         }
         // A not-valid COB-ID may carry any identifier.
         assert_eq!(sdo_write(&mut p, &od, 0x1800, 1, 0x8000_0701), Ok(()));
         assert_eq!(sdo_write(&mut p, &od, 0x1800, 1, 0x0000_0185), Ok(()));
         // Changing the CAN-ID of a valid PDO is refused; bit 31 alone is not.
-        assert_eq!(sdo_write(&mut p, &od, 0x1800, 1, 0x0000_0186), Err(Abort::ValueRange));
+        assert_eq!(
+            sdo_write(&mut p, &od, 0x1800, 1, 0x0000_0186),
+            Err(Abort::ValueRange)
+        );
         assert_eq!(sdo_write(&mut p, &od, 0x1800, 1, 0x8000_0185), Ok(()));
         // Transmission types: 241..=253 refused.
         for t in [241u32, 251, 252, 253] {
@@ -700,7 +744,11 @@ mod tests {
     #[test]
     fn sync_transmission_types() {
         let mut p = Pdos::new(1);
-        let m = [Mapped { index: 0x2000, sub: 0, bits: 16 }];
+        let m = [Mapped {
+            index: 0x2000,
+            sub: 0,
+            bits: 16,
+        }];
         p.configure(Dir::Tx, 0, 1, &m);
         p.configure(Dir::Tx, 1, 3, &m);
         p.configure(Dir::Tx, 2, 0, &m);
@@ -719,7 +767,11 @@ mod tests {
     fn event_timer_and_inhibit_time() {
         let mut p = Pdos::new(1);
         let od = TestOd::default();
-        let m = [Mapped { index: 0x2000, sub: 0, bits: 16 }];
+        let m = [Mapped {
+            index: 0x2000,
+            sub: 0,
+            bits: 16,
+        }];
         p.configure(Dir::Tx, 0, 255, &m);
         // Inhibit 100 x 100 us = 10 ms; event timer 50 ms.
         sdo_write(&mut p, &od, 0x1800, 3, 100).unwrap();
@@ -747,9 +799,21 @@ mod tests {
             0,
             255,
             &[
-                Mapped { index: 0x2000, sub: 0, bits: 16 },
-                Mapped { index: 0x0005, sub: 0, bits: 8 },
-                Mapped { index: 0x2008, sub: 0, bits: 8 },
+                Mapped {
+                    index: 0x2000,
+                    sub: 0,
+                    bits: 16,
+                },
+                Mapped {
+                    index: 0x0005,
+                    sub: 0,
+                    bits: 8,
+                },
+                Mapped {
+                    index: 0x2008,
+                    sub: 0,
+                    bits: 8,
+                },
             ],
         );
         assert_eq!(p.rpdo_for(0x201), Some(0));
@@ -765,7 +829,16 @@ mod tests {
         assert_eq!(od.i16_2000, 300);
         assert_eq!(od.i8_2008, 5);
         // Synchronous: held until the SYNC.
-        p.configure(Dir::Rx, 1, 1, &[Mapped { index: 0x2001, sub: 0, bits: 32 }]);
+        p.configure(
+            Dir::Rx,
+            1,
+            1,
+            &[Mapped {
+                index: 0x2001,
+                sub: 0,
+                bits: 32,
+            }],
+        );
         assert_eq!(p.on_rpdo(1, &[1, 0, 0, 0], &mut od), Ok(()));
         assert_eq!(od.u32_2001, 0);
         p.on_sync_rx(&mut od);

@@ -118,7 +118,9 @@ impl SdoServer {
         let mux = (u16::from_le_bytes([req[1], req[2]]), req[3]);
         let result = match req[0] >> 5 {
             1 => self.initiate_download(req, od).map_err(|a| (mux, a)),
-            0 => self.download_segment(req, od).map_err(|a| ((index, sub), a)),
+            0 => self
+                .download_segment(req, od)
+                .map_err(|a| ((index, sub), a)),
             2 => self.initiate_upload(req, od).map_err(|a| (mux, a)),
             3 => self.upload_segment(req).map_err(|a| ((index, sub), a)),
             4 => {
@@ -245,7 +247,16 @@ impl SdoServer {
         let sub = req[3];
         let n = read_checked(od, index, sub, &mut self.buf)?;
         if (1..=4).contains(&n) {
-            let mut r = [0x43 | (((4 - n) as u8) << 2), req[1], req[2], sub, 0, 0, 0, 0];
+            let mut r = [
+                0x43 | (((4 - n) as u8) << 2),
+                req[1],
+                req[2],
+                sub,
+                0,
+                0,
+                0,
+                0,
+            ];
             r[4..4 + n].copy_from_slice(&self.buf[..n]);
             return Ok(r);
         }
@@ -488,12 +499,20 @@ mod tests {
         assert!(s.busy());
         // Segment t=0, n=0, c=0 -> 0x00; response 0x20.
         assert_eq!(
-            run(&mut s, &mut od, [0x00, b'h', b'e', b'l', b'l', b'o', b',', b' ']),
+            run(
+                &mut s,
+                &mut od,
+                [0x00, b'h', b'e', b'l', b'l', b'o', b',', b' ']
+            ),
             [0x20, 0, 0, 0, 0, 0, 0, 0]
         );
         // t=1 -> 0x10; response 0x30.
         assert_eq!(
-            run(&mut s, &mut od, [0x10, b'd', b'r', b'i', b'v', b'e', b' ', b'w']),
+            run(
+                &mut s,
+                &mut od,
+                [0x10, b'd', b'r', b'i', b'v', b'e', b' ', b'w']
+            ),
             [0x30, 0, 0, 0, 0, 0, 0, 0]
         );
         assert_eq!(od.writes, 0);

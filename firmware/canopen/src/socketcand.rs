@@ -369,7 +369,10 @@ mod tests {
         // socketcand's documentation example.
         assert_eq!(
             events(&mut s, b"< send 123 8 11 22 33 44 55 66 77 88 >"),
-            [frame(0x123, &[0x11, 0x22, 0x33, 0x44, 0x55, 0x66, 0x77, 0x88])]
+            [frame(
+                0x123,
+                &[0x11, 0x22, 0x33, 0x44, 0x55, 0x66, 0x77, 0x88]
+            )]
         );
         // python-can: "{:03X}" id, "{:X}" length, "{:x}" bytes.
         assert_eq!(
@@ -450,13 +453,21 @@ mod tests {
             (b"< send 1 1 1 1 1 1 1 1 1 1 1 1 >", Syntax),
         ];
         for (input, kind) in bad {
-            assert_eq!(events(&mut s, input), err(*kind), "{:?}", std::str::from_utf8(input));
+            assert_eq!(
+                events(&mut s, input),
+                err(*kind),
+                "{:?}",
+                std::str::from_utf8(input)
+            );
             assert_eq!(s.mode(), Mode::Raw);
         }
         // A '<' inside a command: error, the new command is parsed.
         assert_eq!(
             events(&mut s, b"< send 12< echo >"),
-            [Event::Reply(Reply::Error(Syntax)), Event::Reply(Reply::Echo)]
+            [
+                Event::Reply(Reply::Error(Syntax)),
+                Event::Reply(Reply::Echo)
+            ]
         );
         // Too long: one error at its '>', nothing else, then back to normal.
         let mut long = Vec::from(&b"< send "[..]);
@@ -464,11 +475,17 @@ mod tests {
         long.extend(b" >< echo >");
         assert_eq!(
             events(&mut s, &long),
-            [Event::Reply(Reply::Error(TooLong)), Event::Reply(Reply::Echo)]
+            [
+                Event::Reply(Reply::Error(TooLong)),
+                Event::Reply(Reply::Echo)
+            ]
         );
         // Garbage outside commands is ignored; '>' alone too.
         assert_eq!(events(&mut s, b"hello > \x00\xFF"), []);
-        assert_eq!(Reply::Error(UnknownCommand).text(), "< error unknown command >");
+        assert_eq!(
+            Reply::Error(UnknownCommand).text(),
+            "< error unknown command >"
+        );
         assert!(Server::new("").is_none());
         assert!(Server::new("a_very_long_bus_name").is_none());
     }
@@ -478,7 +495,10 @@ mod tests {
         // socketcand's documentation example: 0x123, 11 22 33 44 at
         // 23.424242, written as its code writes it (no spaces in the data).
         let f = CanFrame::new(0x123, &[0x11, 0x22, 0x33, 0x44]).unwrap();
-        assert_eq!(format_frame(&f, 23_424_242).as_bytes(), b"< frame 123 23.424242 11223344 >");
+        assert_eq!(
+            format_frame(&f, 23_424_242).as_bytes(),
+            b"< frame 123 23.424242 11223344 >"
+        );
         let f = CanFrame::new(0x00A, &[]).unwrap();
         assert_eq!(format_frame(&f, 1).as_bytes(), b"< frame 00A 0.000001  >");
         let f = CanFrame::new(0x7FF, &[0xAB; 8]).unwrap();
@@ -487,7 +507,10 @@ mod tests {
             b"< frame 7FF 1700000000.000001 ABABABABABABABAB >"
         );
         let f = CanFrame::new(0x5A1, &[0x0F, 0xF0]).unwrap();
-        assert_eq!(format_frame(&f, 0).as_bytes(), b"< frame 5A1 0.000000 0FF0 >");
+        assert_eq!(
+            format_frame(&f, 0).as_bytes(),
+            b"< frame 5A1 0.000000 0FF0 >"
+        );
         // The longest line fits: u64::MAX microseconds, 8 bytes.
         let l = format_frame(&CanFrame::new(0x7FF, &[0; 8]).unwrap(), u64::MAX);
         assert_eq!(
