@@ -47,7 +47,7 @@ impl Producer {
             Some(t) => now_us >= t,
         };
         if due {
-            self.next_us = Some(now_us + self.period_ms as u64 * 1000);
+            self.next_us = Some(now_us.saturating_add(self.period_ms as u64 * 1000));
         }
         due
     }
@@ -143,7 +143,7 @@ impl Consumer {
     pub fn tick(&mut self, now_us: u64) -> Option<u8> {
         for w in self.watch.iter_mut().filter(|w| w.active()) {
             if let Some(last) = w.last_us {
-                if !w.expired && now_us > last + w.time_ms() as u64 * 1000 {
+                if !w.expired && now_us > last.saturating_add(w.time_ms() as u64 * 1000) {
                     w.expired = true;
                     return Some(w.node());
                 }

@@ -967,4 +967,70 @@ mod tests {
             Some(abort(0x6041, 1, 0x0609_0011))
         );
     }
+
+    /// A small deterministic generator (64-bit LCG, Knuth's constants) for
+    /// the robustness test.
+    struct Lcg(u64);
+    impl Lcg {
+        fn next(&mut self) -> u32 {
+            self.0 = self
+                .0
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (self.0 >> 33) as u32
+        }
+    }
+
+    #[test]
+    fn random_frames_never_panic() {
+        let mut pdos = Pdos::new(NODE);
+        pdos.configure(
+            Dir::Rx,
+            0,
+            1,
+            &[Mapped {
+                index: 0x6040,
+                sub: 0,
+                bits: 16,
+            }],
+        );
+        pdos.configure(
+            Dir::Tx,
+            0,
+            1,
+            &[Mapped {
+                index: 0x6041,
+                sub: 0,
+                bits: 16,
+            }],
+        );
+        let mut n = Node::new(config(), pdos).unwrap();
+        let mut app = App::default();
+        n.boot();
+        let mut rng = Lcg(1);
+        let ids = [0x000, 0x080, 0x205, 0x605, 0x705, 0x707, 0x185, 0x7FF];
+        for i in 0..50_000u64 {
+            let id = ids[rng.next() as usize % ids.len()];
+            let len = rng.next() as usize % 9;
+            let mut d = [0u8; 8];
+            for b in d.iter_mut() {
+                *b = rng.next() as u8;
+            }
+            // Bias towards the node's own SDO command specifiers and
+            // indices so that transfers get under way.
+            if id == 0x605 && rng.next() % 2 == 0 {
+                d[1] = [0x00, 0x03, 0x40, 0x00, 0x17][rng.next() as usize % 5];
+                d[2] = [0x20, 0x60, 0x16, 0x1A, 0x10][rng.next() as usize % 5];
+                d[3] = (rng.next() % 4) as u8;
+            }
+            // Keep NMT mostly operational so that PDOs are exercised.
+            if id == 0x000 && rng.next() % 4 != 0 {
+                d[0] = 0x01;
+                d[1] = NODE;
+            }
+            let out = n.on_frame(&f(id, &d[..len]), &mut app);
+            assert_eq!(out.dropped(), 0);
+            n.tick(i * 100, &mut app);
+        }
+    }
 }

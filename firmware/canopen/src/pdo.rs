@@ -329,10 +329,17 @@ impl Pdos {
             if p.count != 0 {
                 return Err(Abort::UnsupportedAccess);
             }
+            if !(1..=MAX_MAPPED as u8).contains(&sub) {
+                return Err(Abort::SubindexDoesNotExist);
+            }
             if v != 0 {
                 check_mappable(dir, Mapped::from_u32(v), target)?;
             }
-            p.map[sub as usize - 1] = v;
+            let slot = p
+                .map
+                .get_mut((sub as usize).wrapping_sub(1))
+                .ok_or(Abort::SubindexDoesNotExist)?;
+            *slot = v;
             return Ok(());
         }
         match sub {
@@ -471,15 +478,15 @@ impl Pdos {
             }
             let period = p.event_timer_ms as u64 * 1000;
             if period != 0 && p.timer_due_us.is_none() {
-                p.timer_due_us = Some(now_us + period);
+                p.timer_due_us = Some(now_us.saturating_add(period));
             }
             let timer = matches!(p.timer_due_us, Some(t) if now_us >= t);
             let inhibited = matches!(p.last_sent_us,
-                Some(t) if now_us < t + p.inhibit_100us as u64 * 100);
+                Some(t) if now_us < t.saturating_add(p.inhibit_100us as u64 * 100));
             if (p.event || timer) && !inhibited {
                 p.event = false;
                 p.last_sent_us = Some(now_us);
-                p.timer_due_us = (period != 0).then_some(now_us + period);
+                p.timer_due_us = (period != 0).then_some(now_us.saturating_add(period));
                 due |= 1 << i;
             }
         }
@@ -701,6 +708,15 @@ mod tests {
             Err(Abort::UnsupportedAccess)
         );
         assert_eq!(read_u32(&p, 0x1A02, 0), 2);
+        // Direct calls with sub-indices the entry check would have refused.
+        assert_eq!(
+            p.write(0x1A03, 9, &[0; 4], None),
+            Err(Abort::SubindexDoesNotExist)
+        );
+        assert_eq!(
+            p.write(0x1803, 0, &[0], None),
+            Err(Abort::SubindexDoesNotExist)
+        );
     }
 
     #[test]

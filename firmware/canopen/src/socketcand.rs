@@ -518,4 +518,24 @@ mod tests {
             b"< frame 7FF 18446744073709.551615 0000000000000000 >"
         );
     }
+
+    #[test]
+    fn random_bytes_never_panic() {
+        // 64-bit LCG (Knuth's constants) over an alphabet close to the
+        // protocol's, so that many commands get parsed.
+        let alphabet = b"<> <> sendopenrawmodecho can0 0123456789abcdefABCDEFxyz\n\xff";
+        let mut x: u64 = 7;
+        let mut s = raw_server();
+        let mut count = 0usize;
+        for _ in 0..200_000 {
+            x = x
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            let b = alphabet[(x >> 33) as usize % alphabet.len()];
+            if s.push(b).is_some() {
+                count += 1;
+            }
+        }
+        assert!(count > 1000);
+    }
 }
