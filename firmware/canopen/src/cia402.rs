@@ -1,5 +1,5 @@
 //! The CiA 402-2 drive state machine ("power drive system" finite state
-//! automaton, CiA 402-2 §6.2 / Figure 8 of v4.0), its controlword 0x6040
+//! automaton of CiA 402-2), its controlword 0x6040
 //! and statusword 0x6041, and the modes of operation 0x6060 / 0x6061 with
 //! the supported drive modes 0x6502.
 //!
@@ -11,7 +11,7 @@
 //! the quick stop ended, and the statusword's inputs (voltage present,
 //! warning, target reached, internal limit).
 //!
-//! Controlword commands (CiA 402-2 Table "command coding", bits 7 3 2 1 0):
+//! Controlword commands (CiA 402-2 command coding, bits 7 3 2 1 0):
 //! shutdown `0 x 1 1 0`, switch on `0 0 1 1 1`, switch on + enable
 //! operation `0 1 1 1 1`, disable voltage `0 x x 0 x`, quick stop
 //! `0 x 0 1 x`, disable operation `0 0 1 1 1`, enable operation
@@ -49,7 +49,7 @@ pub mod sw {
     pub const APPLICATION_BITS: u16 = 0xF100;
 }
 
-/// Modes of operation (0x6060 values, CiA 402-2 §6.3.1).
+/// Modes of operation (0x6060 values, CiA 402-2).
 pub mod mode {
     pub const PROFILE_POSITION: i8 = 1;
     pub const VELOCITY: i8 = 2;

@@ -7,7 +7,7 @@
 
 use crate::frame::CanFrame;
 
-/// Error register bits (CiA 301 §7.5.2.2, Table 48).
+/// Error register bits (CiA 301 v4.2, object 0x1001).
 pub mod register {
     pub const GENERIC: u8 = 1 << 0;
     pub const CURRENT: u8 = 1 << 1;
@@ -18,7 +18,7 @@ pub mod register {
     pub const MANUFACTURER: u8 = 1 << 7;
 }
 
-/// Error codes this crate emits itself (CiA 301 §7.2.7.1, Table 21).
+/// Error codes this crate emits itself (CiA 301 v4.2 §7.2.7, emergency error codes).
 pub mod code {
     /// Error reset or no error.
     pub const NO_ERROR: u16 = 0x0000;
@@ -123,9 +123,9 @@ mod tests {
     #[test]
     fn emcy_frame_layout() {
         let mut e = Emcy::new();
-        // Over-current 0x2310 (CiA 301 Table 21 / CiA 402), current bit.
+        // Over-current 0x2310 (CiA 402-2 error codes), current bit.
         let f = e.raise(5, 0x2310, register::CURRENT, [0xA1, 0xA2, 0xA3, 0xA4, 0xA5]);
-        // CiA 301 §7.2.7.3.1: 0x85; 10 23; register 0x03 (generic|current).
+        // CiA 301 §7.2.7 EMCY layout: 0x85; 10 23; register 0x03 (generic|current).
         assert_eq!(f.id(), 0x085);
         assert_eq!(f.data(), &[0x10, 0x23, 0x03, 0xA1, 0xA2, 0xA3, 0xA4, 0xA5]);
         assert_eq!(e.register(), 0x03);

@@ -1,9 +1,9 @@
-//! Heartbeat (CiA 301 v4.2 §7.2.8.3.2): the producer sends COB-ID 0x700 +
+//! Heartbeat (CiA 301 v4.2 §7.2.8): the producer sends COB-ID 0x700 +
 //! node with the NMT state byte every 0x1017 milliseconds (0 = off); the
 //! consumer watches other nodes listed in 0x1016 (each entry: node-ID in
 //! bits 16..24, time in ms in bits 0..16; node 0 or time 0 = unused) and
 //! reports a node whose heartbeat is later than its time. Monitoring of a
-//! node starts with its first heartbeat (§7.2.8.3.2.2). Times are in
+//! node starts with its first heartbeat. Times are in
 //! microseconds from any monotonic clock.
 
 /// Entries of 0x1016.
@@ -84,7 +84,7 @@ pub enum ConsumerError {
     /// Sub-index outside 1..=CONSUMERS.
     NoSuchEntry,
     /// Another active entry already watches that node (CiA 301
-    /// §7.5.2.21: abort 0x0604 0043).
+    /// object 0x1016: abort 0x0604 0043).
     Duplicate,
 }
 

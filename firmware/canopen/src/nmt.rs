@@ -1,6 +1,6 @@
-//! The NMT slave (CiA 301 v4.2 §7.3.2): the node's communication state,
+//! The NMT slave (CiA 301 v4.2 NMT state machine): the node's communication state,
 //! driven by NMT commands on COB-ID 0, and which services each state
-//! allows (§7.3.2.2.2, Table 45).
+//! allows (CiA 301's table of services per NMT state).
 //!
 //! An NMT command frame has two data bytes: the command specifier and the
 //! addressed node-ID, 0 addressing all nodes. Specifiers: 0x01 start
@@ -25,7 +25,7 @@ pub enum NmtState {
 }
 
 impl NmtState {
-    /// The state byte of heartbeat and boot-up messages (CiA 301 §7.2.8.3.2.1:
+    /// The state byte of heartbeat and boot-up messages (CiA 301 §7.2.8:
     /// 0 boot-up, 4 stopped, 5 operational, 127 pre-operational).
     pub fn heartbeat_byte(self) -> u8 {
         match self {
@@ -141,7 +141,7 @@ mod tests {
     fn boot_up_message() {
         let mut n = Nmt::new(0x22);
         assert_eq!(n.state(), NmtState::Initialising);
-        // CiA 301 §7.2.8.3.2.2: boot-up is COB-ID 0x700 + node, one byte 0.
+        // CiA 301 §7.2.8: boot-up is COB-ID 0x700 + node, one byte 0.
         let f = n.boot();
         assert_eq!(f.id(), 0x722);
         assert_eq!(f.data(), &[0x00]);
@@ -187,7 +187,7 @@ mod tests {
 
     #[test]
     fn services_per_state() {
-        // CiA 301 §7.3.2.2.2 Table 45.
+        // CiA 301 v4.2: services per NMT state.
         use NmtState::*;
         assert!(!Initialising.sdo_allowed());
         assert!(PreOperational.sdo_allowed());

@@ -637,7 +637,7 @@ mod tests {
         // Nothing is served while initialising.
         assert!(sdo(&mut n, &mut app, [0x40, 0x00, 0x10, 0, 0, 0, 0, 0]).is_none());
         assert!(n.tick(0, &mut app).is_empty());
-        // CiA 301 §7.2.8.3.2.2: boot-up 0x705 [00].
+        // CiA 301 §7.2.8: boot-up 0x705 [00].
         assert_eq!(list(&n.boot()), [(0x705, vec![0x00])]);
         // 0x1017 = 100 ms: 0x2B 17 10 00 64 00.
         assert_eq!(

@@ -4,10 +4,10 @@
 //! stays the source of truth and no copy of it lives here), a static table
 //! type to describe entries, and the checks every SDO or PDO access goes
 //! through. Values travel as little-endian bytes, as on the bus
-//! (CiA 301 §7.1.2: basic data types are transferred least significant
+//! (CiA 301: basic data types are transferred least significant
 //! byte first).
 
-/// SDO abort codes (CiA 301 v4.2 §7.2.4.3.17, Table 22). Every refusal of
+/// SDO abort codes (CiA 301 v4.2 §7.2.4, Table 22). Every refusal of
 /// an access is one of these, so the SDO server can send it unchanged.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[repr(u32)]
@@ -62,7 +62,7 @@ impl Abort {
     }
 }
 
-/// Basic data types (CiA 301 v4.2 §7.4.7, Table 44; the number is the
+/// Basic data types (CiA 301 v4.2 §7.4; the number is the
 /// index of the data type definition object).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DataType {
@@ -144,7 +144,7 @@ impl DataType {
     }
 }
 
-/// Access type of an entry (CiA 301 v4.2 §7.4.5).
+/// Access type of an entry (CiA 301 v4.2 §7.4).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Access {
     /// Read only (the value may change, e.g. a statusword).
@@ -289,8 +289,9 @@ impl<'a> Table<'a> {
 }
 
 /// Reads (index, sub) for an SDO upload or a TPDO: refuses write-only
-/// entries ([`Abort::ReadWriteOnly`]) and a fixed-size value the
-/// application returned with the wrong length ([`Abort::General`]).
+/// entries ([`Abort::ReadWriteOnly`]), an `out` shorter than the type's
+/// capacity and a value the application returned with the wrong length
+/// ([`Abort::General`]).
 pub fn read_checked<D: ObjectDictionary + ?Sized>(
     od: &mut D,
     index: u16,
@@ -302,7 +303,8 @@ pub fn read_checked<D: ObjectDictionary + ?Sized>(
         return Err(Abort::ReadWriteOnly);
     }
     if out.len() < e.data_type.capacity() {
-        return Err(Abort::TooLong);
+        // The caller's buffer cannot hold the value.
+        return Err(Abort::General);
     }
     let n = od.read(index, sub, out)?;
     match e.data_type.size() {
@@ -378,7 +380,7 @@ pub(crate) mod testod {
     use super::*;
 
     pub const ENTRIES: &[Entry] = &[
-        // Device type (CiA 301 §7.5.2.1): CiA 402 drive, 0x0002_0192.
+        // Device type (CiA 301 object 0x1000): CiA 402 drive, 0x0002_0192.
         Entry::new(0x1000, 0, DataType::Unsigned32, Access::Const),
         Entry::new(0x2000, 0, DataType::Integer16, Access::Rw)
             .mappable()
@@ -535,7 +537,7 @@ mod tests {
         // -1000 = 0xFC18 is the lower limit itself.
         assert_eq!(write_checked(&mut od, 0x2000, 0, &[0x18, 0xFC]), Ok(()));
         assert_eq!(od.i16_2000, -1000);
-        // BOOLEAN takes 0 or 1 only (CiA 301 §7.1.4.2).
+        // BOOLEAN takes 0 or 1 only (CiA 301 BOOLEAN).
         assert_eq!(
             write_checked(&mut od, 0x2004, 0, &[2]),
             Err(Abort::ValueRange)

@@ -1,4 +1,4 @@
-//! Process data objects (CiA 301 v4.2 §7.2.2, objects §7.5.2.35..38): four
+//! Process data objects (CiA 301 v4.2 §7.2.2, objects 0x1400..=0x1A03): four
 //! receive PDOs (RPDO) and four transmit PDOs (TPDO), each with a
 //! communication parameter (0x1400 + n / 0x1800 + n) and a mapping
 //! parameter (0x1600 + n / 0x1A00 + n), n = 0..=3.
@@ -11,7 +11,7 @@
 //! multiples of 100 µs), 5 event timer (UNSIGNED16, ms, 0 = off).
 //!
 //! A mapping entry is `index << 16 | sub << 8 | bit length`; sub 0 is the
-//! number of valid entries. Remapping follows CiA 301 §7.5.2.36: make the
+//! number of valid entries. Remapping follows CiA 301's description of the mapping objects: make the
 //! PDO not valid (COB-ID bit 31 = 1), write sub 0 = 0, write the entries,
 //! write sub 0 = n, make the PDO valid. Mapping writes while the PDO is
 //! valid, or entry writes while sub 0 is not 0, are refused with 0x0601
@@ -45,7 +45,7 @@ pub enum Dir {
     Tx,
 }
 
-/// Default COB-ID of PDO `n` (CiA 301 §7.3.5, pre-defined connection set):
+/// Default COB-ID of PDO `n` (CiA 301 pre-defined connection set):
 /// TPDO 0x180/0x280/0x380/0x480 + node, RPDO 0x200/0x300/0x400/0x500 + node.
 pub const fn default_cob_id(dir: Dir, n: usize, node: u8) -> u16 {
     let base = match dir {
@@ -55,7 +55,7 @@ pub const fn default_cob_id(dir: Dir, n: usize, node: u8) -> u16 {
     base + 0x100 * n as u16 + node as u16
 }
 
-/// CAN-IDs no PDO may use: those CiA 301 §7.3.5 Table 72 restricts (NMT,
+/// CAN-IDs no PDO may use: those the CiA 301 pre-defined connection set restricts (NMT,
 /// reserved ranges, default SDO, NMT error control, LSS) and the SYNC
 /// identifier 0x080 this node consumes.
 pub fn restricted_can_id(id: u16) -> bool {
@@ -349,7 +349,7 @@ impl Pdos {
                 }
                 let new_id = (v & 0x7FF) as u16;
                 if p.valid() && v & COB_INVALID == 0 && new_id != p.can_id() {
-                    // CiA 301 §7.5.2.35: the CAN-ID may only change while
+                    // CiA 301, 0x1400/0x1800 sub 1: the CAN-ID may only change while
                     // the PDO is not valid.
                     return Err(Abort::ValueRange);
                 }
@@ -393,7 +393,7 @@ impl Pdos {
     /// Handles a received RPDO frame: event-driven RPDOs (254/255) are
     /// written to the dictionary at once; synchronous ones are held until
     /// the next SYNC ([`Pdos::on_sync_rx`]). A frame shorter than the
-    /// mapping is not processed: `Err(())`, for which CiA 301 §7.2.2.2 has
+    /// mapping is not processed: `Err(())`, for which CiA 301 has
     /// the EMCY 0x8210. Bytes beyond the mapping are ignored. Objects the
     /// dictionary refuses are skipped.
     #[allow(clippy::result_unit_err)]
@@ -599,7 +599,7 @@ mod tests {
 
     #[test]
     fn default_cob_ids() {
-        // CiA 301 §7.3.5 Table 71 for node 0x10.
+        // CiA 301 pre-defined connection set, node 0x10.
         let p = Pdos::new(0x10);
         let expect_t = [0x190, 0x290, 0x390, 0x490];
         let expect_r = [0x210, 0x310, 0x410, 0x510];

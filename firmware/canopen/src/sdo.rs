@@ -4,7 +4,7 @@
 //! data bytes. Block transfer is not supported: its initiate requests are
 //! answered with abort 0x0504 0001 (command specifier not valid).
 //!
-//! Byte 0 of each frame is the command specifier (§7.2.4.3.3 ff.):
+//! Byte 0 of each frame is the command specifier:
 //! - initiate download request `001x nnes`, response `0110 0000` (0x60);
 //! - download segment request `000t nnnc`, response `001t 0000`;
 //! - initiate upload request `0100 0000` (0x40), response `010x nnes`;
@@ -18,7 +18,7 @@
 
 use crate::od::{read_checked, write_checked, Abort, ObjectDictionary};
 
-/// Request COB-ID of the default SDO server (CiA 301 §7.3.5, pre-defined
+/// Request COB-ID of the default SDO server (CiA 301 pre-defined
 /// connection set): 0x600 + node-ID.
 pub const fn request_cob_id(node: u8) -> u16 {
     0x600 + node as u16
@@ -67,7 +67,7 @@ impl Default for SdoServer {
     }
 }
 
-/// The abort frame's data (CiA 301 §7.2.4.3.17): 0x80, multiplexer, code.
+/// The abort frame's data (CiA 301 §7.2.4): 0x80, multiplexer, code.
 pub fn abort_frame(index: u16, sub: u8, code: Abort) -> [u8; 8] {
     let i = index.to_le_bytes();
     let c = code.code().to_le_bytes();
@@ -324,7 +324,7 @@ mod tests {
 
     #[test]
     fn cob_ids() {
-        // CiA 301 §7.3.5 Table 71: SDO tx 0x580 + node, rx 0x600 + node.
+        // CiA 301 pre-defined connection set: SDO tx 0x580 + node, rx 0x600 + node.
         assert_eq!(request_cob_id(5), 0x605);
         assert_eq!(response_cob_id(127), 0x5FF);
     }
@@ -338,7 +338,7 @@ mod tests {
             b_2004: 1,
             ..Default::default()
         };
-        // CiA 301 §7.2.4.3.6: scs=2, n=4-size, e=1, s=1 -> 0x43/0x4B/0x4F.
+        // CiA 301 §7.2.4 initiate upload response: scs=2, n=4-size, e=1, s=1 -> 0x43/0x4B/0x4F.
         assert_eq!(
             run(&mut s, &mut od, [0x40, 0x01, 0x20, 0, 0, 0, 0, 0]),
             [0x43, 0x01, 0x20, 0x00, 0x78, 0x56, 0x34, 0x12]
@@ -459,7 +459,7 @@ mod tests {
         let mut s = SdoServer::new();
         let mut od = TestOd::default();
         // Block download initiate (ccs=6: 0xC0), block upload (ccs=5: 0xA0),
-        // ccs=7 (0xE0): CiA 301 §7.2.4.3.17, 0x0504 0001.
+        // ccs=7 (0xE0): CiA 301 §7.2.4, 0x0504 0001.
         for cs in [0xC0u8, 0xA0, 0xE0] {
             assert_eq!(
                 run(&mut s, &mut od, [cs, 0x00, 0x20, 0, 0, 0, 0, 0]),

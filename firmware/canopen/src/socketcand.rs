@@ -23,7 +23,10 @@
 //!   after connecting, and after each of open and rawmode, with the exact
 //!   text (`< hi >`, `< ok >`), so each must go out as its own write and
 //!   no frame may precede the rawmode `< ok >`: [`Server::forwards_frames`]
-//!   turns true only then.
+//!   turns true only then. A frame written right after that `< ok >` can
+//!   still reach python-can in the same read and fail its comparison, so
+//!   the transport should let the `< ok >` leave alone (e.g. hold frames
+//!   until the client's next command or a short delay).
 //!
 //! Input is parsed byte by byte, so it may arrive in any chunks. Bytes
 //! outside `<` ... `>` are ignored (as socketcand does); a command longer

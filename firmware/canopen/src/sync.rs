@@ -15,7 +15,7 @@ pub struct Sync {
 }
 
 /// Decodes a SYNC frame's data: 0 bytes, or 1 counter byte in 1..=240
-/// (CiA 301 §7.2.5.2.1). Any other length or counter is not a valid SYNC
+/// (CiA 301 §7.2.5). Any other length or counter is not a valid SYNC
 /// and returns `None`.
 pub fn decode(data: &[u8]) -> Option<Sync> {
     match data {
