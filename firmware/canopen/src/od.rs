@@ -396,6 +396,8 @@ pub(crate) mod testod {
         Entry::new(0x2006, 2, DataType::Unsigned16, Access::Rw),
         Entry::new(0x2007, 0, DataType::Unsigned32, Access::Rw).mappable(),
         Entry::new(0x2008, 0, DataType::Integer8, Access::Rw).mappable(),
+        // Its read returns 3 bytes: an application bug the checks catch.
+        Entry::new(0x2009, 0, DataType::Unsigned32, Access::Ro).mappable(),
     ];
 
     /// Values kept as plain fields; `refuse` makes every write fail with
@@ -437,6 +439,7 @@ pub(crate) mod testod {
                 (0x2006, 2) => put(&self.u16_2006.to_le_bytes()),
                 (0x2007, 0) => put(&self.u32_2007.to_le_bytes()),
                 (0x2008, 0) => put(&self.i8_2008.to_le_bytes()),
+                (0x2009, 0) => put(&[1, 2, 3]),
                 _ => Err(Abort::General),
             }
         }
@@ -578,6 +581,16 @@ mod tests {
         );
         assert_eq!(read_checked(&mut od, 0x1000, 0, &mut b), Ok(4));
         assert_eq!(&b[..4], &[0x92, 0x01, 0x02, 0x00]);
+        // A value of the wrong length from the application; a buffer
+        // shorter than the type.
+        assert_eq!(
+            read_checked(&mut od, 0x2009, 0, &mut b),
+            Err(Abort::General)
+        );
+        assert_eq!(
+            read_checked(&mut od, 0x1000, 0, &mut b[..3]),
+            Err(Abort::General)
+        );
     }
 
     #[test]

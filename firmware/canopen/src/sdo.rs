@@ -452,6 +452,11 @@ mod tests {
             run(&mut s, &mut od, [0x40, 0x06, 0x20, 3, 0, 0, 0, 0]),
             abort(0x2006, 3, 0x0609_0011)
         );
+        // The application returned 3 bytes for an UNSIGNED32.
+        assert_eq!(
+            run(&mut s, &mut od, [0x40, 0x09, 0x20, 0, 0, 0, 0, 0]),
+            abort(0x2009, 0, 0x0800_0000)
+        );
     }
 
     #[test]
