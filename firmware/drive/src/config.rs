@@ -106,30 +106,31 @@ mod ix {
     pub const MPDTC_T_TOL: usize = 12;
     pub const MPDTC_P: usize = 13;
     pub const MPDTC_K: usize = 14;
-    pub const MPDTC_INT_LIMIT: usize = 15;
-    pub const MPDTC_AW: usize = 16;
-    pub const OBS_KP: usize = 17;
-    pub const OBS_KI: usize = 18;
-    pub const OBS_LIMIT: usize = 19;
-    pub const MPDTC_ALIGN_TIME: usize = 20;
-    pub const TORQUE_LIMIT: usize = 21;
-    pub const CURRENT_LIMIT: usize = 22;
-    pub const WATCHDOG_TIMEOUT: usize = 23;
-    pub const MPDTC_PS_FED: usize = 24;
-    pub const VEL_KP: usize = 25;
-    pub const VEL_KI: usize = 26;
-    pub const POS_KP: usize = 27;
-    pub const LOAD_INERTIA: usize = 28;
-    pub const TRAJ_VEL_LIMIT: usize = 29;
-    pub const TRAJ_ACCEL_LIMIT: usize = 30;
-    pub const VEL_LIMIT: usize = 31;
-    pub const POS_MIN: usize = 32;
-    pub const POS_MAX: usize = 33;
-    pub const IMP_KP_MAX: usize = 34;
-    pub const IMP_KD_MAX: usize = 35;
-    pub const CAL_CURRENT: usize = 36;
-    pub const CAL_VOLTAGE: usize = 37;
-    pub const N: usize = 38;
+    pub const MPDTC_K_AUTO: usize = 15;
+    pub const MPDTC_INT_LIMIT: usize = 16;
+    pub const MPDTC_AW: usize = 17;
+    pub const OBS_KP: usize = 18;
+    pub const OBS_KI: usize = 19;
+    pub const OBS_LIMIT: usize = 20;
+    pub const MPDTC_ALIGN_TIME: usize = 21;
+    pub const TORQUE_LIMIT: usize = 22;
+    pub const CURRENT_LIMIT: usize = 23;
+    pub const WATCHDOG_TIMEOUT: usize = 24;
+    pub const MPDTC_PS_FED: usize = 25;
+    pub const VEL_KP: usize = 26;
+    pub const VEL_KI: usize = 27;
+    pub const POS_KP: usize = 28;
+    pub const LOAD_INERTIA: usize = 29;
+    pub const TRAJ_VEL_LIMIT: usize = 30;
+    pub const TRAJ_ACCEL_LIMIT: usize = 31;
+    pub const VEL_LIMIT: usize = 32;
+    pub const POS_MIN: usize = 33;
+    pub const POS_MAX: usize = 34;
+    pub const IMP_KP_MAX: usize = 35;
+    pub const IMP_KD_MAX: usize = 36;
+    pub const CAL_CURRENT: usize = 37;
+    pub const CAL_VOLTAGE: usize = 38;
+    pub const N: usize = 39;
 }
 
 /// Number of parameters.
@@ -256,7 +257,17 @@ pub const PARAMS: [Param; N_PARAMS] = [
         0.0,
         60_000.0,
         2000.0,
-        "MPDTC torque integrator gain K (K times the control period below 1)",
+        "MPDTC torque integrator gain K when mpdtc_k_auto is 0 (K times the control period below 1)",
+    ),
+    int(
+        "mpdtc_k_auto",
+        "1",
+        0,
+        1,
+        0,
+        "1 = MPDTC integrator gain K derived from the motor model and the control period \
+         (K = 0.0119 N m / (Ts h), h = one period's full-vector torque step k_T Ts/L 2/3 U_dc), \
+         0 = mpdtc_k",
     ),
     real(
         "mpdtc_int_limit",
@@ -271,7 +282,7 @@ pub const PARAMS: [Param; N_PARAMS] = [
         "1",
         0,
         1,
-        1,
+        0,
         "MPDTC torque integrator anti-windup: 1 = integrate only after a decision that reached \
          the tolerance band (conditional integration), 0 = every period (the paper's Eq. 13)",
     ),
@@ -591,6 +602,7 @@ impl Config {
         v[ix::MPDTC_T_TOL] = sc.mpdtc.t_tol_nm;
         v[ix::MPDTC_P] = sc.mpdtc.p_weight;
         v[ix::MPDTC_K] = sc.mpdtc.k_int_per_s;
+        v[ix::MPDTC_K_AUTO] = f64::from(u8::from(sc.mpdtc_k_auto));
         v[ix::MPDTC_INT_LIMIT] = sc.mpdtc.int_limit_nm;
         v[ix::MPDTC_AW] = f64::from(u8::from(sc.mpdtc.int_conditional));
         v[ix::OBS_KP] = sc.mpdtc.obs_kp_v_per_a;
@@ -640,6 +652,7 @@ impl Config {
         sc.mpdtc.t_tol_nm = v[ix::MPDTC_T_TOL];
         sc.mpdtc.p_weight = v[ix::MPDTC_P];
         sc.mpdtc.k_int_per_s = v[ix::MPDTC_K];
+        sc.mpdtc_k_auto = u(ix::MPDTC_K_AUTO) != 0;
         sc.mpdtc.int_limit_nm = v[ix::MPDTC_INT_LIMIT];
         sc.mpdtc.int_conditional = u(ix::MPDTC_AW) != 0;
         sc.mpdtc.obs_kp_v_per_a = v[ix::OBS_KP];

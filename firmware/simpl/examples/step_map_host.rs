@@ -5,7 +5,19 @@
 //! (`drivectl experiment step-map`); this is its quick twin.
 //!
 //! `cargo run --release -p simpl --example step_map_host [nominal|all]`
-//! Environment: `SET="mpdtc_k=8000,mpdtc_aw=1"` (config keys), `CASES=0,1`.
+//! Environment (all optional):
+//! - `SET="mpdtc_aw=1,mpdtc_k_auto=1"`: `config set` keys for the MPDTC runs;
+//! - `CASES=0,3`: the steps to run (indices into the six);
+//! - `MOTOR=0.65,1,1.35`: one motor (R, L, psi factors) instead;
+//! - `PHASES=12`: runs per cell, each starting 7 periods later (the MPDTC's
+//!   limit-cycle phase at the step);
+//! - `KAUTO=10000`: K = this x (L / L_nom) / (psi / psi_nom), 1/s;
+//! - `TOLAUTO=0.6`: T_tol = this x one period's torque step;
+//! - `FOC=0`: skip the FOC runs; `TRACE=1` (`T0=n`): print 40 samples.
+//!
+//! A cell is `MISS` when the MPDTC misses a target of the map, `BOUND` when
+//! it misses one but one period's torque step is wider than the band
+//! (`models::pmsm::mpdtc_tuning::band_holds_one_period`).
 use drive::config::Config;
 use drive::pl::top::Mode;
 use drive::servo::{Servo, ServoConfig, StepResult};
@@ -74,13 +86,18 @@ fn one(
     if !run(&mut s, &mut sim, n, |_| false) {
         return Err("fault in dwell".into());
     }
-    s.begin_step(&mut sim, case.1, 10e-3).map_err(|e| format!("{e:?}"))?;
+    s.begin_step(&mut sim, case.1, 10e-3)
+        .map_err(|e| format!("{e:?}"))?;
     if !run(&mut s, &mut sim, 10_000, |s| !s.step_pending()) {
         return Err(format!("fault in step {:?}", s.faults_recorded()));
     }
     if std::env::var("TRACE").is_ok() {
         let rec = s.step_recording().expect("done");
-        let v: Vec<String> = rec.samples()[std::env::var("T0").map_or(0, |v| v.parse().unwrap())..][..40].iter().map(|x| format!("{x:.3}")).collect();
+        let v: Vec<String> = rec.samples()[std::env::var("T0").map_or(0, |v| v.parse().unwrap())..]
+            [..40]
+            .iter()
+            .map(|x| format!("{x:.3}"))
+            .collect();
         println!("{mode:?} {}", v.join(" "));
     }
     s.step_result().ok_or_else(|| "no result".into())
@@ -100,10 +117,18 @@ fn main() {
     let cases: Vec<usize> = std::env::var("CASES")
         .map(|s| s.split(',').map(|x| x.parse().unwrap()).collect())
         .unwrap_or((0..6).collect());
-    let phases: u32 = std::env::var("PHASES").map(|s| s.parse().unwrap()).unwrap_or(1);
+    let phases: u32 = std::env::var("PHASES")
+        .map(|s| s.parse().unwrap())
+        .unwrap_or(1);
     let foc = std::env::var("FOC").map(|s| s == "1").unwrap_or(true);
     let fs = [0.65, 1.0, 1.35];
-    let mut corners = match std::env::var("MOTOR") { Ok(m) => { let v: Vec<f64> = m.split(",").map(|x| x.parse().unwrap()).collect(); vec![(v[0], v[1], v[2])] } _ => vec![(1.0, 1.0, 1.0)] };
+    let mut corners = match std::env::var("MOTOR") {
+        Ok(m) => {
+            let v: Vec<f64> = m.split(",").map(|x| x.parse().unwrap()).collect();
+            vec![(v[0], v[1], v[2])]
+        }
+        _ => vec![(1.0, 1.0, 1.0)],
+    };
     if all {
         for r in fs {
             for l in fs {
@@ -124,12 +149,32 @@ fn main() {
                 continue;
             }
             for ph in 0..phases {
+                let mut set = set.clone();
+                if let Ok(c) = std::env::var("KAUTO") {
+                    let c: f64 = c.parse().unwrap();
+                    set.push(("mpdtc_k_auto".into(), 0.0));
+                    set.push(("mpdtc_k".into(), c * f.1 / f.2));
+                }
+                if let Ok(a) = std::env::var("TOLAUTO") {
+                    let a: f64 = a.parse().unwrap();
+                    let m0 = models::pmsm::params::MotorParams::default();
+                    let hop = 1.5 * 7.0 * m0.psi_pm_wb * f.2 * 0.75f64.sqrt() * (1.0 / 64e3)
+                        / (m0.l_d_h * f.1)
+                        * (2.0 / 3.0)
+                        * m0.u_dc_v;
+                    set.push(("mpdtc_t_tol".into(), a * hop));
+                }
                 let m = one(Mode::Mpdtc, f, case, &set, ph * 7);
-                let fo = if foc { Some(one(Mode::Foc, f, case, &[], ph * 7)) } else { None };
+                let fo = if foc {
+                    Some(one(Mode::Foc, f, case, &[], ph * 7))
+                } else {
+                    None
+                };
                 let fmt = |r: &Result<StepResult, String>| match r {
                     Ok(r) => format!(
                         "{:>6} ms {:5.1} % fin {:5.1} % sw {:4.1} kHz",
-                        r.settling_s.map_or("none".into(), |t| format!("{:.3}", t * 1e3)),
+                        r.settling_s
+                            .map_or("none".into(), |t| format!("{:.3}", t * 1e3)),
                         r.overshoot_percent,
                         100.0 * (r.final_nm - r.to_nm).abs() / (r.to_nm - r.from_nm).abs(),
                         r.switching_per_leg_per_s * 1e-3
@@ -148,6 +193,15 @@ fn main() {
                     }
                     _ => true,
                 };
+                // One active vector's torque change in one period at the locked
+                // angle (the q axis between two vectors: sqrt(3)/2 of U0).
+                let m0 = models::pmsm::params::MotorParams::default();
+                let hop = 1.5 * 7.0 * m0.psi_pm_wb * f.2 * 0.75f64.sqrt() * (1.0 / 64e3)
+                    / (m0.l_d_h * f.1)
+                    * (2.0 / 3.0)
+                    * m0.u_dc_v;
+                let bound = hop > 2.0 * 0.1 * (case.1 - case.0).abs();
+                let miss = miss && !bound;
                 n += 1;
                 if miss {
                     bad += 1;
@@ -161,7 +215,13 @@ fn main() {
                     case.1,
                     fmt(&m),
                     fo.as_ref().map_or(String::new(), fmt),
-                    if miss { "MISS" } else { "" }
+                    if miss {
+                        "MISS"
+                    } else if bound {
+                        "BOUND"
+                    } else {
+                        ""
+                    }
                 );
             }
         }

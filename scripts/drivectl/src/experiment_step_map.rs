@@ -94,8 +94,9 @@ pub fn run(a: StepMapArgs) -> Result<()> {
         .with_context(|| format!("cannot write {}", md.display()))?;
     let sm = step_map::summary(&cells);
     println!(
-        "cells run: {}, meeting every MPDTC target: {}, not run (beyond the current): {}",
-        sm.run, sm.meeting, sm.skipped
+        "cells run: {}, meeting every MPDTC target: {}, missing one beyond one period's torque \
+         step: {}, not run (beyond the current): {}",
+        sm.run, sm.meeting, sm.missing_beyond, sm.skipped
     );
     println!(
         "worst MPDTC overshoot: {:.1} %, worst settling ratio MPDTC/FOC: {:.2}, worst final error: {:.1} %",

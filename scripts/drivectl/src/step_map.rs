@@ -116,6 +116,28 @@ pub fn infeasible(m: &MotorParams, (from, to): (f64, f64), current_limit_a: f64)
     })
 }
 
+/// The MPDTC's control period on the drive, s (4 ADC periods of 391 PL
+/// cycles at 100 MHz).
+pub const MPDTC_PERIOD_S: f64 = 1564e-8;
+
+/// Why no one-vector-per-period loop can meet the cell's settling band:
+/// one period of an active vector moves the torque further than the band
+/// is wide (`models::pmsm::mpdtc_tuning`: `k_T sqrt(3)/2 (Ts / L) 2/3
+/// U_dc` with the rotor locked as the map has it). `None`: it can.
+pub fn beyond_one_period(m: &MotorParams, (from, to): (f64, f64)) -> Option<String> {
+    use models::pmsm::mpdtc_tuning::{
+        band_holds_one_period, period_torque_step_nm, Q_SHARE_MIDWAY,
+    };
+    if band_holds_one_period(m, MPDTC_PERIOD_S, from, to) {
+        return None;
+    }
+    Some(format!(
+        "one period moves the torque {:.3} N m, the 10 % band is {:.3} N m wide",
+        period_torque_step_nm(m, MPDTC_PERIOD_S, Q_SHARE_MIDWAY),
+        2.0 * models::pmsm::metrics::settling_band(from, to)
+    ))
+}
+
 /// What one mode's step on one cell gave.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Outcome {
@@ -291,6 +313,9 @@ pub struct Summary {
     pub run: usize,
     pub skipped: usize,
     pub meeting: usize,
+    /// Cells run that miss a target and are beyond one period's torque
+    /// step ([`beyond_one_period`]).
+    pub missing_beyond: usize,
     pub worst_overshoot_percent: f64,
     pub worst_settling_ratio: f64,
     pub worst_final_percent: f64,
@@ -303,6 +328,7 @@ pub fn summary(cells: &[Cell]) -> Summary {
         run: 0,
         skipped: 0,
         meeting: 0,
+        missing_beyond: 0,
         worst_overshoot_percent: 0.0,
         worst_settling_ratio: 0.0,
         worst_final_percent: 0.0,
@@ -316,6 +342,8 @@ pub fn summary(cells: &[Cell]) -> Summary {
         s.run += 1;
         if misses(c).is_empty() {
             s.meeting += 1;
+        } else if beyond_one_period(&c.corner.motor(), c.case).is_some() {
+            s.missing_beyond += 1;
         }
         if let Outcome::Measured {
             settling_s,
@@ -366,11 +394,13 @@ pub fn markdown(cells: &[Cell], how: &str) -> String {
     );
     let _ = writeln!(
         s,
-        "Cells run: {}; meeting every target: {}; not run (beyond the current): {}. Worst \
-         MPDTC overshoot {:.1} %, worst settling ratio MPDTC / FOC {:.2}, worst final error \
-         {:.1} %.\n",
+        "Cells run: {}; meeting every target: {}; missing one where one control period's \
+         torque step is wider than the 10 % band (no one-vector-per-period loop can meet it): \
+         {}; not run (beyond the current): {}. Worst MPDTC overshoot {:.1} %, worst settling \
+         ratio MPDTC / FOC {:.2}, worst final error {:.1} %.\n",
         sm.run,
         sm.meeting,
+        sm.missing_beyond,
         sm.skipped,
         sm.worst_overshoot_percent,
         sm.worst_settling_ratio,
@@ -404,6 +434,8 @@ pub fn markdown(cells: &[Cell], how: &str) -> String {
                 "-".to_string()
             } else if m.is_empty() {
                 "none".to_string()
+            } else if let Some(b) = beyond_one_period(&c.corner.motor(), c.case) {
+                format!("{} (beyond one period: {b})", m.join("; "))
             } else {
                 m.join("; ")
             }
@@ -452,6 +484,29 @@ mod tests {
         for case in CASES {
             assert!(infeasible(&nominal, case, 14.0).is_none(), "{case:?}");
         }
+    }
+
+    /// One period's torque step against the band, by hand: nominal
+    /// 0.0975 N m/A x 0.866 x (15.64 us / 0.64 mH) x 32 V = 0.0660 N m,
+    /// inside a 0.4 N m step's 0.08 N m band; L x 0.65: 0.1016 N m, not;
+    /// an 0.8 N m step's 0.16 N m band holds both.
+    #[test]
+    fn cells_beyond_one_periods_torque_step() {
+        let low_l = Corner {
+            r: 1.0,
+            l: 0.65,
+            psi: 1.0,
+        }
+        .motor();
+        let nominal = Corner::NOMINAL.motor();
+        assert_eq!(beyond_one_period(&nominal, (0.0, 0.4)), None);
+        let why = beyond_one_period(&low_l, (0.0, 0.4)).expect("beyond");
+        assert!(
+            why.contains("0.102 N m") && why.contains("0.080 N m"),
+            "{why}"
+        );
+        assert_eq!(beyond_one_period(&low_l, (-0.4, 0.4)), None);
+        assert_eq!(beyond_one_period(&low_l, (0.1, 0.9)), None);
     }
 
     #[test]

@@ -108,7 +108,8 @@ fn whole_configuration_is_checked() {
     let base = ServoConfig::default();
     let mut c = Config::default();
     // K Ts < 1: at 391-cycle ADC periods (Ts = 15.64 us) K = 60000 1/s is
-    // 0.94; at 1000 cycles (40 us) it is 2.4.
+    // 0.94; at 1000 cycles (40 us) it is 2.4 (the gain as set, not derived).
+    c.set(&base, "mpdtc_k_auto", 0.0).unwrap();
     c.set(&base, "mpdtc_k", 60_000.0).unwrap();
     let before = c;
     let e = c.set(&base, "adc_period", 1000.0).unwrap_err();

@@ -29,6 +29,7 @@ use models::pmsm::frontend_fixed::FrontendParams;
 use models::pmsm::mpdtc_ctrl::{fixed_inputs, inputs_from_measurement};
 use models::pmsm::mpdtc_fixed::FixedParams;
 use models::pmsm::mpdtc_ref::{MpdtcConfig, MpdtcParams};
+use models::pmsm::mpdtc_tuning;
 use models::pmsm::params::MotorParams;
 use models::validate::ParamError;
 use regmap::bus::{BusError, RegisterBus};
@@ -126,6 +127,10 @@ pub struct ServoConfig {
     pub foc: FocParams,
     /// MPDTC tuning; its control period follows from `adc_period_cycles`.
     pub mpdtc: MpdtcParams,
+    /// The torque integrator's gain K derived from `motor` and the control
+    /// period ([`models::pmsm::mpdtc_tuning::integrator_gain_per_s`])
+    /// instead of `mpdtc.k_int_per_s`.
+    pub mpdtc_k_auto: bool,
     /// MPDTC input path: `false` = the autonomous loop (the PL's front end
     /// computes the core's inputs every period, the PS writes only the
     /// torque reference), `true` = the PS-fed debug path (Park transform and
@@ -169,12 +174,8 @@ impl Default for ServoConfig {
             // Below the 16 A full scale of the simulated PL's ADC.
             current_limit_a: 14.0,
             foc: FocParams::default(),
-            // The paper's MPDTC, with the torque integrator's conditional
-            // integration (anti-windup: docs/mpdtc-step-map.md).
-            mpdtc: MpdtcParams {
-                int_conditional: true,
-                ..MpdtcParams::default()
-            },
+            mpdtc: MpdtcParams::default(),
+            mpdtc_k_auto: false,
             mpdtc_ps_fed: false,
             // Band 5 mN m: about 5 ADC counts of i_q.
             step_min_nm: 0.05,
@@ -507,8 +508,14 @@ impl Servo {
             measurement_lag_s: foc_measurement_lag_s(cfg),
             ..cfg.foc
         };
+        let ts = period_s(4 * cfg.adc_period_cycles);
         let mp = MpdtcParams {
-            control_period_s: period_s(4 * cfg.adc_period_cycles),
+            control_period_s: ts,
+            k_int_per_s: if cfg.mpdtc_k_auto {
+                mpdtc_tuning::integrator_gain_per_s(&cfg.motor, ts)
+            } else {
+                cfg.mpdtc.k_int_per_s
+            },
             ..cfg.mpdtc
         };
         let mpdtc = MpdtcConfig::new(cfg.motor, mp)?;

@@ -29,6 +29,7 @@ pub mod mpdtc_pl;
 pub mod mpdtc_ref;
 #[cfg(test)]
 mod mpdtc_tests;
+pub mod mpdtc_tuning;
 pub mod observer;
 pub mod params;
 pub mod plant;

@@ -438,3 +438,62 @@ fn combined_model_errors_are_compensated_within_5ms() {
         assert!((t_fix - 0.4).abs() < 0.004, "corner {k}: fixed {t_fix}");
     }
 }
+
+/// The torque integrator's anti-windup rule (`int_conditional`, the
+/// drive's `mpdtc_aw`) on the core model itself: a step the inverter is
+/// still slewing towards leaves no candidate in the band, so the paper's
+/// Eq. 13 integrates the whole tracking error every period and the
+/// conditional rule holds `x`. Inputs by hand: locked rotor at 0 rad
+/// (cos 1, sin 0), no current, a 0.8 N m reference (8.2 A at k_T =
+/// 0.0975 N m/A, beyond one period's 0.78 A reach), the state as after a
+/// dwell at 0 N m.
+#[test]
+fn the_conditional_rule_holds_the_integrator_while_the_step_slews() {
+    let p = MpdtcParams {
+        k_int_per_s: 10_000.0,
+        ..Default::default()
+    };
+    let run = |conditional: bool| {
+        let fp = FixedParams::from_config(&cfg(MpdtcParams {
+            int_conditional: conditional,
+            ..p
+        }))
+        .unwrap();
+        let one = 1 << 16;
+        let inp = fx::FixedInputs {
+            i_dq: (0, 0),
+            trig: [(one - 1, 0); 3],
+            w_ts: 0,
+            t_ref: (0.8 * f64::from(1 << 14)) as i32,
+        };
+        let mut st = FixedState {
+            band_reached: true,
+            ..Default::default()
+        };
+        let mut xs = Vec::new();
+        for _ in 0..8 {
+            let out = fx::decide(&st, &inp, &fp);
+            // The inputs stand still: no candidate reaches 8.2 A.
+            assert!(!out.next.band_reached, "{:?}", out.err);
+            xs.push(out.next.x);
+            st = out.next;
+        }
+        (xs, fp)
+    };
+    let (plain, fp) = run(false);
+    let (held, _) = run(true);
+    // Eq. 13: the first period integrates from iq_ref_prev = 0 (the dwell),
+    // then K Ts x 8.2 A = 1.28 A per period up to the clamp
+    // (int_limit / k_T = 0.2 / 0.0975 = 2.05 A): wound up in 3 periods.
+    assert_eq!(plain[0], 0, "{plain:?}");
+    let per_period = (10_000.0 / 64_000.0 * 0.8 / 0.097_523 * 65_536.0) as i32;
+    assert!(
+        (plain[1] - per_period).abs() <= 2,
+        "{plain:?} vs {per_period}"
+    );
+    assert_eq!(*plain.last().unwrap(), fp.int_lim, "{plain:?}");
+    // The conditional rule: the first decision integrates (the dwell's
+    // decision reached the band), none after it.
+    assert!(held.iter().all(|&x| x == held[0]), "{held:?}");
+    assert_eq!(held[0], 0);
+}
