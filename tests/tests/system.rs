@@ -24,6 +24,7 @@ mod pl_faults;
 mod sensor_check;
 mod storm;
 mod telemetry;
+mod torque_steps;
 
 /// Every `.rs` file of a directory of tests built as one binary is a
 /// module of its root file (`autotests = false` in their Cargo.toml: a
