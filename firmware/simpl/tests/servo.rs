@@ -259,3 +259,57 @@ fn autonomous_reversal_on_the_simulated_pl() {
     assert!((truth - 0.4).abs() < 0.05, "{truth}");
     assert_eq!(s.overruns(), 0);
 }
+
+/// The reversal's settling time and where the step meets the MPDTC's limit
+/// cycle. A `step` starts on a control boundary (the recorder applies the
+/// reference there), so the console command's arrival does not move it;
+/// what differs from one run to the next is the phase of the limit cycle
+/// inside the tolerance band at that boundary: where the torque is in the
+/// band, and whether the integrator was just integrating. Twelve dwells of
+/// 20 ms plus 0, 7, ..., 77 periods put the step at twelve phases. With the
+/// anti-windup configuration (`mpdtc_aw 1`, `mpdtc_k_auto 1`, `T_tol`
+/// 0.075 N m) the settling spans 13 to 15 periods (0.203 to 0.235 ms), all
+/// within the FOC's 0.250 ms, overshoot at most 10 %. 13 periods is the
+/// bound: 0.72 N m of slew at 0.066 N m per period (one active vector with
+/// the q axis midway between two, `mpdtc_tuning`) is 10.9 periods, plus
+/// one period from the reference write to the PL's decision, one from the
+/// decision to its vector, and the averaged sample's lag.
+#[test]
+fn the_reversals_spread_over_the_limit_cycles_phase_is_bounded() {
+    use drive::config::Config;
+    let mut periods = Vec::new();
+    for phase in 0..12u32 {
+        let mut sim = SimDrive::new(&SimConfig::default()).unwrap();
+        let base = ServoConfig::for_plant(sim.config().motor, sim.config().adc_amps_per_count);
+        let mut c = Config::from_servo(&base);
+        for (k, v) in [
+            ("mpdtc_aw", 1.0),
+            ("mpdtc_k_auto", 1.0),
+            ("mpdtc_t_tol", 0.075),
+        ] {
+            c.set(&base, k, v).unwrap();
+        }
+        let mut s = Servo::new(&c.apply(&base)).unwrap();
+        s.init(&mut sim).unwrap();
+        s.set_mode(&mut sim, Mode::Mpdtc).unwrap();
+        s.enable(&mut sim).unwrap();
+        run(&mut s, &mut sim, 200_000, |s| s.controlling());
+        s.set_torque_ref(-0.4).unwrap();
+        let n = (20e-3 * s.control_rate_hz()) as u32 + 7 * phase;
+        run(&mut s, &mut sim, n, |_| false);
+        s.begin_step(&mut sim, 0.4, 10e-3).unwrap();
+        run(&mut s, &mut sim, 10_000, |s| !s.step_pending());
+        let r = s.step_result().expect("step completed");
+        assert!(r.overshoot_percent <= 10.0, "phase {phase}: {r:?}");
+        let t = r.settling_s.expect("settled");
+        periods.push(libm::round(t * s.control_rate_hz()) as u32);
+    }
+    std::println!("reversal settling, periods of 15.64 us, by phase: {periods:?}");
+    let (lo, hi) = (
+        *periods.iter().min().unwrap(),
+        *periods.iter().max().unwrap(),
+    );
+    assert!(lo >= 13, "{periods:?}: faster than the slew bound");
+    // 16 periods = 0.250 ms, the FOC's settling of the same step.
+    assert!(hi <= 15, "{periods:?}");
+}
