@@ -17,8 +17,10 @@
 //! A save erases the slot that does not hold the newest valid record, then
 //! programs the record there; the CRC is the last thing written, so a cut
 //! anywhere leaves that slot invalid and the other one intact. At load the
-//! valid record with the higher sequence number wins; a record whose CRC,
-//! version, count or fingerprint does not match is ignored and reported.
+//! valid record with the higher sequence number wins; a record of an
+//! earlier parameter table ([`EARLIER_TABLES`]: its count and fingerprint)
+//! loads value by name, the parameters it lacks at their defaults; a record
+//! whose CRC, version or table does not match is ignored and reported.
 use super::{Config, ConfigError, N_PARAMS, PARAMS};
 use crate::servo::ServoConfig;
 
@@ -74,15 +76,64 @@ fn crc32_update(mut crc: u32, data: &[u8]) -> u32 {
 /// CRC-32 of the parameter names joined by `,`: a record written for
 /// another table (renamed, reordered, added) does not load.
 pub fn table_fingerprint() -> u32 {
+    fingerprint_of(PARAMS.iter().map(|p| p.name))
+}
+
+fn fingerprint_of<'a>(names: impl Iterator<Item = &'a str>) -> u32 {
     let mut crc = 0xFFFF_FFFF;
-    for (i, p) in PARAMS.iter().enumerate() {
+    for (i, name) in names.enumerate() {
         if i > 0 {
             crc = crc32_update(crc, b",");
         }
-        crc = crc32_update(crc, p.name.as_bytes());
+        crc = crc32_update(crc, name.as_bytes());
     }
     crc ^ 0xFFFF_FFFF
 }
+
+/// Parameter tables of earlier firmware, oldest first, whose records
+/// [`decode`] still reads: each value goes to the parameter of the same
+/// name, and a parameter the old table lacks takes its default. So a
+/// firmware update that adds parameters keeps a saved configuration (the
+/// next `config save` writes the present table).
+pub const EARLIER_TABLES: [&[&str]; 1] = [&[
+    "motor_r_s",
+    "motor_l",
+    "motor_psi_pm",
+    "motor_pole_pairs",
+    "u_dc",
+    "enc_cpr",
+    "enc_zero",
+    "dead_time",
+    "adc_period",
+    "foc_half_period",
+    "foc_pole",
+    "foc_pred_gain",
+    "mpdtc_t_tol",
+    "mpdtc_p",
+    "mpdtc_k",
+    "mpdtc_int_limit",
+    "obs_kp",
+    "obs_ki",
+    "obs_limit",
+    "mpdtc_align_time",
+    "torque_limit",
+    "current_limit",
+    "watchdog_timeout",
+    "mpdtc_ps_fed",
+    "vel_kp",
+    "vel_ki",
+    "pos_kp",
+    "load_inertia",
+    "traj_vel_limit",
+    "traj_accel_limit",
+    "vel_limit",
+    "pos_min",
+    "pos_max",
+    "imp_kp_max",
+    "imp_kd_max",
+    "calibration_current",
+    "calibration_voltage",
+]];
 
 /// What a slot holds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -151,24 +202,46 @@ pub fn decode(r: &[u8; RECORD_BYTES], base: &ServoConfig) -> (SlotState, Option<
     if r.iter().all(|&b| b == 0xFF) {
         return (SlotState::Empty, None);
     }
-    let n = RECORD_BYTES - 4;
+    // The count comes before the CRC: a record of an earlier, shorter
+    // table ends before the present one's length.
+    let count = usize::from(u16::from_le_bytes([r[6], r[7]]));
+    if count == 0 || count > N_PARAMS {
+        return if crc32(&r[..RECORD_BYTES - 4]) == u32_at(r, RECORD_BYTES - 4) {
+            (SlotState::BadVersion, None)
+        } else {
+            (SlotState::BadCrc, None)
+        };
+    }
+    let n = 16 + 8 * count;
     if crc32(&r[..n]) != u32_at(r, n) {
         return (SlotState::BadCrc, None);
     }
     let version = u16::from_le_bytes([r[4], r[5]]);
-    let count = u16::from_le_bytes([r[6], r[7]]);
-    if u32_at(r, 0) != MAGIC
-        || version != FORMAT_VERSION
-        || usize::from(count) != N_PARAMS
-        || u32_at(r, 8) != table_fingerprint()
-    {
+    if u32_at(r, 0) != MAGIC || version != FORMAT_VERSION {
         return (SlotState::BadVersion, None);
     }
-    let mut values = [0.0; N_PARAMS];
-    for (i, v) in values.iter_mut().enumerate() {
+    let value = |i: usize| {
         let mut b = [0u8; 8];
         b.copy_from_slice(&r[16 + 8 * i..24 + 8 * i]);
-        *v = f64::from_bits(u64::from_le_bytes(b));
+        f64::from_bits(u64::from_le_bytes(b))
+    };
+    let fingerprint = u32_at(r, 8);
+    let mut values = *Config::default().values();
+    if count == N_PARAMS && fingerprint == table_fingerprint() {
+        for (i, v) in values.iter_mut().enumerate() {
+            *v = value(i);
+        }
+    } else if let Some(old) = EARLIER_TABLES
+        .iter()
+        .find(|t| t.len() == count && fingerprint_of(t.iter().copied()) == fingerprint)
+    {
+        for (i, name) in old.iter().enumerate() {
+            if let Some(j) = PARAMS.iter().position(|p| p.name == *name) {
+                values[j] = value(i);
+            }
+        }
+    } else {
+        return (SlotState::BadVersion, None);
     }
     match Config::from_values(values, base) {
         Ok(c) => (SlotState::Valid(u32_at(r, 12)), Some(c)),

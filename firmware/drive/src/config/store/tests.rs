@@ -203,3 +203,51 @@ fn paced_flash_pauses_around_every_write_and_changes_nothing_else() {
     drop(f);
     assert_eq!(pauses, 6);
 }
+
+/// A record written by the firmware before `mpdtc_k_auto` and `mpdtc_aw`
+/// (37 parameters, the table of `EARLIER_TABLES[0]`), built by hand: it
+/// loads, each value by its name, the two new parameters at their
+/// defaults; the next save writes the present table.
+#[test]
+fn a_record_of_the_earlier_table_loads_by_name() {
+    let base = ServoConfig::default();
+    let old = EARLIER_TABLES[0];
+    assert_eq!(old.len(), 37);
+    let mut r = [0xFFu8; RECORD_BYTES];
+    r[0..4].copy_from_slice(&MAGIC.to_le_bytes());
+    r[4..6].copy_from_slice(&FORMAT_VERSION.to_le_bytes());
+    r[6..8].copy_from_slice(&37u16.to_le_bytes());
+    // CRC-32 of the 37 names joined by ",".
+    let joined = old.join(",");
+    r[8..12].copy_from_slice(&crc32(joined.as_bytes()).to_le_bytes());
+    r[12..16].copy_from_slice(&5u32.to_le_bytes());
+    let defaults = Config::default();
+    for (i, name) in old.iter().enumerate() {
+        let v = match *name {
+            "motor_r_s" => 0.7,
+            "mpdtc_k" => 3000.0,
+            "calibration_voltage" => defaults.get("calibration_voltage").unwrap() * 0.5,
+            n => defaults.get(n).expect("an earlier name is a present one"),
+        };
+        r[16 + 8 * i..24 + 8 * i].copy_from_slice(&v.to_bits().to_le_bytes());
+    }
+    let n = 16 + 8 * 37;
+    let crc = crc32(&r[..n]);
+    r[n..n + 4].copy_from_slice(&crc.to_le_bytes());
+    let (st, c) = decode(&r, &base);
+    assert_eq!(st, SlotState::Valid(5));
+    let c = c.expect("loaded");
+    assert_eq!(c.get("motor_r_s"), Some(0.7));
+    assert_eq!(c.get("mpdtc_k"), Some(3000.0));
+    assert_eq!(
+        c.get("calibration_voltage"),
+        Some(defaults.get("calibration_voltage").unwrap() * 0.5)
+    );
+    assert_eq!(c.get("mpdtc_aw"), defaults.get("mpdtc_aw"));
+    assert_eq!(c.get("mpdtc_k_auto"), defaults.get("mpdtc_k_auto"));
+    // A fingerprint of no known table is still refused.
+    r[8] ^= 1;
+    let crc = crc32(&r[..n]);
+    r[n..n + 4].copy_from_slice(&crc.to_le_bytes());
+    assert_eq!(decode(&r, &base).0, SlotState::BadVersion);
+}
