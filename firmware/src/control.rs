@@ -436,11 +436,19 @@ pub fn on_pl_tick() {
     if raise {
         gic::set_pending(IRQ_CONTROL);
     } else {
+        // The simulated PL: a tick that took longer than the spacing (no
+        // ADC result, so no boundary: two periods of the plant simulated
+        // with the gates off, in short diode segments, on a slow host in
+        // real-time QEMU) would set a compare already past and run again
+        // at once, and the console would never run; so the next tick comes
+        // at least half a spacing after this one's end. (Co-simulation
+        // keeps its planned tick: it follows the PL's boundaries.)
+        let floor = timer::global_count() + guest_counts(1564) / 2;
         let next = with(|s| match s.bus {
             Backend::Cosim(_) => s.next_tick,
-            _ => now + guest_counts(1564),
+            _ => (now + guest_counts(1564)).max(floor),
         })
-        .unwrap_or(now + guest_counts(1564));
+        .unwrap_or((now + guest_counts(1564)).max(floor));
         timer::set_compare(next);
     }
 }
