@@ -509,6 +509,21 @@ impl Node {
         out
     }
 
+    /// The description of (index, sub) as SDO and PDO see it: the node's
+    /// own objects first, then the application's (for an EDS and local
+    /// tools).
+    pub fn entry<A: Application + ?Sized>(
+        &self,
+        app: &A,
+        index: u16,
+        sub: u8,
+    ) -> Result<Entry, Abort> {
+        match self.comm.entry(index, sub) {
+            Some(r) => r,
+            None => app.entry(index, sub),
+        }
+    }
+
     /// Reads an object as an SDO upload would (for local tools and tests).
     pub fn read<A: Application + ?Sized>(
         &mut self,

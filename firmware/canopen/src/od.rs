@@ -48,6 +48,9 @@ pub enum Abort {
     ValueTooLow = 0x0609_0032,
     /// 0x0800 0000: general error.
     General = 0x0800_0000,
+    /// 0x0800 0020: data cannot be transferred or stored to the
+    /// application (for 0x1010/0x1011: the signature is not "save"/"load").
+    CannotStore = 0x0800_0020,
     /// 0x0800 0022: data cannot be transferred or stored because of the
     /// present device state.
     WrongDeviceState = 0x0800_0022,
@@ -496,6 +499,7 @@ mod tests {
         assert_eq!(Abort::ValueTooHigh.code(), 0x0609_0031);
         assert_eq!(Abort::ValueTooLow.code(), 0x0609_0032);
         assert_eq!(Abort::General.code(), 0x0800_0000);
+        assert_eq!(Abort::CannotStore.code(), 0x0800_0020);
         assert_eq!(Abort::WrongDeviceState.code(), 0x0800_0022);
         assert_eq!(Abort::NoData.code(), 0x0800_0024);
     }

@@ -25,6 +25,7 @@ pub mod config;
 pub mod console;
 #[cfg(test)]
 mod doc_figures;
+pub mod fieldbus;
 pub mod hil;
 pub mod logring;
 pub mod mmu;
