@@ -5,6 +5,7 @@
 //! system tests check that no file of the directory is left out.
 mod alignment;
 mod calibration;
+mod cia402;
 mod evidence;
 mod hil;
 mod servo;

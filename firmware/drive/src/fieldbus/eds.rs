@@ -19,12 +19,10 @@ use core::fmt::{self, Write};
 /// Producer heartbeat at power-on, ms.
 pub const HEARTBEAT_MS: u16 = 100;
 
-/// The modes in 0x6502: PP, PV, HM, CSP, CSV, CST and the vendor
-/// impedance mode.
+/// The modes in 0x6502, the ones [`super::axis`] carries out: HM (method
+/// 37), CSP, CSV, CST and the vendor impedance mode.
 pub fn supported_modes() -> u32 {
     [
-        mode::PROFILE_POSITION,
-        mode::PROFILE_VELOCITY,
         mode::HOMING,
         mode::CYCLIC_SYNC_POSITION,
         mode::CYCLIC_SYNC_VELOCITY,

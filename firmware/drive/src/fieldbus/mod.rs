@@ -8,6 +8,8 @@
 //!   every configuration parameter as a vendor object, over a
 //!   [`objects::ProcessImage`] the control loop exchanges at its boundary
 //!   and a [`objects::ConfigPort`] to the drive's configuration.
+//! - [`axis`]: the drive functions behind the CiA 402 state machine and
+//!   the modes' set-points, on the servo.
 //! - [`eds`]: the EDS text, generated from the same tables; the committed
 //!   file `docs/canopen/drive.eds` is checked against it.
 //!
@@ -27,10 +29,12 @@
 //! These are CiA 402's own default units for torque (per mille of rated
 //! torque) and the "increments" of its position factor with a factor of 1.
 
+pub mod axis;
 pub mod eds;
 pub mod objects;
 
 #[cfg(test)]
 mod tests;
 
-pub use objects::{ConfigPort, DriveObjects, ProcessImage};
+pub use axis::Axis;
+pub use objects::{ConfigPort, ConfigValues, DriveObjects, ProcessImage};

@@ -329,12 +329,12 @@ pub const OBJECTS: &[Object] = &[
         &[
             s(0, "Highest sub-index supported", Unsigned8, Const),
             pdo(rlim(
-                s(1, "Stiffness kp (N m/rad)", Real32, Rw),
+                s(1, "Stiffness kp (N m/rev)", Real32, Rw),
                 0.0,
                 f32::MAX,
             )),
             pdo(rlim(
-                s(2, "Damping kd (N m s/rad)", Real32, Rw),
+                s(2, "Damping kd (N m s/rev)", Real32, Rw),
                 0.0,
                 f32::MAX,
             )),
@@ -396,6 +396,46 @@ pub trait ConfigPort {
     fn set(&mut self, ix: usize, v: f64) -> Result<(), ConfigRefusal>;
 }
 
+/// A configuration held as values on a base servo configuration, with
+/// the gates' state the parameters that need them off are checked
+/// against: the port of a drive whose configuration lives in RAM (the
+/// host's tests, and the firmware's copy before `config save`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ConfigValues {
+    pub values: config::Config,
+    pub base: crate::servo::ServoConfig,
+    pub gates_on: bool,
+}
+
+impl ConfigValues {
+    /// The configuration `base` makes, gates off.
+    pub fn new(base: crate::servo::ServoConfig) -> Self {
+        Self {
+            values: config::Config::from_servo(&base),
+            base,
+            gates_on: false,
+        }
+    }
+}
+
+impl ConfigPort for ConfigValues {
+    fn value(&self, ix: usize) -> f64 {
+        self.values.values().get(ix).copied().unwrap_or(f64::NAN)
+    }
+
+    fn set(&mut self, ix: usize, v: f64) -> Result<(), ConfigRefusal> {
+        let p = PARAMS
+            .get(ix)
+            .ok_or(ConfigRefusal::Config(ConfigError::UnknownName))?;
+        if self.gates_on && p.gates_off {
+            return Err(ConfigRefusal::GatesOn);
+        }
+        self.values
+            .set(&self.base, p.name, v)
+            .map_err(ConfigRefusal::Config)
+    }
+}
+
 /// Why the drive refused a configuration write.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ConfigRefusal {
@@ -424,8 +464,8 @@ impl ConfigRefusal {
 /// The vendor impedance mode's gains and torque feed-forward.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Impedance {
-    pub kp_nm_per_rad: f32,
-    pub kd_nm_s_per_rad: f32,
+    pub kp_nm_per_rev: f32,
+    pub kd_nm_s_per_rev: f32,
     pub torque_ff_nm: f32,
 }
 
@@ -687,8 +727,8 @@ impl<C: ConfigPort> ObjectDictionary for DriveObjects<C> {
             (0x60FF, 0) => put(out, &im.target_velocity_counts_s.to_le_bytes()),
             (TORQUE_LOOP, 0) => put(out, &[im.torque_loop]),
             (IMPEDANCE, 0) => put(out, &[3]),
-            (IMPEDANCE, 1) => put(out, &im.impedance.kp_nm_per_rad.to_le_bytes()),
-            (IMPEDANCE, 2) => put(out, &im.impedance.kd_nm_s_per_rad.to_le_bytes()),
+            (IMPEDANCE, 1) => put(out, &im.impedance.kp_nm_per_rev.to_le_bytes()),
+            (IMPEDANCE, 2) => put(out, &im.impedance.kd_nm_s_per_rev.to_le_bytes()),
             (IMPEDANCE, 3) => put(out, &im.impedance.torque_ff_nm.to_le_bytes()),
             _ => {
                 let (ix, p) = config_param(index).ok_or(Abort::ObjectDoesNotExist)?;
@@ -726,8 +766,8 @@ impl<C: ConfigPort> ObjectDictionary for DriveObjects<C> {
             (0x60C2, 2) => im.interpolation_index = int(data) as i8,
             (0x60FF, 0) => im.target_velocity_counts_s = int(data) as i32,
             (TORQUE_LOOP, 0) => im.torque_loop = uint(data) as u8,
-            (IMPEDANCE, 1) => im.impedance.kp_nm_per_rad = real(data),
-            (IMPEDANCE, 2) => im.impedance.kd_nm_s_per_rad = real(data),
+            (IMPEDANCE, 1) => im.impedance.kp_nm_per_rev = real(data),
+            (IMPEDANCE, 2) => im.impedance.kd_nm_s_per_rev = real(data),
             (IMPEDANCE, 3) => im.impedance.torque_ff_nm = real(data),
             _ => {
                 let (ix, p) = config_param(index).ok_or(Abort::ObjectDoesNotExist)?;

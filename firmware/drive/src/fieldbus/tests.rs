@@ -2,7 +2,7 @@ extern crate std;
 
 use super::eds::{node_config, write_eds};
 use super::objects::*;
-use crate::config::{self, Config, PARAMS};
+use crate::config::{self, PARAMS};
 use crate::servo::ServoConfig;
 use canopen::node::Node;
 use canopen::od::{read_checked, write_checked, Abort};
@@ -12,43 +12,10 @@ use std::collections::BTreeMap;
 use std::string::{String, ToString};
 use std::vec::Vec;
 
-/// The drive's configuration as the firmware's port will hold it: the
-/// table's values on the default servo, and whether the gates are on.
-#[derive(Clone)]
-struct Port {
-    cfg: Config,
-    base: ServoConfig,
-    gates_on: bool,
-}
-
-impl Port {
-    fn new() -> Self {
-        let base = ServoConfig::default();
-        Self {
-            cfg: Config::from_servo(&base),
-            base,
-            gates_on: false,
-        }
-    }
-}
-
-impl ConfigPort for Port {
-    fn value(&self, ix: usize) -> f64 {
-        self.cfg.values()[ix]
-    }
-    fn set(&mut self, ix: usize, v: f64) -> Result<(), ConfigRefusal> {
-        let p = &PARAMS[ix];
-        if self.gates_on && p.gates_off {
-            return Err(ConfigRefusal::GatesOn);
-        }
-        self.cfg
-            .set(&self.base, p.name, v)
-            .map_err(ConfigRefusal::Config)
-    }
-}
+type Port = ConfigValues;
 
 fn objects() -> DriveObjects<Port> {
-    DriveObjects::new(Port::new())
+    DriveObjects::new(ConfigValues::new(ServoConfig::default()))
 }
 
 fn read(d: &mut DriveObjects<Port>, index: u16, sub: u8) -> Result<Vec<u8>, Abort> {
@@ -148,7 +115,7 @@ fn set_points_round_trip_and_actual_values_refuse_writes() {
     assert_eq!(d.image.target_torque_permille, -250);
     // The impedance record, REAL32; NaN is refused.
     write(&mut d, IMPEDANCE, 1, &12.5f32.to_le_bytes()).unwrap();
-    assert_eq!(d.image.impedance.kp_nm_per_rad, 12.5);
+    assert_eq!(d.image.impedance.kp_nm_per_rev, 12.5);
     assert_eq!(
         write(&mut d, IMPEDANCE, 2, &f32::NAN.to_le_bytes()),
         Err(Abort::ValueRange)
@@ -260,11 +227,11 @@ fn a_client_reads_the_drive_through_the_node() {
         sdo_upload(&mut n, &mut d, 0x1000, 0),
         [0x43, 0x00, 0x10, 0x00, 0x92, 0x01, 0x02, 0x00]
     );
-    // The node's own 0x6502: PP (bit 0), PV (2), HM (5), CSP (7), CSV
-    // (8), CST (9) and the vendor mode -1 (bit 16).
+    // The node's own 0x6502: HM (bit 5), CSP (7), CSV (8), CST (9) and
+    // the vendor mode -1 (bit 16).
     assert_eq!(
         sdo_upload(&mut n, &mut d, 0x6502, 0),
-        [0x43, 0x02, 0x65, 0x00, 0xA5, 0x03, 0x01, 0x00]
+        [0x43, 0x02, 0x65, 0x00, 0xA0, 0x03, 0x01, 0x00]
     );
     // A vendor object the node does not know reaches the drive: abort
     // "object does not exist" for one that is not there.
@@ -298,7 +265,7 @@ fn parse_ini(text: &str) -> BTreeMap<String, BTreeMap<String, String>> {
 
 fn eds_text() -> String {
     let mut s = String::new();
-    write_eds(&mut s, Port::new()).unwrap();
+    write_eds(&mut s, ConfigValues::new(ServoConfig::default())).unwrap();
     s
 }
 
@@ -380,5 +347,5 @@ fn the_eds_describes_the_device_and_is_committed() {
     assert_eq!(ini["1014"]["DefaultValue"], "$NODEID+0x80");
     assert_eq!(ini["200C"]["DataType"], "0x0008");
     assert_eq!(ini["200C"]["HighLimit"], "0.5");
-    assert_eq!(ini["6502"]["DefaultValue"], "0x103A5");
+    assert_eq!(ini["6502"]["DefaultValue"], "0x103A0");
 }
