@@ -4,11 +4,8 @@
 //! machine and the set-points to the servo, and the servo runs the
 //! simulated motor. The bytes a client would send and expect are written
 //! out by hand from CiA 301 and CiA 402.
-use canopen::node::Node;
-use canopen::pdo::Pdos;
 use canopen::{CanFrame, Frames};
-use drive::fieldbus::eds::node_config;
-use drive::fieldbus::{Axis, ConfigValues, DriveObjects};
+use drive::fieldbus::{ConfigValues, Link};
 use drive::servo::sensors::PlTime;
 use drive::servo::{Servo, ServoConfig};
 use regmap::bus::{BusError, RegisterBus};
@@ -38,9 +35,7 @@ impl PlTime for Bus {
 struct Bench {
     sim: Bus,
     servo: Servo,
-    node: Node,
-    obj: DriveObjects<ConfigValues>,
-    axis: Axis,
+    link: Link<ConfigValues>,
     /// Frames the drive sent, in order.
     sent: Vec<CanFrame>,
 }
@@ -53,17 +48,12 @@ impl Bench {
         servo.init(&mut sim).unwrap();
         sim.sim_set("locked", if locked { 1.0 } else { 0.0 })
             .unwrap();
-        let mut node = Node::new(node_config(NODE), Pdos::new(NODE)).unwrap();
-        let mut obj = DriveObjects::new(ConfigValues::new(cfg));
-        let mut sent = Vec::new();
-        sent.extend(node.boot().iter().copied());
-        node.drive_initialised(&mut obj);
+        let mut link = Link::new(NODE, ConfigValues::new(cfg)).unwrap();
+        let sent = link.boot().iter().copied().collect();
         Self {
             sim: Bus(sim),
             servo,
-            node,
-            obj,
-            axis: Axis::new(),
+            link,
             sent,
         }
     }
@@ -77,19 +67,11 @@ impl Bench {
     /// One frame from the client; the drive's answers.
     fn frame(&mut self, id: u16, data: &[u8]) -> Vec<CanFrame> {
         let f = CanFrame::new(id, data).unwrap();
-        let out = self.node.on_frame(&f, &mut self.obj);
-        let mut v = self.keep(out);
-        let more = self
-            .axis
-            .carry_out(
-                &mut self.servo,
-                &mut self.sim,
-                &mut self.obj,
-                &mut self.node,
-            )
+        let out = self
+            .link
+            .on_frame(&f, &mut self.servo, &mut self.sim)
             .unwrap();
-        v.extend(self.keep(more));
-        v
+        self.keep(out)
     }
 
     /// An expedited SDO download of `value` (1, 2 or 4 bytes); the answer.
@@ -148,26 +130,10 @@ impl Bench {
             self.sim.0.advance_to_boundary(2 * period);
             self.servo.control_step(&mut self.sim).unwrap();
             let out = self
-                .axis
-                .exchange(
-                    &mut self.servo,
-                    &mut self.sim,
-                    &mut self.obj,
-                    &mut self.node,
-                    dt,
-                )
+                .link
+                .boundary(&mut self.servo, &mut self.sim, dt)
                 .unwrap();
             self.keep(out);
-            let more = self
-                .axis
-                .carry_out(
-                    &mut self.servo,
-                    &mut self.sim,
-                    &mut self.obj,
-                    &mut self.node,
-                )
-                .unwrap();
-            self.keep(more);
         }
     }
 
@@ -316,4 +282,15 @@ fn cyclic_position_follows_a_set_point_stream_one_tpdo_per_sync() {
     assert!((last_pos - 2048).abs() <= 1, "position {last_pos}");
     let fe = i32::from_le_bytes(b.sdo_read(0x60F4, 0)[4..8].try_into().unwrap());
     assert!(fe.abs() <= 1, "following error {fe}");
+    // What `status` shows of it.
+    let st = b.link.status();
+    assert!(st.owns);
+    let c = st.counters;
+    assert_eq!((c.syncs, c.rpdos, c.tpdos, c.errors), (800, 800, 800, 0));
+    let line = st.to_string();
+    assert!(
+        line.starts_with("node 1, nmt operational, cia402 operation-enabled, mode 8 (csp), syncs 800, rpdos 800, tpdos 800, sdos "),
+        "{line}"
+    );
+    assert!(line.ends_with(", errors 0, owns the motor"), "{line}");
 }

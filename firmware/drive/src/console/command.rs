@@ -251,6 +251,10 @@ pub fn execute<W: Write>(
     drv: &mut dyn DriveOps,
     out: &mut W,
 ) -> Result<Action, fmt::Error> {
+    if moves_motor(&cmd) && drv.canopen().is_some_and(|c| c.owns) {
+        drive::write_error(out, name_of(&cmd), DriveError::CanopenOwns)?;
+        return Ok(Action::Refused);
+    }
     let done = match cmd {
         Command::Help(topic) => help::execute(topic, out)?,
         Command::Info(c) => info::execute(c, ctx, drv, out)?,
@@ -277,6 +281,64 @@ pub fn execute<W: Write>(
         }
         Outcome::Final => Ok(Action::Refused),
         Outcome::Panic => Ok(Action::Panic),
+    }
+}
+
+/// Whether `cmd` moves the motor or changes how it is driven: refused
+/// while a CANopen master owns it. Queries, `disable` (a way to stop that
+/// is always there), the capture, telemetry, fault and debug commands and
+/// the simulated world's `sim` are not.
+fn moves_motor(cmd: &Command<'_>) -> bool {
+    match cmd {
+        Command::Motion(m) => !matches!(
+            m,
+            MotionCmd::Mode(None) | MotionCmd::Torque(None) | MotionCmd::Disable
+        ),
+        Command::Config(c) => matches!(c, ConfigCmd::Set(..) | ConfigCmd::Reset),
+        Command::Sweep(_)
+        | Command::Mpdcc(_)
+        | Command::SelftestSensors
+        | Command::Calibrate(_)
+        | Command::Vel(_)
+        | Command::Pos(_)
+        | Command::Imp(_)
+        | Command::Move(..) => true,
+        Command::Help(_)
+        | Command::Info(_)
+        | Command::Fault(_)
+        | Command::Debug(_)
+        | Command::Capture(_)
+        | Command::Tel(_)
+        | Command::Sim(_) => false,
+    }
+}
+
+/// The command's name, as its `ERR` lines start.
+fn name_of(cmd: &Command<'_>) -> &'static str {
+    match cmd {
+        Command::Motion(m) => match m {
+            MotionCmd::Mode(_) => "mode",
+            MotionCmd::Enable => "enable",
+            MotionCmd::Disable => "disable",
+            MotionCmd::Torque(_) => "torque",
+            MotionCmd::Step(..) => "step",
+        },
+        Command::Config(_) => "config",
+        Command::Sweep(_) => "sweep",
+        Command::Mpdcc(_) => "mpdcc",
+        Command::SelftestSensors => "selftest",
+        Command::Calibrate(_) => "calibrate",
+        Command::Vel(_) => "vel",
+        Command::Pos(_) => "pos",
+        Command::Imp(_) => "imp",
+        Command::Move(..) => "move",
+        Command::Help(_) => "help",
+        Command::Info(_) => "status",
+        Command::Fault(_) => "fault",
+        Command::Debug(_) => "debug",
+        Command::Capture(_) => "capture",
+        Command::Tel(_) => "tel",
+        Command::Sim(_) => "sim",
     }
 }
 

@@ -268,6 +268,9 @@ pub enum DriveError {
     /// `debug fault`: the fault (bits) did not latch within
     /// [`LATCH_WAIT_PERIODS`] control periods.
     NotLatched(u32),
+    /// A command that moves the motor while a CANopen master owns it
+    /// (NMT operational, CiA 402 operation enabled or quick stop active).
+    CanopenOwns,
 }
 
 impl From<ServoError> for DriveError {
@@ -414,6 +417,10 @@ pub trait DriveOps {
     }
     /// The GP0 guard's words (`status`), if the firmware reads them.
     fn gp0_guard(&mut self) -> Option<crate::pl::presence::Guard> {
+        None
+    }
+    /// The CANopen device's state (`status`), if the firmware has one.
+    fn canopen(&mut self) -> Option<crate::fieldbus::LinkStatus> {
         None
     }
     /// The telemetry stream's owner, if the build has one.
@@ -575,6 +582,14 @@ pub fn write_error<W: Write>(out: &mut W, cmd: &str, e: DriveError) -> fmt::Resu
             out,
             ErrorCode::FlashError,
             format_args!("{cmd}: the configuration flash failed (nothing loaded or changed)"),
+        ),
+        DriveError::CanopenOwns => write_err(
+            out,
+            ErrorCode::CanopenOwns,
+            format_args!(
+                "{cmd}: a CANopen master commands the motor (NMT operational, CiA 402 operation \
+                 enabled); `status`, `tel`, `capture`, `config get` and `disable` still work"
+            ),
         ),
         DriveError::MpdccMode => write_err(
             out,

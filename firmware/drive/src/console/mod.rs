@@ -73,6 +73,8 @@ pub enum ErrorCode {
     Holding,
     /// `calibrate` while the rotor turns.
     RotorTurning,
+    /// A command that moves the motor while a CANopen master owns it.
+    CanopenOwns,
 }
 
 impl ErrorCode {
@@ -100,6 +102,7 @@ impl ErrorCode {
             ErrorCode::Aligning => "aligning",
             ErrorCode::Holding => "holding",
             ErrorCode::RotorTurning => "rotor-turning",
+            ErrorCode::CanopenOwns => "canopen-owns",
         }
     }
 }

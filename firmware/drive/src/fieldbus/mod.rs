@@ -10,6 +10,8 @@
 //!   and a [`objects::ConfigPort`] to the drive's configuration.
 //! - [`axis`]: the drive functions behind the CiA 402 state machine and
 //!   the modes' set-points, on the servo.
+//! - [`link`]: node, dictionary and axis in one value, with the counters
+//!   `status` shows; what a transport talks to.
 //! - [`eds`]: the EDS text, generated from the same tables; the committed
 //!   file `docs/canopen/drive.eds` is checked against it.
 //!
@@ -31,10 +33,12 @@
 
 pub mod axis;
 pub mod eds;
+pub mod link;
 pub mod objects;
 
 #[cfg(test)]
 mod tests;
 
 pub use axis::Axis;
+pub use link::{Link, LinkStatus};
 pub use objects::{ConfigPort, ConfigValues, DriveObjects, ProcessImage};

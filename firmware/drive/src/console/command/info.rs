@@ -78,6 +78,9 @@ pub fn execute<W: Write>(
             if let Some(g) = drv.gp0_guard() {
                 write_guard(out, &g, st.pl)?;
             }
+            if let Some(c) = drv.canopen() {
+                write!(out, "canopen: {c}\r\n")?;
+            }
         }
     }
     Ok(Outcome::Ok)

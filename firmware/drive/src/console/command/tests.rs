@@ -245,6 +245,8 @@ struct TestDrive {
     stalled_ms: u32,
     /// `mode mpdcc`'s loop (its progress set by hand).
     hil: Option<crate::hil::PacedStatus>,
+    /// The CANopen device's state (set by hand).
+    canopen: Option<crate::fieldbus::LinkStatus>,
 }
 
 impl TestDrive {
@@ -257,6 +259,7 @@ impl TestDrive {
             pl,
             stalled_ms: 0,
             hil: None,
+            canopen: None,
         }
     }
 }
@@ -277,6 +280,9 @@ impl DriveOps for TestDrive {
     }
     fn mpdcc_live(&mut self) -> Option<crate::hil::PacedStatus> {
         self.hil
+    }
+    fn canopen(&mut self) -> Option<crate::fieldbus::LinkStatus> {
+        self.canopen
     }
     fn enable(&mut self) -> Result<(), DriveError> {
         Ok(self.servo.enable(&mut self.pl)?)
@@ -1128,4 +1134,73 @@ fn debug_fault_reports_the_latched_fault_or_that_it_did_not_latch() {
     );
     // Hand-checked bits: FAULT_STATUS bit 0 is OVERCURRENT, bit 1 EXTERNAL.
     assert_eq!((Faults::OVERCURRENT, Faults::EXTERNAL), (1, 2));
+}
+
+/// While a CANopen master owns the motor, every command that moves it or
+/// changes how it is driven is refused with `canopen-owns` and changes
+/// nothing; queries, `disable`, `config get` and `status` answer, and
+/// `status` shows the device.
+#[test]
+fn a_canopen_master_owns_the_motor() {
+    use canopen::cia402::State;
+    use canopen::nmt::NmtState;
+    let mut d = TestDrive::new();
+    assert!(reply_on(&mut d, "mode foc").ends_with("OK\r\n"));
+    let mut st = crate::fieldbus::LinkStatus {
+        node_id: 1,
+        nmt: NmtState::Operational,
+        state: State::OperationEnabled,
+        mode: 8,
+        counters: Default::default(),
+        owns: true,
+    };
+    st.counters.syncs = 12;
+    d.canopen = Some(st);
+    for line in [
+        "enable",
+        "mode mpdtc",
+        "torque 0.1",
+        "step 0.2",
+        "vel 1",
+        "pos 1",
+        "pos zero",
+        "imp 0 0 1 0 0",
+        "move 1",
+        "sweep 100 1000 0.1",
+        "calibrate all",
+        "selftest sensors",
+        "config set mpdtc_t_tol 0.05",
+        "config reset",
+    ] {
+        let r = reply_on(&mut d, line);
+        let name = line.split(' ').next().unwrap();
+        assert!(
+            r.starts_with(&format!(
+                "ERR canopen-owns {name}: a CANopen master commands the motor"
+            )),
+            "{line}: {r}"
+        );
+        assert_one_final_line(&r);
+    }
+    assert_eq!(d.servo.mode(), Mode::Foc);
+    assert_eq!(
+        reply_on(&mut d, "config get mpdtc_t_tol"),
+        "mpdtc_t_tol = 0.08 Nm\r\nOK\r\n"
+    );
+    for line in ["mode", "torque", "disable", "fault", "config list", "tel"] {
+        let r = reply_on(&mut d, line);
+        assert!(!r.contains("canopen-owns"), "{line}: {r}");
+    }
+    let r = reply_on(&mut d, "status");
+    assert!(
+        r.contains("\r\ncanopen: node 1, nmt operational, cia402 operation-enabled, mode 8 (csp), syncs 12, rpdos 0, tpdos 0, sdos 0, errors 0, owns the motor\r\n"),
+        "{r}"
+    );
+    // Out of operation enabled, the console commands again.
+    d.canopen = Some(crate::fieldbus::LinkStatus {
+        state: State::SwitchOnDisabled,
+        owns: false,
+        ..st
+    });
+    assert!(reply_on(&mut d, "mode mpdtc").ends_with("OK\r\n"));
 }
