@@ -23,9 +23,11 @@
 //!   and modes of operation.
 //! - [`socketcand`]: the socketcand TCP text protocol, server side.
 //! - [`node`]: the node tying the services together.
+//! - [`busload`]: how much of a CAN bus a cyclic exchange takes.
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 
+pub mod busload;
 pub mod cia402;
 pub mod emcy;
 pub mod frame;

@@ -287,10 +287,21 @@ fn cyclic_position_follows_a_set_point_stream_one_tpdo_per_sync() {
     assert!(st.owns);
     let c = st.counters;
     assert_eq!((c.syncs, c.rpdos, c.tpdos, c.errors), (800, 800, 800, 0));
-    let line = st.to_string();
-    assert!(
-        line.starts_with("node 1, nmt operational, cia402 operation-enabled, mode 8 (csp), syncs 800, rpdos 800, tpdos 800, sdos "),
-        "{line}"
+    // 20 SDOs: 6 to enable, 13 to map the PDOs, 1 for 0x60F4. The line
+    // docs/canopen.md shows.
+    let line = std::format!("canopen: {st}");
+    assert_eq!(
+        line,
+        "canopen: node 1, nmt operational, cia402 operation-enabled, mode 8 (csp), syncs 800, \
+         rpdos 800, tpdos 800, sdos 20, errors 0, owns the motor"
     );
-    assert!(line.ends_with(", errors 0, owns the motor"), "{line}");
+    let doc = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../docs/canopen.md"
+    ))
+    .unwrap();
+    assert!(
+        doc.contains(&std::format!("\n{line}\n")),
+        "docs/canopen.md lacks {line}"
+    );
 }
