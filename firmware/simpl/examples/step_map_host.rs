@@ -21,16 +21,25 @@
 use drive::config::Config;
 use drive::pl::top::Mode;
 use drive::servo::{Servo, ServoConfig, StepResult};
+use models::pmsm::mpdtc_tuning::{
+    band_holds_one_period, period_torque_step_nm, Q_SHARE_MIDWAY, STEP_CASES_NM as CASES,
+};
+use models::pmsm::params::MotorParams;
 use simpl::{SimConfig, SimDrive};
 
-const CASES: [(f64, f64); 6] = [
-    (0.0, 0.4),
-    (0.0, 0.8),
-    (0.1, 0.9),
-    (-0.4, 0.4),
-    (0.4, -0.4),
-    (-0.8, 0.8),
-];
+/// Share of `current_limit` a cell's torque may need (the console map's
+/// `drivectl::step_map::CURRENT_HEADROOM`).
+const CURRENT_HEADROOM: f64 = 0.8;
+
+/// The nominal motor with its R, L, psi scaled by `f`.
+fn corner(f: (f64, f64, f64)) -> MotorParams {
+    let mut m = MotorParams::default();
+    m.r_s_ohm *= f.0;
+    m.l_d_h *= f.1;
+    m.l_q_h *= f.1;
+    m.psi_pm_wb *= f.2;
+    m
+}
 
 fn run(s: &mut Servo, sim: &mut SimDrive, n: u32, mut done: impl FnMut(&Servo) -> bool) -> bool {
     for _ in 0..n {
@@ -144,8 +153,12 @@ fn main() {
     for f in corners {
         for &ci in &cases {
             let case = CASES[ci];
-            let kt = 1.5 * 7.0 * models::pmsm::params::MotorParams::default().psi_pm_wb * f.2;
-            if case.0.abs().max(case.1.abs()) / kt > 0.8 * 14.0 {
+            let motor = corner(f);
+            let servo = ServoConfig::default();
+            let ts = servo.mpdtc_period_s();
+            if case.0.abs().max(case.1.abs()) / motor.k_t_nm_per_a()
+                > CURRENT_HEADROOM * servo.current_limit_a
+            {
                 continue;
             }
             for ph in 0..phases {
@@ -157,11 +170,7 @@ fn main() {
                 }
                 if let Ok(a) = std::env::var("TOLAUTO") {
                     let a: f64 = a.parse().unwrap();
-                    let m0 = models::pmsm::params::MotorParams::default();
-                    let hop = 1.5 * 7.0 * m0.psi_pm_wb * f.2 * 0.75f64.sqrt() * (1.0 / 64e3)
-                        / (m0.l_d_h * f.1)
-                        * (2.0 / 3.0)
-                        * m0.u_dc_v;
+                    let hop = period_torque_step_nm(&motor, ts, Q_SHARE_MIDWAY);
                     set.push(("mpdtc_t_tol".into(), a * hop));
                 }
                 let m = one(Mode::Mpdtc, f, case, &set, ph * 7);
@@ -193,14 +202,7 @@ fn main() {
                     }
                     _ => true,
                 };
-                // One active vector's torque change in one period at the locked
-                // angle (the q axis between two vectors: sqrt(3)/2 of U0).
-                let m0 = models::pmsm::params::MotorParams::default();
-                let hop = 1.5 * 7.0 * m0.psi_pm_wb * f.2 * 0.75f64.sqrt() * (1.0 / 64e3)
-                    / (m0.l_d_h * f.1)
-                    * (2.0 / 3.0)
-                    * m0.u_dc_v;
-                let bound = hop > 2.0 * 0.1 * (case.1 - case.0).abs();
+                let bound = !band_holds_one_period(&motor, ts, case.0, case.1);
                 let miss = miss && !bound;
                 n += 1;
                 if miss {

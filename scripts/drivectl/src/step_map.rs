@@ -11,15 +11,9 @@ use anyhow::{bail, Result};
 use models::pmsm::params::MotorParams;
 use std::fmt::Write as _;
 
-/// The six steps `(from, to)`, N m.
-pub const CASES: [(f64, f64); 6] = [
-    (0.0, 0.4),
-    (0.0, 0.8),
-    (0.1, 0.9),
-    (-0.4, 0.4),
-    (0.4, -0.4),
-    (-0.8, 0.8),
-];
+/// The six steps `(from, to)`, N m (the ones the MPDTC's tuning was
+/// measured on).
+pub use models::pmsm::mpdtc_tuning::STEP_CASES_NM as CASES;
 
 /// Factors of the corners, per parameter.
 pub const CORNER_FACTORS: [f64; 3] = [0.65, 1.0, 1.35];
@@ -95,7 +89,7 @@ pub fn corners(all: bool) -> Vec<Corner> {
 /// Torque constant of a surface PMSM, N m per A of peak phase current:
 /// `1.5 p psi`.
 pub fn torque_constant_nm_per_a(m: &MotorParams) -> f64 {
-    1.5 * f64::from(m.pole_pairs) * m.psi_pm_wb
+    m.k_t_nm_per_a()
 }
 
 /// Peak phase current a torque needs on the motor, A.
@@ -116,9 +110,11 @@ pub fn infeasible(m: &MotorParams, (from, to): (f64, f64), current_limit_a: f64)
     })
 }
 
-/// The MPDTC's control period on the drive, s (4 ADC periods of 391 PL
-/// cycles at 100 MHz).
-pub const MPDTC_PERIOD_S: f64 = 1564e-8;
+/// The MPDTC's control period on the drive with its default
+/// configuration, s (4 ADC periods of 391 PL cycles at 100 MHz).
+pub fn mpdtc_period_s() -> f64 {
+    drive::servo::ServoConfig::default().mpdtc_period_s()
+}
 
 /// Why no one-vector-per-period loop can meet the cell's settling band:
 /// one period of an active vector moves the torque further than the band
@@ -128,12 +124,12 @@ pub fn beyond_one_period(m: &MotorParams, (from, to): (f64, f64)) -> Option<Stri
     use models::pmsm::mpdtc_tuning::{
         band_holds_one_period, period_torque_step_nm, Q_SHARE_MIDWAY,
     };
-    if band_holds_one_period(m, MPDTC_PERIOD_S, from, to) {
+    if band_holds_one_period(m, mpdtc_period_s(), from, to) {
         return None;
     }
     Some(format!(
         "one period moves the torque {:.3} N m, the 10 % band is {:.3} N m wide",
-        period_torque_step_nm(m, MPDTC_PERIOD_S, Q_SHARE_MIDWAY),
+        period_torque_step_nm(m, mpdtc_period_s(), Q_SHARE_MIDWAY),
         2.0 * models::pmsm::metrics::settling_band(from, to)
     ))
 }

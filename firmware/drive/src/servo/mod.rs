@@ -187,6 +187,11 @@ impl Default for ServoConfig {
 }
 
 impl ServoConfig {
+    /// The MPDTC's control period, s: four ADC averaging periods.
+    pub fn mpdtc_period_s(&self) -> f64 {
+        period_s(4 * self.adc_period_cycles)
+    }
+
     /// `OC_LIMIT` for [`Self::current_limit_a`]: ADC counts, rounded down
     /// so that the trip is never above the limit; `None` beyond the 11-bit
     /// range.

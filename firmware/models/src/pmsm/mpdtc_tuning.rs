@@ -30,6 +30,18 @@ pub const Q_SHARE_MIDWAY: f64 = 0.866_025_403_784_438_6;
 /// 64 kHz) it gives K = 9,996 1/s.
 pub const K_TS_STEP_NM: f64 = 0.0119;
 
+/// The six torque steps `(from, to)` (N m, of a 1 N m limit) the tuning
+/// above was measured on and the step map judges (docs/mpdtc-step-map.md):
+/// from rest, to the limit's 0.8, across zero and back, the full reversal.
+pub const STEP_CASES_NM: [(f64, f64); 6] = [
+    (0.0, 0.4),
+    (0.0, 0.8),
+    (0.1, 0.9),
+    (-0.4, 0.4),
+    (0.4, -0.4),
+    (-0.8, 0.8),
+];
+
 /// Largest `K Ts` the derivation hands out: the integrator then moves the
 /// reference by at most half the error per period.
 pub const K_TS_MAX: f64 = 0.5;
