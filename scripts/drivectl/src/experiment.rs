@@ -214,7 +214,7 @@ pub(crate) fn wait_and_dump(s: &mut Session, timeout_s: f64, quiet: bool) -> Res
     Ok(rows)
 }
 
-fn write_csv(path: &Path, rows: &[Row]) -> Result<()> {
+pub(crate) fn write_csv(path: &Path, rows: &[Row]) -> Result<()> {
     let mut out = String::from("t_ms,i_d_A,i_q_A,torque_Nm,torque_ref_Nm,sw_state,adc_ia_raw\n");
     for r in rows {
         out += &format!(
@@ -238,7 +238,12 @@ fn range(v: impl Iterator<Item = f64> + Clone) -> (f64, f64) {
 
 /// Torque and reference (top), i_d and i_q (bottom) against time, up to
 /// `until_ms` after the trigger (`None`: the whole record).
-fn plot_record(path: &Path, title: &str, rows: &[Row], until_ms: Option<f64>) -> Result<()> {
+pub(crate) fn plot_record(
+    path: &Path,
+    title: &str,
+    rows: &[Row],
+    until_ms: Option<f64>,
+) -> Result<()> {
     let n = rows
         .iter()
         .take_while(|r| until_ms.is_none_or(|u| r.t_ms <= u))

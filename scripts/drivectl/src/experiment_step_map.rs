@@ -4,7 +4,7 @@
 //! values, `config set` for the controllers' model, `step` for each case).
 //! Cells, judgement and files: [`drivectl::step_map`].
 use crate::console::Target;
-use crate::experiment::{field, ok, open};
+use crate::experiment::{field, ok, open, plot_record, wait_and_dump, write_csv};
 use anyhow::{bail, Context as _, Result};
 use drivectl::link::{Final, Session};
 use drivectl::step_map::{self, Cell, Corner, Outcome, CASES};
@@ -103,16 +103,59 @@ pub fn run(a: StepMapArgs) -> Result<()> {
         sm.worst_overshoot_percent, sm.worst_settling_ratio, sm.worst_final_percent
     );
     println!("files: {} {}", csv.display(), md.display());
+    if let Some(i) = sm.worst {
+        let cell = &cells[i];
+        let mut s = open(&a.target).context("the worst cell's trace")?;
+        let r = trace_worst(&mut s, cell, &extra, a.window_ms, &a.out);
+        let _ = s.quit(Duration::from_secs(5));
+        r.context("the worst cell's trace")?;
+    }
     Ok(())
 }
 
-/// The six cases of one motor in both modes.
-fn motor_cells(
+/// Samples of the PL capture before the step's trigger.
+const TRACE_PRE: u32 = 16;
+
+/// The worst cell again, MPDTC and FOC, with the PL capture armed on the
+/// measured step: `worst-cell-<mode>.csv` and `.svg` in `out`.
+fn trace_worst(
     s: &mut Session,
-    c: &Corner,
+    cell: &Cell,
     extra: &[(String, f64)],
     window_ms: f64,
-) -> Result<Vec<Cell>> {
+    out: &std::path::Path,
+) -> Result<()> {
+    set_motor(s, &cell.corner, extra)?;
+    let (from, to) = cell.case;
+    for mode in ["mpdtc", "foc"] {
+        ok(s, &format!("mode {mode}"), CMD)?;
+        ok(s, "enable", CMD)?;
+        dwell(s, from)?;
+        ok(s, &format!("capture arm step {TRACE_PRE}"), CMD)?;
+        let r = until_aligned(s, &format!("step {to} {window_ms}"))?;
+        let rows = wait_and_dump(s, 60.0, true)?;
+        ok(s, "disable", CMD)?;
+        let (csv, svg) = (
+            out.join(format!("worst-cell-{mode}.csv")),
+            out.join(format!("worst-cell-{mode}.svg")),
+        );
+        write_csv(&csv, &rows)?;
+        let settling = field(&r, "settling_time").unwrap_or("none");
+        let overshoot = field(&r, "overshoot").unwrap_or("?");
+        let title = format!(
+            "{} {from} -> {to} N m, R x L x psi = {} (QEMU): settling {settling}, overshoot {overshoot}",
+            mode.to_uppercase(),
+            cell.corner.label()
+        );
+        plot_record(&svg, &title, &rows, Some(3.0))?;
+        println!("worst cell ({mode}): {} {}", csv.display(), svg.display());
+    }
+    Ok(())
+}
+
+/// The motor's true values in the simulation and the same in the
+/// controllers' model, then the extra settings.
+fn set_motor(s: &mut Session, c: &Corner, extra: &[(String, f64)]) -> Result<()> {
     let m = c.motor();
     for (k, v) in [("r_s", m.r_s_ohm), ("l", m.l_d_h), ("psi_pm", m.psi_pm_wb)] {
         ok(s, &format!("sim set {k} {v}"), CMD)?;
@@ -128,6 +171,18 @@ fn motor_cells(
     for (k, v) in extra {
         ok(s, &format!("config set {k} {v}"), CMD)?;
     }
+    Ok(())
+}
+
+/// The six cases of one motor in both modes.
+fn motor_cells(
+    s: &mut Session,
+    c: &Corner,
+    extra: &[(String, f64)],
+    window_ms: f64,
+) -> Result<Vec<Cell>> {
+    let m = c.motor();
+    set_motor(s, c, extra)?;
     let current_limit: f64 = {
         // `current_limit = 14 A`
         let r = ok(s, "config get current_limit", CMD)?;
@@ -205,6 +260,14 @@ fn until_aligned(s: &mut Session, line: &str) -> Result<drivectl::link::Reply> {
 /// the reference is already there), then the step to `to` in a window of
 /// `window_ms`.
 fn one_step(s: &mut Session, (from, to): (f64, f64), window_ms: f64) -> Result<Outcome> {
+    dwell(s, from)?;
+    let r = until_aligned(s, &format!("step {to} {window_ms}"))?;
+    step_map::parse_step(|k| field(&r, k).map(str::to_string))
+}
+
+/// The 20 ms dwell at `from` before a measured step (reached by a step
+/// from 0.1 N m beside it when the reference is already there).
+fn dwell(s: &mut Session, from: f64) -> Result<()> {
     let r = until_aligned(s, "torque")?;
     let now: f64 = field(&r, "torque_ref")
         .and_then(|v| v.parse().ok())
@@ -218,6 +281,5 @@ fn one_step(s: &mut Session, (from, to): (f64, f64), window_ms: f64) -> Result<O
         until_aligned(s, &format!("step {beside} 2"))?;
     }
     until_aligned(s, &format!("step {from} {DWELL_MS}"))?;
-    let r = until_aligned(s, &format!("step {to} {window_ms}"))?;
-    step_map::parse_step(|k| field(&r, k).map(str::to_string))
+    Ok(())
 }

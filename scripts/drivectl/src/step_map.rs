@@ -315,8 +315,44 @@ pub struct Summary {
     pub worst_overshoot_percent: f64,
     pub worst_settling_ratio: f64,
     pub worst_final_percent: f64,
-    /// Index of the cell with the worst settling ratio.
+    /// Index of the cell furthest from its targets ([`badness`]).
     pub worst: Option<usize>,
+}
+
+/// How far a cell's MPDTC step is from its targets, as the largest of its
+/// ratios to them: overshoot / 10 %, final error / 2 %, settling / the
+/// FOC's and, on the nominal motor's 0 -> 0.4 and -0.4 -> 0.4, settling /
+/// 0.19 ms. At most 1 meets every target; a step that failed or did not
+/// settle is infinite; a skipped cell is 0.
+pub fn badness(c: &Cell) -> f64 {
+    let (settling_s, overshoot) = match &c.mpdtc {
+        Outcome::Skipped(_) => return 0.0,
+        Outcome::Failed(_) => return f64::INFINITY,
+        Outcome::Measured {
+            settling_s,
+            overshoot_percent,
+            ..
+        } => (*settling_s, *overshoot_percent),
+    };
+    let Some(t) = settling_s else {
+        return f64::INFINITY;
+    };
+    let fe = c.mpdtc.final_error_percent(c.case).unwrap_or(f64::INFINITY);
+    let mut b = (overshoot / TARGET_OVERSHOOT_PERCENT).max(fe / TARGET_FINAL_PERCENT);
+    if let Outcome::Measured {
+        settling_s: Some(t_foc),
+        ..
+    } = c.foc
+    {
+        if t_foc > 0.0 {
+            b = b.max(t / t_foc);
+        }
+    }
+    let nominal_case = c.case == (0.0, 0.4) || c.case == (-0.4, 0.4);
+    if c.corner.is_nominal() && nominal_case {
+        b = b.max(t / TARGET_NOMINAL_SETTLING_S);
+    }
+    b
 }
 
 pub fn summary(cells: &[Cell]) -> Summary {
@@ -362,13 +398,12 @@ pub fn summary(cells: &[Cell]) -> Summary {
                 (None, _) => f64::INFINITY,
                 _ => continue,
             };
-            if ratio > s.worst_settling_ratio {
-                s.worst_settling_ratio = ratio;
-                s.worst = Some(i);
-            }
+            s.worst_settling_ratio = s.worst_settling_ratio.max(ratio);
         } else {
             // A refused or tripped step is the worst there is.
             s.worst_settling_ratio = f64::INFINITY;
+        }
+        if s.worst.is_none_or(|w| badness(c) > badness(&cells[w])) {
             s.worst = Some(i);
         }
     }
@@ -588,6 +623,19 @@ mod tests {
         let s = summary(&[ok.clone(), slow.clone(), skip]);
         assert_eq!((s.run, s.meeting, s.skipped, s.worst), (2, 1, 1, Some(1)));
         assert!((s.worst_settling_ratio - 0.31 / 0.3).abs() < 1e-9);
+        // Badness by hand: the largest ratio to a target.
+        let near = |a: f64, b: f64| (a - b).abs() < 1e-9;
+        assert!(near(badness(&ok), 0.2 / 0.3));
+        assert!(near(badness(&os), 10.5 / 10.0));
+        assert!(near(badness(&fin), (0.017 / 0.8 * 100.0) / 2.0));
+        assert!(near(badness(&slow), 0.31 / 0.3));
+        assert!(near(badness(&nom), 0.2 / 0.19));
+        assert_eq!(badness(&none), f64::INFINITY);
+        assert_eq!(badness(&trip), f64::INFINITY);
+        // The worst cell is the one furthest from a target: the final
+        // error's 1.0625, not the slowest settling's 1.033.
+        let s = summary(&[ok.clone(), os, fin, slow, nom]);
+        assert_eq!(s.worst, Some(2));
     }
 
     #[test]
