@@ -29,6 +29,11 @@ pub struct StepMapArgs {
     /// (repeatable), e.g. --set mpdtc_k=8000.
     #[arg(long = "set")]
     pub set: Vec<String>,
+    /// Also run five of the motors (`step_map::CALIBRATED_CORNERS`) with
+    /// the controllers' model from `calibrate all` on that motor instead of
+    /// its true values.
+    #[arg(long)]
+    pub calibrated: bool,
 }
 
 const CMD: Duration = Duration::from_secs(60);
@@ -54,7 +59,7 @@ pub fn run(a: StepMapArgs) -> Result<()> {
         .collect::<Result<Vec<_>>>()?;
     std::fs::create_dir_all(&a.out)
         .with_context(|| format!("cannot create {}", a.out.display()))?;
-    let corners = step_map::corners(a.motors == "all");
+    let corners = step_map::corners(a.motors == "all", a.calibrated);
     let t0 = Instant::now();
     let mut cells = Vec::new();
     for (i, c) in corners.iter().enumerate() {
@@ -65,16 +70,22 @@ pub fn run(a: StepMapArgs) -> Result<()> {
             c.label(),
             t0.elapsed().as_secs_f64()
         );
+        let model = if c.calibrated {
+            calibrated_model(&a.target, c).with_context(|| format!("motor {}", c.label()))?
+        } else {
+            c.motor()
+        };
         let mut s = open(&a.target).with_context(|| format!("motor {}", c.label()))?;
-        let r = motor_cells(&mut s, c, &extra, a.window_ms);
+        let r = motor_cells(&mut s, c, &model, &extra, a.window_ms);
         let _ = s.quit(Duration::from_secs(5));
         cells.extend(r.with_context(|| format!("motor {}", c.label()))?);
     }
     let how = format!(
-        "`drivectl experiment step-map --motors {} --window-ms {}{}` ({} PL), locked rotor, \
+        "`drivectl experiment step-map --motors {}{} --window-ms {}{}` ({} PL), locked rotor, \
          `torque_limit` 1 N m; each step after a {DWELL_MS} ms dwell at its start value; \
          {:.0} s.",
         a.motors,
+        if a.calibrated { " --calibrated" } else { "" },
         a.window_ms,
         a.set
             .iter()
@@ -105,8 +116,15 @@ pub fn run(a: StepMapArgs) -> Result<()> {
     println!("files: {} {}", csv.display(), md.display());
     if let Some(i) = sm.worst {
         let cell = &cells[i];
+        // A calibrated motor is calibrated again: the same procedure on
+        // the same simulated motor, within its error bars.
+        let model = if cell.corner.calibrated {
+            calibrated_model(&a.target, &cell.corner).context("the worst cell's trace")?
+        } else {
+            cell.corner.motor()
+        };
         let mut s = open(&a.target).context("the worst cell's trace")?;
-        let r = trace_worst(&mut s, cell, &extra, a.window_ms, &a.out);
+        let r = trace_worst(&mut s, cell, &model, &extra, a.window_ms, &a.out);
         let _ = s.quit(Duration::from_secs(5));
         r.context("the worst cell's trace")?;
     }
@@ -121,11 +139,12 @@ const TRACE_PRE: u32 = 16;
 fn trace_worst(
     s: &mut Session,
     cell: &Cell,
+    model: &models::pmsm::params::MotorParams,
     extra: &[(String, f64)],
     window_ms: f64,
     out: &std::path::Path,
 ) -> Result<()> {
-    set_motor(s, &cell.corner, extra)?;
+    set_motor(s, &cell.corner, model, extra)?;
     let (from, to) = cell.case;
     for mode in ["mpdtc", "foc"] {
         ok(s, &format!("mode {mode}"), CMD)?;
@@ -153,17 +172,24 @@ fn trace_worst(
     Ok(())
 }
 
-/// The motor's true values in the simulation and the same in the
-/// controllers' model, then the extra settings.
-fn set_motor(s: &mut Session, c: &Corner, extra: &[(String, f64)]) -> Result<()> {
+/// The motor's true values in the simulation, `model` in the
+/// controllers' (the true values, or what `calibrate all` measured), then
+/// the extra settings.
+fn set_motor(
+    s: &mut Session,
+    c: &Corner,
+    model: &models::pmsm::params::MotorParams,
+    extra: &[(String, f64)],
+) -> Result<()> {
     let m = c.motor();
     for (k, v) in [("r_s", m.r_s_ohm), ("l", m.l_d_h), ("psi_pm", m.psi_pm_wb)] {
         ok(s, &format!("sim set {k} {v}"), CMD)?;
     }
     for (k, v) in [
-        ("motor_r_s", m.r_s_ohm),
-        ("motor_l", m.l_d_h),
-        ("motor_psi_pm", m.psi_pm_wb),
+        ("motor_pole_pairs", f64::from(model.pole_pairs)),
+        ("motor_r_s", model.r_s_ohm),
+        ("motor_l", model.l_d_h),
+        ("motor_psi_pm", model.psi_pm_wb),
         ("torque_limit", 1.0),
     ] {
         ok(s, &format!("config set {k} {v}"), CMD)?;
@@ -178,11 +204,12 @@ fn set_motor(s: &mut Session, c: &Corner, extra: &[(String, f64)]) -> Result<()>
 fn motor_cells(
     s: &mut Session,
     c: &Corner,
+    model: &models::pmsm::params::MotorParams,
     extra: &[(String, f64)],
     window_ms: f64,
 ) -> Result<Vec<Cell>> {
     let m = c.motor();
-    set_motor(s, c, extra)?;
+    set_motor(s, c, model, extra)?;
     let current_limit: f64 = {
         // `current_limit = 14 A`
         let r = ok(s, "config get current_limit", CMD)?;
@@ -282,4 +309,43 @@ fn dwell(s: &mut Session, from: f64) -> Result<()> {
     }
     until_aligned(s, &format!("step {from} {DWELL_MS}"))?;
     Ok(())
+}
+
+/// What `calibrate all` measures on the corner's motor, in a drive of its
+/// own (the calibration turns the rotor; the map's runs start from the
+/// locked rotor's own angle).
+fn calibrated_model(t: &Target, c: &Corner) -> Result<models::pmsm::params::MotorParams> {
+    let mut s = open(t)?;
+    let m = calibrate_in(&mut s, c);
+    let _ = s.quit(Duration::from_secs(5));
+    m
+}
+
+/// `calibrate all` on a free rotor with the corner's true values in the
+/// simulation; the model the drive configured from it.
+fn calibrate_in(s: &mut Session, c: &Corner) -> Result<models::pmsm::params::MotorParams> {
+    let m = c.motor();
+    for (k, v) in [("r_s", m.r_s_ohm), ("l", m.l_d_h), ("psi_pm", m.psi_pm_wb)] {
+        ok(s, &format!("sim set {k} {v}"), CMD)?;
+    }
+    ok(s, "sim set locked 0", CMD)?;
+    ok(s, "calibrate all", Duration::from_secs(300))?;
+    let get = |s: &mut Session, name: &str| -> Result<f64> {
+        let r = ok(s, &format!("config get {name}"), CMD)?;
+        let prefix = format!("{name} = ");
+        r.lines
+            .iter()
+            .find_map(|l| l.strip_prefix(prefix.as_str()))
+            .and_then(|v| v.split_whitespace().next())
+            .and_then(|v| v.parse().ok())
+            .with_context(|| format!("no value in {:?}", r.lines))
+    };
+    Ok(models::pmsm::params::MotorParams {
+        r_s_ohm: get(s, "motor_r_s")?,
+        l_d_h: get(s, "motor_l")?,
+        l_q_h: get(s, "motor_l")?,
+        psi_pm_wb: get(s, "motor_psi_pm")?,
+        pole_pairs: get(s, "motor_pole_pairs")? as u32,
+        ..m
+    })
 }

@@ -31,23 +31,39 @@ pub const TARGET_FINAL_PERCENT: f64 = 2.0;
 /// and -0.4 -> 0.4, s (the paper's 0.19 ms).
 pub const TARGET_NOMINAL_SETTLING_S: f64 = 0.19e-3;
 
-/// A motor of the map: factors on the nominal R, L, psi.
+/// A motor of the map: factors on the nominal R, L, psi, and whether the
+/// controllers get the motor's true values or what `calibrate all`
+/// measured on it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Corner {
     pub r: f64,
     pub l: f64,
     pub psi: f64,
+    pub calibrated: bool,
 }
+
+/// The motors the map also runs with the controllers' model from
+/// `calibrate all` (`--calibrated`): the nominal one, the two extreme
+/// corners and two with R and L apart.
+pub const CALIBRATED_CORNERS: [(f64, f64, f64); 5] = [
+    (1.0, 1.0, 1.0),
+    (0.65, 0.65, 0.65),
+    (1.35, 1.35, 1.35),
+    (0.65, 1.35, 1.35),
+    (1.35, 0.65, 0.65),
+];
 
 impl Corner {
     pub const NOMINAL: Corner = Corner {
         r: 1.0,
         l: 1.0,
         psi: 1.0,
+        calibrated: false,
     };
 
+    /// The nominal motor, with either model.
     pub fn is_nominal(&self) -> bool {
-        *self == Self::NOMINAL
+        (self.r, self.l, self.psi) == (1.0, 1.0, 1.0)
     }
 
     /// The motor's parameters (nominal ones scaled).
@@ -62,24 +78,46 @@ impl Corner {
         }
     }
 
-    /// `r x l x psi`, e.g. `0.65 x 1 x 1.35`.
+    /// `r x l x psi`, e.g. `0.65 x 1 x 1.35`, and ` (calibrated)` when
+    /// the model is `calibrate all`'s.
     pub fn label(&self) -> String {
-        format!("{} x {} x {}", self.r, self.l, self.psi)
+        let cal = if self.calibrated { " (calibrated)" } else { "" };
+        format!("{} x {} x {}{cal}", self.r, self.l, self.psi)
     }
 }
 
-/// Which motors: `nominal`, or `all` (nominal, then the 26 other corners).
-pub fn corners(all: bool) -> Vec<Corner> {
+/// Which motors: `nominal`, or `all` (nominal, then the 26 other corners),
+/// each with its true values in the model; with `calibrated`, then the
+/// [`CALIBRATED_CORNERS`] among them with `calibrate all`'s model.
+pub fn corners(all: bool, calibrated: bool) -> Vec<Corner> {
     let mut v = vec![Corner::NOMINAL];
     if all {
         for r in CORNER_FACTORS {
             for l in CORNER_FACTORS {
                 for psi in CORNER_FACTORS {
-                    let c = Corner { r, l, psi };
+                    let c = Corner {
+                        r,
+                        l,
+                        psi,
+                        calibrated: false,
+                    };
                     if !c.is_nominal() {
                         v.push(c);
                     }
                 }
+            }
+        }
+    }
+    if calibrated {
+        let present: Vec<Corner> = v.clone();
+        for (r, l, psi) in CALIBRATED_CORNERS {
+            if present.iter().any(|c| (c.r, c.l, c.psi) == (r, l, psi)) {
+                v.push(Corner {
+                    r,
+                    l,
+                    psi,
+                    calibrated: true,
+                });
             }
         }
     }
@@ -265,19 +303,24 @@ fn csv_outcome(o: &Outcome, case: (f64, f64)) -> String {
 pub fn csv(cells: &[Cell]) -> String {
     let mut s = String::from(
         "r_factor,l_factor,psi_factor,from_Nm,to_Nm,mode,outcome,settling_ms,overshoot_percent,\
-         final_error_percent,switching_per_leg_Hz,note\n",
+         final_error_percent,switching_per_leg_Hz,note,model\n",
     );
     for c in cells {
         for (mode, o) in [("mpdtc", &c.mpdtc), ("foc", &c.foc)] {
             let _ = writeln!(
                 s,
-                "{},{},{},{},{},{mode},{}",
+                "{},{},{},{},{},{mode},{},{}",
                 c.corner.r,
                 c.corner.l,
                 c.corner.psi,
                 c.case.0,
                 c.case.1,
-                csv_outcome(o, c.case)
+                csv_outcome(o, c.case),
+                if c.corner.calibrated {
+                    "calibrated"
+                } else {
+                    "true"
+                }
             );
         }
     }
@@ -490,11 +533,22 @@ mod tests {
 
     #[test]
     fn the_map_has_the_nominal_motor_and_26_corners() {
-        let c = corners(true);
+        let c = corners(true, false);
         assert_eq!(c.len(), 27);
         assert!(c[0].is_nominal());
         assert_eq!(c.iter().filter(|c| c.is_nominal()).count(), 1);
-        assert_eq!(corners(false), vec![Corner::NOMINAL]);
+        assert_eq!(corners(false, false), vec![Corner::NOMINAL]);
+        // Five more with the calibrated model, each a corner of the 27.
+        let cal = corners(true, true);
+        assert_eq!(cal.len(), 32);
+        assert!(cal[27..].iter().all(|c| c.calibrated
+            && c.label().ends_with(" (calibrated)")
+            && cal[..27]
+                .iter()
+                .any(|t| (t.r, t.l, t.psi) == (c.r, c.l, c.psi))));
+        assert!(cal[27].is_nominal());
+        // The nominal map alone gets the nominal motor's calibrated twin.
+        assert_eq!(corners(false, true).len(), 2);
     }
 
     #[test]
@@ -504,6 +558,7 @@ mod tests {
             r: 1.0,
             l: 1.0,
             psi: 0.65,
+            calibrated: false,
         }
         .motor();
         assert!((torque_constant_nm_per_a(&weak) - 0.063_39).abs() < 1e-4);
@@ -527,6 +582,7 @@ mod tests {
             r: 1.0,
             l: 0.65,
             psi: 1.0,
+            calibrated: false,
         }
         .motor();
         let nominal = Corner::NOMINAL.motor();
@@ -552,6 +608,7 @@ mod tests {
             r: 1.0,
             l: 0.65,
             psi: 1.0,
+            calibrated: false,
         };
         // Meets all: faster than the FOC, 5 % overshoot, 1 % final error.
         let ok = cell(
