@@ -1,0 +1,542 @@
+//! A register-level model of the Zynq-7000 PS CAN controller (UG585
+//! chapter 18 and appendix B; the offsets and fields of
+//! `regmap::ps_can`), behind [`RegisterBus`] at one controller's base
+//! address, for host tests of the driver `drive::can`.
+//!
+//! Modules: [`fifo`] (messages and the 64-deep FIFOs), [`confinement`]
+//! (error counters by ISO 11898-1), [`bus`] (the wire between models:
+//! arbitration, acknowledge, delivery).
+//!
+//! What it models, as the TRM describes the controller:
+//! - `SRR`: `SRST` resets every register and both FIFOs; `CEN = 0` is
+//!   configuration mode (`SR.CONFIG`, `SR.ESTAT = 00`), where alone
+//!   `MSR`, `BRPR` and `BTR` take writes (writes while enabled are ignored
+//!   and counted in [`PsCanModel::ignored_config_writes`]).
+//! - `MSR`: loopback (frames go to the own RX FIFO, not onto the bus), snoop
+//!   (receives, never acknowledges or transmits), sleep (off the bus).
+//! - TX FIFO (64) and high-priority buffer (1, sent first): the write of
+//!   `DATA2` queues the staged words; a `DATA2` write with no room drops
+//!   the message and counts it in [`PsCanModel::dropped_tx_writes`].
+//! - RX FIFO (64): the read of `RXFIFO_DATA2` removes the oldest message; a
+//!   read while empty sets `ISR.RXUFLW`; a received message with no room
+//!   is dropped, sets `ISR.RXOFLW` and is counted in
+//!   [`PsCanModel::rx_dropped`].
+//! - Acceptance filters: with no `AFR.UAFn` set every message passes;
+//!   otherwise a message passes when for some filter in use
+//!   `ID & AFMR == AFIR & AFMR`. `AFMRn`/`AFIRn` take writes only while
+//!   `UAFn` is 0 (`SR.ACFBSY` never reads 1 here: the model is immediate).
+//! - `ISR`/`IER`/`ICR`: sticky flags cleared by `ICR`, a condition still
+//!   present (RX FIFO not empty, TX FIFO full or empty, buffer full) wins
+//!   over the clear. `ESR` is write 1 to clear.
+//! - `ECR` and `SR.ESTAT`/`SR.ERRWRN` from [`confinement`].
+//!
+//! Not modelled: timing (a frame is one [`bus::step`]), the timestamp
+//! (`RXT` reads 0), watermark interrupts, sleep wake-up, the stuff, form and
+//! CRC checks themselves (errors come from the hooks
+//! [`PsCanModel::inject_tx_bit_errors`] and
+//! [`PsCanModel::inject_rx_errors`], or from a missing acknowledge), and
+//! whether entering configuration mode clears the error counters (here it
+//! does not; `SRST` does).
+
+pub mod bus;
+pub mod confinement;
+pub mod fifo;
+
+use confinement::{Confinement, State};
+use fifo::{Fifo, Message};
+use regmap::bus::{BusError, RegisterBus};
+use regmap::ps_can as reg;
+
+/// Error warning limit of `SR.ERRWRN`: a counter at 96 or more.
+const ERROR_WARNING_AT: u8 = 96;
+/// `MSR`'s implemented bits.
+const MSR_BITS: u32 = reg::MSR_SLEEP | reg::MSR_LBACK | reg::MSR_SNOOP;
+/// `BTR`'s implemented bits (SJW 8:7, TS2 6:4, TS1 3:0).
+const BTR_BITS: u32 = 0x1FF;
+/// `AFR`'s implemented bits.
+const AFR_BITS: u32 = 0xF;
+/// `ESR`'s implemented bits.
+const ESR_BITS: u32 = 0x1F;
+
+/// What the controller does on the bus, from `SRR` and `MSR`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BusMode {
+    /// `CEN = 0`.
+    Configuration,
+    /// Transmits, receives and acknowledges.
+    Normal,
+    /// Internal loopback.
+    Loopback,
+    /// Receives only.
+    Snoop,
+    /// Sleep.
+    Sleep,
+}
+
+/// One controller.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PsCanModel {
+    base: usize,
+    cen: bool,
+    msr: u32,
+    brpr: u32,
+    btr: u32,
+    esr: u32,
+    isr: u32,
+    ier: u32,
+    tcr: u32,
+    wir: u32,
+    afr: u32,
+    afmr: [u32; reg::FILTER_COUNT],
+    afir: [u32; reg::FILTER_COUNT],
+    tx_stage: Message,
+    hpb_stage: Message,
+    tx_fifo: Fifo,
+    hpb: Option<Message>,
+    rx_fifo: Fifo,
+    errors: Confinement,
+    bit_errors_pending: u32,
+    /// Writes to `MSR`, `BRPR` or `BTR` while enabled (ignored, as the TRM
+    /// says those registers are writable in configuration mode only).
+    pub ignored_config_writes: u32,
+    /// Writes to `AFMRn`/`AFIRn` while `AFR.UAFn` was set (ignored).
+    pub ignored_filter_writes: u32,
+    /// `DATA2` writes with no room in the TX FIFO or buffer (message lost).
+    pub dropped_tx_writes: u32,
+    /// Received messages the full RX FIFO dropped.
+    pub rx_dropped: u32,
+}
+
+impl PsCanModel {
+    /// A controller after reset at `base` (e.g. `regmap::ps_can::CAN0_BASE`).
+    pub fn new(base: usize) -> Self {
+        Self {
+            base,
+            cen: false,
+            msr: 0,
+            brpr: 0,
+            btr: 0,
+            esr: 0,
+            isr: 0,
+            ier: 0,
+            tcr: 0,
+            wir: 0,
+            afr: 0,
+            afmr: [0; reg::FILTER_COUNT],
+            afir: [0; reg::FILTER_COUNT],
+            tx_stage: Message::default(),
+            hpb_stage: Message::default(),
+            tx_fifo: Fifo::default(),
+            hpb: None,
+            rx_fifo: Fifo::default(),
+            errors: Confinement::default(),
+            bit_errors_pending: 0,
+            ignored_config_writes: 0,
+            ignored_filter_writes: 0,
+            dropped_tx_writes: 0,
+            rx_dropped: 0,
+        }
+        .with_levels()
+    }
+
+    fn with_levels(mut self) -> Self {
+        self.assert_levels();
+        self
+    }
+
+    /// `SRR.SRST`: every register and FIFO to reset; the model-side counts
+    /// and pending injected errors stay.
+    fn reset(&mut self) {
+        let keep = (
+            self.ignored_config_writes,
+            self.ignored_filter_writes,
+            self.dropped_tx_writes,
+            self.rx_dropped,
+            self.bit_errors_pending,
+        );
+        *self = Self::new(self.base);
+        (
+            self.ignored_config_writes,
+            self.ignored_filter_writes,
+            self.dropped_tx_writes,
+            self.rx_dropped,
+            self.bit_errors_pending,
+        ) = keep;
+    }
+
+    /// The mode `SRR` and `MSR` select.
+    pub fn mode(&self) -> BusMode {
+        if !self.cen {
+            BusMode::Configuration
+        } else if self.msr & reg::MSR_LBACK != 0 {
+            BusMode::Loopback
+        } else if self.msr & reg::MSR_SNOOP != 0 {
+            BusMode::Snoop
+        } else if self.msr & reg::MSR_SLEEP != 0 {
+            BusMode::Sleep
+        } else {
+            BusMode::Normal
+        }
+    }
+
+    /// The fault confinement state.
+    pub fn state(&self) -> State {
+        self.errors.state()
+    }
+
+    /// Messages waiting in the RX FIFO.
+    pub fn rx_len(&self) -> usize {
+        self.rx_fifo.len()
+    }
+
+    /// Messages waiting for transmission (FIFO and buffer).
+    pub fn tx_len(&self) -> usize {
+        self.tx_fifo.len() + usize::from(self.hpb.is_some())
+    }
+
+    /// Hook: the next `n` transmission attempts of this node each meet a
+    /// bit error (the node reads back a level it did not send).
+    pub fn inject_tx_bit_errors(&mut self, n: u32) {
+        self.bit_errors_pending = self.bit_errors_pending.saturating_add(n);
+    }
+
+    /// Hook: this node, on the bus, detects `n` errors while receiving
+    /// (recorded as CRC errors).
+    pub fn inject_rx_errors(&mut self, n: u32) {
+        for _ in 0..n {
+            self.receive_error(reg::ESR_CRCER);
+        }
+    }
+
+    /// Hook: the bus stays recessive (idle) for `bits` bit times.
+    pub fn idle_bits(&mut self, bits: u32) {
+        if self.on_bus() {
+            self.errors.recessive(bits);
+        }
+    }
+
+    /// Watches the bus: enabled in normal or snoop mode (also in bus off,
+    /// where it counts recessive bits toward recovery). A loopback node
+    /// keeps its frames to itself.
+    pub fn on_bus(&self) -> bool {
+        matches!(self.mode(), BusMode::Normal | BusMode::Snoop)
+    }
+
+    /// Acknowledges frames: on the bus in normal mode, not bus off.
+    pub fn acknowledges(&self) -> bool {
+        self.mode() == BusMode::Normal && self.errors.state() != State::BusOff
+    }
+
+    /// The message this node would send next (buffer first), if it may
+    /// transmit (normal or loopback mode, not bus off).
+    pub fn pending(&self) -> Option<Message> {
+        if !matches!(self.mode(), BusMode::Normal | BusMode::Loopback)
+            || self.errors.state() == State::BusOff
+        {
+            return None;
+        }
+        self.hpb.or_else(|| self.tx_fifo.front().copied())
+    }
+
+    /// The pending message went out: removes it; `TXOK`; TEC down by one.
+    fn transmitted(&mut self) {
+        if self.hpb.take().is_none() {
+            self.tx_fifo.pop();
+        }
+        self.errors.transmit_ok();
+        self.isr |= reg::IXR_TXOK;
+        self.assert_levels();
+    }
+
+    /// The pending message met an error (it stays queued for the
+    /// automatic retransmission).
+    fn transmit_error(&mut self, esr: u32, ack: bool) {
+        self.esr |= esr;
+        self.isr |= reg::IXR_ERROR;
+        if self.errors.transmit_error(ack) {
+            self.isr |= reg::IXR_BSOFF;
+        }
+    }
+
+    fn receive_error(&mut self, esr: u32) {
+        if self.on_bus() && self.errors.state() != State::BusOff {
+            self.esr |= esr;
+            self.isr |= reg::IXR_ERROR;
+            self.errors.receive_error();
+        }
+    }
+
+    /// Consumes one injected bit error, if any.
+    fn take_bit_error(&mut self) -> bool {
+        let hit = self.bit_errors_pending > 0;
+        self.bit_errors_pending = self.bit_errors_pending.saturating_sub(1);
+        hit
+    }
+
+    /// Hook for a test peer, and the bus's delivery: a frame `m` arrived
+    /// without error. Counts the reception, then filters and stores it.
+    pub fn deliver(&mut self, m: &Message) {
+        let own_loopback = self.mode() == BusMode::Loopback;
+        if !(self.on_bus() || own_loopback) || self.errors.state() == State::BusOff {
+            return;
+        }
+        self.errors.receive_ok();
+        if !self.accepts(m) {
+            return;
+        }
+        let stored = Message {
+            dlc: m.dlc & (reg::DLC_MASK << reg::DLC_SHIFT),
+            ..*m
+        };
+        if self.rx_fifo.push(stored) {
+            self.isr |= reg::IXR_RXOK;
+        } else {
+            self.rx_dropped += 1;
+            self.isr |= reg::IXR_RXOFLW;
+        }
+        self.assert_levels();
+    }
+
+    /// The acceptance filters' verdict on `m`.
+    pub fn accepts(&self, m: &Message) -> bool {
+        if self.afr & AFR_BITS == 0 {
+            return true;
+        }
+        (0..reg::FILTER_COUNT)
+            .filter(|n| self.afr & (1 << n) != 0)
+            .any(|n| m.id & self.afmr[n] == self.afir[n] & self.afmr[n])
+    }
+
+    /// Sets the flags whose condition holds.
+    fn assert_levels(&mut self) {
+        let mut set = 0;
+        if !self.rx_fifo.is_empty() {
+            set |= reg::IXR_RXNEMP;
+        }
+        if self.tx_fifo.is_full() {
+            set |= reg::IXR_TXFLL;
+        }
+        if self.hpb.is_some() {
+            set |= reg::IXR_TXBFLL;
+        }
+        if self.tx_fifo.is_empty() && self.hpb.is_none() {
+            set |= reg::IXR_TXFEMP;
+        }
+        self.isr |= set;
+    }
+
+    fn status(&self) -> u32 {
+        let mode = match self.mode() {
+            BusMode::Configuration => reg::SR_CONFIG,
+            BusMode::Normal => reg::SR_NORMAL,
+            BusMode::Loopback => reg::SR_LBACK,
+            BusMode::Snoop => reg::SR_SNOOP,
+            BusMode::Sleep => reg::SR_SLEEP,
+        };
+        let estat = match (self.cen, self.errors.state()) {
+            (false, _) => reg::ESTAT_CONFIG,
+            (true, State::Active) => reg::ESTAT_ACTIVE,
+            (true, State::Passive) => reg::ESTAT_PASSIVE,
+            (true, State::BusOff) => reg::ESTAT_BUS_OFF,
+        };
+        let mut sr = mode | estat << reg::SR_ESTAT_SHIFT;
+        if self.cen {
+            // Between frames the modelled bus is always idle.
+            sr |= reg::SR_BIDLE;
+        }
+        if self.errors.tec() >= ERROR_WARNING_AT || self.errors.rec() >= ERROR_WARNING_AT {
+            sr |= reg::SR_ERRWRN;
+        }
+        if self.hpb.is_some() {
+            sr |= reg::SR_TXBFLL;
+        }
+        if self.tx_fifo.is_full() {
+            sr |= reg::SR_TXFLL;
+        }
+        sr
+    }
+
+    /// Reads of the RX FIFO window; `DATA2` removes the message.
+    fn read_rx(&mut self, offset: usize) -> u32 {
+        let Some(m) = self.rx_fifo.front().copied() else {
+            self.isr |= reg::IXR_RXUFLW;
+            return 0;
+        };
+        match offset {
+            reg::RXFIFO_ID => m.id,
+            reg::RXFIFO_DLC => m.dlc,
+            reg::RXFIFO_DATA1 => m.data1,
+            _ => {
+                self.rx_fifo.pop();
+                m.data2
+            }
+        }
+    }
+
+    /// Writes of a TX window (`hpb`: the high-priority buffer).
+    fn write_tx(&mut self, word: usize, v: u32, hpb: bool) {
+        let stage = if hpb {
+            &mut self.hpb_stage
+        } else {
+            &mut self.tx_stage
+        };
+        match word {
+            0 => stage.id = v,
+            1 => stage.dlc = v & (reg::DLC_MASK << reg::DLC_SHIFT),
+            2 => stage.data1 = v,
+            _ => {
+                stage.data2 = v;
+                let m = *stage;
+                let queued = if !hpb {
+                    self.tx_fifo.push(m)
+                } else if self.hpb.is_none() {
+                    self.hpb = Some(m);
+                    true
+                } else {
+                    false
+                };
+                if !queued {
+                    self.dropped_tx_writes += 1;
+                }
+                self.assert_levels();
+            }
+        }
+    }
+
+    /// The offset of `addr` in this controller, if it is one of its
+    /// registers.
+    fn offset(&self, addr: usize) -> Option<usize> {
+        let off = addr.checked_sub(self.base)?;
+        (off <= reg::LAST_OFFSET && off % 4 == 0).then_some(off)
+    }
+
+    /// Index of the filter whose mask (`false`) or identifier (`true`)
+    /// register is at `off`.
+    fn filter_slot(off: usize) -> Option<(usize, bool)> {
+        (0..reg::FILTER_COUNT).find_map(|n| {
+            if reg::afmr(n) == Some(off) {
+                Some((n, false))
+            } else if reg::afir(n) == Some(off) {
+                Some((n, true))
+            } else {
+                None
+            }
+        })
+    }
+}
+
+impl RegisterBus for PsCanModel {
+    fn read(&mut self, addr: usize) -> Result<u32, BusError> {
+        let off = self.offset(addr).ok_or(BusError::SlaveError)?;
+        Ok(match off {
+            reg::SRR => u32::from(self.cen) * reg::SRR_CEN,
+            reg::MSR => self.msr,
+            reg::BRPR => self.brpr,
+            reg::BTR => self.btr,
+            reg::ECR => {
+                u32::from(self.errors.tec()) << reg::ECR_TEC_SHIFT
+                    | u32::from(self.errors.rec()) << reg::ECR_REC_SHIFT
+            }
+            reg::ESR => self.esr,
+            reg::SR => self.status(),
+            reg::ISR => self.isr,
+            reg::IER => self.ier,
+            reg::TCR => self.tcr,
+            reg::WIR => self.wir,
+            reg::RXFIFO_ID..=reg::RXFIFO_DATA2 => self.read_rx(off),
+            reg::AFR => self.afr,
+            _ => match Self::filter_slot(off) {
+                Some((n, false)) => self.afmr[n],
+                Some((n, true)) => self.afir[n],
+                // ICR and the TX windows are write-only: they read 0.
+                None => 0,
+            },
+        })
+    }
+
+    fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
+        let off = self.offset(addr).ok_or(BusError::SlaveError)?;
+        match off {
+            reg::SRR => {
+                if value & reg::SRR_SRST != 0 {
+                    self.reset();
+                } else {
+                    self.cen = value & reg::SRR_CEN != 0;
+                }
+            }
+            reg::MSR | reg::BRPR | reg::BTR if self.cen => self.ignored_config_writes += 1,
+            reg::MSR => self.msr = value & MSR_BITS,
+            reg::BRPR => self.brpr = value & reg::BRPR_BRP_MASK,
+            reg::BTR => self.btr = value & BTR_BITS,
+            reg::ESR => self.esr &= !(value & ESR_BITS),
+            reg::IER => self.ier = value & reg::IXR_ALL,
+            reg::ICR => {
+                self.isr &= !(value & reg::IXR_ALL);
+                self.assert_levels();
+            }
+            reg::TCR => self.tcr = value & 1,
+            reg::WIR => self.wir = value & 0xFFFF,
+            reg::TXFIFO_ID..=reg::TXFIFO_DATA2 => {
+                self.write_tx((off - reg::TXFIFO_ID) / 4, value, false)
+            }
+            reg::TXHPB_ID..=reg::TXHPB_DATA2 => {
+                self.write_tx((off - reg::TXHPB_ID) / 4, value, true)
+            }
+            reg::AFR => self.afr = value & AFR_BITS,
+            // ECR, SR, ISR and the RX window are read-only: writes are
+            // ignored.
+            _ => match Self::filter_slot(off) {
+                Some((n, _)) if self.afr & (1 << n) != 0 => self.ignored_filter_writes += 1,
+                Some((n, false)) => self.afmr[n] = value,
+                Some((n, true)) => self.afir[n] = value,
+                None => {}
+            },
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const B: usize = reg::CAN0_BASE;
+
+    #[test]
+    fn configuration_registers_take_writes_only_in_configuration_mode() {
+        let mut m = PsCanModel::new(B);
+        assert_eq!(m.read(B + reg::SR), Ok(reg::SR_CONFIG));
+        m.write(B + reg::BRPR, 0x1FF).unwrap();
+        assert_eq!(m.read(B + reg::BRPR), Ok(0xFF));
+        m.write(B + reg::SRR, reg::SRR_CEN).unwrap();
+        m.write(B + reg::BRPR, 3).unwrap();
+        m.write(B + reg::MSR, reg::MSR_LBACK).unwrap();
+        assert_eq!(m.read(B + reg::BRPR), Ok(0xFF));
+        assert_eq!(m.read(B + reg::MSR), Ok(0));
+        assert_eq!(m.ignored_config_writes, 2);
+        // Enabled, normal, error active, bus idle: 0x08 | 0x80 | 0x10.
+        assert_eq!(m.read(B + reg::SR), Ok(0x98));
+        m.write(B + reg::SRR, reg::SRR_SRST).unwrap();
+        assert_eq!(m.read(B + reg::BRPR), Ok(0));
+        assert_eq!(m.read(B + reg::SR), Ok(reg::SR_CONFIG));
+        assert_eq!(m.read(B + reg::LAST_OFFSET + 4), Err(BusError::SlaveError));
+        assert_eq!(m.read(B + 2), Err(BusError::SlaveError));
+    }
+
+    #[test]
+    fn filter_registers_are_locked_while_their_filter_is_in_use() {
+        let mut m = PsCanModel::new(B);
+        m.write(B + 0x64, 0xFFE0_0000).unwrap();
+        m.write(B + 0x68, 0x123 << 21).unwrap();
+        m.write(B + reg::AFR, 1).unwrap();
+        m.write(B + 0x68, 0x456 << 21).unwrap();
+        assert_eq!(m.read(B + 0x68), Ok(0x123 << 21));
+        assert_eq!(m.ignored_filter_writes, 1);
+        let msg = |id: u32| Message {
+            id: id << 21,
+            ..Message::default()
+        };
+        assert!(m.accepts(&msg(0x123)));
+        assert!(!m.accepts(&msg(0x124)));
+    }
+}
