@@ -7,6 +7,7 @@ mod alignment;
 mod calibration;
 mod evidence;
 mod hil;
+mod ps_can;
 mod servo;
 mod servo_faults;
 mod telemetry;
