@@ -183,6 +183,10 @@ fn loopback_receives_its_own_frames_and_snoop_only_listens() {
     ));
     assert_eq!(receive_all(&mut l), [frame(0x222, &[2])]);
     assert_eq!(receive_all(&mut other), Vec::<CanFrame>::new());
+    // Nor does the loopback node take frames from the bus.
+    other.send(&frame(0x223, &[3])).unwrap();
+    assert_eq!(step(&mut l, &mut other), Transfer::AckError { from: 1 });
+    assert_eq!(receive_all(&mut l), Vec::<CanFrame>::new());
 
     let mut a = node(Mode::Normal, &[]);
     let mut b = node(Mode::Normal, &[]);
@@ -380,6 +384,10 @@ fn a_refused_configuration_writes_nothing() {
     );
 
     let mut fresh = PsCan::new(PsCanModel::new(base), base);
+    assert_eq!(
+        fresh.error_status(),
+        Ok(status(0, 0, ErrorState::Configuration))
+    );
     assert_eq!(fresh.send(&frame(1, &[])), Err(CanError::NotConfigured));
     assert_eq!(fresh.recover(), Err(CanError::NotConfigured));
 }

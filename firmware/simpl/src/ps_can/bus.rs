@@ -1,7 +1,8 @@
 //! The wire between controller models: one call of [`step`] is one frame
 //! slot on the bus.
 //!
-//! - A node in loopback sends to itself; its frames never reach the wire.
+//! - A node in loopback sends to itself; its frames never reach the wire,
+//!   and it receives nothing from the wire.
 //! - Of the nodes in normal mode with a message pending, the one whose
 //!   identifier word is lowest wins arbitration: the word holds the
 //!   arbitration field in bus order from bit 31 down (IDH, SRR/RTR, IDE,
@@ -62,7 +63,7 @@ pub fn step(nodes: &mut [&mut PsCanModel]) -> Transfer {
                 return Transfer::BitError { from: i };
             }
             n.transmitted();
-            n.deliver(&msg);
+            n.receive(&msg);
             return Transfer::Looped { node: i, msg };
         }
     }

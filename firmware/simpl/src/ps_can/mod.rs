@@ -274,12 +274,17 @@ impl PsCanModel {
     }
 
     /// Hook for a test peer, and the bus's delivery: a frame `m` arrived
-    /// without error. Counts the reception, then filters and stores it.
+    /// from the bus without error. Ignored unless the node watches the bus
+    /// and is not bus off.
     pub fn deliver(&mut self, m: &Message) {
-        let own_loopback = self.mode() == BusMode::Loopback;
-        if !(self.on_bus() || own_loopback) || self.errors.state() == State::BusOff {
-            return;
+        if self.on_bus() && self.errors.state() != State::BusOff {
+            self.receive(m);
         }
+    }
+
+    /// A frame received without error (from the bus, or looped back):
+    /// counts the reception, then filters and stores it.
+    fn receive(&mut self, m: &Message) {
         self.errors.receive_ok();
         if !self.accepts(m) {
             return;
@@ -521,6 +526,57 @@ mod tests {
         assert_eq!(m.read(B + reg::SR), Ok(reg::SR_CONFIG));
         assert_eq!(m.read(B + reg::LAST_OFFSET + 4), Err(BusError::SlaveError));
         assert_eq!(m.read(B + 2), Err(BusError::SlaveError));
+    }
+
+    fn queue(m: &mut PsCanModel, window: usize, id: u16) {
+        for (k, v) in [u32::from(id) << 21, 0, 0, 0].into_iter().enumerate() {
+            m.write(B + window + 4 * k, v).unwrap();
+        }
+    }
+
+    #[test]
+    fn the_high_priority_buffer_goes_first_and_holds_one_message() {
+        let mut m = PsCanModel::new(B);
+        m.write(B + reg::SRR, reg::SRR_CEN).unwrap();
+        queue(&mut m, reg::TXFIFO_ID, 0x001);
+        queue(&mut m, reg::TXHPB_ID, 0x7FF);
+        assert_eq!(m.pending().map(|p| p.id), Some(0x7FF << 21));
+        assert_eq!(
+            m.read(B + reg::SR).unwrap() & reg::SR_TXBFLL,
+            reg::SR_TXBFLL
+        );
+        queue(&mut m, reg::TXHPB_ID, 0x7FE);
+        assert_eq!(m.dropped_tx_writes, 1);
+        assert_eq!(m.tx_len(), 2);
+        m.transmitted();
+        assert_eq!(m.pending().map(|p| p.id), Some(0x001 << 21));
+        // Write-only windows read 0.
+        assert_eq!(m.read(B + reg::TXHPB_ID), Ok(0));
+    }
+
+    #[test]
+    fn reading_an_empty_rx_fifo_sets_underflow_and_a_clear_does_not_hide_a_message() {
+        let mut m = PsCanModel::new(B);
+        m.write(B + reg::SRR, reg::SRR_CEN).unwrap();
+        assert_eq!(m.read(B + reg::RXFIFO_DATA2), Ok(0));
+        assert_eq!(
+            m.read(B + reg::ISR).unwrap() & reg::IXR_RXUFLW,
+            reg::IXR_RXUFLW
+        );
+        m.deliver(&Message {
+            id: 0x55 << 21,
+            dlc: 0xF000_FFFF,
+            data1: 1,
+            data2: 2,
+        });
+        m.write(B + reg::ICR, reg::IXR_ALL).unwrap();
+        // RXNEMP and TXFEMP: conditions still present.
+        assert_eq!(m.read(B + reg::ISR), Ok(reg::IXR_RXNEMP | reg::IXR_TXFEMP));
+        // The timestamp bits read 0.
+        assert_eq!(m.read(B + reg::RXFIFO_DLC), Ok(0xF000_0000));
+        assert_eq!(m.read(B + reg::RXFIFO_DATA2), Ok(2));
+        m.write(B + reg::ICR, reg::IXR_RXNEMP).unwrap();
+        assert_eq!(m.read(B + reg::ISR), Ok(reg::IXR_TXFEMP));
     }
 
     #[test]
