@@ -98,7 +98,7 @@ pub fn bit_timing(ref_clock_hz: u32, bit_rate_bps: u32) -> Result<BitTiming, Bit
             continue;
         };
         let miss = SAMPLE_POINT_TARGET_PERMILLE - t.sample_point_permille();
-        // `<=`: a tie goes to the later, finer division of the bit.
+        // `<=`: a tie goes to more quanta per bit, a finer division.
         if best.is_none_or(|(m, _)| miss <= m) {
             best = Some((miss, t));
         }
