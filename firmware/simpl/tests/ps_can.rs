@@ -30,6 +30,17 @@ fn node(mode: Mode, filters: &[AcceptanceFilter]) -> PsCan<PsCanModel> {
     c
 }
 
+/// A controller configured 1 Mbit/s from 24 MHz with `filters`.
+fn node_24mhz(filters: &[AcceptanceFilter]) -> PsCan<PsCanModel> {
+    let mut c = PsCan::new(PsCanModel::new(reg::CAN0_BASE), reg::CAN0_BASE);
+    c.configure(&CanConfig {
+        ref_clock_hz: 24_000_000,
+        ..config(Mode::Normal, filters)
+    })
+    .unwrap();
+    c
+}
+
 fn frame(id: u16, data: &[u8]) -> CanFrame {
     CanFrame::new(id, data).unwrap()
 }
@@ -271,44 +282,28 @@ fn a_requested_recovery_leaves_bus_off_at_once_with_the_configuration() {
         id: 0x080,
         mask: 0x7FF,
     }];
-    let mut a = CanConfigured::new(&filters);
+    let mut a = node_24mhz(&filters);
     let mut b = node(Mode::Normal, &[]);
-    a.0.bus_mut().inject_tx_bit_errors(32);
-    a.0.send(&frame(0x123, &[1])).unwrap();
+    a.bus_mut().inject_tx_bit_errors(32);
+    a.send(&frame(0x123, &[1])).unwrap();
     for _ in 0..32 {
-        step(&mut a.0, &mut b);
+        step(&mut a, &mut b);
     }
-    assert_eq!(a.0.error_status().unwrap().state, ErrorState::BusOff);
-    a.0.recover().unwrap();
-    assert_eq!(a.0.error_status(), Ok(status(0, 0, ErrorState::Active)));
-    assert_eq!(a.0.stats().recoveries, 1);
+    assert_eq!(a.error_status().unwrap().state, ErrorState::BusOff);
+    a.recover().unwrap();
+    assert_eq!(a.error_status(), Ok(status(0, 0, ErrorState::Active)));
+    assert_eq!(a.stats().recoveries, 1);
     // The reset dropped the queued frame; the configuration is back.
-    assert_eq!(a.0.bus_mut().tx_len(), 0);
+    assert_eq!(a.bus_mut().tx_len(), 0);
     let base = reg::CAN0_BASE;
-    assert_eq!(a.0.bus_mut().read(base + reg::BRPR), Ok(1));
-    assert_eq!(a.0.bus_mut().read(base + reg::AFR), Ok(1));
+    assert_eq!(a.bus_mut().read(base + reg::BRPR), Ok(1));
+    assert_eq!(a.bus_mut().read(base + reg::AFR), Ok(1));
     b.send(&frame(0x081, &[])).unwrap();
     b.send(&frame(0x080, &[8])).unwrap();
-    a.0.send(&frame(0x700, &[0x05])).unwrap();
-    assert_eq!(run(&mut a.0, &mut b, 10), 3);
-    assert_eq!(receive_all(&mut a.0), [frame(0x080, &[8])]);
+    a.send(&frame(0x700, &[0x05])).unwrap();
+    assert_eq!(run(&mut a, &mut b, 10), 3);
+    assert_eq!(receive_all(&mut a), [frame(0x080, &[8])]);
     assert_eq!(receive_all(&mut b), [frame(0x700, &[0x05])]);
-}
-
-/// A controller configured 1 Mbit/s from 24 MHz with the given filters.
-struct CanConfigured(PsCan<PsCanModel>);
-
-impl CanConfigured {
-    fn new(filters: &[AcceptanceFilter]) -> Self {
-        let mut c = PsCan::new(PsCanModel::new(reg::CAN0_BASE), reg::CAN0_BASE);
-        c.configure(&CanConfig {
-            ref_clock_hz: 24_000_000,
-            filters,
-            ..config(Mode::Normal, &[])
-        })
-        .unwrap();
-        Self(c)
-    }
 }
 
 /// ISO 11898-1, rule 3's exception: an error-passive transmitter whose
@@ -394,10 +389,10 @@ fn a_refused_configuration_writes_nothing() {
 
 #[test]
 fn the_bit_timing_of_24_mhz_reaches_the_registers() {
-    let mut c = CanConfigured::new(&[]);
+    let mut c = node_24mhz(&[]);
     let base = reg::CAN0_BASE;
     // 1 Mbit/s from 24 MHz: prescaler 2, TS1 9, TS2 2, SJW 2 quanta.
-    assert_eq!(c.0.bus_mut().read(base + reg::BRPR), Ok(1));
-    assert_eq!(c.0.bus_mut().read(base + reg::BTR), Ok(0x98));
-    assert_eq!(c.0.bus_mut().read(base + reg::AFR), Ok(0));
+    assert_eq!(c.bus_mut().read(base + reg::BRPR), Ok(1));
+    assert_eq!(c.bus_mut().read(base + reg::BTR), Ok(0x98));
+    assert_eq!(c.bus_mut().read(base + reg::AFR), Ok(0));
 }
