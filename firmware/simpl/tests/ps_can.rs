@@ -24,15 +24,24 @@ fn config(mode: Mode, filters: &[AcceptanceFilter]) -> CanConfig<'_> {
     }
 }
 
+/// A controller model on CAN0 with a `ref_clock_hz` reference clock,
+/// under the driver, not configured.
+fn controller(ref_clock_hz: u32) -> PsCan<PsCanModel> {
+    PsCan::new(
+        PsCanModel::new(reg::CAN0_BASE, ref_clock_hz),
+        reg::CAN0_BASE,
+    )
+}
+
 fn node(mode: Mode, filters: &[AcceptanceFilter]) -> PsCan<PsCanModel> {
-    let mut c = PsCan::new(PsCanModel::new(reg::CAN0_BASE), reg::CAN0_BASE);
+    let mut c = controller(MHZ_100);
     c.configure(&config(mode, filters)).unwrap();
     c
 }
 
 /// A controller configured 1 Mbit/s from 24 MHz with `filters`.
 fn node_24mhz(filters: &[AcceptanceFilter]) -> PsCan<PsCanModel> {
-    let mut c = PsCan::new(PsCanModel::new(reg::CAN0_BASE), reg::CAN0_BASE);
+    let mut c = controller(24_000_000);
     c.configure(&CanConfig {
         ref_clock_hz: 24_000_000,
         ..config(Mode::Normal, filters)
@@ -312,7 +321,7 @@ fn a_requested_recovery_leaves_bus_off_at_once_with_the_configuration() {
 #[test]
 fn acknowledge_errors_alone_stop_at_error_passive() {
     let mut a = node(Mode::Normal, &[]);
-    let mut off = PsCan::new(PsCanModel::new(reg::CAN0_BASE), reg::CAN0_BASE);
+    let mut off = controller(MHZ_100);
     a.send(&frame(0x700, &[0x7F])).unwrap();
     for _ in 0..16 {
         assert_eq!(step(&mut a, &mut off), Transfer::AckError { from: 0 });
@@ -378,7 +387,7 @@ fn a_refused_configuration_writes_nothing() {
         reg::SR_NORMAL
     );
 
-    let mut fresh = PsCan::new(PsCanModel::new(base), base);
+    let mut fresh = controller(MHZ_100);
     assert_eq!(
         fresh.error_status(),
         Ok(status(0, 0, ErrorState::Configuration))
@@ -395,4 +404,31 @@ fn the_bit_timing_of_24_mhz_reaches_the_registers() {
     assert_eq!(c.bus_mut().read(base + reg::BRPR), Ok(1));
     assert_eq!(c.bus_mut().read(base + reg::BTR), Ok(0x98));
     assert_eq!(c.bus_mut().read(base + reg::AFR), Ok(0));
+}
+
+/// The driver's timings from 24 MHz and from 100 MHz give the same bit
+/// time (24 x 2 / 24 MHz = 20 x 5 / 100 MHz = 1 us), so the two talk; a
+/// node at 500 kbit/s neither acknowledges nor receives, and counts an
+/// error per frame.
+#[test]
+fn nodes_on_different_clocks_meet_at_the_same_bit_rate_only() {
+    let mut a = node_24mhz(&[]);
+    let mut b = node(Mode::Normal, &[]);
+    a.send(&frame(0x1A0, &[0x24])).unwrap();
+    b.send(&frame(0x1B0, &[0x64])).unwrap();
+    assert_eq!(run(&mut a, &mut b, 10), 2);
+    assert_eq!(receive_all(&mut a), [frame(0x1B0, &[0x64])]);
+    assert_eq!(receive_all(&mut b), [frame(0x1A0, &[0x24])]);
+
+    let mut slow = controller(MHZ_100);
+    slow.configure(&CanConfig {
+        bit_rate_bps: 500_000,
+        ..config(Mode::Normal, &[])
+    })
+    .unwrap();
+    a.send(&frame(0x1A1, &[])).unwrap();
+    assert_eq!(step(&mut a, &mut slow), Transfer::AckError { from: 0 });
+    assert_eq!(receive_all(&mut slow), Vec::<CanFrame>::new());
+    assert_eq!(slow.error_status(), Ok(status(0, 1, ErrorState::Active)));
+    assert_eq!(a.error_status(), Ok(status(8, 0, ErrorState::Active)));
 }

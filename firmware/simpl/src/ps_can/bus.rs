@@ -11,10 +11,14 @@
 //! - An injected bit error: the sender's error flag, TEC + 8; every other
 //!   node on the bus detects it as a stuff error, REC + 1. The message stays
 //!   queued.
-//! - No other node acknowledges (none in normal mode and not bus off): an
-//!   acknowledge error for the sender; the message stays queued.
+//! - A node whose bit time differs from the sender's (`BRPR`, `BTR`, its
+//!   reference clock) detects a form error, REC + 1, and neither
+//!   acknowledges nor receives.
+//! - No other node acknowledges (none in normal mode at the sender's bit
+//!   rate and not bus off): an acknowledge error for the sender; the
+//!   message stays queued.
 //! - Otherwise the message is sent and every other node on the bus (normal
-//!   or snoop) receives it.
+//!   or snoop) at the sender's bit rate receives it.
 
 use super::fifo::Message;
 use super::{BusMode, PsCanModel};
@@ -90,17 +94,24 @@ pub fn step(nodes: &mut [&mut PsCanModel]) -> Transfer {
         }
         return Transfer::BitError { from };
     }
+    let bit_time = nodes[from].bit_time();
     let acked = nodes
         .iter()
         .enumerate()
-        .any(|(i, n)| i != from && n.acknowledges());
+        .any(|(i, n)| i != from && n.acknowledges() && n.bit_time_is(bit_time));
+    // A node at another bit rate sees a broken frame whatever happens.
+    for (i, n) in nodes.iter_mut().enumerate() {
+        if i != from && !n.bit_time_is(bit_time) {
+            n.receive_error(reg::ESR_FMER);
+        }
+    }
     if !acked {
         nodes[from].transmit_error(reg::ESR_ACKER, true);
         return Transfer::AckError { from };
     }
     nodes[from].transmitted();
     for (i, n) in nodes.iter_mut().enumerate() {
-        if i != from {
+        if i != from && n.bit_time_is(bit_time) {
             n.deliver(&msg);
         }
     }

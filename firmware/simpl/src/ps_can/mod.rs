@@ -31,7 +31,10 @@
 //!   over the clear. `ESR` is write 1 to clear.
 //! - `ECR` and `SR.ESTAT`/`SR.ERRWRN` from [`confinement`].
 //!
-//! Not modelled: timing (a frame is one [`bus::step`]), the timestamp
+//! The bus compares bit times (`BRPR`, `BTR` and the reference clock):
+//! a node at another bit rate neither acknowledges nor receives a frame, it
+//! detects an error instead. Otherwise not modelled: timing (a frame is one
+//! [`bus::step`]), the sample point and resynchronisation, the timestamp
 //! (`RXT` reads 0), watermark interrupts, sleep wake-up, the stuff, form and
 //! CRC checks themselves (errors come from the hooks
 //! [`PsCanModel::inject_tx_bit_errors`] and
@@ -78,6 +81,7 @@ pub enum BusMode {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct PsCanModel {
     base: usize,
+    ref_clock_hz: u32,
     cen: bool,
     msr: u32,
     brpr: u32,
@@ -109,10 +113,13 @@ pub struct PsCanModel {
 }
 
 impl PsCanModel {
-    /// A controller after reset at `base` (e.g. `regmap::ps_can::CAN0_BASE`).
-    pub fn new(base: usize) -> Self {
+    /// A controller after reset at `base` (e.g. `regmap::ps_can::CAN0_BASE`)
+    /// with a reference clock of `ref_clock_hz` (Hz; with `BRPR` and `BTR`
+    /// it sets the bit rate the bus compares).
+    pub fn new(base: usize, ref_clock_hz: u32) -> Self {
         Self {
             base,
+            ref_clock_hz,
             cen: false,
             msr: 0,
             brpr: 0,
@@ -155,7 +162,7 @@ impl PsCanModel {
             self.rx_dropped,
             self.bit_errors_pending,
         );
-        *self = Self::new(self.base);
+        *self = Self::new(self.base, self.ref_clock_hz);
         (
             self.ignored_config_writes,
             self.ignored_filter_writes,
@@ -178,6 +185,27 @@ impl PsCanModel {
         } else {
             BusMode::Normal
         }
+    }
+
+    /// Reference-clock cycles per bit from `BRPR` and `BTR`: the prescaler
+    /// times the quanta (1 + `TS1 + 1` + `TS2 + 1`).
+    fn cycles_per_bit(&self) -> u64 {
+        let ts1 = (self.btr >> reg::BTR_TS1_SHIFT) & reg::BTR_TS1_MASK;
+        let ts2 = (self.btr >> reg::BTR_TS2_SHIFT) & reg::BTR_TS2_MASK;
+        u64::from(self.brpr + 1) * u64::from(3 + ts1 + ts2)
+    }
+
+    /// The bit time as a fraction: (reference cycles per bit, reference
+    /// clock in Hz).
+    fn bit_time(&self) -> (u64, u64) {
+        (self.cycles_per_bit(), u64::from(self.ref_clock_hz))
+    }
+
+    /// True when this node's bit time is `t` (from [`Self::bit_time`]):
+    /// equal fractions, compared without division.
+    fn bit_time_is(&self, t: (u64, u64)) -> bool {
+        let (c, f) = self.bit_time();
+        c * t.1 == t.0 * f
     }
 
     /// The fault confinement state.
@@ -341,7 +369,7 @@ mod tests {
 
     #[test]
     fn configuration_registers_take_writes_only_in_configuration_mode() {
-        let mut m = PsCanModel::new(B);
+        let mut m = PsCanModel::new(B, 100_000_000);
         assert_eq!(m.read(B + reg::SR), Ok(reg::SR_CONFIG));
         m.write(B + reg::BRPR, 0x1FF).unwrap();
         assert_eq!(m.read(B + reg::BRPR), Ok(0xFF));
@@ -368,7 +396,7 @@ mod tests {
 
     #[test]
     fn the_high_priority_buffer_goes_first_and_holds_one_message() {
-        let mut m = PsCanModel::new(B);
+        let mut m = PsCanModel::new(B, 100_000_000);
         m.write(B + reg::SRR, reg::SRR_CEN).unwrap();
         queue(&mut m, reg::TXFIFO_ID, 0x001);
         queue(&mut m, reg::TXHPB_ID, 0x7FF);
@@ -388,7 +416,7 @@ mod tests {
 
     #[test]
     fn reading_an_empty_rx_fifo_sets_underflow_and_a_clear_does_not_hide_a_message() {
-        let mut m = PsCanModel::new(B);
+        let mut m = PsCanModel::new(B, 100_000_000);
         m.write(B + reg::SRR, reg::SRR_CEN).unwrap();
         assert_eq!(m.read(B + reg::RXFIFO_DATA2), Ok(0));
         assert_eq!(
@@ -413,7 +441,7 @@ mod tests {
 
     #[test]
     fn filter_registers_are_locked_while_their_filter_is_in_use() {
-        let mut m = PsCanModel::new(B);
+        let mut m = PsCanModel::new(B, 100_000_000);
         m.write(B + 0x64, 0xFFE0_0000).unwrap();
         m.write(B + 0x68, 0x123 << 21).unwrap();
         m.write(B + reg::AFR, 1).unwrap();
