@@ -17,6 +17,8 @@
 //! - [`config_push`]: a TOML file through `drivectl config push`'s check
 //!   against the drive's schema: what passes is finite, whole where it must
 //!   be and in range, and applying it keeps a valid configuration.
+//! - [`sdo`] and [`socketcand`] ([`can`]): the CANopen core's SDO server
+//!   and socketcand parser; a refused request or command changes no state.
 use drive::config::store::{self, FlashError, NorFlash, SlotState, RECORD_BYTES};
 use drive::config::{self, Config, PARAMS};
 use drive::console::{
@@ -27,6 +29,9 @@ use drive::pl::top::Mode;
 use drive::servo::faults::FaultRecord;
 use drive::servo::{Servo, ServoConfig, ServoError, StepResult};
 use simpl::{SimConfig, SimDrive};
+
+pub mod can;
+pub use can::{sdo, socketcand};
 use std::sync::OnceLock;
 
 /// Lines of one input the console target executes, at most.
@@ -467,6 +472,14 @@ mod tests {
     #[test]
     fn config_push_seeds_and_mutants() {
         run("config_push", config_push);
+    }
+    #[test]
+    fn sdo_seeds_and_mutants() {
+        run("sdo", sdo);
+    }
+    #[test]
+    fn socketcand_seeds_and_mutants() {
+        run("socketcand", socketcand);
     }
 
     /// The `[profile.test...]` sections from `[profile.test]` to the end of

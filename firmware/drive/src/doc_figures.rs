@@ -85,3 +85,52 @@ fn readme_parameters_follow_the_config_table() {
         );
     }
 }
+
+/// A number with an SI unit as the docs write it (`100 MHz`, `125 kbit/s`).
+fn si_value(s: &str) -> u32 {
+    let (num, unit) = s.trim().split_once(' ').unwrap_or_else(|| panic!("{s}"));
+    let scale = match unit.chars().next() {
+        Some('M') => 1_000_000,
+        Some('k') => 1_000,
+        _ => 1,
+    };
+    num.parse::<u32>().unwrap_or_else(|_| panic!("{s}")) * scale
+}
+
+/// The bit-timing table of the board guide's CAN section is what
+/// `can::timing::bit_timing` computes.
+#[test]
+fn board_guide_can_bit_timings_are_the_drivers() {
+    let guide = read("docs/board.md");
+    let mut rows = 0;
+    for line in guide
+        .lines()
+        .filter(|l| l.contains("Hz | ") && l.contains("bit/s | "))
+    {
+        let c: Vec<&str> = line.trim_matches('|').split(" | ").map(str::trim).collect();
+        let t = crate::can::timing::bit_timing(si_value(c[0]), si_value(c[1])).unwrap();
+        let quanta = format!(
+            "{} (1 + {} + {}), SJW {}",
+            t.quanta_per_bit(),
+            t.tseg1_quanta,
+            t.tseg2_quanta,
+            t.sjw_quanta
+        );
+        let sp = t.sample_point_permille();
+        let sp = if sp % 10 == 0 {
+            format!("{} %", sp / 10)
+        } else {
+            format!("{}.{} %", sp / 10, sp % 10)
+        };
+        let want = [
+            t.prescaler.to_string(),
+            quanta,
+            sp,
+            t.brpr().to_string(),
+            format!("`{:#X}`", t.btr()).replace("0X", "0x"),
+        ];
+        assert_eq!(c[2..], want, "{line}");
+        rows += 1;
+    }
+    assert_eq!(rows, 3);
+}

@@ -2,12 +2,14 @@
 //! PS, in a `no_std` crate that `cargo test` runs on the host and the
 //! firmware links on the target. It talks to the PL only through the
 //! register map's `RegisterBus` and computes with the paper models; it may
-//! depend on `regmap` (registers, bus) and `models` (plants, controllers,
-//! fixed-point models), never on the simulated PL (`simpl`): the firmware
-//! binary chooses the backend a `RegisterBus` is answered by.
+//! depend on `regmap` (registers, bus), `models` (plants, controllers,
+//! fixed-point models) and `canopen` (the CAN frame), never on the
+//! simulated PL (`simpl`): the firmware binary chooses the backend a
+//! `RegisterBus` is answered by.
 //!
 //! Modules, one job each:
 //! - [`pl`]: PL drivers (one per register block) over `RegisterBus`.
+//! - [`can`]: the PS CAN controller's driver, the link for `canopen`.
 //! - [`servo`]: the drive on the PS: modes, gates, control step, `step`.
 //! - [`hil`]: paper 001's hardware-in-the-loop run of the MPDCC core on
 //!   its register page.
@@ -21,6 +23,7 @@
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 
+pub mod can;
 pub mod config;
 pub mod console;
 #[cfg(test)]

@@ -13,7 +13,8 @@
 //! [`adc`], [`capture`], [`core`], [`enc`], [`fault`], [`frontend`],
 //! [`irq`], [`mpdcc`], [`pwm`], [`seq`]), [`inverter`] (leg potentials),
 //! [`simdrive`] (`SimDrive`: `SimPl`, inverter and PMSM plant), [`gates`],
-//! [`cosim`].
+//! [`cosim`]; [`ps_can`], a register model of the PS CAN controller (a PS
+//! peripheral, outside `SimPl`) and the bus between such models.
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 
@@ -29,6 +30,7 @@ pub mod inverter;
 pub mod irq;
 pub mod mpdcc;
 pub mod pl;
+pub mod ps_can;
 pub mod pwm;
 pub mod regs;
 pub mod seq;

@@ -8,6 +8,7 @@ mod calibration;
 mod cia402;
 mod evidence;
 mod hil;
+mod ps_can;
 mod servo;
 mod servo_faults;
 mod telemetry;
