@@ -305,3 +305,59 @@ fn cyclic_position_follows_a_set_point_stream_one_tpdo_per_sync() {
         "docs/canopen.md lacks {line}"
     );
 }
+
+/// A master that stops its heartbeat: the consumer (0x1016) reports it
+/// with EMCY 0x8130, and the drive quick-stops (0x6007 = 3, the default):
+/// the velocity loop brakes the free rotor, then the gates go off and the
+/// state is Switch on disabled.
+#[test]
+fn a_lost_master_heartbeat_quick_stops_the_motor() {
+    let mut b = Bench::new(false);
+    b.enable_operation_in(9, 0);
+    // Watch node 0x7F at 100 ms: 0x007F_0064.
+    b.ok(0x1016, 1, &0x007F_0064u32.to_le_bytes());
+    // 2 rev/s.
+    b.ok(0x60FF, 0, &8192i32.to_le_bytes());
+    // The master's heartbeat (operational), then silence.
+    let mut now_us = 0u64;
+    assert!(b.frame(0x77F, &[0x05]).is_empty());
+    let period_us = b.period() as f64 / 100.0;
+    let tick = |b: &mut Bench, now_us: u64| {
+        let out = b.link.tick(now_us, &mut b.servo, &mut b.sim).unwrap();
+        b.keep(out)
+    };
+    // 50 ms of motion with the master alive (a heartbeat every 50 ms).
+    for k in 0..1000u64 {
+        b.run(1);
+        now_us = (k as f64 * period_us) as u64;
+        if k % 800 == 0 {
+            assert!(b.frame(0x77F, &[0x05]).is_empty());
+        }
+        assert!(tick(&mut b, now_us).iter().all(|f| f.id() != 0x081));
+    }
+    assert!(b.servo.motion_status().velocity_rev_s > 1.0);
+    // Silence: the loss is reported once, after 100 ms.
+    let before = b.sent.len();
+    let mut k = 0u64;
+    while b.servo.gates_on(&mut b.sim).unwrap() {
+        b.run(1);
+        now_us += period_us as u64;
+        tick(&mut b, now_us);
+        k += 1;
+        assert!(k < 40_000, "gates still on");
+    }
+    let emcy: Vec<&CanFrame> = b.sent[before..]
+        .iter()
+        .filter(|f| f.id() == 0x081)
+        .collect();
+    assert_eq!(emcy.len(), 1, "{emcy:?}");
+    // The last heartbeat came at 50 ms, the silence began at 62.5 ms: no
+    // reaction before 150 ms.
+    let silent_us = k as f64 * period_us;
+    assert!(silent_us >= 87_000.0, "{silent_us} us");
+    // 0x8130, communication bit (4) and generic (0) in the register.
+    assert_eq!(emcy[0].data()[..2], [0x30, 0x81]);
+    // Switch on disabled: x0xx 0000 with bit 6; the rotor braked first.
+    assert_eq!(b.statusword() & 0x4F, 0x40);
+    assert!(b.servo.motion_status().velocity_rev_s.abs() < 1.0);
+}

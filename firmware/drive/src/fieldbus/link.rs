@@ -17,6 +17,10 @@ use canopen::{CanFrame, Frames};
 use core::fmt;
 use regmap::bus::{BusError, RegisterBus};
 
+/// EMCY error code of a heartbeat the consumer lost (CiA 301: "life guard
+/// error or heartbeat error").
+pub const HEARTBEAT_LOST: u16 = canopen::emcy::code::HEARTBEAT;
+
 /// Frames the link has seen and sent, by kind, since power-on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Counters {
@@ -203,11 +207,49 @@ impl<C: ConfigPort> Link<C> {
         Ok(out)
     }
 
-    /// Time passes (monotonic microseconds): heartbeat and timeouts.
-    pub fn tick(&mut self, now_us: u64) -> Frames {
-        let out = self.node.tick(now_us, &mut self.obj);
+    /// Time passes (monotonic microseconds): heartbeat, event-driven
+    /// TPDOs and the heartbeat consumer. A master whose heartbeat stops
+    /// (0x1016) gets its EMCY 0x8130 from the node, and the drive reacts
+    /// as 0x6007 says: 1 a fault (gates off, Fault), 2 disable voltage, 3
+    /// (the default) a quick stop, 0 nothing.
+    pub fn tick<B: PlTime>(
+        &mut self,
+        now_us: u64,
+        servo: &mut Servo,
+        bus: &mut B,
+    ) -> Result<Frames, BusError> {
+        let mut out = self.node.tick(now_us, &mut self.obj);
+        let emcy = 0x080 + u16::from(self.node.id());
+        let lost = out.iter().any(|f| {
+            f.id() == emcy && f.data().get(..2) == Some(&HEARTBEAT_LOST.to_le_bytes()[..])
+        });
+        if lost {
+            match self.obj.image.abort_connection_option {
+                1 => {
+                    self.obj.image.error_code = HEARTBEAT_LOST;
+                    let f = self.node.drive_fault(
+                        &mut self.obj,
+                        HEARTBEAT_LOST,
+                        canopen::emcy::register::COMMUNICATION,
+                        [0; 5],
+                    );
+                    for x in f.iter() {
+                        out.push(*x);
+                    }
+                }
+                2 => self.node.controlword(&mut self.obj, 0x0000),
+                3 => self.node.controlword(&mut self.obj, 0x0002),
+                _ => {}
+            }
+            let more = self
+                .axis
+                .carry_out(servo, bus, &mut self.obj, &mut self.node)?;
+            for x in more.iter() {
+                out.push(*x);
+            }
+        }
         self.count_out(&out);
-        out
+        Ok(out)
     }
 
     /// After a control step: faults to the node, set-points to the servo,
