@@ -35,6 +35,7 @@ use drive::config::spi_nor::SpiNor;
 use drive::config::{store, Config};
 use drive::console::drive::LATCH_WAIT_PERIODS;
 use drive::console::{Bench, DriveError, DriveOps, DriveStatus, Injection, PlKind, StoreStatus};
+use drive::fieldbus::{ConfigValues, Link, LinkStatus};
 use drive::hil::{self, HilError, HilReport, Paced, PacedStatus};
 use drive::pl::capture::{CapSample, CapState, CapStatus, Trigger};
 use drive::pl::fault::Faults;
@@ -60,7 +61,7 @@ pub const IRQ_CONTROL: u32 = gic::IRQ_F2P0;
 /// What answers the drivers' register accesses.
 // The state lives in one static (no heap): the size difference is the point.
 #[allow(clippy::large_enum_variant)]
-enum Backend {
+pub(crate) enum Backend {
     /// Our bitstream behind GP0.
     Gp0(pl::Gp0),
     /// No bitstream: the simulated PL and motor (`simpl`).
@@ -164,7 +165,22 @@ struct State {
     /// a boundary, the ticks poll (`COSIM_POLL_DIV`;
     /// `drive::pl::irq::phase_known_after`).
     phase_known: bool,
+    /// The drive's CANopen device (docs/canopen.md): its frames come and
+    /// go through `crate::fieldbus`; the control interrupt hands it the
+    /// servo after each step.
+    canopen: Link<ConfigValues>,
+    /// Frames the device produced in the control interrupt (an EMCY, a
+    /// transition's answer), for the network path to send.
+    can_out: heapless::Deque<canopen::CanFrame, CAN_OUT>,
+    /// Frames dropped because [`State::can_out`] was full.
+    can_out_lost: u32,
+    /// `Servo::time_s` at the device's last boundary, s.
+    canopen_time_s: f64,
 }
+
+/// Frames the control interrupt can leave for the network path between
+/// two of its polls.
+const CAN_OUT: usize = 16;
 
 /// The drive state, touched only with IRQs masked (one core).
 struct Shared(RefCell<Option<State>>);
@@ -296,6 +312,12 @@ pub fn init() -> Boot {
     }
     if let Some(mut bus) = bus {
         let mut servo = Servo::new(&cfg).expect("servo configuration");
+        let mut link = Link::new(crate::fieldbus::NODE_ID, ConfigValues::new(cfg))
+            .expect("CANopen node-ID in 1..=127");
+        let mut can_out = heapless::Deque::new();
+        for f in link.boot().iter() {
+            let _ = can_out.push_back(*f);
+        }
         if servo.init(&mut bus).is_ok() && ctrl_irq::enable(&mut bus).is_ok() {
             crate::irq::free(|| {
                 *STATE.0.borrow_mut() = Some(State {
@@ -320,6 +342,10 @@ pub fn init() -> Boot {
                     absorbed: 0,
                     phase_known: false,
                     store,
+                    canopen: link,
+                    can_out,
+                    can_out_lost: 0,
+                    canopen_time_s: 0.0,
                 });
             });
             // Above the PL tick (IRQ 27, which at equal priority would win
@@ -533,6 +559,18 @@ pub fn on_control() {
                 }
             }
             crate::telemetry::on_step(&s.servo, timer::global_count() - start);
+            // The CANopen device at the boundary: set-points in, actual
+            // values and faults out (after the step and its telemetry, so
+            // the step's own count is unchanged).
+            let now_s = s.servo.time_s();
+            let dt = now_s - core::mem::replace(&mut s.canopen_time_s, now_s);
+            if let Ok(out) = s.canopen.boundary(&mut s.servo, &mut s.bus, dt) {
+                for f in out.iter() {
+                    if s.can_out.push_back(*f).is_err() {
+                        s.can_out_lost = s.can_out_lost.wrapping_add(1);
+                    }
+                }
+            }
         }
         let end = timer::global_count();
         if let Backend::Gp0(_) = s.bus {
@@ -1048,6 +1086,9 @@ impl DriveOps for FwDrive {
     fn bench(&mut self) -> Result<Bench, DriveError> {
         crate::bench::run().ok_or(DriveError::Unsupported)
     }
+    fn canopen(&mut self) -> Option<LinkStatus> {
+        console(|s| s.canopen.status())
+    }
     fn fault_record(&mut self, k: usize) -> Result<(Option<FaultRecord>, u32), DriveError> {
         run(|s| {
             let h = s.servo.fault_history();
@@ -1139,44 +1180,10 @@ impl DriveOps for FwDrive {
         Ok(())
     }
     fn save_config(&mut self) -> Result<usize, DriveError> {
-        let sc = run(|s| Ok(*s.servo.config()))?;
-        // The flash is the console's alone: no need to hold off the
-        // control loop while it is written.
-        let pace_us = u64::from(FLASH_PACE_MS.load(core::sync::atomic::Ordering::Relaxed)) * 1000;
-        let mut paced = store::PacedFlash {
-            flash: SpiNor(Qspi),
-            pause: || {
-                let end = timer::uptime_us() + pace_us;
-                while timer::uptime_us() < end {
-                    core::hint::spin_loop();
-                }
-            },
-        };
-        let slot = store::save(&mut paced, &Config::from_servo(&sc), &sc)
-            .map_err(|_| DriveError::Flash)?;
-        let mut flash = paced.flash;
-        let l = store::load(&mut flash, &sc).map_err(|_| DriveError::Flash)?;
-        console(|s| {
-            s.store.slots = l.slots;
-            s.store.loaded = Some(slot);
-        });
-        Ok(slot)
+        save_config()
     }
     fn reconfigure(&mut self, cfg: &ServoConfig) -> Result<(), DriveError> {
-        // The controllers are built with the control interrupt enabled (in
-        // co-simulation, one instruction per ns, that arithmetic alone
-        // spans several control periods); only their installation holds
-        // it off, with the ADC period's restart (`Servo::adopt`: a step
-        // between the two would wait for the new period's boundary on the
-        // old one). The other PL registers follow one access per critical
-        // section, as the MPDCC loop's: the gates are off and stay off
-        // meanwhile.
-        let next = Servo::rebuild(cfg).map_err(|e| DriveError::from(ServoError::BadConfig(e)))?;
-        if let Some(pl) = run(|s| s.servo.adopt(&mut s.bus, next))? {
-            pl.write_rest(&mut Locked)
-                .map_err(|e| DriveError::from(ServoError::Bus(e)))?;
-        }
-        Ok(())
+        reconfigure(cfg)
     }
     fn capture_arm(&mut self, t: Trigger, pre: u32, every: u32) -> Result<(), DriveError> {
         run(|s| s.servo.capture_arm(&mut s.bus, t, pre, every))
@@ -1368,4 +1375,79 @@ fn page_error(e: MpdccError) -> DriveError {
         MpdccError::Timeout => DriveError::Timeout,
         MpdccError::Format(_) | MpdccError::Config(_) => DriveError::Unsupported,
     }
+}
+
+/// `config save`: the running configuration to the flash; the slot.
+pub(crate) fn save_config() -> Result<usize, DriveError> {
+    let sc = run(|s| Ok(*s.servo.config()))?;
+    // The flash is the console's alone: no need to hold off the
+    // control loop while it is written.
+    let pace_us = u64::from(FLASH_PACE_MS.load(core::sync::atomic::Ordering::Relaxed)) * 1000;
+    let mut paced = store::PacedFlash {
+        flash: SpiNor(Qspi),
+        pause: || {
+            let end = timer::uptime_us() + pace_us;
+            while timer::uptime_us() < end {
+                core::hint::spin_loop();
+            }
+        },
+    };
+    let slot = store::save(&mut paced, &Config::from_servo(&sc), &sc)
+        .map_err(|_| DriveError::Flash)?;
+    let mut flash = paced.flash;
+    let l = store::load(&mut flash, &sc).map_err(|_| DriveError::Flash)?;
+    console(|s| {
+        s.store.slots = l.slots;
+        s.store.loaded = Some(slot);
+    });
+    Ok(slot)
+}
+
+/// Installs the configuration `cfg` (gates off where it needs them).
+pub(crate) fn reconfigure(cfg: &ServoConfig) -> Result<(), DriveError> {
+    // The controllers are built with the control interrupt enabled (in
+    // co-simulation, one instruction per ns, that arithmetic alone
+    // spans several control periods); only their installation holds
+    // it off, with the ADC period's restart (`Servo::adopt`: a step
+    // between the two would wait for the new period's boundary on the
+    // old one). The other PL registers follow one access per critical
+    // section, as the MPDCC loop's: the gates are off and stay off
+    // meanwhile.
+    let next = Servo::rebuild(cfg).map_err(|e| DriveError::from(ServoError::BadConfig(e)))?;
+    if let Some(pl) = run(|s| s.servo.adopt(&mut s.bus, next))? {
+        pl.write_rest(&mut Locked)
+            .map_err(|e| DriveError::from(ServoError::Bus(e)))?;
+    }
+    Ok(())
+}
+
+/// Runs `f` on the CANopen device, the servo and the PL with the drive's
+/// state locked (as a console command does); `None` without a drive.
+pub(crate) fn with_canopen<T>(
+    f: impl FnOnce(&mut Link<ConfigValues>, &mut Servo, &mut Backend) -> T,
+) -> Option<T> {
+    console(|s| {
+        let due = s.servo.sensor_check_due();
+        let r = f(&mut s.canopen, &mut s.servo, &mut s.bus);
+        if due && !s.servo.sensor_check_due() {
+            s.after_sensor_check();
+        }
+        r
+    })
+}
+
+/// Moves the frames the control interrupt left for the network path into
+/// `out` (oldest first, as many as fit); returns how many were dropped
+/// since boot.
+pub(crate) fn take_can_out(out: &mut canopen::Frames) -> u32 {
+    with(|s| {
+        while out.len() < canopen::frame::MAX_FRAMES {
+            match s.can_out.pop_front() {
+                Some(f) => out.push(f),
+                None => break,
+            }
+        }
+        s.can_out_lost
+    })
+    .unwrap_or(0)
 }

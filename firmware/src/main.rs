@@ -31,6 +31,8 @@ mod control;
 #[cfg(target_os = "none")]
 mod cosim;
 #[cfg(target_os = "none")]
+mod fieldbus;
+#[cfg(target_os = "none")]
 mod irq;
 #[cfg(target_os = "none")]
 mod log;
