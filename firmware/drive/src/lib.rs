@@ -18,6 +18,7 @@
 //! - [`telemetry`]: the live channel stream on the console UART.
 //! - [`mmu`]: the flat translation table (memory types of the address map).
 //! - [`logring`]: the log's RAM ring (whole frames, drained to the UART).
+//! - [`gem`]: the Ethernet MAC's register fields and descriptor rings.
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 
@@ -25,6 +26,7 @@ pub mod config;
 pub mod console;
 #[cfg(test)]
 mod doc_figures;
+pub mod gem;
 pub mod hil;
 pub mod logring;
 pub mod mmu;
