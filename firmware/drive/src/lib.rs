@@ -19,9 +19,11 @@
 //! - [`mmu`]: the flat translation table (memory types of the address map).
 //! - [`logring`]: the log's RAM ring (whole frames, drained to the UART).
 //! - [`gem`]: the Ethernet MAC's register fields and descriptor rings.
+//! - [`can_gateway`]: the CANopen node behind a socketcand connection.
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 
+pub mod can_gateway;
 pub mod config;
 pub mod console;
 #[cfg(test)]
