@@ -94,6 +94,9 @@ impl Net {
             tcp::SocketBuffer::new(&mut rx[..]),
             tcp::SocketBuffer::new(&mut tx[..]),
         ));
+        // Listening before the first poll: a client that connects as soon
+        // as the banner is out finds the port open, not reset.
+        let _ = sockets.get_mut::<tcp::Socket>(tcp).listen(PORT);
         let dhcp = sockets.add(dhcpv4::Socket::new());
         defmt::info!(
             "net: GEM0 up, static 10.0.2.15/24 until a DHCP lease, socketcand on TCP {=u16}",

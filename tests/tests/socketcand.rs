@@ -153,3 +153,34 @@ fn a_second_client_after_the_first_left() {
         assert!(Instant::now() < end, "no greeting for a second client");
     }
 }
+
+/// An independent master: unmodified python-can (`socketcand` interface)
+/// and canopen from PyPI, in the venv `scripts/setup` makes
+/// (tests/python/socketcand_canopen.py says what it checks).
+#[test]
+fn python_can_and_canopen_read_the_device_type() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let python = root.join("target/socketcand-venv/bin/python");
+    assert!(
+        python.is_file(),
+        "{} missing: run scripts/setup (python-can and canopen)",
+        python.display()
+    );
+    let (_console, port) = boot_with_can();
+    let out = std::process::Command::new("timeout")
+        .arg("60")
+        .arg(&python)
+        .arg(root.join("tests/python/socketcand_canopen.py"))
+        .arg(port.to_string())
+        .output()
+        .expect("python runs");
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.status.success(), "{text}");
+    // The script's own checks passed; its report has the value read.
+    assert!(text.contains("0x1000:00 = 92010200"), "{text}");
+    assert!(text.contains("heartbeat state = OPERATIONAL"), "{text}");
+}
