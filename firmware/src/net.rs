@@ -6,7 +6,9 @@
 //! only moves what is there, so it never waits for the network.
 use crate::ps::gem::Gem;
 use drive::can_gateway::{Gateway, LineSink, PORT};
-use smoltcp::iface::{Config, Interface, SocketHandle, SocketSet, SocketStorage};
+use smoltcp::iface::{
+    Config, Interface, PollIngressSingleResult, PollResult, SocketHandle, SocketSet, SocketStorage,
+};
 use smoltcp::socket::{dhcpv4, tcp};
 use smoltcp::time::Instant;
 use smoltcp::wire::{EthernetAddress, IpCidr, Ipv4Address, Ipv4Cidr};
@@ -23,6 +25,8 @@ const STATIC_GATEWAY: Ipv4Address = Ipv4Address::new(10, 0, 2, 2);
 const TCP_BUF: usize = 2048;
 /// Received bytes handed to the gateway per step.
 const CHUNK: usize = 256;
+/// Received Ethernet frames handled per pass: the receive ring's size.
+const MAX_FRAMES_IN: usize = 8;
 
 static mut SOCKETS: [SocketStorage<'static>; 2] = [SocketStorage::EMPTY; 2];
 static mut TCP_RX: [u8; TCP_BUF] = [0; TCP_BUF];
@@ -113,14 +117,25 @@ impl Net {
         }
     }
 
-    /// One pass: frames in and out, DHCP, the connection's bytes.
+    /// One pass: frames in and out, DHCP, the connection's bytes. Bounded:
+    /// at most [`MAX_FRAMES_IN`] received frames, so that a flood of
+    /// frames cannot hold the console loop (the rest wait in the ring).
     pub fn poll(&mut self, now_us: u64) {
         let t = instant(now_us);
-        self.iface.poll(t, &mut self.gem, &mut self.sockets);
+        self.iface.poll_maintenance(t);
+        for _ in 0..MAX_FRAMES_IN {
+            let r = self
+                .iface
+                .poll_ingress_single(t, &mut self.gem, &mut self.sockets);
+            if r == PollIngressSingleResult::None {
+                break;
+            }
+        }
         self.dhcp_events();
         self.serve(now_us);
-        // What the server wrote goes out now, not on the next pass.
-        self.iface.poll(t, &mut self.gem, &mut self.sockets);
+        // What the server and DHCP wrote goes out now, not on the next
+        // pass (egress is bounded by the sockets' queued data).
+        while self.iface.poll_egress(t, &mut self.gem, &mut self.sockets) != PollResult::None {}
     }
 
     fn dhcp_events(&mut self) {
