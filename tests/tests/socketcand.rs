@@ -184,3 +184,58 @@ fn python_can_and_canopen_read_the_device_type() {
     assert!(text.contains("0x1000:00 = 92010200"), "{text}");
     assert!(text.contains("heartbeat state = OPERATIONAL"), "{text}");
 }
+
+/// A client that sends far more than the server's 2 KiB buffers hold,
+/// with garbage between the commands: the console keeps answering while
+/// it arrives, and afterwards the node answers a new request. Lines the
+/// socket had no room for are dropped, not waited for.
+#[test]
+fn a_flood_of_commands_and_garbage_leaves_the_console_and_the_node_answering() {
+    let (mut console, port) = boot_with_can();
+    let mut c = Client::connect(port);
+    c.expect("< hi >");
+    c.send("< open can0 >");
+    c.expect("< ok >");
+    c.send("< rawmode >");
+    c.expect("< ok >");
+    let mut flood = Vec::new();
+    for i in 0..600u32 {
+        flood.extend_from_slice(b"< send 601 8 40 00 10 00 00 00 00 00 >");
+        // Bytes of every value, a stray '<' and an overlong command now
+        // and then.
+        flood.extend((0..23u32).map(|k| ((i * 31 + k * 7) % 256) as u8));
+        if i % 50 == 0 {
+            flood.extend(std::iter::repeat_n(b'7', 200));
+            flood.push(b'>');
+        }
+    }
+    let mut writer = c.tcp.try_clone().unwrap();
+    let sent = flood.len();
+    let t = std::thread::spawn(move || writer.write_all(&flood));
+    // The console answers while the flood arrives.
+    for _ in 0..3 {
+        assert_ok(&cmd(&mut console, "status"));
+    }
+    t.join()
+        .unwrap()
+        .expect("the server takes all of the flood");
+    assert!(sent > 30_000, "{sent} bytes");
+    // Whatever the garbage left open is closed by a '>', then 0x1018:04
+    // (serial number 0: 0x43, 18 10, 04, 00 00 00 00), which no earlier
+    // answer looks like.
+    c.send(" > < send 601 8 40 18 10 04 00 00 00 00 >");
+    let end = Instant::now() + TIMEOUT;
+    loop {
+        assert!(
+            Instant::now() < end,
+            "no answer to the request after the flood"
+        );
+        let Some(m) = c.next(Duration::from_secs(1)) else {
+            continue;
+        };
+        if m.starts_with("< frame 581 ") && m.ends_with(" 4318100400000000 >") {
+            break;
+        }
+    }
+    assert_ok(&cmd(&mut console, "status"));
+}
