@@ -43,10 +43,6 @@ pub mod reg {
     /// Specific address 1, top (last two bytes; writing it enables the
     /// filter entry).
     pub const SPADDR1_TOP: usize = 0x08C;
-    /// Frames received without error (statistics, clear on read).
-    pub const FRAMES_RX: usize = 0x158;
-    /// Frames transmitted without error (statistics, clear on read).
-    pub const FRAMES_TX: usize = 0x108;
 }
 
 /// NWCTRL: receive enable.
@@ -68,8 +64,6 @@ pub const NWCFG_FULL_DUPLEX: u32 = 1 << 1;
 pub const NWCFG_FCS_REMOVE: u32 = 1 << 17;
 /// NWCFG: MDC clock divisor field (bits 20:18); 0b011 = pclk / 48.
 pub const NWCFG_MDC_DIV_48: u32 = 0b011 << 18;
-/// NWCFG: data bus width field (bits 22:21); 0b01 = 64 bit, the Zynq's.
-pub const NWCFG_DBUS_64: u32 = 0b01 << 21;
 
 /// DMACFG: AHB fixed burst length field (bits 4:0); 0b00100 = INCR4.
 pub const DMACFG_BURST_INCR4: u32 = 0b00100;
@@ -113,9 +107,12 @@ pub const MAX_FRAME: usize = 1514;
 pub const BUF_BYTES: usize = 1536;
 
 /// NWCFG for a full-duplex 100 Mb/s link, FCS removed, broadcast and
-/// the specific address accepted.
+/// the specific address accepted (BCAST_REJ, bit 5, clear); MDC from the
+/// 111 MHz CPU_1X clock / 48 = 2.3 MHz (at most 2.5 MHz); the data bus
+/// width field (bits 22:21) at its reset value 0b00, the 32-bit AHB of the
+/// Zynq-7000's GEM.
 pub const NWCFG_VALUE: u32 =
-    NWCFG_SPEED_100 | NWCFG_FULL_DUPLEX | NWCFG_FCS_REMOVE | NWCFG_MDC_DIV_48 | NWCFG_DBUS_64;
+    NWCFG_SPEED_100 | NWCFG_FULL_DUPLEX | NWCFG_FCS_REMOVE | NWCFG_MDC_DIV_48;
 
 /// DMACFG for receive buffers of `buf_bytes` bytes; `None` unless a
 /// non-zero multiple of 64 bytes up to 255 * 64.
@@ -311,8 +308,8 @@ mod tests {
 
     #[test]
     fn register_fields_by_hand() {
-        // NWCFG: bits 0, 1, 17, MDC 0b011 at 18, bus 0b01 at 21.
-        assert_eq!(NWCFG_VALUE, 0x002E_0003);
+        // NWCFG: bits 0, 1, 17, MDC 0b011 at 18, bus width 0b00 at 21.
+        assert_eq!(NWCFG_VALUE, 0x000E_0003);
         // 1536 bytes = 24 units = 0x18 at bit 16; TX pbuf bit 10; RX pbuf
         // 0b11 at 8; burst 4.
         assert_eq!(dmacfg(1536), Some(0x0018_0704));
