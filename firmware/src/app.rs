@@ -141,7 +141,7 @@ fn run_console(con: &mut Uart, mut net: Net) -> ! {
                 let ok = match console::parse(line) {
                     Ok(cmd) => {
                         defmt::info!("console: {=str}", line);
-                        let ctx = context(lines, errors);
+                        let ctx = context(lines, errors, net.status());
                         match console::execute(cmd, &ctx, &mut drive, con) {
                             Ok(Action::Panic) => panic!("`debug panic` requested on the console"),
                             Ok(Action::None) => true,
@@ -177,7 +177,7 @@ fn run_console(con: &mut Uart, mut net: Net) -> ! {
     }
 }
 
-fn context(lines: u32, errors: u32) -> Context {
+fn context(lines: u32, errors: u32, net: drive::console::NetStatus) -> Context {
     Context {
         version: env!("CARGO_PKG_VERSION"),
         git_hash: env!("FW_GIT_HASH"),
@@ -190,6 +190,7 @@ fn context(lines: u32, errors: u32) -> Context {
             errors,
             rx_overruns: RX.overruns.load(Ordering::Relaxed),
             log_dropped: log::dropped(),
+            net,
         },
     }
 }

@@ -117,6 +117,20 @@ impl Net {
         }
     }
 
+    /// What `status` shows.
+    pub fn status(&self) -> drive::console::NetStatus {
+        // IPv4 is the only protocol built in: the one address is one.
+        let ipv4 = self.iface.ip_addrs().first().map(|c| match c {
+            IpCidr::Ipv4(c) => (c.address().octets(), c.prefix_len()),
+        });
+        drive::console::NetStatus {
+            ipv4,
+            dhcp: self.leased,
+            client: self.gateway.connected(),
+            can: self.gateway.counts(),
+        }
+    }
+
     /// One pass: frames in and out, DHCP, the connection's bytes. Bounded:
     /// at most [`MAX_FRAMES_IN`] received frames, so that a flood of
     /// frames cannot hold the console loop (the rest wait in the ring).

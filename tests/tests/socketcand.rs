@@ -117,8 +117,25 @@ fn sdo_and_nmt_over_socketcand() {
     c.send("< send 601 9 1 2 3 4 5 6 7 8 9 >");
     c.expect("< error syntax error >");
 
-    // The console answers while the connection is open.
-    assert_ok(&cmd(&mut console, "status"));
+    // The console answers while the connection is open, and shows it:
+    // QEMU's DHCP server leases 10.0.2.15/24; three frames went to the
+    // node, the malformed command is the one error.
+    let st = cmd(&mut console, "status");
+    assert_ok(&st);
+    let line = |prefix: &str| {
+        st.lines
+            .iter()
+            .find(|l| l.starts_with(prefix))
+            .unwrap_or_else(|| panic!("no {prefix} line: {st:?}"))
+            .clone()
+    };
+    assert_eq!(
+        line("net: "),
+        "net: 10.0.2.15/24 (dhcp), socketcand tcp 29536: client connected"
+    );
+    let can = line("can: ");
+    assert!(can.starts_with("can: 3 frames in, "), "{can}");
+    assert!(can.ends_with(", 1 errors"), "{can}");
 
     // NMT start node 1 (0x01, node 1 on COB-ID 0): the heartbeat on 0x701
     // turns from pre-operational (0x7F) to operational (0x05).
