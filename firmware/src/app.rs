@@ -1,6 +1,6 @@
 //! Boot sequence, interrupt dispatch and the console loop.
 use crate::ps::{gic, mmu, timer, uart::Uart};
-use crate::{control, log, pl, rx::Ring};
+use crate::{control, log, net::Net, pl, rx::Ring};
 use core::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 use drive::console::{self, Action, Context, LineEditor, Status, PROMPT};
 
@@ -87,9 +87,12 @@ fn main() -> ! {
     if gp0_bus_error {
         defmt::warn!("boot: GP0 answered GATE_CTRL with a bus error: not our design, GP0 unused");
     }
+    // The global timer's count at this point differs from boot to boot
+    // on the silicon: TCP's initial sequence numbers.
+    let net = Net::init(timer::uptime_us(), timer::global_count());
     let mut con = CONSOLE;
     banner(&mut con, &boot, gp0_bus_error);
-    run_console(&mut con)
+    run_console(&mut con, net)
 }
 
 fn banner(con: &mut Uart, boot: &control::Boot, gp0_bus_error: bool) {
@@ -116,12 +119,15 @@ fn banner(con: &mut Uart, boot: &control::Boot, gp0_bus_error: bool) {
     }
 }
 
-fn run_console(con: &mut Uart) -> ! {
+fn run_console(con: &mut Uart, mut net: Net) -> ! {
     let mut editor = LineEditor::new();
     let (mut lines, mut errors) = (0u32, 0u32);
     let mut drive = control::FwDrive::new(ctrl_c_pending);
     loop {
         drive.background();
+        // Between console bytes, outside any interrupt: the control step
+        // is not delayed, and the console waits at most one pass.
+        net.poll(timer::uptime_us());
         log::drain();
         let Some(b) = next_byte() else { continue };
         let echo_to = *con;
@@ -135,7 +141,7 @@ fn run_console(con: &mut Uart) -> ! {
                 let ok = match console::parse(line) {
                     Ok(cmd) => {
                         defmt::info!("console: {=str}", line);
-                        let ctx = context(lines, errors);
+                        let ctx = context(lines, errors, net.status());
                         match console::execute(cmd, &ctx, &mut drive, con) {
                             Ok(Action::Panic) => panic!("`debug panic` requested on the console"),
                             Ok(Action::None) => true,
@@ -171,7 +177,7 @@ fn run_console(con: &mut Uart) -> ! {
     }
 }
 
-fn context(lines: u32, errors: u32) -> Context {
+fn context(lines: u32, errors: u32, net: drive::console::NetStatus) -> Context {
     Context {
         version: env!("CARGO_PKG_VERSION"),
         git_hash: env!("FW_GIT_HASH"),
@@ -184,6 +190,7 @@ fn context(lines: u32, errors: u32) -> Context {
             errors,
             rx_overruns: RX.overruns.load(Ordering::Relaxed),
             log_dropped: log::dropped(),
+            net,
         },
     }
 }

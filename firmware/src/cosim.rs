@@ -241,7 +241,7 @@ impl Cosim {
     fn post(&mut self, addr: usize, value: u32) -> Option<Result<(), BusError>> {
         let origin = self.origin?;
         let word = addr.checked_sub(regmap::BASE_ADDR)? / 4;
-        if addr % 4 != 0 || WRITABLE.get(word / 32)? & (1 << (word % 32)) == 0 {
+        if !addr.is_multiple_of(4) || WRITABLE.get(word / 32)? & (1 << (word % 32)) == 0 {
             return None;
         }
         let guest = timer::global_count();

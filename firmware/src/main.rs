@@ -2,7 +2,8 @@
 //!
 //! Boot: VBAR, UART0 (defmt log, 115200 8N1) and UART1 (console, 921600
 //! 8N1), GIC,
-//! private timer tick at [`TICK_HZ`], then the console loop. This crate only
+//! private timer tick at [`TICK_HZ`], GEM0 Ethernet, then the console loop,
+//! which also polls the network (the socketcand server, `net`). This crate only
 //! moves bytes, touches registers and chooses the backend the drive's
 //! `RegisterBus` is answered by (`control`: GP0 with a bitstream, else the
 //! co-simulated RTL over `cosim`, else the simulated PL). Everything that
@@ -36,6 +37,8 @@ mod fieldbus;
 mod irq;
 #[cfg(target_os = "none")]
 mod log;
+#[cfg(target_os = "none")]
+mod net;
 #[cfg(target_os = "none")]
 mod panic;
 #[cfg(target_os = "none")]

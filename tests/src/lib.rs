@@ -116,6 +116,24 @@ pub fn boot_rtl() -> Session {
     Session::spawn_qemu(&q, TIMEOUT).expect("firmware boots to its prompt with the bridge")
 }
 
+/// A booted firmware whose socketcand server (GEM0, TCP 29536) is
+/// forwarded to the returned host port, one picked free per boot so that
+/// tests in parallel do not share one; a boot whose port another process
+/// took in between is retried on a new one.
+pub fn boot_with_can() -> (Session, u16) {
+    let mut last = None;
+    for _ in 0..3 {
+        let port = drivectl::link::free_tcp_port().expect("a free TCP port");
+        let mut q = Qemu::new(elf());
+        q.can_port = Some(port);
+        match Session::spawn_qemu(&q, TIMEOUT) {
+            Ok(s) => return (s, port),
+            Err(e) => last = Some(e),
+        }
+    }
+    panic!("firmware boots with GEM0 forwarded: {last:?}");
+}
+
 /// A fresh erased QSPI flash image `target/run/tests/<name>.img` (one per
 /// test: QEMU locks its image).
 pub fn fresh_flash(name: &str) -> PathBuf {

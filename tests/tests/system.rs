@@ -22,6 +22,7 @@ mod motion;
 mod mpdcc;
 mod pl_faults;
 mod sensor_check;
+mod socketcand;
 mod storm;
 mod telemetry;
 mod torque_steps;

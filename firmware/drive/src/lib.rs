@@ -20,15 +20,21 @@
 //! - [`telemetry`]: the live channel stream on the console UART.
 //! - [`mmu`]: the flat translation table (memory types of the address map).
 //! - [`logring`]: the log's RAM ring (whole frames, drained to the UART).
+//! - [`gem`]: the Ethernet MAC's register fields and descriptor rings.
+//! - [`can_gateway`]: the CANopen node behind a socketcand connection.
+//! - [`fieldbus`]: the drive as a CANopen device: its dictionary, EDS and
+//!   the CiA 402 modes on the servo.
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 
 pub mod can;
+pub mod can_gateway;
 pub mod config;
 pub mod console;
 #[cfg(test)]
 mod doc_figures;
 pub mod fieldbus;
+pub mod gem;
 pub mod hil;
 pub mod logring;
 pub mod mmu;

@@ -9,7 +9,9 @@
 //! | range                      | what                          | memory type              |
 //! |----------------------------|-------------------------------|--------------------------|
 //! | 0x0000_0000..0x0010_0000   | OCM (low) or DDR, the FSBL's  | normal, non-cacheable    |
-//! | 0x0010_0000..0x1000_0000   | DDR: code, data, stacks       | normal, write-back WA    |
+//! | 0x0010_0000..0x0200_0000   | DDR: code, data, stacks       | normal, write-back WA    |
+//! | 0x0200_0000..0x0210_0000   | DDR: DMA rings and buffers    | normal, non-cacheable    |
+//! | 0x0210_0000..0x1000_0000   | DDR (unused)                  | normal, write-back WA    |
 //! | 0x4000_0000..0x8000_0000   | AXI GP0 (the PL's registers)  | device, execute-never    |
 //! | 0xE000_0000..0xE030_0000   | IOP: UARTs, QSPI, ...         | device, execute-never    |
 //! | 0xF800_0000..0xF900_0000   | SLCR, devcfg, A9 private, L2C | device, execute-never    |
@@ -22,15 +24,23 @@
 //! leaves as a fault, so an access there is a bug, reported by the data
 //! abort handler (a translation fault, DFSR status 0b00101).
 //!
-//! The caches need no maintenance today: no peripheral masters memory
-//! (the QSPI store runs in I/O mode through its registers, no DMA), and
-//! device memory is never cached. A DMA user must clean (TX) or invalidate
-//! (RX) its buffers by address in L1 and in the L2 (PL310) first.
+//! The caches need no maintenance: the one bus master besides the CPU, the
+//! Ethernet controller (GEM0), reads and writes only its descriptor rings
+//! and frame buffers, which the linker places in the DMA section
+//! ([`DMA_BASE`], memory.x's `.dma` output section); that MiB is normal
+//! non-cacheable in L1 and in the L2 (PL310), so every CPU store reaches
+//! DDR (after a DSB) and every load sees what the controller wrote. The
+//! QSPI store runs in I/O mode through its registers, no DMA, and device
+//! memory is never cached.
 
 /// Bytes per section (one translation-table entry).
 pub const SECTION_BYTES: u32 = 1 << 20;
 /// Entries of the table (4 GiB / 1 MiB).
 pub const ENTRIES: usize = 4096;
+
+/// Start of the MiB of DDR that holds the DMA descriptors and buffers
+/// (memory.x's `DMA` region): normal non-cacheable.
+pub const DMA_BASE: u32 = 0x0200_0000;
 
 /// Memory type of a section.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -60,7 +70,9 @@ impl Region {
 /// The regions of the map above, first section index and end (exclusive).
 const MAP: &[(u32, u32, Region)] = &[
     (0x000, 0x001, Region::Uncached),
-    (0x001, 0x100, Region::Cached),
+    (0x001, 0x020, Region::Cached),
+    (0x020, 0x021, Region::Uncached),
+    (0x021, 0x100, Region::Cached),
     (0x400, 0x800, Region::Device),
     (0xE00, 0xE03, Region::Device),
     (0xF80, 0xF90, Region::Device),
@@ -160,8 +172,10 @@ pub const SCTLR_BOOT: u32 = SCTLR_RESET | SCTLR_ON;
 pub const USED: &[(&str, u32)] = &[
     ("ddr-code", 0x0010_0000),
     ("ddr-data", 0x0090_0000),
+    ("ddr-dma", DMA_BASE),
     ("gp0-pl-regs", regmap::BASE_ADDR as u32),
     ("uart1", 0xE000_1000),
+    ("gem0", 0xE000_B000),
     ("qspi", 0xE000_D000),
     ("slcr-devcfg", 0xF800_7000),
     ("a9-private", 0xF8F0_0000),
@@ -221,11 +235,17 @@ mod tests {
         // Code and data of memory.x, and the top of the smallest board's DDR.
         assert_eq!(at(0x0010_0000), Region::Cached);
         assert_eq!(at(0x0090_0000 + 23 * SECTION_BYTES - 1), Region::Cached);
+        // The DMA MiB right above DATA, and nothing more.
+        assert_eq!(at(0x0200_0000), Region::Uncached);
+        assert_eq!(at(0x020F_FFFF), Region::Uncached);
+        assert_eq!(at(0x0210_0000), Region::Cached);
+        assert_eq!(at(DMA_BASE), Region::Uncached);
         assert_eq!(at(0x0FFF_FFFF), Region::Cached);
         assert_eq!(at(0x1000_0000), Region::Fault);
         assert_eq!(at(regmap::BASE_ADDR as u32), Region::Device);
         for a in [
             0xE000_1000,
+            0xE000_B000,
             0xE000_D000,
             0xF800_700C,
             0xF8F0_0200,

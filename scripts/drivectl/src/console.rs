@@ -37,6 +37,11 @@ pub struct Target {
     /// (`drivectl up`); without it, the running drive is used.
     #[arg(long)]
     pub fresh: bool,
+    /// Forward this host TCP port (127.0.0.1) to the QEMU firmware's
+    /// socketcand server (CANopen over TCP, port 29536 on GEM0), e.g. for
+    /// python-can's `socketcand` interface.
+    #[arg(long, value_name = "PORT")]
+    pub can_port: Option<u16>,
 }
 
 const DEFAULT_FLASH: &str = "target/run/qspi-flash.img";
@@ -102,6 +107,7 @@ impl Target {
             (self.icount, "--icount"),
             (self.pl != "sim", "--pl"),
             (self.flash != Path::new(DEFAULT_FLASH), "--flash"),
+            (self.can_port.is_some(), "--can-port"),
         ];
         let given: Vec<&str> = boot_options
             .iter()
@@ -126,6 +132,7 @@ impl Target {
         q.icount = self.icount;
         q.pl_rtl = self.pl == "rtl";
         q.flash = Some(self.flash.clone());
+        q.can_port = self.can_port;
         q
     }
 }

@@ -41,6 +41,29 @@ pub struct Qemu {
     /// [`ensure_flash_image`]; `None`: an erased flash that lives as long
     /// as QEMU.
     pub flash: Option<PathBuf>,
+    /// Host TCP port (on 127.0.0.1) forwarded to the firmware's socketcand
+    /// server (`drive::can_gateway::PORT`) through GEM0 on QEMU's user
+    /// network; `None`: QEMU's default network, nothing forwarded.
+    pub can_port: Option<u16>,
+}
+
+/// A TCP port on 127.0.0.1 that nothing listens on right now (the kernel
+/// picks it), for [`Qemu::can_port`]: parallel QEMUs get different ones.
+/// Another process may still take it before QEMU binds it; QEMU then
+/// fails to start and says so.
+pub fn free_tcp_port() -> Result<u16> {
+    let l = std::net::TcpListener::bind("127.0.0.1:0").context("no free TCP port")?;
+    Ok(l.local_addr()?.port())
+}
+
+/// QEMU's `-nic` for GEM0 with the host's `port` forwarded to the
+/// firmware's socketcand port. The xilinx-zynq-a9 machine gives the
+/// first NIC to the GEM at 0xE000B000 (the firmware's GEM0).
+pub fn can_nic(port: u16) -> String {
+    format!(
+        "user,model=cadence_gem,hostfwd=tcp:127.0.0.1:{port}-:{}",
+        drive::can_gateway::PORT
+    )
 }
 
 /// Bytes of the QSPI flash image: QEMU's n25q128, 16 MiB.
@@ -75,6 +98,7 @@ impl Qemu {
             pl_rtl: false,
             cosim_dir: None,
             flash: None,
+            can_port: None,
         }
     }
 
@@ -112,6 +136,9 @@ impl Qemu {
                 "-drive".into(),
                 format!("if=mtd,index=8,format=raw,file={}", f.display()),
             ]);
+        }
+        if let Some(port) = self.can_port {
+            a.extend(["-nic".into(), can_nic(port)]);
         }
         a.extend(["-kernel".into(), self.elf.display().to_string()]);
         a
@@ -564,5 +591,19 @@ mod tests {
         assert!(a.contains("-serial file:log.bin -serial stdio"), "{a}");
         assert!(a.ends_with("-kernel fw.elf"));
         assert!(!a.contains("icount"));
+        assert!(!a.contains("-nic"));
+    }
+
+    #[test]
+    fn can_port_forwards_to_the_socketcand_port() {
+        let mut q = Qemu::new("fw.elf");
+        q.can_port = Some(40123);
+        let a = q.args("stdio").join(" ");
+        assert!(
+            a.contains("-nic user,model=cadence_gem,hostfwd=tcp:127.0.0.1:40123-:29536 "),
+            "{a}"
+        );
+        let (p1, p2) = (free_tcp_port().unwrap(), free_tcp_port().unwrap());
+        assert!(p1 != 0 && p2 != 0);
     }
 }

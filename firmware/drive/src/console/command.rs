@@ -171,6 +171,21 @@ pub struct Status {
     pub rx_overruns: u32,
     /// Log frames dropped because the log's RAM ring was full.
     pub log_dropped: u32,
+    /// The network path (Ethernet, socketcand, CANopen).
+    pub net: NetStatus,
+}
+
+/// The network path's state for `status`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct NetStatus {
+    /// IPv4 address and prefix length, bits; `None` while there is none.
+    pub ipv4: Option<([u8; 4], u8)>,
+    /// Whether the address came from DHCP (else the static fallback).
+    pub dhcp: bool,
+    /// Whether a socketcand client is connected.
+    pub client: bool,
+    /// The socketcand session's and node's counters.
+    pub can: crate::can_gateway::Counts,
 }
 
 /// What the commands need to know about the firmware.

@@ -16,8 +16,8 @@ mod editor;
 
 pub use command::{
     execute, parse, write_parse_error, Action, CaptureCmd, Command, ConfigCmd, Context, DebugCmd,
-    FaultCmd, InfoCmd, ModeSel, MotionCmd, ParseError, Spec, Status, Sweep, TelCmd, TelOps,
-    COMMANDS, STALL_MAX_MS, STEP_WINDOW_DEFAULT_S, STEP_WINDOW_MAX_S,
+    FaultCmd, InfoCmd, ModeSel, MotionCmd, NetStatus, ParseError, Spec, Status, Sweep, TelCmd,
+    TelOps, COMMANDS, STALL_MAX_MS, STEP_WINDOW_DEFAULT_S, STEP_WINDOW_MAX_S,
 };
 pub use drive::{
     Bench, DriveError, DriveOps, DriveStatus, Injection, MmuReport, PlKind, StoreStatus,

@@ -68,6 +68,7 @@ pub fn execute<W: Write>(
                 s.lines, s.errors, s.rx_overruns
             )?;
             write!(out, "log: {} frames dropped (ring full)\r\n", s.log_dropped)?;
+            write_net(out, &s.net)?;
             let st = drv.status();
             write_status(out, &st)?;
             match drv.sensor_check_due() {
@@ -84,6 +85,34 @@ pub fn execute<W: Write>(
         }
     }
     Ok(Outcome::Ok)
+}
+
+/// The `net:` and `can:` lines of `status`.
+fn write_net<W: Write>(out: &mut W, n: &super::NetStatus) -> fmt::Result {
+    match n.ipv4 {
+        Some(([a, b, c, d], prefix)) => write!(
+            out,
+            "net: {a}.{b}.{c}.{d}/{prefix} ({})",
+            if n.dhcp { "dhcp" } else { "static" }
+        )?,
+        None => out.write_str("net: no address")?,
+    }
+    write!(
+        out,
+        ", socketcand tcp {}: {}\r\n",
+        crate::can_gateway::PORT,
+        if n.client {
+            "client connected"
+        } else {
+            "no client"
+        }
+    )?;
+    let c = &n.can;
+    write!(
+        out,
+        "can: {} frames in, {} frames out, {} dropped, {} errors\r\n",
+        c.frames_in, c.frames_out, c.dropped, c.errors
+    )
 }
 
 /// The `gp0_guard:` line of `status`. A failed guard is what an emulator

@@ -16,6 +16,17 @@ fn ctx() -> Context {
             errors: 2,
             rx_overruns: 0,
             log_dropped: 0,
+            net: NetStatus {
+                ipv4: Some(([10, 0, 2, 15], 24)),
+                dhcp: true,
+                client: false,
+                can: crate::can_gateway::Counts {
+                    frames_in: 3,
+                    frames_out: 2,
+                    dropped: 1,
+                    errors: 4,
+                },
+            },
         },
     }
 }
@@ -130,6 +141,14 @@ fn status_reply_has_units() {
     assert!(r.contains("uptime: 12.000042 s\r\n"), "{r}");
     assert!(r.contains("ticks: 12000 (rate 1000 Hz)\r\n"), "{r}");
     assert!(r.contains("gates: off (safe state)\r\n"), "{r}");
+    assert!(
+        r.contains("net: 10.0.2.15/24 (dhcp), socketcand tcp 29536: no client\r\n"),
+        "{r}"
+    );
+    assert!(
+        r.contains("can: 3 frames in, 2 frames out, 1 dropped, 4 errors\r\n"),
+        "{r}"
+    );
     assert_one_final_line(&r);
 }
 
