@@ -1,11 +1,12 @@
 //! The network path: GEM0 under smoltcp (IPv4, DHCP with a static
 //! fallback), and the socketcand server on TCP port
-//! `drive::can_gateway::PORT` in front of the drive's CANopen node
-//! (`drive::can_gateway`). Polled from the console loop (`app`), never
-//! from an interrupt: the control step's work does not change, and a poll
-//! only moves what is there, so it never waits for the network.
+//! `drive::can_gateway::PORT` in front of the drive's CANopen device
+//! (`crate::fieldbus`). Polled from the console loop (`app`), never from
+//! an interrupt: the control interrupt only hands the device the servo
+//! after each step (`drive::fieldbus::Link::boundary`), and a poll only
+//! moves what is there, so it never waits for the network.
 use crate::ps::gem::Gem;
-use drive::can_gateway::{Gateway, LineSink, PORT};
+use drive::can_gateway::{Device, Gateway, LineSink, PORT};
 use smoltcp::iface::{
     Config, Interface, PollIngressSingleResult, PollResult, SocketHandle, SocketSet, SocketStorage,
 };
@@ -55,6 +56,25 @@ impl LineSink for Sink<'_> {
             return false;
         }
         s.send_slice(line) == Ok(line.len())
+    }
+}
+
+/// The drive's CANopen device (`crate::fieldbus`) as the gateway's
+/// device: frames in with the servo, timed frames and those the control
+/// interrupt left.
+struct DriveDevice;
+
+impl Device for DriveDevice {
+    fn on_frame(&mut self, f: &canopen::CanFrame) -> canopen::Frames {
+        crate::fieldbus::on_frame(f)
+    }
+
+    fn tick(&mut self, now_us: u64) -> canopen::Frames {
+        let mut out = crate::fieldbus::take_from_control();
+        for f in crate::fieldbus::tick(now_us).iter() {
+            out.push(*f);
+        }
+        out
     }
 }
 
@@ -112,7 +132,7 @@ impl Net {
             sockets,
             tcp,
             dhcp,
-            gateway: Gateway::new(0),
+            gateway: Gateway::new(),
             leased: false,
         }
     }
@@ -205,8 +225,9 @@ impl Net {
             if n == 0 {
                 break;
             }
-            self.gateway.on_input(&buf[..n], now_us, &mut Sink(sock));
+            self.gateway
+                .on_input(&buf[..n], now_us, &mut DriveDevice, &mut Sink(sock));
         }
-        self.gateway.tick(now_us, &mut Sink(sock));
+        self.gateway.tick(now_us, &mut DriveDevice, &mut Sink(sock));
     }
 }

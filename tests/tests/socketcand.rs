@@ -109,9 +109,9 @@ fn sdo_and_nmt_over_socketcand() {
     c.send("< send 601 8 40 18 10 00 00 00 00 00 >");
     assert_eq!(c.expect_frame("581"), "4F18100004000000");
 
-    // An object the drive does not have (0x2000): abort 0x06020000.
-    c.send("< send 601 8 40 00 20 00 00 00 00 00 >");
-    assert_eq!(c.expect_frame("581"), "8000200000000206");
+    // An object the drive does not have (0x2FFF): abort 0x06020000.
+    c.send("< send 601 8 40 FF 2F 00 00 00 00 00 >");
+    assert_eq!(c.expect_frame("581"), "80FF2F0000000206");
 
     // A malformed command: an error, nothing sent on.
     c.send("< send 601 9 1 2 3 4 5 6 7 8 9 >");

@@ -1,90 +1,37 @@
-//! The drive's CANopen node behind a socketcand connection: bytes from the
-//! TCP client go through `canopen::socketcand` to the node, the frames the
-//! node produces (boot-up, SDO responses, heartbeat, EMCY) go back to the
-//! client as `< frame ... >` lines. Transport-free: the firmware's network
-//! code hands in received bytes and the time, and passes each returned
-//! line to the TCP socket whole.
+//! The socketcand connection in front of the drive's CANopen device:
+//! bytes from the TCP client go through `canopen::socketcand`, the frames
+//! they carry go to the [`Device`], and the frames the device produces
+//! (boot-up, SDO answers, PDOs, heartbeat, EMCY) go back to the client as
+//! `< frame ... >` lines. Transport-free: the firmware's network code
+//! hands in received bytes and the time, and passes each returned line to
+//! the TCP socket whole.
 //!
 //! One client at a time, as socketcand serves one bus per connection;
-//! the node lives on between connections (it is the drive's, not the
-//! connection's). Frames the node produces while no client is in raw mode
-//! are dropped, as on a CAN bus with no other node listening.
+//! the device lives on between connections (it is the drive's, not the
+//! connection's). Frames it produces while no client is in raw mode are
+//! dropped, as on a CAN bus with no other node listening.
 
-use canopen::node::{Application, Config, Node};
-use canopen::od::{Abort, Access, DataType, Entry, ObjectDictionary, Table};
-use canopen::pdo::Pdos;
 use canopen::socketcand::{self, Event, Line, Server};
-use canopen::CanFrame;
+use canopen::{CanFrame, Frames};
 
 /// TCP port of the socketcand server (socketcand's default).
 pub const PORT: u16 = 29536;
 /// The bus name a client opens.
 pub const BUS: &str = "can0";
-/// Node-ID of the drive.
-pub const NODE_ID: u8 = 1;
-/// Heartbeat period at power-on (0x1017), ms.
-pub const HEARTBEAT_MS: u16 = 1000;
 /// How long frames wait after the raw-mode `< ok >`, so that it reaches
 /// the client alone (python-can compares that read with the exact text),
 /// µs; the client's next command ends the wait earlier.
 pub const RAW_HOLD_US: u64 = 100_000;
 
-/// 0x1000 device type: CiA 402 device profile (0x0192) with the servo
-/// drive's additional information 0x0002 (CiA 402-2, 0x1000).
-pub const DEVICE_TYPE: u32 = 0x0002_0192;
-/// 0x1018:01 vendor ID: 0, no CiA-assigned ID.
-pub const VENDOR_ID: u32 = 0;
-/// 0x1018:02 product code.
-pub const PRODUCT_CODE: u32 = 0x0000_0001;
-/// 0x1018:03 revision number: major 0, minor 1 (CiA 301 7.5.2.21).
-pub const REVISION: u32 = 0x0000_0001;
-
-/// The drive's own objects (the node owns the communication and CiA 402
-/// ones).
-const ENTRIES: &[Entry] = &[
-    Entry::new(0x1000, 0, DataType::Unsigned32, Access::Const),
-    Entry::new(0x1018, 0, DataType::Unsigned8, Access::Const),
-    Entry::new(0x1018, 1, DataType::Unsigned32, Access::Const),
-    Entry::new(0x1018, 2, DataType::Unsigned32, Access::Const),
-    Entry::new(0x1018, 3, DataType::Unsigned32, Access::Const),
-    Entry::new(0x1018, 4, DataType::Unsigned32, Access::Const),
-];
-
-/// The drive's object dictionary as the node sees it.
-#[derive(Clone, Copy, Debug)]
-pub struct DriveObjects {
-    /// 0x1018:04.
-    pub serial: u32,
+/// The CANopen device on the bus: the drive's node (`fieldbus::Link` with
+/// the servo, in the firmware).
+pub trait Device {
+    /// A frame from the bus; the frames to send, in order.
+    fn on_frame(&mut self, f: &CanFrame) -> Frames;
+    /// Time passes (µs, monotonic); the frames to send (heartbeat, timed
+    /// PDOs, frames the control loop left).
+    fn tick(&mut self, now_us: u64) -> Frames;
 }
-
-impl ObjectDictionary for DriveObjects {
-    fn entry(&self, index: u16, sub: u8) -> Result<Entry, Abort> {
-        Table::new(ENTRIES).entry(index, sub)
-    }
-
-    fn read(&mut self, index: u16, sub: u8, out: &mut [u8]) -> Result<usize, Abort> {
-        let value: &[u8] = match (index, sub) {
-            (0x1000, 0) => &DEVICE_TYPE.to_le_bytes(),
-            (0x1018, 0) => &[4],
-            (0x1018, 1) => &VENDOR_ID.to_le_bytes(),
-            (0x1018, 2) => &PRODUCT_CODE.to_le_bytes(),
-            (0x1018, 3) => &REVISION.to_le_bytes(),
-            (0x1018, 4) => &self.serial.to_le_bytes(),
-            _ => return Err(Abort::ObjectDoesNotExist),
-        };
-        out.get_mut(..value.len())
-            .ok_or(Abort::General)?
-            .copy_from_slice(value);
-        Ok(value.len())
-    }
-
-    fn write(&mut self, _index: u16, _sub: u8, _data: &[u8]) -> Result<(), Abort> {
-        // Every entry is constant; the checks refuse writes before this.
-        Err(Abort::WriteReadOnly)
-    }
-}
-
-impl Application for DriveObjects {}
 
 /// Where lines go: the TCP socket. `send` writes the whole line or
 /// nothing and says which.
@@ -113,47 +60,17 @@ pub struct Counts {
     pub errors: u32,
 }
 
-/// The node and the current client.
+/// The current client and the counters.
+#[derive(Default)]
 pub struct Gateway {
-    node: Node,
-    objects: DriveObjects,
     session: Option<Session>,
     counts: Counts,
 }
 
 impl Gateway {
-    /// The drive's node, booted (NMT pre-operational, its boot-up frame
-    /// dropped: no client is connected yet).
-    pub fn new(serial: u32) -> Self {
-        let config = Config {
-            node_id: NODE_ID,
-            heartbeat_ms: HEARTBEAT_MS,
-            // No CiA 402 mode drives the servo over CANopen yet: 0x6502
-            // says so, and 0x6060 reads 0 (no mode).
-            supported_modes: 0,
-            initial_mode: 0,
-            quick_stop_option: 2,
-        };
-        let node = match Node::new(config, Pdos::new(NODE_ID)) {
-            Some(n) => n,
-            // NODE_ID is a constant inside 1..=127 (checked by a test).
-            None => unreachable!(),
-        };
-        let mut g = Self {
-            node,
-            objects: DriveObjects { serial },
-            session: None,
-            counts: Counts::default(),
-        };
-        let boot = g.node.boot();
-        g.counts.dropped += boot.len() as u32;
-        g.node.drive_initialised(&mut g.objects);
-        g
-    }
-
-    /// The node (NMT state, reads for the console).
-    pub fn node(&self) -> &Node {
-        &self.node
+    /// No client yet.
+    pub fn new() -> Self {
+        Self::default()
     }
 
     /// The counters.
@@ -184,9 +101,15 @@ impl Gateway {
         self.session = None;
     }
 
-    /// Bytes from the client at `now_us`; replies and the node's answers
+    /// Bytes from the client at `now_us`; replies and the device's answers
     /// go to `out`.
-    pub fn on_input(&mut self, bytes: &[u8], now_us: u64, out: &mut impl LineSink) {
+    pub fn on_input(
+        &mut self,
+        bytes: &[u8],
+        now_us: u64,
+        dev: &mut impl Device,
+        out: &mut impl LineSink,
+    ) {
         for &b in bytes {
             let Some(session) = self.session.as_mut() else {
                 return;
@@ -210,7 +133,7 @@ impl Gateway {
                 }
                 Event::Send(frame) => {
                     self.counts.frames_in += 1;
-                    let answers = self.node.on_frame(&frame, &mut self.objects);
+                    let answers = dev.on_frame(&frame);
                     for f in answers.iter() {
                         self.emit(f, now_us, out);
                     }
@@ -219,9 +142,9 @@ impl Gateway {
         }
     }
 
-    /// Time passes: heartbeat and the node's other timed frames.
-    pub fn tick(&mut self, now_us: u64, out: &mut impl LineSink) {
-        let frames = self.node.tick(now_us, &mut self.objects);
+    /// Time passes: the device's timed frames.
+    pub fn tick(&mut self, now_us: u64, dev: &mut impl Device, out: &mut impl LineSink) {
+        let frames = dev.tick(now_us);
         for f in frames.iter() {
             self.emit(f, now_us, out);
         }
@@ -259,6 +182,11 @@ impl Gateway {
 mod tests {
     extern crate std;
     use super::*;
+    use crate::fieldbus::{ConfigValues, Link};
+    use crate::pl::fake::FakePl;
+    use crate::servo::sensors::PlTime;
+    use crate::servo::{Servo, ServoConfig};
+    use regmap::bus::{BusError, RegisterBus};
     use std::string::String;
     use std::vec::Vec;
 
@@ -279,30 +207,97 @@ mod tests {
         }
     }
 
-    fn raw_client() -> (Gateway, Sink) {
-        let mut g = Gateway::new(0x1234_5678);
+    /// The fake PL, its time standing still.
+    struct Pl(FakePl);
+
+    impl RegisterBus for Pl {
+        fn read(&mut self, addr: usize) -> Result<u32, BusError> {
+            self.0.read(addr)
+        }
+        fn write(&mut self, addr: usize, value: u32) -> Result<(), BusError> {
+            self.0.write(addr, value)
+        }
+    }
+
+    impl PlTime for Pl {
+        fn wait_cycles(&mut self, _cycles: u64) {}
+    }
+
+    /// The drive's device as the firmware has it: node 1 on the servo,
+    /// its boot-up frame sent at the first tick.
+    struct Drive {
+        link: Link<ConfigValues>,
+        servo: Servo,
+        pl: Pl,
+        boot: Frames,
+    }
+
+    impl Drive {
+        fn new(serial: u32) -> Self {
+            let cfg = ServoConfig::default();
+            let mut pl = Pl(FakePl::new());
+            let mut servo = Servo::new(&cfg).unwrap();
+            servo.init(&mut pl).unwrap();
+            let mut link = Link::new(1, ConfigValues::new(cfg)).unwrap();
+            link.obj.serial_number = serial;
+            let boot = link.boot();
+            Self {
+                link,
+                servo,
+                pl,
+                boot,
+            }
+        }
+    }
+
+    impl Device for Drive {
+        fn on_frame(&mut self, f: &CanFrame) -> Frames {
+            self.link
+                .on_frame(f, &mut self.servo, &mut self.pl)
+                .unwrap()
+        }
+        fn tick(&mut self, now_us: u64) -> Frames {
+            let mut out = core::mem::take(&mut self.boot);
+            let more = self
+                .link
+                .tick(now_us, &mut self.servo, &mut self.pl)
+                .unwrap();
+            for f in more.iter() {
+                out.push(*f);
+            }
+            out
+        }
+    }
+
+    fn raw_client() -> (Gateway, Drive, Sink) {
+        let mut g = Gateway::new();
+        let mut d = Drive::new(0x1234_5678);
         let mut s = Sink::default();
         assert_eq!(g.connect(), b"< hi >");
-        g.on_input(b"< open can0 >", 0, &mut s);
-        g.on_input(b"< rawmode >", 0, &mut s);
+        g.on_input(b"< open can0 >", 0, &mut d, &mut s);
+        g.on_input(b"< rawmode >", 0, &mut d, &mut s);
         assert_eq!(s.lines, ["< ok >", "< ok >"]);
         s.lines.clear();
-        (g, s)
+        (g, d, s)
     }
 
     #[test]
     fn constants_are_valid() {
-        assert!((1..=127).contains(&NODE_ID));
         assert!(Server::new(BUS).is_some());
         assert_eq!(PORT, 29536);
     }
 
     #[test]
     fn sdo_upload_of_the_device_type() {
-        let (mut g, mut s) = raw_client();
+        let (mut g, mut d, mut s) = raw_client();
         // CiA 301 expedited upload request to node 1 (COB-ID 0x600 + 1):
         // ccs 2 (0x40), index 0x1000 little-endian, sub-index 0.
-        g.on_input(b"< send 601 8 40 00 10 00 00 00 00 00 >", 1_500_000, &mut s);
+        g.on_input(
+            b"< send 601 8 40 00 10 00 00 00 00 00 >",
+            1_500_000,
+            &mut d,
+            &mut s,
+        );
         // Response on 0x580 + 1: 0x43 = scs 2, expedited, size indicated,
         // 4 bytes; index, sub-index; 0x00020192 little-endian.
         assert_eq!(s.lines, ["< frame 581 1.500000 4300100092010200 >"]);
@@ -312,9 +307,9 @@ mod tests {
 
     #[test]
     fn sdo_upload_of_the_identity() {
-        let (mut g, mut s) = raw_client();
-        g.on_input(b"< send 601 8 40 18 10 00 00 00 00 00 >", 0, &mut s);
-        g.on_input(b"< send 601 8 40 18 10 04 00 00 00 00 >", 0, &mut s);
+        let (mut g, mut d, mut s) = raw_client();
+        g.on_input(b"< send 601 8 40 18 10 00 00 00 00 00 >", 0, &mut d, &mut s);
+        g.on_input(b"< send 601 8 40 18 10 04 00 00 00 00 >", 0, &mut d, &mut s);
         // 0x1018:00 = 4 (UNSIGNED8: 0x4F, 1 byte), 0x1018:04 = serial.
         assert_eq!(
             s.lines,
@@ -324,21 +319,25 @@ mod tests {
             ]
         );
         // An object the drive does not have: abort 0x06020000.
-        g.on_input(b"< send 601 8 40 00 20 00 00 00 00 00 >", 0, &mut s);
-        assert_eq!(s.lines[2], "< frame 581 0.000000 8000200000000206 >");
+        g.on_input(b"< send 601 8 40 FF 2F 00 00 00 00 00 >", 0, &mut d, &mut s);
+        assert_eq!(s.lines[2], "< frame 581 0.000000 80FF2F0000000206 >");
     }
 
     #[test]
     fn nmt_and_heartbeat() {
-        let (mut g, mut s) = raw_client();
+        let (mut g, mut d, mut s) = raw_client();
+        // The boot-up frame (0x701, one byte 0) goes out at the first tick.
+        g.tick(RAW_HOLD_US, &mut d, &mut s);
+        assert_eq!(s.lines[0], "< frame 701 0.100000 00 >");
+        s.lines.clear();
         // NMT start node 1: [0x01, 0x01] on COB-ID 0; no answer.
-        g.on_input(b"< send 000 2 1 1 >", 0, &mut s);
+        g.on_input(b"< send 000 2 1 1 >", 0, &mut d, &mut s);
         assert!(s.lines.is_empty());
-        // The heartbeat at 1000 ms says operational (0x05).
-        for t in (0..=2_000_000).step_by(100_000) {
-            g.tick(t, &mut s);
+        // The heartbeat every 100 ms says operational (0x05).
+        for t in (200_000..=2_000_000).step_by(100_000) {
+            g.tick(t, &mut d, &mut s);
         }
-        assert!(!s.lines.is_empty());
+        assert!(s.lines.len() >= 18, "{:?}", s.lines);
         assert!(s
             .lines
             .iter()
@@ -347,46 +346,56 @@ mod tests {
 
     #[test]
     fn frames_wait_after_the_raw_mode_ok() {
-        let mut g = Gateway::new(0);
+        let mut g = Gateway::new();
+        let mut d = Drive::new(0);
         let mut s = Sink::default();
         g.connect();
-        g.on_input(b"< open can0 >< rawmode >", 0, &mut s);
-        // The first heartbeat, due right after the `< ok >`, is held back
-        // (dropped); the next, one period later, goes out: 0x7F =
-        // pre-operational.
-        let dropped = g.counts().dropped;
-        g.tick(RAW_HOLD_US - 1, &mut s);
+        g.on_input(b"< open can0 >< rawmode >", 0, &mut d, &mut s);
+        // The boot-up frame and the first heartbeat, due right after the
+        // `< ok >`, are held back (dropped); the next heartbeat, one
+        // period (100 ms) later, goes out: 0x7F = pre-operational.
+        g.tick(RAW_HOLD_US - 1, &mut d, &mut s);
         assert_eq!(s.lines.len(), 2, "{:?}", s.lines);
-        assert_eq!(g.counts().dropped, dropped + 1);
-        g.tick(RAW_HOLD_US - 1 + 1_000_000, &mut s);
-        assert_eq!(s.lines[2..], ["< frame 701 1.099999 7F >"]);
+        assert_eq!(g.counts().dropped, 2);
+        g.tick(RAW_HOLD_US - 1 + 100_000, &mut d, &mut s);
+        assert_eq!(s.lines[2..], ["< frame 701 0.199999 7F >"]);
     }
 
     #[test]
     fn bad_input_gets_an_error_and_changes_nothing() {
-        let (mut g, mut s) = raw_client();
-        g.on_input(b"< send 601 9 1 2 3 4 5 6 7 8 9 >< bogus >", 0, &mut s);
+        let (mut g, mut d, mut s) = raw_client();
+        g.on_input(
+            b"< send 601 9 1 2 3 4 5 6 7 8 9 >< bogus >",
+            0,
+            &mut d,
+            &mut s,
+        );
         assert_eq!(
             s.lines,
             ["< error syntax error >", "< error unknown command >"]
         );
         assert_eq!(g.counts().errors, 2);
         assert_eq!(g.counts().frames_in, 0);
-        assert_eq!(g.node().nmt_state(), canopen::nmt::NmtState::PreOperational);
+        assert_eq!(
+            d.link.node.nmt_state(),
+            canopen::nmt::NmtState::PreOperational
+        );
     }
 
     #[test]
     fn no_client_or_a_full_socket_drops_whole_lines() {
-        let mut g = Gateway::new(0);
+        let mut g = Gateway::new();
+        let mut d = Drive::new(0);
         let mut s = Sink::default();
-        // The boot-up frame had no client.
-        assert_eq!(g.counts().dropped, 1);
-        g.on_input(b"< open can0 >", 0, &mut s);
+        // The boot-up frame has no client.
+        g.tick(0, &mut d, &mut s);
+        assert!(g.counts().dropped >= 1);
+        g.on_input(b"< open can0 >", 0, &mut d, &mut s);
         assert!(s.lines.is_empty());
-        let (mut g, mut s) = raw_client();
+        let (mut g, mut d, mut s) = raw_client();
         s.full = true;
-        g.on_input(b"< send 601 8 40 00 10 00 00 00 00 00 >", 0, &mut s);
-        assert_eq!(g.counts().dropped, 2);
+        g.on_input(b"< send 601 8 40 00 10 00 00 00 00 00 >", 0, &mut d, &mut s);
+        assert_eq!(g.counts().dropped, 1);
         g.disconnect();
         assert!(!g.connected());
     }
