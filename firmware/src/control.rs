@@ -1392,8 +1392,8 @@ pub(crate) fn save_config() -> Result<usize, DriveError> {
             }
         },
     };
-    let slot = store::save(&mut paced, &Config::from_servo(&sc), &sc)
-        .map_err(|_| DriveError::Flash)?;
+    let slot =
+        store::save(&mut paced, &Config::from_servo(&sc), &sc).map_err(|_| DriveError::Flash)?;
     let mut flash = paced.flash;
     let l = store::load(&mut flash, &sc).map_err(|_| DriveError::Flash)?;
     console(|s| {

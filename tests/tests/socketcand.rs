@@ -256,3 +256,58 @@ fn a_flood_of_commands_and_garbage_leaves_the_console_and_the_node_answering() {
     }
     assert_ok(&cmd(&mut console, "status"));
 }
+
+/// A robot's controller as CiA 402 master: unmodified python-canopen
+/// (tests/python/cia402_csp.py) imports the committed EDS, reads every
+/// object in it, maps the PDOs, takes the drive to Operation enabled in
+/// cyclic synchronous position and streams 2,000 set-points, one per
+/// SYNC, each answered by exactly one TPDO; the position ends within a
+/// count of the last set-point, and the drive counted the same frames
+/// with 0 overruns.
+#[test]
+fn python_canopen_drives_the_servo_in_csp_for_2000_syncs() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let python = root.join("target/socketcand-venv/bin/python");
+    assert!(
+        python.is_file(),
+        "{} missing: run scripts/setup (python-can and canopen)",
+        python.display()
+    );
+    let (mut console, port) = boot_with_can();
+    // The simulated rotor free (it is held at standstill by default).
+    assert_ok(&cmd(&mut console, "sim set locked 0"));
+    let out = std::process::Command::new("timeout")
+        .arg("300")
+        .arg(&python)
+        .arg(root.join("tests/python/cia402_csp.py"))
+        .arg(port.to_string())
+        .arg(root.join("docs/canopen/drive.eds"))
+        .arg("2000")
+        .output()
+        .expect("python runs");
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.status.success(), "{text}");
+    assert!(
+        text.contains("SYNCs 2000, TPDOs 2000, missing 0, extra 0"),
+        "{text}"
+    );
+    let read: usize = text
+        .split("EDS objects read: ")
+        .nth(1)
+        .and_then(|r| r.split(',').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("no EDS count: {text}"));
+    assert!(read >= 190, "{read} EDS objects: {text}");
+    let st = cmd(&mut console, "status");
+    let s = st.lines.join("\n");
+    assert!(s.contains("\noverruns: 0\n"), "{s}");
+    assert!(
+        s.contains("mode 8 (csp), syncs 2000, rpdos 2000, tpdos 2000,"),
+        "{s}"
+    );
+    println!("{text}");
+}

@@ -102,7 +102,10 @@ mod tests {
         for hz in [1000u32, 500, 250] {
             let mut row = format!("| {hz} Hz |");
             for d in [1, 6, 12] {
-                row += &format!(" {:.1} % |", 100.0 * load(d, CSP_LAYOUT, f64::from(hz), 1e6));
+                row += &format!(
+                    " {:.1} % |",
+                    100.0 * load(d, CSP_LAYOUT, f64::from(hz), 1e6)
+                );
             }
             row += &format!(" {} |", max_drives(CSP_LAYOUT, f64::from(hz), 1e6, 0.8));
             assert!(doc.contains(&row), "docs/canopen.md lacks {row:?}");
