@@ -118,10 +118,11 @@ impl Net {
             tcp::SocketBuffer::new(&mut rx[..]),
             tcp::SocketBuffer::new(&mut tx[..]),
         );
-        // Each frame line goes out at once, and each segment is
-        // acknowledged at once: with Nagle's rule a TPDO waited for the
-        // acknowledgement of the line before it, which a client's delayed
-        // ACK holds for 40 ms (a SYNC answered 50 ms late, 23 SYNCs/s).
+        // Each frame line goes out at once (no Nagle: a TPDO line does not
+        // wait for the acknowledgement of the line before it, which a
+        // client's delayed ACK holds for up to 40 ms), and each segment is
+        // acknowledged at once, so a client's small writes do not wait on
+        // ours.
         socket.set_nagle_enabled(false);
         socket.set_ack_delay(None);
         let tcp = sockets.add(socket);

@@ -32,8 +32,8 @@ def main() -> int:
         if count != b"\x04":
             print("FAIL: 0x1018:00 is not 4")
             return 1
-        # NMT start; the next heartbeats say operational. The 1 s heartbeat
-        # takes 3.3 s of wall time under QEMU, whose A9 timers run at 0.3x
+        # NMT start; the next heartbeats say operational. The 100 ms heartbeat
+        # takes 0.33 s of wall time under QEMU, whose A9 timers run at 0.3x
         # of the board's rate.
         node.nmt.state = "OPERATIONAL"
         state = None
