@@ -312,7 +312,7 @@ pub fn init() -> Boot {
     }
     if let Some(mut bus) = bus {
         let mut servo = Servo::new(&cfg).expect("servo configuration");
-        let mut link = Link::new(crate::fieldbus::NODE_ID, ConfigValues::new(cfg))
+        let mut link = Link::new(drive::fieldbus::NODE_ID, ConfigValues::new(cfg))
             .expect("CANopen node-ID in 1..=127");
         let mut can_out = heapless::Deque::new();
         for f in link.boot().iter() {

@@ -16,9 +16,6 @@ use drive::fieldbus::{ConfigValues, Link};
 use drive::servo::{Servo, ServoConfig};
 use regmap::bus::RegisterBus;
 
-/// The drive's node-ID.
-pub const NODE_ID: u8 = 1;
-
 /// The dictionary's view of the configuration: the servo's, and whether
 /// the gates are on (read back; a failed read counts as on, refusing
 /// the parameters that need them off).

@@ -31,6 +31,9 @@
 //! These are CiA 402's own default units for torque (per mille of rated
 //! torque) and the "increments" of its position factor with a factor of 1.
 
+/// The drive's node-ID (CiA 301: 1..=127).
+pub const NODE_ID: u8 = 1;
+
 pub mod axis;
 pub mod eds;
 pub mod link;
