@@ -151,6 +151,7 @@ fn context() -> Context {
             errors: 0,
             rx_overruns: 0,
             log_dropped: 0,
+            net: Default::default(),
         },
     }
 }
