@@ -150,7 +150,7 @@ def main() -> int:
         t0 = time.monotonic()
         worst = 0.0
         for k in range(syncs):
-            target = start + STEP * min(k, RAMP)
+            target = start + STEP * min(k, RAMP, syncs // 2)
             node.rpdo[1]["Controlword"].raw = 0x0F
             node.rpdo[1]["Target position"].raw = target
             node.rpdo[1].transmit()

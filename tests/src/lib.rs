@@ -121,11 +121,21 @@ pub fn boot_rtl() -> Session {
 /// tests in parallel do not share one; a boot whose port another process
 /// took in between is retried on a new one.
 pub fn boot_with_can() -> (Session, u16) {
+    boot_with_can_on(false)
+}
+
+/// [`boot_with_can`] with the Verilated `pl_top` behind the co-simulation
+/// bridge (`rtl`) or the simulated PL.
+pub fn boot_with_can_on(rtl: bool) -> (Session, u16) {
+    if rtl {
+        check_pl_cosim();
+    }
     let mut last = None;
     for _ in 0..3 {
         let port = drivectl::link::free_tcp_port().expect("a free TCP port");
         let mut q = Qemu::new(elf());
         q.can_port = Some(port);
+        q.pl_rtl = rtl;
         match Session::spawn_qemu(&q, TIMEOUT) {
             Ok(s) => return (s, port),
             Err(e) => last = Some(e),

@@ -5,7 +5,7 @@
 use std::io::{Read, Write};
 use std::net::TcpStream;
 use std::time::{Duration, Instant};
-use system_tests::{assert_ok, boot_with_can, cmd, TIMEOUT};
+use system_tests::{assert_ok, boot_with_can, boot_with_can_on, cmd, TIMEOUT};
 
 /// A socketcand connection: `< ... >` messages in, commands out.
 struct Client {
@@ -266,6 +266,17 @@ fn a_flood_of_commands_and_garbage_leaves_the_console_and_the_node_answering() {
 /// with 0 overruns.
 #[test]
 fn python_canopen_drives_the_servo_in_csp_for_2000_syncs() {
+    csp_with_python(false, 2000);
+}
+
+/// The same master against the Verilated `pl_top` (co-simulation), for
+/// 300 SYNCs: the RTL's encoder, ADC and PWM under the same dictionary.
+#[test]
+fn python_canopen_drives_the_co_simulated_rtl_in_csp() {
+    csp_with_python(true, 300);
+}
+
+fn csp_with_python(rtl: bool, syncs: u32) {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let python = root.join("target/socketcand-venv/bin/python");
     assert!(
@@ -273,7 +284,7 @@ fn python_canopen_drives_the_servo_in_csp_for_2000_syncs() {
         "{} missing: run scripts/setup (python-can and canopen)",
         python.display()
     );
-    let (mut console, port) = boot_with_can();
+    let (mut console, port) = boot_with_can_on(rtl);
     // The simulated rotor free (it is held at standstill by default).
     assert_ok(&cmd(&mut console, "sim set locked 0"));
     let out = std::process::Command::new("timeout")
@@ -282,7 +293,7 @@ fn python_canopen_drives_the_servo_in_csp_for_2000_syncs() {
         .arg(root.join("tests/python/cia402_csp.py"))
         .arg(port.to_string())
         .arg(root.join("docs/canopen/drive.eds"))
-        .arg("2000")
+        .arg(syncs.to_string())
         .output()
         .expect("python runs");
     let text = format!(
@@ -292,7 +303,7 @@ fn python_canopen_drives_the_servo_in_csp_for_2000_syncs() {
     );
     assert!(out.status.success(), "{text}");
     assert!(
-        text.contains("SYNCs 2000, TPDOs 2000, missing 0, extra 0"),
+        text.contains(&format!("SYNCs {syncs}, TPDOs {syncs}, missing 0, extra 0")),
         "{text}"
     );
     let read: usize = text
@@ -305,8 +316,16 @@ fn python_canopen_drives_the_servo_in_csp_for_2000_syncs() {
     let st = cmd(&mut console, "status");
     let s = st.lines.join("\n");
     assert!(s.contains("\noverruns: 0\n"), "{s}");
+    let pl = if rtl {
+        "pl: rtl co-simulation"
+    } else {
+        "pl: simulated"
+    };
+    assert!(s.contains(pl), "{s}");
     assert!(
-        s.contains("mode 8 (csp), syncs 2000, rpdos 2000, tpdos 2000,"),
+        s.contains(&format!(
+            "mode 8 (csp), syncs {syncs}, rpdos {syncs}, tpdos {syncs},"
+        )),
         "{s}"
     );
     println!("{text}");
