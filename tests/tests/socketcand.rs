@@ -330,3 +330,55 @@ fn csp_with_python(rtl: bool, syncs: u32) {
     );
     println!("{text}");
 }
+
+/// A master killed while it drives the motor: its heartbeat stops, the
+/// drive's consumer (0x1016) times out and the drive quick-stops (0x6007
+/// = 3): the velocity loop brakes, the gates go off, the CiA 402 state is
+/// Switch on disabled, and the console commands again.
+#[test]
+fn a_killed_master_quick_stops_the_motor() {
+    use std::io::BufRead;
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let python = root.join("target/socketcand-venv/bin/python");
+    assert!(
+        python.is_file(),
+        "{} missing: run scripts/setup",
+        python.display()
+    );
+    let (mut console, port) = boot_with_can();
+    assert_ok(&cmd(&mut console, "sim set locked 0"));
+    let mut child = std::process::Command::new(&python)
+        .arg(root.join("tests/python/cia402_heartbeat.py"))
+        .arg(port.to_string())
+        .arg(root.join("docs/canopen/drive.eds"))
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .expect("python runs");
+    let mut line = String::new();
+    std::io::BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut line)
+        .unwrap();
+    assert_eq!(line.trim(), "RUNNING");
+    // The master owns the motor meanwhile.
+    let r = cmd(&mut console, "enable");
+    assert!(
+        matches!(&r.fin, drivectl::link::Final::Err { code, .. } if code == "canopen-owns"),
+        "{r:?}"
+    );
+    child.kill().unwrap();
+    let _ = child.wait();
+    // 300 ms of drive time without a heartbeat (about 1 s of wall time
+    // under QEMU), then the quick stop.
+    let end = Instant::now() + TIMEOUT;
+    loop {
+        let s = cmd(&mut console, "status").lines.join("\n");
+        if s.contains("cia402 switch-on-disabled") {
+            assert!(s.contains("gates: off"), "{s}");
+            assert!(s.contains("errors 1"), "the heartbeat EMCY: {s}");
+            break;
+        }
+        assert!(Instant::now() < end, "no quick stop: {s}");
+        std::thread::sleep(Duration::from_millis(200));
+    }
+    assert_ok(&cmd(&mut console, "mode foc"));
+}
