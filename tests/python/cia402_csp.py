@@ -11,12 +11,15 @@ servo over socketcand (python-can's `socketcand` interface):
 4. SYNCS cycles: a target position in RPDO1, then a SYNC; each SYNC must
    be answered by exactly one TPDO1; the target ramps by STEP counts per
    SYNC, then holds;
-5. the position after the stream is within one count of the last target.
+5. the position after the stream is within one count of the last target;
+6. refusals while enabled, each with CiA 301's abort code;
+7. homing method 37: the position becomes 0, statusword bits 12 and 10.
 
 usage: cia402_csp.py PORT EDS [SYNCS]
 Prints one line per check and the measured figures; exits non-zero on the
 first failure.
 """
+import struct
 import sys
 import threading
 import time
@@ -189,6 +192,37 @@ def main() -> int:
         print(f"target {target}, position {pos}, following error {fe} counts")
         if pos is None or abs(pos - target) > 1:
             return fail("the position did not reach the last target")
+        # Refusals while enabled, each with CiA 301's abort code.
+        for what, call, want in (
+            ("read-only 0x6041", lambda: node.sdo.download(0x6041, 0, b"\x00\x00"), 0x0601_0002),
+            ("unknown 0x2FFF", lambda: node.sdo.upload(0x2FFF, 0), 0x0602_0000),
+            ("sub-index 0x1018:9", lambda: node.sdo.upload(0x1018, 9), 0x0609_0011),
+            ("too long 0x6071", lambda: node.sdo.download(0x6071, 0, b"\x01\x02\x03\x04"), 0x0607_0012),
+            ("0x6072 = 1001", lambda: node.sdo.download(0x6072, 0, (1001).to_bytes(2, "little")), 0x0609_0031),
+            ("0x2000 (motor_r_s) with the gates on", lambda: node.sdo.download(0x2000, 0, struct.pack("<f", 0.5)), 0x0800_0022),
+        ):
+            try:
+                call()
+            except canopen.SdoAbortedError as e:
+                if e.code != want:
+                    return fail(f"{what}: abort 0x{e.code:08X}, expected 0x{want:08X}")
+                print(f"refused: {what}: 0x{e.code:08X}")
+                continue
+            return fail(f"{what}: accepted")
+        # Homing, method 37: the present position becomes 0, statusword
+        # bit 12 (homing attained) and bit 10 (target reached).
+        node.sdo[0x6098].raw = 37
+        node.sdo[0x6060].raw = 6
+        end = time.monotonic() + 5.0
+        while time.monotonic() < end:
+            sw = node.sdo[0x6041].raw
+            if sw & 0x1400 == 0x1400:
+                break
+            time.sleep(0.1)
+        home = node.sdo[0x6064].raw
+        print(f"homing: statusword 0x{sw:04X}, position {home}")
+        if sw & 0x1400 != 0x1400 or abs(home) > 1:
+            return fail("homing method 37 did not end at 0")
         node.sdo[0x6040].raw = 0x00
         print("OK")
         return 0

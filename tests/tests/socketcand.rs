@@ -262,8 +262,9 @@ fn a_flood_of_commands_and_garbage_leaves_the_console_and_the_node_answering() {
 /// object in it, maps the PDOs, takes the drive to Operation enabled in
 /// cyclic synchronous position and streams 2,000 set-points, one per
 /// SYNC, each answered by exactly one TPDO; the position ends within a
-/// count of the last set-point, and the drive counted the same frames
-/// with 0 overruns.
+/// count of the last set-point, the drive counted the same frames with 0
+/// overruns; six refusals come with CiA 301's abort codes, and homing
+/// (method 37) zeroes the position.
 #[test]
 fn python_canopen_drives_the_servo_in_csp_for_2000_syncs() {
     csp_with_python(false, 2000);
@@ -313,6 +314,13 @@ fn csp_with_python(rtl: bool, syncs: u32) {
         .and_then(|n| n.parse().ok())
         .unwrap_or_else(|| panic!("no EDS count: {text}"));
     assert!(read >= 190, "{read} EDS objects: {text}");
+    // Six refusals with their abort codes, then homing to 0.
+    assert_eq!(text.matches("\nrefused: ").count(), 6, "{text}");
+    assert!(
+        text.contains("0x2000 (motor_r_s) with the gates on: 0x08000022"),
+        "{text}"
+    );
+    assert!(text.contains(", position 0\n"), "{text}");
     let st = cmd(&mut console, "status");
     let s = st.lines.join("\n");
     assert!(s.contains("\noverruns: 0\n"), "{s}");
@@ -324,7 +332,7 @@ fn csp_with_python(rtl: bool, syncs: u32) {
     assert!(s.contains(pl), "{s}");
     assert!(
         s.contains(&format!(
-            "mode 8 (csp), syncs {syncs}, rpdos {syncs}, tpdos {syncs},"
+            "mode 6 (hm), syncs {syncs}, rpdos {syncs}, tpdos {syncs},"
         )),
         "{s}"
     );
