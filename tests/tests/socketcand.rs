@@ -390,3 +390,59 @@ fn a_killed_master_quick_stops_the_motor() {
     }
     assert_ok(&cmd(&mut console, "mode foc"));
 }
+
+/// The vendor impedance mode (-1) commanded by python-canopen holds the
+/// rotor like a spring: with 2 N m/rev of stiffness about the start, a
+/// constant load of 0.1 N m (`sim set load_torque`, opposing positive
+/// motion) deflects it by 0.05 rev, 205 counts of 4096.
+#[test]
+fn python_canopen_impedance_mode_holds_against_a_load() {
+    use std::io::BufRead;
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let python = root.join("target/socketcand-venv/bin/python");
+    assert!(
+        python.is_file(),
+        "{} missing: run scripts/setup",
+        python.display()
+    );
+    let (mut console, port) = boot_with_can();
+    assert_ok(&cmd(&mut console, "sim set locked 0"));
+    let mut child = std::process::Command::new(&python)
+        .arg(root.join("tests/python/cia402_impedance.py"))
+        .arg(port.to_string())
+        .arg(root.join("docs/canopen/drive.eds"))
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .expect("python runs");
+    let mut out = std::io::BufReader::new(child.stdout.take().unwrap());
+    let mut line = String::new();
+    out.read_line(&mut line).unwrap();
+    assert_eq!(line.trim(), "RUNNING");
+    let counts = |console: &mut drivectl::link::Session| -> f64 {
+        let r = cmd(console, "status");
+        r.lines
+            .iter()
+            .find_map(|l| l.strip_prefix("position_counts: "))
+            .and_then(|v| v.split_whitespace().next())
+            .and_then(|v| v.parse().ok())
+            .expect("position_counts")
+    };
+    let start = counts(&mut console);
+    assert_ok(&cmd(&mut console, "sim set load_torque 0.1"));
+    // Settled within 10 % after the damping's transient.
+    let end = Instant::now() + TIMEOUT;
+    let mut last = start;
+    loop {
+        std::thread::sleep(Duration::from_millis(500));
+        let p = counts(&mut console);
+        let settled = (p - last).abs() <= 1.0;
+        last = p;
+        if settled && ((p - start) + 204.8).abs() <= 20.0 {
+            break;
+        }
+        assert!(Instant::now() < end, "deflection {} counts", p - start);
+    }
+    child.kill().unwrap();
+    let _ = child.wait();
+    assert_ok(&cmd(&mut console, "disable"));
+}
