@@ -240,7 +240,6 @@ impl Axis {
                 out.push(*fr);
             }
         }
-        self.actuals(servo, obj);
         if let Some(q) = self.quick_stop.as_mut() {
             q.left_s -= dt_s;
             let v = libm::fabs(servo.motion_status().velocity_rev_s);
@@ -252,11 +251,12 @@ impl Axis {
                 }
                 self.quick_stop = None;
             }
-            return Ok(out);
-        }
-        if node.drive().state() == State::OperationEnabled {
+        } else if node.drive().state() == State::OperationEnabled {
             self.apply(servo, bus, obj, node)?;
         }
+        // Last: the values a master reads next are the ones after this
+        // boundary's set-points (a new zero shows with its statusword).
+        self.actuals(servo, obj);
         Ok(out)
     }
 
