@@ -38,6 +38,9 @@ def main() -> int:
     if sw & 0x6F != 0x27:
         print(f"FAIL: statusword 0x{sw:04X}", flush=True)
         return 1
+    # The consumer watches from the first heartbeat after 0x1016 is set
+    # (CiA 301): let several arrive before anyone kills us.
+    time.sleep(0.5)
     print("RUNNING", flush=True)
     while True:
         time.sleep(1.0)
