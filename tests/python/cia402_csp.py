@@ -221,7 +221,12 @@ def main() -> int:
             if sw & 0x1400 == 0x1400:
                 break
             time.sleep(0.1)
-        home = node.sdo[0x6064].raw
+        # The position loop holds the new 0 (a count of transient first).
+        while time.monotonic() < end:
+            home = node.sdo[0x6064].raw
+            if abs(home) <= 1:
+                break
+            time.sleep(0.1)
         print(f"homing: statusword 0x{sw:04X}, position {home}")
         if sw & 0x1400 != 0x1400 or abs(home) > 1:
             return fail("homing method 37 did not end at 0")

@@ -12,9 +12,10 @@
 //!   starts the servo's trajectory to it (within `traj_vel_limit` and
 //!   `traj_accel_limit`), so a stream of set-points one SYNC apart is
 //!   followed with the trajectory's lag.
-//! - HM (6), method 37: the velocity loop holds the rotor at 0 rev/s and
-//!   the present position becomes 0 on entering the mode; "homing
-//!   attained" (statusword bit 12) and "target reached" (bit 10) then show.
+//! - HM (6), method 37: on entering the mode the present position becomes
+//!   0 (taken under the velocity loop at 0 rev/s) and the position loop
+//!   holds it; "homing attained" (statusword bit 12) and "target reached"
+//!   (bit 10) then show.
 //! - Vendor impedance (-1): 0x607A and 0x60FF are the law's position and
 //!   velocity, 0x2101 its stiffness, damping and torque feed-forward.
 //!
@@ -309,10 +310,12 @@ impl Axis {
             Applied::Velocity(v) => servo.set_velocity(bus, f64::from(v) / cpr),
             Applied::Position(p) => servo.set_position(bus, f64::from(p) / cpr),
             // The velocity loop at 0 first: a loop that holds a position
-            // refuses a new zero (the held target would jump).
+            // refuses a new zero (the held target would jump); then the
+            // position loop holds the new 0.
             Applied::Homed => servo
                 .set_velocity(bus, 0.0)
-                .and_then(|()| servo.zero_position()),
+                .and_then(|()| servo.zero_position())
+                .and_then(|()| servo.set_position(bus, 0.0)),
             Applied::Impedance => servo.set_impedance(
                 bus,
                 &Impedance {
