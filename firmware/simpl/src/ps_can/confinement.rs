@@ -1,6 +1,7 @@
 //! Fault confinement of one CAN node: the transmit and receive error
 //! counters and the state they give, by the rules of ISO 11898-1
-//! (fault confinement; the same rules as Bosch CAN 2.0 part B, section 8):
+//! (fault confinement; the same rules as section 8 of the Bosch CAN 2.0
+//! specification for extended frames):
 //!
 //! - a transmitter that sends an error flag adds 8 to TEC, except an
 //!   error-passive transmitter whose error is a missing acknowledge (a node
