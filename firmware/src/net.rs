@@ -71,9 +71,7 @@ impl Device for DriveDevice {
 
     fn tick(&mut self, now_us: u64) -> canopen::Frames {
         let mut out = crate::fieldbus::take_from_control();
-        for f in crate::fieldbus::tick(now_us).iter() {
-            out.push(*f);
-        }
+        out.append(&crate::fieldbus::tick(now_us));
         out
     }
 }

@@ -7,6 +7,46 @@ use std::net::TcpStream;
 use std::time::{Duration, Instant};
 use system_tests::{assert_ok, boot_with_can, boot_with_can_on, cmd, TIMEOUT};
 
+/// The repository's root and the venv's python with python-can and
+/// canopen (made by `scripts/setup`).
+fn venv_python() -> (std::path::PathBuf, std::path::PathBuf) {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let python = root.join("target/socketcand-venv/bin/python");
+    assert!(
+        python.is_file(),
+        "{} missing: run scripts/setup (python-can and canopen)",
+        python.display()
+    );
+    (root, python)
+}
+
+/// A python master `script` (PORT, EDS) started and past its `RUNNING`
+/// line; its output stays open, so that its later lines do not break the
+/// pipe.
+fn spawn_master(
+    root: &std::path::Path,
+    python: &std::path::Path,
+    script: &str,
+    port: u16,
+) -> (
+    std::process::Child,
+    std::io::BufReader<std::process::ChildStdout>,
+) {
+    use std::io::BufRead;
+    let mut child = std::process::Command::new(python)
+        .arg(root.join(script))
+        .arg(port.to_string())
+        .arg(root.join("docs/canopen/drive.eds"))
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .expect("python runs");
+    let mut out = std::io::BufReader::new(child.stdout.take().unwrap());
+    let mut line = String::new();
+    out.read_line(&mut line).unwrap();
+    assert_eq!(line.trim(), "RUNNING");
+    (child, out)
+}
+
 /// A socketcand connection: `< ... >` messages in, commands out.
 struct Client {
     tcp: TcpStream,
@@ -176,13 +216,7 @@ fn a_second_client_after_the_first_left() {
 /// (tests/python/socketcand_canopen.py says what it checks).
 #[test]
 fn python_can_and_canopen_read_the_device_type() {
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    let python = root.join("target/socketcand-venv/bin/python");
-    assert!(
-        python.is_file(),
-        "{} missing: run scripts/setup (python-can and canopen)",
-        python.display()
-    );
+    let (root, python) = venv_python();
     let (_console, port) = boot_with_can();
     let out = std::process::Command::new("timeout")
         .arg("60")
@@ -278,13 +312,7 @@ fn python_canopen_drives_the_co_simulated_rtl_in_csp() {
 }
 
 fn csp_with_python(rtl: bool, syncs: u32) {
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    let python = root.join("target/socketcand-venv/bin/python");
-    assert!(
-        python.is_file(),
-        "{} missing: run scripts/setup (python-can and canopen)",
-        python.display()
-    );
+    let (root, python) = venv_python();
     let (mut console, port) = boot_with_can_on(rtl);
     // The simulated rotor free (it is held at standstill by default).
     assert_ok(&cmd(&mut console, "sim set locked 0"));
@@ -354,28 +382,10 @@ fn csp_with_python(rtl: bool, syncs: u32) {
 /// Switch on disabled, and the console commands again.
 #[test]
 fn a_killed_master_quick_stops_the_motor() {
-    use std::io::BufRead;
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    let python = root.join("target/socketcand-venv/bin/python");
-    assert!(
-        python.is_file(),
-        "{} missing: run scripts/setup",
-        python.display()
-    );
+    let (root, python) = venv_python();
     let (mut console, port) = boot_with_can();
     assert_ok(&cmd(&mut console, "sim set locked 0"));
-    let mut child = std::process::Command::new(&python)
-        .arg(root.join("tests/python/cia402_heartbeat.py"))
-        .arg(port.to_string())
-        .arg(root.join("docs/canopen/drive.eds"))
-        .stdout(std::process::Stdio::piped())
-        .spawn()
-        .expect("python runs");
-    let mut line = String::new();
-    std::io::BufReader::new(child.stdout.take().unwrap())
-        .read_line(&mut line)
-        .unwrap();
-    assert_eq!(line.trim(), "RUNNING");
+    let (mut child, _out) = spawn_master(&root, &python, "tests/python/cia402_heartbeat.py", port);
     // The master owns the motor meanwhile.
     let r = cmd(&mut console, "enable");
     assert!(
@@ -406,27 +416,10 @@ fn a_killed_master_quick_stops_the_motor() {
 /// motion) deflects it by 0.05 rev, 205 counts of 4096.
 #[test]
 fn python_canopen_impedance_mode_holds_against_a_load() {
-    use std::io::BufRead;
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    let python = root.join("target/socketcand-venv/bin/python");
-    assert!(
-        python.is_file(),
-        "{} missing: run scripts/setup",
-        python.display()
-    );
+    let (root, python) = venv_python();
     let (mut console, port) = boot_with_can();
     assert_ok(&cmd(&mut console, "sim set locked 0"));
-    let mut child = std::process::Command::new(&python)
-        .arg(root.join("tests/python/cia402_impedance.py"))
-        .arg(port.to_string())
-        .arg(root.join("docs/canopen/drive.eds"))
-        .stdout(std::process::Stdio::piped())
-        .spawn()
-        .expect("python runs");
-    let mut out = std::io::BufReader::new(child.stdout.take().unwrap());
-    let mut line = String::new();
-    out.read_line(&mut line).unwrap();
-    assert_eq!(line.trim(), "RUNNING");
+    let (mut child, _out) = spawn_master(&root, &python, "tests/python/cia402_impedance.py", port);
     let counts = |console: &mut drivectl::link::Session| -> f64 {
         let r = cmd(console, "status");
         r.lines

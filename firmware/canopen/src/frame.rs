@@ -80,6 +80,14 @@ impl Frames {
         }
     }
 
+    /// Appends `other`'s frames in order (those that do not fit counted as
+    /// dropped).
+    pub fn append(&mut self, other: &Frames) {
+        for f in other.iter() {
+            self.push(*f);
+        }
+    }
+
     /// The frames, oldest first.
     pub fn as_slice(&self) -> &[CanFrame] {
         &self.buf[..self.len]

@@ -149,14 +149,7 @@ impl Axis {
                             ServoError::FaultLatched(f) => f,
                             _ => Faults(0),
                         };
-                        let code = error_code(f);
-                        obj.image.error_code = code;
-                        for fr in node
-                            .drive_fault(obj, code, register_bits(f), mfr_bytes(f))
-                            .iter()
-                        {
-                            out.push(*fr);
-                        }
+                        raise_fault(f, obj, node, &mut out);
                     }
                 }
                 Action::DisableOperation | Action::PowerOff | Action::DisableAndPowerOff => {
@@ -193,18 +186,9 @@ impl Axis {
                     self.reported = left.0;
                     if left.none() {
                         obj.image.error_code = 0;
-                        for fr in node.clear_errors().iter() {
-                            out.push(*fr);
-                        }
+                        out.append(&node.clear_errors());
                     } else {
-                        let code = error_code(left);
-                        obj.image.error_code = code;
-                        for fr in node
-                            .drive_fault(obj, code, register_bits(left), mfr_bytes(left))
-                            .iter()
-                        {
-                            out.push(*fr);
-                        }
+                        raise_fault(left, obj, node, &mut out);
                     }
                 }
             }
@@ -232,14 +216,7 @@ impl Axis {
             && !matches!(state, State::Fault | State::FaultReactionActive)
         {
             self.reported = f.0;
-            let code = error_code(f);
-            obj.image.error_code = code;
-            for fr in node
-                .drive_fault(obj, code, register_bits(f), mfr_bytes(f))
-                .iter()
-            {
-                out.push(*fr);
-            }
+            raise_fault(f, obj, node, &mut out);
         }
         if let Some(q) = self.quick_stop.as_mut() {
             q.left_s -= dt_s;
@@ -347,6 +324,20 @@ impl Axis {
         }
         Ok(())
     }
+}
+
+/// A drive fault `f` to the node (CiA 402 transition 13, EMCY with its
+/// code, the fault bits in the manufacturer bytes) and to 0x603F; its
+/// frames go to `out`.
+fn raise_fault<C: ConfigPort>(
+    f: Faults,
+    obj: &mut DriveObjects<C>,
+    node: &mut Node,
+    out: &mut Frames,
+) {
+    let code = error_code(f);
+    obj.image.error_code = code;
+    out.append(&node.drive_fault(obj, code, register_bits(f), mfr_bytes(f)));
 }
 
 /// The drive's fault bits, little-endian, in the EMCY's manufacturer bytes.

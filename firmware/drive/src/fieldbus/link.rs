@@ -200,9 +200,7 @@ impl<C: ConfigPort> Link<C> {
         let more = self
             .axis
             .carry_out(servo, bus, &mut self.obj, &mut self.node)?;
-        for x in more.iter() {
-            out.push(*x);
-        }
+        out.append(&more);
         self.count_out(&out);
         Ok(out)
     }
@@ -233,9 +231,7 @@ impl<C: ConfigPort> Link<C> {
                         canopen::emcy::register::COMMUNICATION,
                         [0; 5],
                     );
-                    for x in f.iter() {
-                        out.push(*x);
-                    }
+                    out.append(&f);
                 }
                 2 => self.node.controlword(&mut self.obj, 0x0000),
                 3 => self.node.controlword(&mut self.obj, 0x0002),
@@ -244,9 +240,7 @@ impl<C: ConfigPort> Link<C> {
             let more = self
                 .axis
                 .carry_out(servo, bus, &mut self.obj, &mut self.node)?;
-            for x in more.iter() {
-                out.push(*x);
-            }
+            out.append(&more);
         }
         self.count_out(&out);
         Ok(out)
@@ -267,9 +261,7 @@ impl<C: ConfigPort> Link<C> {
         let more = self
             .axis
             .carry_out(servo, bus, &mut self.obj, &mut self.node)?;
-        for x in more.iter() {
-            out.push(*x);
-        }
+        out.append(&more);
         self.count_out(&out);
         Ok(out)
     }
